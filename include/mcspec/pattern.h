@@ -1,0 +1,76 @@
+/* Sample patterns over N bins: K canonical points u_j by a rule, optionally
+ * warped through an importance function, then binned. A trial is K pairs
+ * (bin n_j, weight w_j = 1/p_{n_j}): the sparse form of s_n = r_n / p_n
+ * (eq. 38). K need not divide N. */
+#ifndef MCSPEC_PATTERN_H
+#define MCSPEC_PATTERN_H
+
+#include <stddef.h>
+#include "config.h"
+#include "status.h"
+#include "rng.h"
+#include "importance.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum {
+    MCS_PATTERN_RANDOM = 0,      /* u_j i.i.d. uniform (section 3.1) */
+    MCS_PATTERN_STRATIFIED = 1,  /* u_j = (j + xi_j)/K (section 3.2) */
+    MCS_PATTERN_HOMOGENIZED = 2, /* stratified, shifted cyclically by a random whole
+                                    number of bins (no importance function) */
+    MCS_PATTERN_UNIFORM = 3,     /* u_j = (j + 1/2)/K, deterministic (section 3.3) */
+    MCS_PATTERN_JITTER = 4       /* u_j = (j + beta)/K, one beta per trial (section 3.3) */
+} mcs_pattern_kind;
+
+#define MCS_PATTERN_KIND_COUNT 5
+
+typedef struct {
+    mcs_pattern_kind kind;
+    size_t n;                         /* bins N, 1..MCS_MAX_N */
+    size_t k;                         /* samples per trial K, >= 1 */
+    const mcs_importance *importance; /* caller-owned, NULL for the uniform density;
+                                         must outlive the pattern */
+} mcs_pattern;
+
+/* Name of a kind ("random", "stratified", "homogenized", "uniform",
+ * "jitter"), or "unknown". */
+const char *mcs_pattern_kind_str(mcs_pattern_kind kind);
+
+/* Configures a pattern. importance may be NULL; if not, its n must equal n.
+ * MCS_ERR_NULL, MCS_ERR_N_RANGE, MCS_ERR_K_RANGE (k = 0), MCS_ERR_KIND
+ * (unknown kind, or homogenized with importance), MCS_ERR_MISMATCH,
+ * MCS_ERR_UNINIT (importance not initialised). *pat untouched on error. */
+mcs_status mcs_pattern_init(mcs_pattern *pat, mcs_pattern_kind kind, size_t n, size_t k,
+                            const mcs_importance *importance);
+
+/* Draws one trial: bins[k] (n_j in [0,N)), weights[k] (w_j = 1/p_{n_j}, 1 without
+ * importance) and, if points is not NULL, points[k] (x_j in [0,1), floor(N x_j) = n_j).
+ * k must equal pat->k (it is the length of every caller array).
+ * MCS_ERR_NULL, MCS_ERR_MISMATCH (k != pat->k), MCS_ERR_UNINIT.
+ * On error nothing is written and rng is not advanced. */
+mcs_status mcs_pattern_draw(const mcs_pattern *pat, mcs_rng *rng, size_t k, size_t *bins,
+                            double *weights, double *points);
+
+/* Bins caller points (a renderer's own samples) into (bin, weight) form over
+ * n bins: bin floor(N x_j), weight 1/p_bin (1 if importance is NULL).
+ * points[k] in [0,1); bins[k], weights[k] written.
+ * MCS_ERR_NULL, MCS_ERR_N_RANGE, MCS_ERR_K_RANGE (k = 0), MCS_ERR_MISMATCH
+ * (importance->n != n), MCS_ERR_POINT_RANGE. Outputs untouched on error. */
+mcs_status mcs_pattern_bin_points(size_t n, const mcs_importance *importance, size_t k,
+                                  const double *points, size_t *bins, double *weights);
+
+/* Dense s_n = r_n / p_n (eq. 38) from a trial's k (bin, weight) pairs:
+ * s[n] is the sum of the weights of the samples in bin n.
+ * bins[k] in [0,n), weights[k] finite and >= 0, s[n] written.
+ * MCS_ERR_NULL, MCS_ERR_N_RANGE, MCS_ERR_K_RANGE (k = 0), MCS_ERR_BIN_RANGE,
+ * MCS_ERR_NOT_FINITE, MCS_ERR_NEGATIVE. s untouched on error. */
+mcs_status mcs_pattern_dense(size_t n, size_t k, const size_t *bins, const double *weights,
+                             double *s);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* MCSPEC_PATTERN_H */

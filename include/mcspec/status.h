@@ -1,0 +1,35 @@
+/* mcspec status codes: every fallible call returns one. */
+#ifndef MCSPEC_STATUS_H
+#define MCSPEC_STATUS_H
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum {
+    MCS_OK = 0,                   /* success */
+    MCS_ERR_NULL = -1,            /* a required pointer argument is NULL */
+    MCS_ERR_N_RANGE = -2,         /* bin count n is 0 or above the capacity */
+    MCS_ERR_K_RANGE = -3,         /* sample count k is 0 or above a capacity */
+    MCS_ERR_NOT_FINITE = -4,      /* a weight or value is NaN or infinite */
+    MCS_ERR_NEGATIVE = -5,        /* a weight is negative */
+    MCS_ERR_ZERO_WEIGHT = -6,     /* an importance weight is 0 (1/p_n would be infinite) or all are */
+    MCS_ERR_BIN_RANGE = -7,       /* a bin index is outside [0, n) */
+    MCS_ERR_POINT_RANGE = -8,     /* a point is outside [0, 1) */
+    MCS_ERR_KIND = -9,            /* unknown pattern kind, or kind not defined with importance */
+    MCS_ERR_MISMATCH = -10,       /* objects of different n (or shape) combined */
+    MCS_ERR_BOUND = -11,          /* random bound of 0 */
+    MCS_ERR_EMPTY = -12,          /* too few trials for the quantity asked (e.g. variance of < 2) */
+    MCS_ERR_DOMAIN = -13,         /* closed form asked outside the domain where the note defines it */
+    MCS_ERR_FREQ_RANGE = -14,     /* a frequency index is outside [0, n) */
+    MCS_ERR_UNINIT = -15          /* object was not initialised by its init function */
+} mcs_status;
+
+/* Name of a status code as a static string ("MCS_OK", ...); never NULL. */
+const char *mcs_status_str(mcs_status status);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* MCSPEC_STATUS_H */

@@ -1,0 +1,180 @@
+#include "mcspec/pattern.h"
+#include "importance_internal.h"
+#include "rng_inline.h"
+
+#include <math.h>
+
+const char *mcs_pattern_kind_str(mcs_pattern_kind kind)
+{
+    switch (kind) {
+    case MCS_PATTERN_RANDOM: return "random";
+    case MCS_PATTERN_STRATIFIED: return "stratified";
+    case MCS_PATTERN_HOMOGENIZED: return "homogenized";
+    case MCS_PATTERN_UNIFORM: return "uniform";
+    case MCS_PATTERN_JITTER: return "jitter";
+    }
+    return "unknown";
+}
+
+static int kind_is_valid(mcs_pattern_kind kind)
+{
+    return kind == MCS_PATTERN_RANDOM || kind == MCS_PATTERN_STRATIFIED ||
+           kind == MCS_PATTERN_HOMOGENIZED || kind == MCS_PATTERN_UNIFORM ||
+           kind == MCS_PATTERN_JITTER;
+}
+
+static int importance_is_valid(const mcs_importance *imp)
+{
+    return imp->n >= 1u && imp->n <= (size_t)MCS_MAX_N;
+}
+
+mcs_status mcs_pattern_init(mcs_pattern *pat, mcs_pattern_kind kind, size_t n, size_t k,
+                            const mcs_importance *importance)
+{
+    if (pat == NULL)
+        return MCS_ERR_NULL;
+    if (n == 0u || n > (size_t)MCS_MAX_N)
+        return MCS_ERR_N_RANGE;
+    if (k == 0u)
+        return MCS_ERR_K_RANGE;
+    if (!kind_is_valid(kind))
+        return MCS_ERR_KIND;
+    if (importance != NULL) {
+        /* The homogenizing shift moves samples by whole bins, which under a
+         * non-uniform density would no longer follow p: not defined. */
+        if (kind == MCS_PATTERN_HOMOGENIZED)
+            return MCS_ERR_KIND;
+        if (!importance_is_valid(importance))
+            return MCS_ERR_UNINIT;
+        if (importance->n != n)
+            return MCS_ERR_MISMATCH;
+    }
+    pat->kind = kind;
+    pat->n = n;
+    pat->k = k;
+    pat->importance = importance;
+    return MCS_OK;
+}
+
+/* (j + v)/K, kept below 1 when rounding would reach it. */
+static double stratum_point(size_t j, double v, double inv_k)
+{
+    double u = ((double)j + v) * inv_k;
+    return u < 1.0 ? u : nextafter(1.0, 0.0);
+}
+
+/* Canonical u -> (bin, weight, x), through the importance warp if any. */
+static void place(const mcs_pattern *pat, double u, size_t *bin, double *weight, double *x)
+{
+    if (pat->importance != NULL) {
+        mcs_importance_warp_unchecked(pat->importance, u, x, bin);
+        *weight = 1.0 / pat->importance->p[*bin];
+    } else {
+        size_t b = (size_t)(u * (double)pat->n);
+        *bin = b < pat->n ? b : pat->n - 1u;
+        *weight = 1.0;
+        *x = u;
+    }
+}
+
+mcs_status mcs_pattern_draw(const mcs_pattern *pat, mcs_rng *rng, size_t k, size_t *bins,
+                            double *weights, double *points)
+{
+    if (pat == NULL || rng == NULL || bins == NULL || weights == NULL)
+        return MCS_ERR_NULL;
+    if (pat->n == 0u || pat->n > (size_t)MCS_MAX_N || pat->k == 0u || !kind_is_valid(pat->kind))
+        return MCS_ERR_UNINIT;
+    if (pat->importance != NULL && (!importance_is_valid(pat->importance) ||
+                                    pat->importance->n != pat->n))
+        return MCS_ERR_UNINIT;
+    if (k != pat->k)
+        return MCS_ERR_MISMATCH;
+
+    const double inv_k = 1.0 / (double)k;
+    double beta = 0.5;
+    if (pat->kind == MCS_PATTERN_JITTER)
+        beta = mcs_rng_double_(rng);
+
+    for (size_t j = 0; j < k; ++j) {
+        double u;
+        switch (pat->kind) {
+        case MCS_PATTERN_RANDOM:
+            u = mcs_rng_double_(rng);
+            break;
+        case MCS_PATTERN_STRATIFIED:
+        case MCS_PATTERN_HOMOGENIZED:
+            u = stratum_point(j, mcs_rng_double_(rng), inv_k);
+            break;
+        default: /* uniform (beta = 1/2) and jitter (one beta per trial) */
+            u = stratum_point(j, beta, inv_k);
+            break;
+        }
+        double x;
+        place(pat, u, &bins[j], &weights[j], &x);
+        if (points != NULL)
+            points[j] = x;
+    }
+
+    if (pat->kind == MCS_PATTERN_HOMOGENIZED) {
+        /* Cyclic shift by a whole number of bins, drawn after the strata. */
+        size_t n = pat->n;
+        size_t shift = (size_t)mcs_rng_bounded_(rng, (uint32_t)n);
+        for (size_t j = 0; j < k; ++j) {
+            size_t b = bins[j];
+            size_t nb = (b + shift) % n;
+            if (points != NULL) {
+                double t = points[j] * (double)n - (double)b;
+                points[j] = mcs_point_in_bin(n, nb, t < 1.0 ? t : nextafter(1.0, 0.0));
+            }
+            bins[j] = nb;
+        }
+    }
+    return MCS_OK;
+}
+
+mcs_status mcs_pattern_bin_points(size_t n, const mcs_importance *importance, size_t k,
+                                  const double *points, size_t *bins, double *weights)
+{
+    if (points == NULL || bins == NULL || weights == NULL)
+        return MCS_ERR_NULL;
+    if (n == 0u || n > (size_t)MCS_MAX_N)
+        return MCS_ERR_N_RANGE;
+    if (k == 0u)
+        return MCS_ERR_K_RANGE;
+    if (importance != NULL && (!importance_is_valid(importance) || importance->n != n))
+        return MCS_ERR_MISMATCH;
+    for (size_t j = 0; j < k; ++j)
+        if (!(points[j] >= 0.0 && points[j] < 1.0))
+            return MCS_ERR_POINT_RANGE;
+    for (size_t j = 0; j < k; ++j) {
+        size_t b = (size_t)(points[j] * (double)n);
+        b = b < n ? b : n - 1u;
+        bins[j] = b;
+        weights[j] = importance != NULL ? 1.0 / importance->p[b] : 1.0;
+    }
+    return MCS_OK;
+}
+
+mcs_status mcs_pattern_dense(size_t n, size_t k, const size_t *bins, const double *weights,
+                             double *s)
+{
+    if (bins == NULL || weights == NULL || s == NULL)
+        return MCS_ERR_NULL;
+    if (n == 0u || n > (size_t)MCS_MAX_N)
+        return MCS_ERR_N_RANGE;
+    if (k == 0u)
+        return MCS_ERR_K_RANGE;
+    for (size_t j = 0; j < k; ++j) {
+        if (bins[j] >= n)
+            return MCS_ERR_BIN_RANGE;
+        if (!isfinite(weights[j]))
+            return MCS_ERR_NOT_FINITE;
+        if (weights[j] < 0.0)
+            return MCS_ERR_NEGATIVE;
+    }
+    for (size_t b = 0; b < n; ++b)
+        s[b] = 0.0;
+    for (size_t j = 0; j < k; ++j)
+        s[bins[j]] += weights[j];
+    return MCS_OK;
+}

@@ -1,0 +1,24 @@
+#include "mcspec/status.h"
+
+const char *mcs_status_str(mcs_status status)
+{
+    switch (status) {
+    case MCS_OK: return "MCS_OK";
+    case MCS_ERR_NULL: return "MCS_ERR_NULL";
+    case MCS_ERR_N_RANGE: return "MCS_ERR_N_RANGE";
+    case MCS_ERR_K_RANGE: return "MCS_ERR_K_RANGE";
+    case MCS_ERR_NOT_FINITE: return "MCS_ERR_NOT_FINITE";
+    case MCS_ERR_NEGATIVE: return "MCS_ERR_NEGATIVE";
+    case MCS_ERR_ZERO_WEIGHT: return "MCS_ERR_ZERO_WEIGHT";
+    case MCS_ERR_BIN_RANGE: return "MCS_ERR_BIN_RANGE";
+    case MCS_ERR_POINT_RANGE: return "MCS_ERR_POINT_RANGE";
+    case MCS_ERR_KIND: return "MCS_ERR_KIND";
+    case MCS_ERR_MISMATCH: return "MCS_ERR_MISMATCH";
+    case MCS_ERR_BOUND: return "MCS_ERR_BOUND";
+    case MCS_ERR_EMPTY: return "MCS_ERR_EMPTY";
+    case MCS_ERR_DOMAIN: return "MCS_ERR_DOMAIN";
+    case MCS_ERR_FREQ_RANGE: return "MCS_ERR_FREQ_RANGE";
+    case MCS_ERR_UNINIT: return "MCS_ERR_UNINIT";
+    }
+    return "MCS_ERR_UNKNOWN";
+}
