@@ -1,0 +1,136 @@
+#include "mcspec.h"
+#include "unity.h"
+
+#include <math.h>
+#include <string.h>
+
+void setUp(void) {}
+void tearDown(void) {}
+
+static mcs_importance imp; /* large: keep off the stack */
+static mcs_importance imp_copy;
+
+static void test_weights_are_normalised_into_g_p_cdf_and_harmonic_mean(void)
+{
+    const double w[4] = {2.0, 4.0, 6.0, 8.0}; /* any scale: g = .1 .2 .3 .4 */
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_init(&imp, 4u, w));
+    TEST_ASSERT_EQUAL_UINT(4u, imp.n);
+    const double g[4] = {0.1, 0.2, 0.3, 0.4};
+    double sum_inv_p = 0.0;
+    for (int b = 0; b < 4; ++b) {
+        TEST_ASSERT_DOUBLE_WITHIN(1e-15, g[b], imp.g[b]);
+        TEST_ASSERT_DOUBLE_WITHIN(1e-15, 4.0 * g[b], imp.p[b]);
+        sum_inv_p += 1.0 / (4.0 * g[b]);
+    }
+    TEST_ASSERT_EQUAL_DOUBLE(0.0, imp.cdf[0]);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-15, 0.3, imp.cdf[2]);
+    TEST_ASSERT_EQUAL_DOUBLE(1.0, imp.cdf[4]);
+    /* eq. 44: H = N / sum 1/p_n, here 4 / (2.5 + 1.25 + 5/6 + 0.625). */
+    TEST_ASSERT_DOUBLE_WITHIN(1e-14, 4.0 / sum_inv_p, imp.harmonic_mean);
+    TEST_ASSERT_TRUE(imp.harmonic_mean < 1.0);
+}
+
+static void test_uniform_weights_give_unit_density_and_h_equal_one(void)
+{
+    double w[37];
+    for (int b = 0; b < 37; ++b)
+        w[b] = 3.5;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_init(&imp, 37u, w));
+    for (int b = 0; b < 37; ++b)
+        TEST_ASSERT_DOUBLE_WITHIN(1e-14, 1.0, imp.p[b]);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-14, 1.0, imp.harmonic_mean);
+}
+
+static void test_warp_maps_each_cdf_interval_linearly_onto_its_bin(void)
+{
+    const double w[4] = {1.0, 2.0, 3.0, 4.0};
+    mcs_importance_init(&imp, 4u, w);
+    double x = -1.0;
+    size_t bin = 99u;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_warp(&imp, 0.0, &x, &bin));
+    TEST_ASSERT_EQUAL_UINT(0u, bin);
+    TEST_ASSERT_EQUAL_DOUBLE(0.0, x);
+    /* u = 0.45 is halfway through I_2 = [0.3, 0.6): x = (2 + 0.5)/4. */
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_warp(&imp, 0.45, &x, &bin));
+    TEST_ASSERT_EQUAL_UINT(2u, bin);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-14, 0.625, x);
+    /* Bin edges belong to the bin above them. */
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_warp(&imp, imp.cdf[3], &x, &bin));
+    TEST_ASSERT_EQUAL_UINT(3u, bin);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_warp(&imp, nextafter(1.0, 0.0), &x, &bin));
+    TEST_ASSERT_EQUAL_UINT(3u, bin);
+    TEST_ASSERT_TRUE(x < 1.0);
+}
+
+static void test_warp_is_monotone_and_keeps_points_in_their_bins(void)
+{
+    double w[50];
+    for (int b = 0; b < 50; ++b)
+        w[b] = 0.01 + (double)((b * 37) % 11);
+    mcs_importance_init(&imp, 50u, w);
+    double prev = -1.0;
+    for (int i = 0; i < 20000; ++i) {
+        double u = (double)i / 20000.0, x;
+        size_t bin;
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_warp(&imp, u, &x, &bin));
+        TEST_ASSERT_TRUE(x >= prev);
+        TEST_ASSERT_TRUE(x >= 0.0 && x < 1.0);
+        TEST_ASSERT_EQUAL_UINT(bin, (size_t)floor(x * 50.0));
+        TEST_ASSERT_TRUE(u >= imp.cdf[bin] && u < imp.cdf[bin + 1u]);
+        prev = x;
+    }
+}
+
+static void test_bad_weights_return_an_error_and_leave_the_struct_untouched(void)
+{
+    const double good[3] = {1.0, 2.0, 3.0};
+    mcs_importance_init(&imp, 3u, good);
+    memcpy(&imp_copy, &imp, sizeof imp);
+    const double nan_w[3] = {1.0, NAN, 1.0};
+    const double inf_w[3] = {1.0, INFINITY, 1.0};
+    const double neg_w[3] = {1.0, -1.0, 3.0};
+    const double zero_w[3] = {1.0, 0.0, 3.0};
+    const double huge_w[3] = {1e308, 1e308, 1e308};
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_importance_init(NULL, 3u, good));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_importance_init(&imp, 3u, NULL));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_N_RANGE, mcs_importance_init(&imp, 0u, good));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_N_RANGE, mcs_importance_init(&imp, MCS_MAX_N + 1u, good));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NOT_FINITE, mcs_importance_init(&imp, 3u, nan_w));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NOT_FINITE, mcs_importance_init(&imp, 3u, inf_w));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NEGATIVE, mcs_importance_init(&imp, 3u, neg_w));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ZERO_WEIGHT, mcs_importance_init(&imp, 3u, zero_w));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NOT_FINITE, mcs_importance_init(&imp, 3u, huge_w));
+    TEST_ASSERT_EQUAL_MEMORY(&imp_copy, &imp, sizeof imp);
+}
+
+static void test_bad_warp_input_returns_an_error_and_leaves_outputs_untouched(void)
+{
+    const double good[3] = {1.0, 2.0, 3.0};
+    mcs_importance_init(&imp, 3u, good);
+    double x = 7.0;
+    size_t bin = 77u;
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_importance_warp(NULL, 0.5, &x, &bin));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_POINT_RANGE, mcs_importance_warp(&imp, 1.0, &x, &bin));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_POINT_RANGE, mcs_importance_warp(&imp, -0.25, &x, &bin));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_POINT_RANGE, mcs_importance_warp(&imp, NAN, &x, &bin));
+    memset(&imp_copy, 0, sizeof imp_copy);
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_UNINIT, mcs_importance_warp(&imp_copy, 0.5, &x, &bin));
+    TEST_ASSERT_EQUAL_DOUBLE(7.0, x);
+    TEST_ASSERT_EQUAL_UINT(77u, bin);
+    /* Either output may be omitted. */
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_warp(&imp, 0.3, NULL, &bin));
+    TEST_ASSERT_EQUAL_UINT(1u, bin);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_warp(&imp, 0.5, &x, NULL));
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_weights_are_normalised_into_g_p_cdf_and_harmonic_mean);
+    RUN_TEST(test_uniform_weights_give_unit_density_and_h_equal_one);
+    RUN_TEST(test_warp_maps_each_cdf_interval_linearly_onto_its_bin);
+    RUN_TEST(test_warp_is_monotone_and_keeps_points_in_their_bins);
+    RUN_TEST(test_bad_weights_return_an_error_and_leave_the_struct_untouched);
+    RUN_TEST(test_bad_warp_input_returns_an_error_and_leaves_outputs_untouched);
+    return UNITY_END();
+}

@@ -1,0 +1,356 @@
+#include "mcspec.h"
+#include "unity.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+void setUp(void) {}
+void tearDown(void) {}
+
+#define GUARD_BIN ((size_t)0xA5A5A5A5u)
+#define GUARD_W (-12345.0)
+#define MAXK 64
+
+static mcs_importance imp;
+static mcs_importance imp_copy;
+static size_t bins[MAXK + 1];
+static double weights[MAXK + 1];
+static double points[MAXK + 1];
+
+static const mcs_pattern_kind all_kinds[MCS_PATTERN_KIND_COUNT] = {
+    MCS_PATTERN_RANDOM, MCS_PATTERN_STRATIFIED, MCS_PATTERN_HOMOGENIZED, MCS_PATTERN_UNIFORM,
+    MCS_PATTERN_JITTER};
+
+/* A lumpy importance function: weights 1 + (b*7 mod 5), no zeros. */
+static void lumpy_importance(size_t n)
+{
+    double w[MCS_MAX_N];
+    for (size_t b = 0; b < n; ++b)
+        w[b] = 1.0 + (double)((b * 7u) % 5u);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_init(&imp, n, w));
+}
+
+static void set_guards(size_t k)
+{
+    bins[k] = GUARD_BIN;
+    weights[k] = GUARD_W;
+    points[k] = GUARD_W;
+}
+
+static void assert_guards(size_t k)
+{
+    TEST_ASSERT_EQUAL_UINT(GUARD_BIN, bins[k]);
+    TEST_ASSERT_EQUAL_DOUBLE(GUARD_W, weights[k]);
+    TEST_ASSERT_EQUAL_DOUBLE(GUARD_W, points[k]);
+}
+
+static void test_every_kind_gives_bins_in_range_points_in_their_bins_and_weights_one_over_p(void)
+{
+    mcs_rng rng;
+    mcs_rng_seed(&rng, 1u, 1u);
+    const size_t shapes[3][2] = {{16u, 4u}, {13u, 5u}, {7u, 20u}};
+    for (int with_imp = 0; with_imp < 2; ++with_imp) {
+        for (int s = 0; s < 3; ++s) {
+            size_t n = shapes[s][0], k = shapes[s][1];
+            lumpy_importance(n);
+            for (int kind = 0; kind < MCS_PATTERN_KIND_COUNT; ++kind) {
+                if (with_imp && all_kinds[kind] == MCS_PATTERN_HOMOGENIZED)
+                    continue;
+                mcs_pattern pat;
+                TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_init(&pat, all_kinds[kind], n, k,
+                                                               with_imp ? &imp : NULL));
+                for (int t = 0; t < 200; ++t) {
+                    set_guards(k);
+                    TEST_ASSERT_EQUAL_INT(MCS_OK,
+                                          mcs_pattern_draw(&pat, &rng, k, bins, weights, points));
+                    assert_guards(k);
+                    for (size_t j = 0; j < k; ++j) {
+                        TEST_ASSERT_TRUE(bins[j] < n);
+                        TEST_ASSERT_TRUE(points[j] >= 0.0 && points[j] < 1.0);
+                        TEST_ASSERT_EQUAL_UINT(bins[j], (size_t)floor(points[j] * (double)n));
+                        double w = with_imp ? 1.0 / imp.p[bins[j]] : 1.0;
+                        TEST_ASSERT_EQUAL_DOUBLE(w, weights[j]);
+                    }
+                }
+            }
+        }
+    }
+}
+
+static void test_stratified_has_exactly_one_sample_per_stratum_when_k_divides_n(void)
+{
+    mcs_rng rng;
+    mcs_rng_seed(&rng, 2u, 3u);
+    mcs_pattern pat;
+    mcs_pattern_init(&pat, MCS_PATTERN_STRATIFIED, 64u, 8u, NULL);
+    for (int t = 0; t < 1000; ++t) {
+        mcs_pattern_draw(&pat, &rng, 8u, bins, weights, NULL);
+        for (size_t j = 0; j < 8u; ++j)
+            TEST_ASSERT_EQUAL_UINT(j, bins[j] / 8u);
+    }
+}
+
+static void test_uniform_is_deterministic_at_bin_centres_of_the_strata(void)
+{
+    mcs_rng rng, before;
+    mcs_rng_seed(&rng, 5u, 6u);
+    before = rng;
+    mcs_pattern pat;
+    mcs_pattern_init(&pat, MCS_PATTERN_UNIFORM, 30u, 7u, NULL);
+    size_t first[7];
+    mcs_pattern_draw(&pat, &rng, 7u, first, weights, points);
+    for (size_t j = 0; j < 7u; ++j) {
+        TEST_ASSERT_EQUAL_DOUBLE(((double)j + 0.5) / 7.0, points[j]);
+        TEST_ASSERT_EQUAL_UINT((size_t)floor(30.0 * ((double)j + 0.5) / 7.0), first[j]);
+    }
+    for (int t = 0; t < 10; ++t) {
+        mcs_pattern_draw(&pat, &rng, 7u, bins, weights, NULL);
+        TEST_ASSERT_EQUAL_MEMORY(first, bins, sizeof first);
+    }
+    /* It consumes no randomness. */
+    TEST_ASSERT_EQUAL_MEMORY(&before, &rng, sizeof rng);
+}
+
+static void test_jitter_samples_are_exactly_n_over_k_bins_apart_when_k_divides_n(void)
+{
+    mcs_rng rng;
+    mcs_rng_seed(&rng, 8u, 9u);
+    mcs_pattern pat;
+    mcs_pattern_init(&pat, MCS_PATTERN_JITTER, 96u, 12u, NULL);
+    int offsets_seen[8] = {0};
+    for (int t = 0; t < 400; ++t) {
+        mcs_pattern_draw(&pat, &rng, 12u, bins, weights, NULL);
+        for (size_t j = 1; j < 12u; ++j)
+            TEST_ASSERT_EQUAL_UINT(8u, bins[j] - bins[j - 1u]);
+        offsets_seen[bins[0]] = 1;
+    }
+    for (int o = 0; o < 8; ++o) /* and the common offset is random */
+        TEST_ASSERT_TRUE(offsets_seen[o]);
+}
+
+static void test_homogenized_is_a_cyclic_shift_of_the_stratified_pattern(void)
+{
+    const size_t n = 20u, k = 6u; /* strata do not line up with bins */
+    mcs_rng a, b;
+    mcs_rng_seed(&a, 10u, 11u);
+    mcs_pattern hom, strat;
+    mcs_pattern_init(&hom, MCS_PATTERN_HOMOGENIZED, n, k, NULL);
+    mcs_pattern_init(&strat, MCS_PATTERN_STRATIFIED, n, k, NULL);
+    size_t sb[6];
+    double sp[6];
+    int shift_seen[20] = {0};
+    for (int t = 0; t < 2000; ++t) {
+        b = a;
+        mcs_pattern_draw(&hom, &a, k, bins, weights, points);
+        mcs_pattern_draw(&strat, &b, k, sb, weights, sp);
+        uint32_t shift;
+        mcs_rng_bounded(&b, (uint32_t)n, &shift); /* drawn after the strata */
+        TEST_ASSERT_EQUAL_MEMORY(&a, &b, sizeof a);
+        shift_seen[shift] = 1;
+        for (size_t j = 0; j < k; ++j) {
+            TEST_ASSERT_EQUAL_UINT((sb[j] + shift) % n, bins[j]);
+            /* same offset inside the bin */
+            double off_s = sp[j] * (double)n - (double)sb[j];
+            double off_h = points[j] * (double)n - (double)bins[j];
+            TEST_ASSERT_DOUBLE_WITHIN(1e-12, off_s, off_h);
+        }
+    }
+    for (size_t d = 0; d < n; ++d)
+        TEST_ASSERT_TRUE(shift_seen[d]);
+}
+
+/* Mean bin count r_n over trials against K g_n, each within 5 standard errors
+ * estimated from the trials themselves. */
+static void check_histogram(mcs_pattern_kind kind, size_t n, size_t k, int with_imp, uint64_t seed)
+{
+    enum { TRIALS = 20000 };
+    static mcs_welford count[MCS_MAX_N];
+    double r[64];
+    lumpy_importance(n);
+    mcs_pattern pat;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_init(&pat, kind, n, k, with_imp ? &imp : NULL));
+    mcs_rng rng;
+    mcs_rng_seed(&rng, seed, 77u);
+    for (size_t b = 0; b < n; ++b)
+        mcs_welford_init(&count[b]);
+    for (int t = 0; t < TRIALS; ++t) {
+        memset(r, 0, sizeof r);
+        mcs_pattern_draw(&pat, &rng, k, bins, weights, NULL);
+        for (size_t j = 0; j < k; ++j)
+            r[bins[j]] += 1.0;
+        for (size_t b = 0; b < n; ++b)
+            mcs_welford_add(&count[b], r[b]);
+    }
+    for (size_t b = 0; b < n; ++b) {
+        double g = with_imp ? imp.g[b] : 1.0 / (double)n, mean, se;
+        mcs_welford_mean(&count[b], &mean);
+        mcs_welford_stderr(&count[b], &se);
+        char msg[96];
+        snprintf(msg, sizeof msg, "kind %s n %zu k %zu imp %d bin %zu", mcs_pattern_kind_str(kind),
+                 n, k, with_imp, b);
+        TEST_ASSERT_DOUBLE_WITHIN_MESSAGE(5.0 * se + 1e-12, (double)k * g, mean, msg);
+    }
+}
+
+static void test_bin_histograms_match_k_g_n_for_every_kind_with_and_without_importance(void)
+{
+    const mcs_pattern_kind kinds[4] = {MCS_PATTERN_RANDOM, MCS_PATTERN_STRATIFIED,
+                                       MCS_PATTERN_HOMOGENIZED, MCS_PATTERN_JITTER};
+    for (int i = 0; i < 4; ++i) {
+        check_histogram(kinds[i], 16u, 4u, 0, 100u + (uint64_t)i);
+        check_histogram(kinds[i], 13u, 5u, 0, 200u + (uint64_t)i);
+        if (kinds[i] != MCS_PATTERN_HOMOGENIZED) {
+            check_histogram(kinds[i], 16u, 4u, 1, 300u + (uint64_t)i);
+            check_histogram(kinds[i], 13u, 5u, 1, 400u + (uint64_t)i);
+        }
+    }
+}
+
+static void test_uniform_histogram_is_exactly_one_per_bin_when_k_equals_n(void)
+{
+    /* The only uniform case whose histogram can equal K g_n: deterministic. */
+    check_histogram(MCS_PATTERN_UNIFORM, 24u, 24u, 0, 5u);
+}
+
+static void test_bin_points_maps_caller_points_to_bins_and_weights(void)
+{
+    lumpy_importance(10u);
+    const double pts[4] = {0.0, 0.05, 0.55, nextafter(1.0, 0.0)};
+    set_guards(4u);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_bin_points(10u, NULL, 4u, pts, bins, weights));
+    assert_guards(4u);
+    const size_t expect[4] = {0u, 0u, 5u, 9u};
+    for (int j = 0; j < 4; ++j) {
+        TEST_ASSERT_EQUAL_UINT(expect[j], bins[j]);
+        TEST_ASSERT_EQUAL_DOUBLE(1.0, weights[j]);
+    }
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_bin_points(10u, &imp, 4u, pts, bins, weights));
+    for (int j = 0; j < 4; ++j)
+        TEST_ASSERT_EQUAL_DOUBLE(1.0 / imp.p[expect[j]], weights[j]);
+}
+
+static void test_dense_form_sums_weights_per_bin(void)
+{
+    const size_t b[5] = {3u, 0u, 3u, 7u, 3u};
+    const double w[5] = {0.5, 2.0, 0.25, 1.0, 1.0};
+    double s[9];
+    s[8] = GUARD_W;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_dense(8u, 5u, b, w, s));
+    const double expect[8] = {2.0, 0.0, 0.0, 1.75, 0.0, 0.0, 0.0, 1.0};
+    TEST_ASSERT_EQUAL_DOUBLE_ARRAY(expect, s, 8);
+    TEST_ASSERT_EQUAL_DOUBLE(GUARD_W, s[8]);
+}
+
+static void test_bad_pattern_configuration_returns_an_error_and_changes_nothing(void)
+{
+    lumpy_importance(8u);
+    mcs_pattern pat, copy;
+    mcs_pattern_init(&pat, MCS_PATTERN_RANDOM, 8u, 2u, NULL);
+    copy = pat;
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_pattern_init(NULL, MCS_PATTERN_RANDOM, 8u, 2u, NULL));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_N_RANGE, mcs_pattern_init(&pat, MCS_PATTERN_RANDOM, 0u, 2u, NULL));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_N_RANGE,
+                          mcs_pattern_init(&pat, MCS_PATTERN_RANDOM, MCS_MAX_N + 1u, 2u, NULL));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_K_RANGE, mcs_pattern_init(&pat, MCS_PATTERN_RANDOM, 8u, 0u, NULL));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_KIND, mcs_pattern_init(&pat, (mcs_pattern_kind)17, 8u, 2u, NULL));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_KIND,
+                          mcs_pattern_init(&pat, MCS_PATTERN_HOMOGENIZED, 8u, 2u, &imp));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_MISMATCH,
+                          mcs_pattern_init(&pat, MCS_PATTERN_RANDOM, 9u, 2u, &imp));
+    memset(&imp_copy, 0, sizeof imp_copy);
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_UNINIT,
+                          mcs_pattern_init(&pat, MCS_PATTERN_RANDOM, 8u, 2u, &imp_copy));
+    TEST_ASSERT_EQUAL_MEMORY(&copy, &pat, sizeof pat);
+    TEST_ASSERT_EQUAL_STRING("stratified", mcs_pattern_kind_str(MCS_PATTERN_STRATIFIED));
+    TEST_ASSERT_EQUAL_STRING("unknown", mcs_pattern_kind_str((mcs_pattern_kind)17));
+}
+
+static void test_bad_draw_writes_nothing_and_does_not_advance_the_rng(void)
+{
+    mcs_pattern pat, zero;
+    mcs_pattern_init(&pat, MCS_PATTERN_RANDOM, 8u, 3u, NULL);
+    memset(&zero, 0, sizeof zero);
+    mcs_rng rng, before;
+    mcs_rng_seed(&rng, 1u, 2u);
+    before = rng;
+    for (int j = 0; j < 4; ++j) {
+        bins[j] = GUARD_BIN;
+        weights[j] = GUARD_W;
+        points[j] = GUARD_W;
+    }
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_pattern_draw(NULL, &rng, 3u, bins, weights, points));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_pattern_draw(&pat, NULL, 3u, bins, weights, points));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_pattern_draw(&pat, &rng, 3u, NULL, weights, points));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_pattern_draw(&pat, &rng, 3u, bins, NULL, points));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_MISMATCH, mcs_pattern_draw(&pat, &rng, 2u, bins, weights, points));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_UNINIT, mcs_pattern_draw(&zero, &rng, 3u, bins, weights, points));
+    TEST_ASSERT_EQUAL_MEMORY(&before, &rng, sizeof rng);
+    for (int j = 0; j < 4; ++j) {
+        TEST_ASSERT_EQUAL_UINT(GUARD_BIN, bins[j]);
+        TEST_ASSERT_EQUAL_DOUBLE(GUARD_W, weights[j]);
+        TEST_ASSERT_EQUAL_DOUBLE(GUARD_W, points[j]);
+    }
+}
+
+static void test_bad_points_or_bins_return_an_error_and_leave_outputs_untouched(void)
+{
+    lumpy_importance(8u);
+    const double bad_pts[3] = {0.1, 1.0, 0.2};
+    const double neg_pts[3] = {0.1, -0.0625, 0.2};
+    const double nan_pts[3] = {0.1, NAN, 0.2};
+    const double ok_pts[3] = {0.1, 0.3, 0.2};
+    for (int j = 0; j < 4; ++j) {
+        bins[j] = GUARD_BIN;
+        weights[j] = GUARD_W;
+    }
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_POINT_RANGE, mcs_pattern_bin_points(8u, NULL, 3u, bad_pts, bins, weights));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_POINT_RANGE, mcs_pattern_bin_points(8u, NULL, 3u, neg_pts, bins, weights));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_POINT_RANGE, mcs_pattern_bin_points(8u, NULL, 3u, nan_pts, bins, weights));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_pattern_bin_points(8u, NULL, 3u, NULL, bins, weights));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_pattern_bin_points(8u, NULL, 3u, ok_pts, NULL, weights));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_pattern_bin_points(8u, NULL, 3u, ok_pts, bins, NULL));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_N_RANGE, mcs_pattern_bin_points(0u, NULL, 3u, ok_pts, bins, weights));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_N_RANGE,
+                          mcs_pattern_bin_points(MCS_MAX_N + 1u, NULL, 3u, ok_pts, bins, weights));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_K_RANGE, mcs_pattern_bin_points(8u, NULL, 0u, ok_pts, bins, weights));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_MISMATCH, mcs_pattern_bin_points(9u, &imp, 3u, ok_pts, bins, weights));
+    for (int j = 0; j < 4; ++j) {
+        TEST_ASSERT_EQUAL_UINT(GUARD_BIN, bins[j]);
+        TEST_ASSERT_EQUAL_DOUBLE(GUARD_W, weights[j]);
+    }
+
+    const size_t b_ok[3] = {1u, 2u, 3u}, b_bad[3] = {1u, 8u, 3u};
+    const double w_ok[3] = {1.0, 1.0, 1.0}, w_nan[3] = {1.0, NAN, 1.0}, w_neg[3] = {1.0, -1.0, 1.0};
+    double s[8], s_copy[8];
+    for (int i = 0; i < 8; ++i)
+        s[i] = s_copy[i] = GUARD_W;
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_BIN_RANGE, mcs_pattern_dense(8u, 3u, b_bad, w_ok, s));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NOT_FINITE, mcs_pattern_dense(8u, 3u, b_ok, w_nan, s));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NEGATIVE, mcs_pattern_dense(8u, 3u, b_ok, w_neg, s));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_pattern_dense(8u, 3u, NULL, w_ok, s));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_pattern_dense(8u, 3u, b_ok, NULL, s));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_pattern_dense(8u, 3u, b_ok, w_ok, NULL));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_N_RANGE, mcs_pattern_dense(0u, 3u, b_ok, w_ok, s));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_N_RANGE, mcs_pattern_dense(MCS_MAX_N + 1u, 3u, b_ok, w_ok, s));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_K_RANGE, mcs_pattern_dense(8u, 0u, b_ok, w_ok, s));
+    TEST_ASSERT_EQUAL_MEMORY(s_copy, s, sizeof s);
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_every_kind_gives_bins_in_range_points_in_their_bins_and_weights_one_over_p);
+    RUN_TEST(test_stratified_has_exactly_one_sample_per_stratum_when_k_divides_n);
+    RUN_TEST(test_uniform_is_deterministic_at_bin_centres_of_the_strata);
+    RUN_TEST(test_jitter_samples_are_exactly_n_over_k_bins_apart_when_k_divides_n);
+    RUN_TEST(test_homogenized_is_a_cyclic_shift_of_the_stratified_pattern);
+    RUN_TEST(test_bin_histograms_match_k_g_n_for_every_kind_with_and_without_importance);
+    RUN_TEST(test_uniform_histogram_is_exactly_one_per_bin_when_k_equals_n);
+    RUN_TEST(test_bin_points_maps_caller_points_to_bins_and_weights);
+    RUN_TEST(test_dense_form_sums_weights_per_bin);
+    RUN_TEST(test_bad_pattern_configuration_returns_an_error_and_changes_nothing);
+    RUN_TEST(test_bad_draw_writes_nothing_and_does_not_advance_the_rng);
+    RUN_TEST(test_bad_points_or_bins_return_an_error_and_leave_outputs_untouched);
+    return UNITY_END();
+}
