@@ -143,12 +143,18 @@ static void test_welford_matches_a_two_pass_computation_with_a_large_offset(void
         x[i] = 1e9 + u; /* the sum of squares would lose every digit here */
         mcs_welford_add(&acc, x[i]);
     }
-    double mean = 0.0, m2 = 0.0;
+    double mean = 0.0, m2 = 0.0, m3 = 0.0, m4 = 0.0;
     for (int i = 0; i < COUNT; ++i)
-        mean += x[i];
-    mean /= COUNT;
-    for (int i = 0; i < COUNT; ++i)
-        m2 += (x[i] - mean) * (x[i] - mean);
+        mean += x[i] - 1e9; /* exact: the two-pass reference must not lose digits either */
+    mean = 1e9 + mean / COUNT;
+    for (int i = 0; i < COUNT; ++i) {
+        double d = x[i] - mean;
+        m2 += d * d;
+        m3 += d * d * d;
+        m4 += d * d * d * d;
+    }
+    TEST_ASSERT_DOUBLE_WITHIN(1e-5 * m4, m4, acc.m4);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-5 * sqrt(m2 * m4), m3, acc.m3); /* m3 ~ 0: scale by m2, m4 */
     double var, se, wm;
     mcs_welford_mean(&acc, &wm);
     mcs_welford_variance(&acc, &var);
@@ -179,12 +185,35 @@ static void test_merge_of_two_halves_equals_one_pass(void)
     TEST_ASSERT_EQUAL_UINT64(all.count, a.count);
     TEST_ASSERT_DOUBLE_WITHIN(1e-12 * fabs(all.mean), all.mean, a.mean);
     TEST_ASSERT_DOUBLE_WITHIN(1e-12 * all.m2, all.m2, a.m2);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12 * fabs(all.m3), all.m3, a.m3);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12 * all.m4, all.m4, a.m4);
     /* Merging an empty accumulator either way changes nothing. */
     mcs_welford before = a;
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_welford_merge(&a, &empty));
     TEST_ASSERT_EQUAL_MEMORY(&before, &a, sizeof a);
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_welford_merge(&empty, &a));
     TEST_ASSERT_EQUAL_MEMORY(&a, &empty, sizeof a);
+}
+
+static void test_variance_stderr_matches_the_theory_for_uniform_values(void)
+{
+    /* U(0,1): sigma^2 = 1/12, mu4 = 1/80, so Var[s^2] ~ (1/80 - 1/144)/c. */
+    enum { COUNT = 40000 };
+    mcs_rng rng;
+    mcs_rng_seed(&rng, 21u, 22u);
+    mcs_welford acc;
+    mcs_welford_init(&acc);
+    for (int i = 0; i < COUNT; ++i) {
+        double u;
+        mcs_rng_double(&rng, &u);
+        mcs_welford_add(&acc, u);
+    }
+    double se_var, var;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_welford_variance_stderr(&acc, &se_var));
+    mcs_welford_variance(&acc, &var);
+    double expect = sqrt((1.0 / 80.0 - 1.0 / 144.0) / COUNT);
+    TEST_ASSERT_DOUBLE_WITHIN(0.03 * expect, expect, se_var);
+    TEST_ASSERT_DOUBLE_WITHIN(5.0 * expect, 1.0 / 12.0, var);
 }
 
 static double nan_f(double x, void *ctx)
@@ -237,6 +266,12 @@ static void test_bad_input_returns_an_error_and_leaves_outputs_untouched(void)
     TEST_ASSERT_EQUAL_INT(MCS_ERR_EMPTY, mcs_welford_stderr(&acc, &v));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_welford_variance(NULL, &v));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_welford_stderr(&acc, NULL));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_welford_variance_stderr(NULL, &v));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_welford_variance_stderr(&acc, NULL));
+    mcs_welford_add(&acc, 2.0);
+    mcs_welford_add(&acc, 4.0);
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_EMPTY, mcs_welford_variance_stderr(&acc, &v)); /* three values */
+    copy = acc;
     TEST_ASSERT_EQUAL_DOUBLE(5.0, v);
     TEST_ASSERT_EQUAL_MEMORY(&copy, &acc, sizeof acc);
     mcs_welford_init(&acc);
@@ -252,6 +287,7 @@ int main(void)
     RUN_TEST(test_point_estimator_equals_bin_estimator_for_a_piecewise_constant_f);
     RUN_TEST(test_welford_matches_a_two_pass_computation_with_a_large_offset);
     RUN_TEST(test_merge_of_two_halves_equals_one_pass);
+    RUN_TEST(test_variance_stderr_matches_the_theory_for_uniform_values);
     RUN_TEST(test_bad_input_returns_an_error_and_leaves_outputs_untouched);
     return UNITY_END();
 }
