@@ -42,6 +42,8 @@ TEST_SRC   := $(sort $(wildcard test/test_*.c))
 TEST_BIN   := $(TEST_SRC:test/%.c=$(BUILD)/test/%)
 UNITY_DEFS := -DUNITY_INCLUDE_DOUBLE=
 
+EXAMPLE_SUPPORT_SRC := $(wildcard examples/support/*.c)
+EXAMPLE_SUPPORT_OBJ := $(EXAMPLE_SUPPORT_SRC:%.c=$(BUILD)/obj/%.o)
 EXAMPLE_SRC := $(sort $(wildcard examples/*.c))
 EXAMPLE_BIN := $(EXAMPLE_SRC:examples/%.c=$(BUILD)/examples/%)
 SECTION_BIN := $(filter $(BUILD)/examples/sec%,$(EXAMPLE_BIN))
@@ -87,10 +89,14 @@ $(BUILD)/test/%: test/%.c $(UNITY_OBJ) $(TEST_SUPPORT_OBJ) $(LIB)
 	    $(UNITY_DEFS) -MMD -MP -MF $(BUILD)/obj/test/$*.d $< $(UNITY_OBJ) $(TEST_SUPPORT_OBJ) \
 	    $(LIB) $(LDLIBS) -o $@
 
-$(BUILD)/examples/%: examples/%.c $(LIB)
+$(BUILD)/obj/examples/support/%.o: examples/support/%.c
+	@mkdir -p $(@D)
+	$(CC) $(WARN) $(OPT) $(SANFLAGS) $(CPPFLAGS) -Iexamples/support $(DEPFLAGS) -c $< -o $@
+
+$(BUILD)/examples/%: examples/%.c $(EXAMPLE_SUPPORT_OBJ) $(LIB)
 	@mkdir -p $(@D) $(BUILD)/obj/examples
-	$(CC) $(WARN) $(OPT) $(SANFLAGS) $(CPPFLAGS) -MMD -MP -MF $(BUILD)/obj/examples/$*.d \
-	    $< $(LIB) $(LDLIBS) -o $@
+	$(CC) $(WARN) $(OPT) $(SANFLAGS) $(CPPFLAGS) -Iexamples/support -MMD -MP \
+	    -MF $(BUILD)/obj/examples/$*.d $< $(EXAMPLE_SUPPORT_OBJ) $(LIB) $(LDLIBS) -o $@
 
 $(BUILD)/bench/%: test/bench/%.c $(LIB)
 	@mkdir -p $(@D) $(BUILD)/obj/bench

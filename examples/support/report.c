@@ -1,0 +1,242 @@
+#include "report.h"
+
+#include <errno.h>
+#include <inttypes.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+const char ex_common_usage[] =
+    "options:\n"
+    "  --n N         number of bins N\n"
+    "  --k K         samples per trial K\n"
+    "  --trials T    trials per measured quantity\n"
+    "  --seed S      PCG32 seed (same seed, same output)\n"
+    "  --csv         one CSV header line, then one row per table row\n"
+    "  --help        this text\n";
+
+const char ex_verdict_rules[] =
+    "columns: closed = the note's closed form; exact = the exact discrete prediction\n"
+    "(mcspec theory); measured +- stderr over the trials; z = (measured - prediction)/stderr.\n"
+    "verdict, computed per row from those numbers:\n"
+    "  holds   |closed - exact| <= 1e-9 relative: the closed form is exact here\n"
+    "  limit   not exact, but an N -> infinity form whose gap to the exact value at\n"
+    "          a larger N is less than half its gap at this N\n"
+    "  fails   gap above 10% relative, |z_closed| > 5 and |z_exact| <= 5: measured\n"
+    "          and exact agree, the closed form does not\n"
+    "  approx  otherwise: an approximation; the gap column states its size\n";
+
+static int parse_u64(const char *s, uint64_t *out)
+{
+    if (s == NULL || *s == '\0' || *s == '-')
+        return 0;
+    char *end = NULL;
+    errno = 0;
+    unsigned long long v = strtoull(s, &end, 10);
+    if (errno != 0 || end == NULL || *end != '\0')
+        return 0;
+    *out = (uint64_t)v;
+    return 1;
+}
+
+static void usage_error(const char *prog, const char *what, const char *arg)
+{
+    fprintf(stderr, "%s: %s%s%s\n\nusage: %s [options]\n%s", prog, what, arg ? ": " : "",
+            arg ? arg : "", prog, ex_common_usage);
+}
+
+int ex_parse_options(int argc, char **argv, ex_options *opt, size_t max_n, const char *help)
+{
+    const char *prog = argc > 0 ? argv[0] : "example";
+    for (int i = 1; i < argc; ++i) {
+        const char *a = argv[i];
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            printf("usage: %s [options]\n\n%s\n%s\n%s", prog, help, ex_common_usage,
+                   ex_verdict_rules);
+            return EX_PARSE_HELP;
+        }
+        if (strcmp(a, "--csv") == 0) {
+            opt->csv = 1;
+            continue;
+        }
+        const char *names[4] = {"--n", "--k", "--trials", "--seed"};
+        int which = -1;
+        const char *val = NULL;
+        for (int w = 0; w < 4 && which < 0; ++w) {
+            size_t len = strlen(names[w]);
+            if (strcmp(a, names[w]) == 0) {
+                which = w;
+                val = (i + 1 < argc) ? argv[++i] : NULL;
+            } else if (strncmp(a, names[w], len) == 0 && a[len] == '=') {
+                which = w;
+                val = a + len + 1;
+            }
+        }
+        if (which < 0) {
+            usage_error(prog, "unknown option", a);
+            return EX_PARSE_ERROR;
+        }
+        uint64_t v = 0;
+        if (!parse_u64(val, &v)) {
+            usage_error(prog, "not a non-negative integer", val ? val : "(missing)");
+            return EX_PARSE_ERROR;
+        }
+        switch (which) {
+        case 0:
+            if (v < 1u || v > max_n) {
+                fprintf(stderr, "%s: --n must be in 1..%zu\n", prog, max_n);
+                usage_error(prog, "bad value for --n", val);
+                return EX_PARSE_ERROR;
+            }
+            opt->n = (size_t)v;
+            break;
+        case 1:
+            if (v < 1u || v > 4096u) {
+                usage_error(prog, "--k must be in 1..4096", val);
+                return EX_PARSE_ERROR;
+            }
+            opt->k = (size_t)v;
+            break;
+        case 2:
+            if (v < 4u || v > 100000000u) {
+                usage_error(prog, "--trials must be in 4..100000000", val);
+                return EX_PARSE_ERROR;
+            }
+            opt->trials = (unsigned long)v;
+            break;
+        default:
+            opt->seed = v;
+            break;
+        }
+    }
+    return EX_PARSE_OK;
+}
+
+double ex_z(double measured, double predicted, double stderr_)
+{
+    if (isnan(measured) || isnan(predicted) || isnan(stderr_))
+        return EX_NA;
+    double d = measured - predicted;
+    if (stderr_ > 0.0)
+        return d / stderr_;
+    /* Deterministic measurement: agreement to rounding is z = 0. */
+    double scale = fabs(measured) + fabs(predicted);
+    if (fabs(d) <= 1e-9 * scale + 1e-300)
+        return 0.0;
+    return d > 0.0 ? INFINITY : -INFINITY;
+}
+
+double ex_rel_gap(double closed_form, double exact, double abs_floor)
+{
+    double scale = fmax(fmax(fabs(closed_form), fabs(exact)), abs_floor);
+    return fabs(closed_form - exact) / scale;
+}
+
+const char *ex_verdict(double closed_form, double exact, double measured, double stderr_,
+                       double gap_larger_n, double abs_floor)
+{
+    double gap = ex_rel_gap(closed_form, exact, abs_floor);
+    if (gap <= EX_EXACT_RTOL)
+        return "holds";
+    if (!isnan(gap_larger_n) && gap_larger_n < 0.5 * gap)
+        return "limit";
+    double zc = ex_z(measured, closed_form, stderr_);
+    double ze = ex_z(measured, exact, stderr_);
+    if (gap > EX_APPROX_RTOL && fabs(zc) > EX_Z_REJECT && fabs(ze) <= EX_Z_REJECT)
+        return "fails";
+    return "approx";
+}
+
+static void csv_double(double v)
+{
+    if (isnan(v))
+        printf(",");
+    else
+        printf(",%.10g", v);
+}
+
+static void csv_freq(long f)
+{
+    if (f < 0)
+        printf(",");
+    else
+        printf(",%ld", f);
+}
+
+void ex_begin(const ex_options *opt, const char *title)
+{
+    if (opt->csv) {
+        printf("section,quantity,equation,pattern,n,k,freq,freq2,closed_form,exact,measured,"
+               "stderr,z_closed,z_exact,verdict\n");
+        return;
+    }
+    printf("%s\n", title);
+    printf("N = %zu bins, K = %zu samples, %lu trials, seed %" PRIu64 "\n\n", opt->n, opt->k,
+           opt->trials, opt->seed);
+    printf("%-30s %-8s %-11s %-7s %12s %12s %12s %10s %8s %8s %8s  %s\n", "quantity", "eq.",
+           "pattern", "freq", "closed", "exact", "measured", "stderr", "z_closed", "z_exact",
+           "gap", "verdict");
+}
+
+static void table_double(double v, int width, int prec)
+{
+    if (isnan(v))
+        printf(" %*s", width, "-");
+    else if (isinf(v))
+        printf(" %*s", width, v > 0 ? "+inf" : "-inf");
+    else
+        printf(" %*.*g", width, prec, v);
+}
+
+void ex_row_print(const ex_options *opt, const ex_row *row)
+{
+    double zc = ex_z(row->measured, row->closed_form, row->stderr_);
+    double ze = ex_z(row->measured, row->exact, row->stderr_);
+    double floor_ = row->abs_floor > 0.0 ? row->abs_floor : 1e-300;
+    int comparable = !isnan(row->closed_form) && !isnan(row->exact);
+    double gap = comparable ? ex_rel_gap(row->closed_form, row->exact, floor_) : EX_NA;
+    const char *verdict = comparable ? ex_verdict(row->closed_form, row->exact, row->measured,
+                                                  row->stderr_, row->limit_gap, floor_)
+                                     : "";
+    if (opt->csv) {
+        printf("%s,%s,%s,%s,%zu,%zu", row->section, row->quantity, row->equation, row->pattern,
+               opt->n, opt->k);
+        csv_freq(row->freq);
+        csv_freq(row->freq2);
+        csv_double(row->closed_form);
+        csv_double(row->exact);
+        csv_double(row->measured);
+        csv_double(row->stderr_);
+        csv_double(isinf(zc) ? EX_NA : zc);
+        csv_double(isinf(ze) ? EX_NA : ze);
+        printf(",%s\n", verdict);
+        return;
+    }
+    char freq[48] = "-";
+    if (row->freq >= 0 && row->freq2 >= 0)
+        snprintf(freq, sizeof freq, "%ld,%ld", row->freq, row->freq2);
+    else if (row->freq >= 0)
+        snprintf(freq, sizeof freq, "%ld", row->freq);
+    printf("%-30s %-8s %-11s %-7s", row->quantity, row->equation, row->pattern, freq);
+    table_double(row->closed_form, 12, 6);
+    table_double(row->exact, 12, 6);
+    table_double(row->measured, 12, 6);
+    table_double(row->stderr_, 10, 3);
+    table_double(zc, 8, 3);
+    table_double(ze, 8, 3);
+    table_double(gap, 8, 2);
+    printf("  %s\n", verdict);
+}
+
+void ex_heading(const ex_options *opt, const char *text)
+{
+    if (!opt->csv)
+        printf("\n-- %s\n", text);
+}
+
+void ex_note(const ex_options *opt, const char *text)
+{
+    if (!opt->csv)
+        printf("%s\n", text);
+}

@@ -1,0 +1,88 @@
+/* Shared by the section examples: command-line options, the verdict rule,
+ * and one row format printed either as an aligned table or as CSV. */
+#ifndef MCSPEC_EXAMPLE_REPORT_H
+#define MCSPEC_EXAMPLE_REPORT_H
+
+#include <math.h>
+#include <stddef.h>
+#include <stdint.h>
+
+typedef struct {
+    size_t n;              /* bins N */
+    size_t k;              /* samples per trial K */
+    unsigned long trials;  /* trials per measured quantity */
+    uint64_t seed;         /* PCG32 initstate; the stream is fixed */
+    int csv;               /* print CSV instead of a table */
+} ex_options;
+
+enum { EX_PARSE_OK = 0, EX_PARSE_HELP = 1, EX_PARSE_ERROR = 2 };
+
+/* Parses --n N, --k K, --trials T, --seed S, --csv, --help (also --opt=V).
+ * *opt holds the defaults on entry. max_n bounds --n. On --help prints
+ * `help` to stdout and returns EX_PARSE_HELP; on a bad option prints the
+ * problem and the usage to stderr and returns EX_PARSE_ERROR. */
+int ex_parse_options(int argc, char **argv, ex_options *opt, size_t max_n, const char *help);
+
+/* Text every --help shows after the example's own description. */
+extern const char ex_verdict_rules[];
+extern const char ex_common_usage[];
+
+/* Field that does not apply: EX_NA for a double, EX_NO_FREQ for a frequency. */
+#define EX_NA ((double)NAN)
+#define EX_NO_FREQ (-1L)
+
+typedef struct {
+    const char *section;  /* "sec1" ... */
+    const char *quantity; /* short name, no commas */
+    const char *equation; /* "eq. 23" or "23"; no commas */
+    const char *pattern;  /* pattern kind name, or "" */
+    long freq, freq2;     /* frequency indices or EX_NO_FREQ */
+    double closed_form;   /* the note's closed form, or EX_NA */
+    double exact;         /* exact discrete prediction, or EX_NA */
+    double measured;      /* measured value, or EX_NA */
+    double stderr_;       /* its standard error (0 for a deterministic value) */
+    double limit_gap;     /* for an N -> infinity form: its relative gap to the exact
+                             value at a larger N; EX_NA otherwise */
+    double abs_floor;     /* scale below which a difference counts as zero (e.g. 1e-12 K/N);
+                             0 means 1e-300 */
+} ex_row;
+
+/* Relative gap below which a closed form counts as equal to the exact value. */
+#define EX_EXACT_RTOL 1e-9
+/* Relative gap up to which a closed form that is not exact is "approx". */
+#define EX_APPROX_RTOL 0.10
+/* |z| above which a measurement refutes a prediction. */
+#define EX_Z_REJECT 5.0
+
+/* (measured - predicted) / stderr; EX_NA if either is missing; if stderr is
+ * 0 it is +-inf or 0 by the sign of the difference (deterministic values). */
+double ex_z(double measured, double predicted, double stderr_);
+
+/* Relative gap |closed - exact| / max(|closed|, |exact|, abs_floor). */
+double ex_rel_gap(double closed_form, double exact, double abs_floor);
+
+/* The verdict rule (printed by --help in ex_verdict_rules):
+ *   holds  : rel_gap(closed, exact) <= EX_EXACT_RTOL;
+ *   limit  : not holds, the closed form is an N -> infinity form, and its gap
+ *            to the exact value at a larger N (gap_larger_n, computed by the
+ *            caller from exact values) is below half the gap at this N;
+ *   fails  : not holds, not limit, the rel gap exceeds EX_APPROX_RTOL and the
+ *            measurement refutes the closed form (|z_closed| > EX_Z_REJECT)
+ *            while agreeing with the exact value (|z_exact| <= EX_Z_REJECT);
+ *   approx : otherwise.
+ * gap_larger_n: EX_NA if the form is not a limit form. abs_floor: the scale
+ * below which a difference counts as zero (e.g. K/N * 1e-12). */
+const char *ex_verdict(double closed_form, double exact, double measured, double stderr_,
+                       double gap_larger_n, double abs_floor);
+
+/* Starts output: the CSV header, or a title and the table header. */
+void ex_begin(const ex_options *opt, const char *title);
+/* One row, in the chosen format; the verdict is computed by ex_verdict from
+ * the row's numbers (empty when closed_form or exact is EX_NA). */
+void ex_row_print(const ex_options *opt, const ex_row *row);
+/* A sub-heading in table mode (ignored in CSV mode). */
+void ex_heading(const ex_options *opt, const char *text);
+/* A free-text line in table mode (ignored in CSV mode). */
+void ex_note(const ex_options *opt, const char *text);
+
+#endif /* MCSPEC_EXAMPLE_REPORT_H */
