@@ -1,0 +1,143 @@
+# Checks that prove the embedded claims (included by the Makefile). Each
+# target builds in its own directory under build/, so they can run beside
+# the ordinary build. See docs/embedded.md.
+#
+#   make check-alloc   nm allow-list on $(LIB), then tests and examples with
+#                      allocator calls from library code counted (must be 0)
+#   make cross         library for Cortex-M4F, Cortex-M7 (DP FPU), RV64
+#                      (compile only) with the same allow-list, and the
+#                      Cortex-M firmware images with their sizes
+#   make memcheck      the tests under valgrind, no errors allowed
+#   make stack         -fstack-usage report; fails above STACK_LIMIT bytes
+#   make lint          cppcheck, clang-tidy, header self-containment
+#   make embedded-checks   all of the above but memcheck
+#   (make test SAN=1 is the Makefile's own: tests under ASan + UBSan)
+
+.PHONY: check-alloc check-alloc-nm check-alloc-runtime cross cross-m4 cross-m7 cross-rv \
+        firmware memcheck stack lint cppcheck clang-tidy check-headers embedded-checks
+
+EMB_NM      ?= nm
+EMB_OBJCOPY ?= objcopy
+EMB_TOOLS_CFLAGS := -std=c11 -O2 -Wall -Wextra -Werror
+
+embedded-checks: check-alloc cross stack lint
+
+# ---------------------------------------------------------------- check-alloc
+ALLOC_BUILD := build/alloc
+ALLOC_SHIM  := $(ALLOC_BUILD)/tools/malloc_count.o
+ALLOC_LOG   := $(ALLOC_BUILD)/malloc_count.log
+ALLOC_TESTS := $(TEST_SRC:test/%.c=$(ALLOC_BUILD)/test/%)
+ALLOC_EXAMPLES := $(EXAMPLE_SRC:examples/%.c=$(ALLOC_BUILD)/examples/%)
+
+check-alloc: check-alloc-nm check-alloc-runtime
+
+check-alloc-nm: $(LIB)
+	@sh tools/check_alloc.sh -n $(EMB_NM) $(LIB)
+
+# The runtime build archives the library with tools/ar_counted.sh, which
+# renames the library's allocator references to the counters of
+# tools/malloc_count.c; every test and example links that object.
+check-alloc-runtime:
+	@$(MAKE) --no-print-directory BUILD=$(ALLOC_BUILD) AR='sh tools/ar_counted.sh' \
+	    LDLIBS='$(ALLOC_SHIM) -lm' SAN= tests examples
+	@rm -f $(ALLOC_LOG)
+	@rc=0; \
+	MCS_MALLOC_LOG=$(ALLOC_LOG) sh test/run_tests.sh $(ALLOC_TESTS) >$(ALLOC_BUILD)/tests.out 2>&1 || \
+	    { rc=1; cat $(ALLOC_BUILD)/tests.out; echo "check-alloc: tests failed in the counting build"; }; \
+	tail -n 1 $(ALLOC_BUILD)/tests.out; \
+	for b in $(ALLOC_EXAMPLES); do \
+	    MCS_MALLOC_LOG=$(ALLOC_LOG) $$b >$$b.out 2>&1 || \
+	        { rc=1; cat $$b.out; echo "check-alloc: $$b failed in the counting build"; }; \
+	done; \
+	awk -v want=$(words $(ALLOC_TESTS) $(ALLOC_EXAMPLES)) \
+	    '{ n++; s += $$1; if ($$1 > 0) print "check-alloc FAILED: " $$2 ": " $$1 " allocator call(s) from library code" } \
+	     END { if (n != want) { printf "check-alloc FAILED: %d of %d programs reported a count\n", n, want; exit 1 } \
+	           if (s > 0) exit 1; \
+	           printf "check-alloc OK at run time: %d tests and examples, 0 allocator calls from library code\n", n }' \
+	    $(ALLOC_LOG) || rc=1; \
+	exit $$rc
+
+ifeq ($(BUILD),$(ALLOC_BUILD))
+$(TEST_BIN) $(EXAMPLE_BIN): $(ALLOC_SHIM) tools/ar_counted.sh
+endif
+
+$(ALLOC_SHIM): tools/malloc_count.c
+	@mkdir -p $(@D)
+	$(CC) $(EMB_TOOLS_CFLAGS) -c $< -o $@
+
+# -------------------------------------------------------------------- memcheck
+MEMCHECK_BUILD := build/memcheck
+MEMCHECK_TESTS := $(TEST_SRC:test/%.c=$(MEMCHECK_BUILD)/test/%)
+VALGRIND_FLAGS := -q --error-exitcode=99 --leak-check=full --errors-for-leak-kinds=definite,indirect \
+                  --track-origins=yes
+
+# Each test runs through a one-line wrapper so that test/run_tests.sh still
+# sums the Unity results; valgrind's exit status 99 marks any memory error.
+memcheck:
+	@command -v valgrind >/dev/null || { echo "memcheck: valgrind not installed"; exit 1; }
+	@$(MAKE) --no-print-directory BUILD=$(MEMCHECK_BUILD) SAN= OPT='-O1 -g' tests
+	@mkdir -p $(MEMCHECK_BUILD)/vg
+	@set -e; for t in $(MEMCHECK_TESTS); do \
+	    w=$(MEMCHECK_BUILD)/vg/$${t##*/}; \
+	    printf '#!/bin/sh\nexec valgrind %s %s "$$@"\n' '$(VALGRIND_FLAGS)' "$$t" >$$w; chmod +x $$w; \
+	done
+	@sh test/run_tests.sh $(MEMCHECK_TESTS:$(MEMCHECK_BUILD)/test/%=$(MEMCHECK_BUILD)/vg/%)
+
+# ----------------------------------------------------------------------- stack
+STACK_BUILD := build/stack
+STACK_LIMIT ?= 1024
+STACK_DEPTH ?= 8
+STACK_FLAGS := -fstack-usage -fcallgraph-info=su -Wstack-usage=$(STACK_LIMIT) -Walloca -Wvla
+STACK_OBJ   := $(LIB_SRC:%.c=$(STACK_BUILD)/obj/%.o) $(KISS_SRC:%.c=$(STACK_BUILD)/obj/%.o)
+
+stack: $(STACK_OBJ)
+	@sh tools/stack_report.sh -l $(STACK_LIMIT) -d $(STACK_DEPTH) $(STACK_BUILD)/obj
+
+# Same flags as the library build; -Wstack-usage and -Walloca are errors in our
+# code and warnings in the vendored code (the report still fails on its frames).
+$(STACK_BUILD)/obj/src/vendor/%.o: src/vendor/%.c
+	@mkdir -p $(@D)
+	$(CC) $(VENDOR_WARN) $(OPT) $(STACK_FLAGS) $(KISS_DEFS) -MMD -MP -c $< -o $@
+
+$(STACK_BUILD)/obj/src/%.o: src/%.c
+	@mkdir -p $(@D)
+	$(CC) $(WARN) $(OPT) $(STACK_FLAGS) $(CPPFLAGS) -isystem src/vendor/kissfft $(KISS_DEFS) \
+	    -MMD -MP -c $< -o $@
+
+-include $(wildcard $(STACK_BUILD)/obj/src/*.d $(STACK_BUILD)/obj/src/vendor/kissfft/*.d)
+
+# ------------------------------------------------------------------------ lint
+# Our sources and public headers only; the vendored code stays as shipped.
+LINT_SRC     := $(filter-out src/vendor/%,$(LIB_SRC))
+LINT_HEADERS := $(wildcard include/*.h include/mcspec/*.h)
+CLANG_TIDY   ?= $(shell command -v clang-tidy || command -v clang-tidy-14)
+CPPCHECK     ?= cppcheck
+LINT_BUILD   := build/lint
+
+lint: check-headers cppcheck clang-tidy
+
+# cppcheck's exit code is 1 on any finding; --inline-suppr honours
+# "// cppcheck-suppress <id>" comments, each of which carries its reason.
+cppcheck:
+	$(CPPCHECK) --quiet --std=c11 --enable=warning,performance,portability --inline-suppr \
+	    --error-exitcode=1 -Iinclude -Isrc -Isrc/vendor/kissfft -Dkiss_fft_scalar=double -DNDEBUG \
+	    -i src/vendor --suppress='*:src/vendor/*' --suppress=missingIncludeSystem \
+	    $(LINT_SRC) $(LINT_HEADERS)
+
+# .clang-tidy holds the checks; WarningsAsErrors makes any finding fatal.
+clang-tidy:
+	@test -n "$(CLANG_TIDY)" || { echo "clang-tidy not installed"; exit 1; }
+	$(CLANG_TIDY) --quiet $(LINT_SRC) -- $(filter-out -Werror,$(WARN)) $(CPPFLAGS) \
+	    -isystem src/vendor/kissfft $(KISS_DEFS)
+
+# Every public header compiles on its own, as C11 and as C++.
+check-headers:
+	@mkdir -p $(LINT_BUILD)
+	@set -e; for h in $(LINT_HEADERS); do \
+	    inc=$${h#include/}; \
+	    printf '#include "%s"\n#include "%s"\ntypedef int mcs_header_check;\n' "$$inc" "$$inc" | \
+	        $(CC) $(WARN) $(CPPFLAGS) -x c -fsyntax-only - || { echo "check-headers: $$h (C)"; exit 1; }; \
+	    printf '#include "%s"\n' "$$inc" | \
+	        $(CXX) -std=c++11 -Wall -Wextra -Werror -pedantic $(CPPFLAGS) -x c++ -fsyntax-only - || \
+	        { echo "check-headers: $$h (C++)"; exit 1; }; \
+	done; echo "check-headers OK: $(words $(LINT_HEADERS)) headers self-contained in C11 and C++11"
