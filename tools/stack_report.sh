@@ -1,13 +1,14 @@
 #!/bin/sh
 # Stack report for the library (make stack).
 #
-#   tools/stack_report.sh [-l LIMIT] [-d DEPTH] [-n N] [-p PUBLIC_HEADERS_DIR] DIR
+#   tools/stack_report.sh [-l LIMIT] [-d DEPTH] [-n N] [-p PUBLIC_HEADERS_DIR] [-e ROOTS] DIR
 #
 # Reads every .su (gcc -fstack-usage) and .ci (gcc -fcallgraph-info=su) file
 # under DIR. Prints the largest frames and, for every public function (a name
 # declared in the headers under PUBLIC_HEADERS_DIR, default include/mcspec),
 # the deepest static call chain: its own frame plus the worst chain of its
-# callees, summed along the call graph of all library objects.
+# callees, summed along the call graph of all library objects. -e adds
+# comma-separated extra roots (e.g. Reset_Handler for a firmware image).
 # - Calls to functions outside the library (libm, memset) add nothing: their
 #   stack is the C library's, outside this check; they are listed as "+ext".
 # - Calls through a function pointer (a caller's integrand) are not followed.
@@ -21,17 +22,19 @@ LIMIT=1024
 DEPTH=8
 TOP=8
 HDRS=include/mcspec
-while getopts l:d:n:p: opt; do
+ROOTS=
+while getopts l:d:n:p:e: opt; do
     case $opt in
     l) LIMIT=$OPTARG ;;
     d) DEPTH=$OPTARG ;;
     n) TOP=$OPTARG ;;
     p) HDRS=$OPTARG ;;
-    *) echo "usage: $0 [-l limit] [-d depth] [-n top] [-p headers-dir] dir" >&2; exit 2 ;;
+    e) ROOTS=$OPTARG ;;
+    *) echo "usage: $0 [-l limit] [-d depth] [-n top] [-p headers-dir] [-e roots] dir" >&2; exit 2 ;;
     esac
 done
 shift $((OPTIND - 1))
-[ $# -eq 1 ] || { echo "usage: $0 [-l limit] [-d depth] [-n top] [-p headers-dir] dir" >&2; exit 2; }
+[ $# -eq 1 ] || { echo "usage: $0 [-l limit] [-d depth] [-n top] [-p headers-dir] [-e roots] dir" >&2; exit 2; }
 dir=$1
 
 su_files=$(find "$dir" -name '*.su' | sort)
@@ -44,6 +47,7 @@ trap 'rm -rf "$tmp"' EXIT INT TERM
 # Public names: every mcs_xxx( in the public headers.
 grep -ho 'mcs_[a-z0-9_]*[[:space:]]*(' "$HDRS"/*.h 2>/dev/null | sed 's/[[:space:]]*($//' |
     sort -u >"$tmp/public"
+[ -z "$ROOTS" ] || echo "$ROOTS" | tr ',' '\n' >>"$tmp/public"
 
 # Frames: "bytes qualifiers function file:line".
 # shellcheck disable=SC2086 # file list
