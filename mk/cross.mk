@@ -1,0 +1,107 @@
+# Cross builds (included by the Makefile; see docs/embedded.md).
+#
+#   make cross      cross-m4 cross-m7 cross-rv
+#   make cross-m4   libmcspec.a for Cortex-M4F (single-precision FPU: doubles in
+#                   software), the nm allow-list on it, and the firmware image
+#                   of examples/firmware with its arm-none-eabi-size
+#   make cross-m7   the same for Cortex-M7 with the double-precision FPU
+#   make cross-rv   every library source compiled for RV64 with
+#                   riscv64-unknown-elf-gcc -ffreestanding (that toolchain has
+#                   no C library: tools/freestanding stands in for the four
+#                   headers the sources include), and the allow-list on it
+#
+# The libraries are built at the default capacities; the firmware links its
+# own copy built with FW_DEFS (-DMCS_MAX_N=256) so that its static
+# mcs_spectrum fits a small part's RAM.
+
+.PHONY: cross cross-m4 cross-m7 cross-rv sizes
+
+ARM_PREFIX ?= arm-none-eabi-
+RV_PREFIX  ?= riscv64-unknown-elf-
+CROSS_OPT  ?= -O2 -g
+FW_OPT     ?= -Os -g
+FW_DEFS    ?= -DMCS_MAX_N=256
+CROSS_COMMON := -ffreestanding -ffunction-sections -fdata-sections
+M4_ARCH := -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16
+M7_ARCH := -mcpu=cortex-m7 -mthumb -mfloat-abi=hard -mfpu=fpv5-d16
+RV_ARCH := -march=rv64imafdc -mabi=lp64d -mcmodel=medany
+# Names that must not appear in a firmware image: the heap, stdio, exit paths.
+FW_FORBIDDEN := malloc|_malloc_r|calloc|_calloc_r|realloc|_realloc_r|free|_free_r|_sbrk|_sbrk_r|\
+                abort|exit|_exit|atexit|__call_exitprocs|printf|_printf_r|puts|_puts_r|\
+                fprintf|_fprintf_r|__sinit|__sfp|_vfprintf_r|_svfprintf_r
+
+cross: cross-m4 cross-m7 cross-rv sizes
+
+# A library build in directory $(1) with compiler prefix $(2) and flags $(3).
+# Vendored code keeps its own warnings, but an undeclared function is an error
+# there too (with tools/freestanding that is how a stray malloc shows up).
+define MCS_CROSS_LIB
+$(1)/obj/src/vendor/%.o: src/vendor/%.c
+	@mkdir -p $$(@D)
+	$(2)gcc $$(VENDOR_WARN) -Werror=implicit-function-declaration $(3) $$(KISS_DEFS) \
+	    -MMD -MP -c $$< -o $$@
+
+$(1)/obj/src/%.o: src/%.c
+	@mkdir -p $$(@D)
+	$(2)gcc $$(WARN) $(3) $$(CPPFLAGS) -isystem src/vendor/kissfft $$(KISS_DEFS) \
+	    -MMD -MP -c $$< -o $$@
+
+$(1)/libmcspec.a: $$(LIB_SRC:%.c=$(1)/obj/%.o) $$(KISS_SRC:%.c=$(1)/obj/%.o)
+	@rm -f $$@
+	$(2)ar rcs $$@ $$^
+
+-include $$(wildcard $(1)/obj/src/*.d $(1)/obj/src/vendor/kissfft/*.d)
+endef
+
+# A Cortex-M target $(1) (m4, m7) with arch flags $(2): library, firmware, checks.
+define MCS_CORTEX_M
+$(call MCS_CROSS_LIB,build/cross-$(1),$(ARM_PREFIX),$(2) $(CROSS_COMMON) $(CROSS_OPT))
+$(call MCS_CROSS_LIB,build/cross-$(1)/fw,$(ARM_PREFIX),$(2) $(CROSS_COMMON) $(FW_OPT) $(FW_DEFS) -fstack-usage -fcallgraph-info=su)
+
+build/cross-$(1)/fw/obj/examples/firmware/%.o: examples/firmware/%.c
+	@mkdir -p $$(@D)
+	$(ARM_PREFIX)gcc $$(WARN) $(2) $(CROSS_COMMON) $(FW_OPT) $(FW_DEFS) -fstack-usage \
+	    -fcallgraph-info=su $$(CPPFLAGS) -MMD -MP -c $$< -o $$@
+
+-include $$(wildcard build/cross-$(1)/fw/obj/examples/firmware/*.d)
+
+# Our own startup replaces crt0 (-nostartfiles); nano.specs and nosys.specs
+# give newlib-nano's libc and libm and stub syscalls. The linker script has no
+# heap, so anything that reached malloc would not link.
+build/cross-$(1)/fw/firmware.elf: build/cross-$(1)/fw/obj/examples/firmware/main.o \
+        build/cross-$(1)/fw/obj/examples/firmware/startup.o build/cross-$(1)/fw/libmcspec.a \
+        examples/firmware/$(1).ld examples/firmware/sections.ld
+	$(ARM_PREFIX)gcc $(2) --specs=nano.specs --specs=nosys.specs -nostartfiles \
+	    -Wl,--gc-sections -Wl,-Map=build/cross-$(1)/fw/firmware.map -Lexamples/firmware \
+	    -T $(1).ld $$(filter %.o,$$^) build/cross-$(1)/fw/libmcspec.a -lm -o $$@
+
+cross-$(1): build/cross-$(1)/libmcspec.a build/cross-$(1)/fw/firmware.elf
+	@sh tools/check_alloc.sh -n $(ARM_PREFIX)nm -l "Cortex-$(1) libmcspec.a ($(2))" \
+	    -r "$$$$($(ARM_PREFIX)gcc $(2) -print-libgcc-file-name)" build/cross-$(1)/libmcspec.a
+	@bad=$$$$($(ARM_PREFIX)nm build/cross-$(1)/fw/firmware.elf | \
+	    grep -E ' ($(strip $(FW_FORBIDDEN)))$$$$' || true); \
+	if [ -n "$$$$bad" ]; then echo "cross-$(1): firmware image contains:"; echo "$$$$bad"; exit 1; fi; \
+	echo "cross-$(1): firmware image has no heap, stdio or exit symbols"
+	@echo "cross-$(1): arm-none-eabi-size build/cross-$(1)/fw/firmware.elf" \
+	    "(flash = text + data; RAM = data + bss, bss including the 8 KiB stack reservation)"
+	@$(ARM_PREFIX)size build/cross-$(1)/fw/firmware.elf
+	@echo "cross-$(1): firmware stack (Reset_Handler > main > library; 8 KiB reserved):"
+	@sh tools/stack_report.sh -n 3 -e Reset_Handler build/cross-$(1)/fw/obj | sed -n '/Deepest static/,$$$$p'
+endef
+
+$(eval $(call MCS_CORTEX_M,m4,$(M4_ARCH)))
+$(eval $(call MCS_CORTEX_M,m7,$(M7_ARCH)))
+$(eval $(call MCS_CROSS_LIB,build/rv,$(RV_PREFIX),$(RV_ARCH) $(CROSS_COMMON) $(CROSS_OPT) -isystem tools/freestanding))
+
+cross-rv: build/rv/libmcspec.a
+	@sh tools/check_alloc.sh -n $(RV_PREFIX)nm -l "RV64 libmcspec.a ($(RV_ARCH), compile only)" \
+	    -r "$$($(RV_PREFIX)gcc $(RV_ARCH) -print-libgcc-file-name)" build/rv/libmcspec.a
+
+# sizeof each public struct: on the host, on Cortex-M (32-bit size_t) at the
+# default capacities, at the firmware's, and at a small configuration.
+sizes:
+	@echo "sizeof, bytes (tools/sizes.sh):"
+	@sh tools/sizes.sh build/sizes "x86-64|$(CC)|$(EMB_NM)|" \
+	    "Cortex-M|$(ARM_PREFIX)gcc|$(ARM_PREFIX)nm|$(M4_ARCH)" \
+	    "Cortex-M -DMCS_MAX_N=256|$(ARM_PREFIX)gcc|$(ARM_PREFIX)nm|$(M4_ARCH) -DMCS_MAX_N=256" \
+	    "Cortex-M -DMCS_MAX_N=64 -DMCS_MAX_COV_N=16|$(ARM_PREFIX)gcc|$(ARM_PREFIX)nm|$(M4_ARCH) -DMCS_MAX_N=64 -DMCS_MAX_COV_N=16"
