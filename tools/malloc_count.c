@@ -12,7 +12,7 @@
  * line per program: "<count> <program>"), and a program whose library code
  * allocated reports it on stderr and exits with status 70, so a test runner
  * or the make recipe fails even without reading the log. */
-#define _GNU_SOURCE 1
+#define _GNU_SOURCE 1 /* NOLINT(bugprone-reserved-identifier,cert-dcl37-c,cert-dcl51-cpp): feature macro for strndup, readlink */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -45,7 +45,9 @@ void *mcs_count_realloc(void *p, size_t n) { count("realloc"); return realloc(p,
 void *mcs_count_reallocarray(void *p, size_t m, size_t n)
 {
     count("reallocarray");
-    return m != 0u && n > (size_t)-1 / m ? NULL : realloc(p, m * n);
+    if (m != 0u && n > (size_t)-1 / m)
+        return NULL;
+    return realloc(p, m * n != 0u ? m * n : 1u);
 }
 void mcs_count_free(void *p) { count("free"); free(p); }
 void *mcs_count_aligned_alloc(size_t a, size_t n) { count("aligned_alloc"); return aligned_alloc(a, n); }
@@ -85,15 +87,15 @@ __attribute__((destructor)) static void mcs_count_report(void)
     if (log != NULL && log[0] != '\0') {
         FILE *f = fopen(log, "a");
         if (f != NULL) {
-            fprintf(f, "%lu %s\n", lib_calls, program_name());
-            fclose(f);
+            (void)fprintf(f, "%lu %s\n", lib_calls, program_name());
+            (void)fclose(f);
         }
     }
     if (lib_calls != 0u) {
-        fflush(NULL); /* _exit below skips the stdio flush; keep the program's output */
-        fprintf(stderr, "malloc_count: library code made %lu allocator call(s), the first to %s\n",
+        (void)fflush(NULL); /* _exit below skips the stdio flush; keep the program's output */
+        (void)fprintf(stderr, "malloc_count: library code made %lu allocator call(s), the first to %s\n",
                 lib_calls, first_name);
-        fflush(stderr);
+        (void)fflush(stderr);
         _exit(70);
     }
 }
