@@ -107,8 +107,10 @@ $(STACK_BUILD)/obj/src/%.o: src/%.c
 -include $(wildcard $(STACK_BUILD)/obj/src/*.d $(STACK_BUILD)/obj/src/vendor/kissfft/*.d)
 
 # ------------------------------------------------------------------------ lint
-# Our sources and public headers only; the vendored code stays as shipped.
-LINT_SRC     := $(filter-out src/vendor/%,$(LIB_SRC))
+# Our sources and public headers, plus the firmware and the counting shim;
+# the vendored code stays as shipped.
+LINT_SRC     := $(filter-out src/vendor/%,$(LIB_SRC)) $(wildcard examples/firmware/*.c) \
+                tools/malloc_count.c
 LINT_HEADERS := $(wildcard include/*.h include/mcspec/*.h)
 CLANG_TIDY   ?= $(shell command -v clang-tidy || command -v clang-tidy-14)
 CPPCHECK     ?= cppcheck
