@@ -7,8 +7,8 @@
 # under DIR. Prints the largest frames and, for every public function (a name
 # declared in the headers under PUBLIC_HEADERS_DIR, default include/mcspec),
 # the deepest static call chain: its own frame plus the worst chain of its
-# callees, summed along the call graph of all library objects. -e adds
-# comma-separated extra roots (e.g. Reset_Handler for a firmware image).
+# callees, summed along the call graph of all library objects. -e names the
+# roots instead (comma-separated, e.g. Reset_Handler for a firmware image).
 # - Calls to functions outside the library (libm, memset) add nothing: their
 #   stack is the C library's, outside this check; they are listed as "+ext".
 # - Calls through a function pointer (a caller's integrand) are not followed.
@@ -44,10 +44,13 @@ ci_files=$(find "$dir" -name '*.ci' | sort)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT INT TERM
 
-# Public names: every mcs_xxx( in the public headers.
-grep -ho 'mcs_[a-z0-9_]*[[:space:]]*(' "$HDRS"/*.h 2>/dev/null | sed 's/[[:space:]]*($//' |
-    sort -u >"$tmp/public"
-[ -z "$ROOTS" ] || echo "$ROOTS" | tr ',' '\n' >>"$tmp/public"
+# Roots: every mcs_xxx( in the public headers, or the -e list.
+if [ -n "$ROOTS" ]; then
+    echo "$ROOTS" | tr ',' '\n' >"$tmp/public"
+else
+    grep -ho 'mcs_[a-z0-9_]*[[:space:]]*(' "$HDRS"/*.h 2>/dev/null | sed 's/[[:space:]]*($//' |
+        sort -u >"$tmp/public"
+fi
 
 # Frames: "bytes qualifiers function file:line".
 # shellcheck disable=SC2086 # file list
