@@ -56,24 +56,35 @@ mcs_status mcs_pattern_init(mcs_pattern *pat, mcs_pattern_kind kind, size_t n, s
     return MCS_OK;
 }
 
-/* (j + v)/K, kept below 1 when rounding would reach it. */
-static double stratum_point(size_t j, double v, double inv_k)
+/* (j + v)/K by one correctly rounded division, kept below 1 when rounding
+ * would reach it. */
+static double stratum_point(size_t j, double v, size_t k)
 {
-    double u = ((double)j + v) * inv_k;
+    double u = ((double)j + v) / (double)k;
     return u < 1.0 ? u : nextafter(1.0, 0.0);
 }
 
-/* Canonical u -> (bin, weight, x), through the importance warp if any. */
-static void place(const mcs_pattern *pat, double u, size_t *bin, double *weight, double *x)
+/* Canonical u -> (bin, weight, x), through the importance warp if any.
+ * Without importance the bin is floor(t), t = u N given exactly where
+ * possible: the uniform pattern with N/K even puts every u_j on a bin edge,
+ * and u rounded then times N can land just below it (N = 24, K = 6 gave bin
+ * 13 for u_3 = 7/12); t = (j + v) N / K is one rounding from exact, which
+ * cannot cross an integer. */
+static void place(const mcs_pattern *pat, double u, double t, size_t *bin, double *weight,
+                  double *x)
 {
     if (pat->importance != NULL) {
         mcs_importance_warp_unchecked(pat->importance, u, x, bin);
         *weight = 1.0 / pat->importance->p[*bin];
     } else {
-        size_t b = (size_t)(u * (double)pat->n);
-        *bin = b < pat->n ? b : pat->n - 1u;
+        size_t b = (size_t)t;
+        b = b < pat->n ? b : pat->n - 1u;
+        *bin = b;
         *weight = 1.0;
-        *x = u;
+        double frac = t - (double)b;
+        *x = (size_t)(u * (double)pat->n) == b
+                 ? u
+                 : mcs_point_in_bin(pat->n, b, frac < 1.0 ? frac : nextafter(1.0, 0.0));
     }
 }
 
@@ -90,27 +101,31 @@ mcs_status mcs_pattern_draw(const mcs_pattern *pat, mcs_rng *rng, size_t k, size
     if (k != pat->k)
         return MCS_ERR_MISMATCH;
 
-    const double inv_k = 1.0 / (double)k;
+    const double nd = (double)pat->n, kd = (double)k;
     double beta = 0.5;
     if (pat->kind == MCS_PATTERN_JITTER)
         beta = mcs_rng_double_(rng);
 
     for (size_t j = 0; j < k; ++j) {
-        double u;
+        double u, t, v;
         switch (pat->kind) {
         case MCS_PATTERN_RANDOM:
             u = mcs_rng_double_(rng);
+            t = u * nd;
             break;
         case MCS_PATTERN_STRATIFIED:
         case MCS_PATTERN_HOMOGENIZED:
-            u = stratum_point(j, mcs_rng_double_(rng), inv_k);
+            v = mcs_rng_double_(rng);
+            u = stratum_point(j, v, k);
+            t = ((double)j + v) * nd / kd;
             break;
         default: /* uniform (beta = 1/2) and jitter (one beta per trial) */
-            u = stratum_point(j, beta, inv_k);
+            u = stratum_point(j, beta, k);
+            t = ((double)j + beta) * nd / kd;
             break;
         }
         double x;
-        place(pat, u, &bins[j], &weights[j], &x);
+        place(pat, u, t, &bins[j], &weights[j], &x);
         if (points != NULL)
             points[j] = x;
     }
