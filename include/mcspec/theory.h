@@ -24,10 +24,11 @@
  *      Strata need not line up with bins (K not dividing N, or importance).
  *    - homogenized: the stratified moments averaged over the N cyclic
  *      whole-bin shifts the generator draws uniformly from [0, N).
- *    - uniform: deterministic. u_j is computed with the generator's own
- *      floating-point arithmetic and binned by the generator's own rule, so a
- *      u_j that falls exactly on a bin edge lands where mcs_pattern_draw puts
- *      it (for a deterministic pattern that is not a measure-zero event).
+ *    - uniform: deterministic. u_j is binned by the generator's own
+ *      arithmetic, so a u_j exactly on a bin edge (every u_j when N/K is
+ *      even: not a measure-zero event for a deterministic pattern) lands
+ *      where mcs_pattern_draw puts it: without importance that is the exact
+ *      floor((2j + 1) N / (2K)).
  *    - jitter (also warped by importance, which the note leaves open): the
  *      count of samples in bin n as a function of the shared beta is
  *      r_n(beta) = ceil(B_n - beta) - ceil(A_n - beta), a step function with
@@ -67,7 +68,7 @@ extern "C" {
 
 /* Exact first and second moments of one pattern. Caller-owned (static,
  * stack or arena); filled by mcs_theory_init. sizeof(mcs_theory) at the
- * default MCS_MAX_COV_N = 64 is 34,848 bytes on LP64 (the N x N second
+ * default MCS_MAX_COV_N = 64 is 34,336 bytes on LP64 (the N x N second
  * moment is 32 KiB of it). */
 typedef struct {
     mcs_pattern_kind kind; /* pattern kind the moments are for */
