@@ -13,11 +13,10 @@
 #   make embedded-checks   all of the above but memcheck
 #   (make test SAN=1 is the Makefile's own: tests under ASan + UBSan)
 
-.PHONY: check-alloc check-alloc-nm check-alloc-runtime cross cross-m4 cross-m7 cross-rv \
-        firmware memcheck stack lint cppcheck clang-tidy check-headers embedded-checks
+.PHONY: check-alloc check-alloc-nm check-alloc-runtime memcheck stack lint cppcheck clang-tidy \
+        check-headers embedded-checks
 
 EMB_NM      ?= nm
-EMB_OBJCOPY ?= objcopy
 EMB_TOOLS_CFLAGS := -std=c11 -O2 -Wall -Wextra -Werror
 
 embedded-checks: check-alloc cross stack lint
