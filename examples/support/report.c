@@ -3,6 +3,7 @@
 #include <errno.h>
 #include <inttypes.h>
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -17,15 +18,25 @@ const char ex_common_usage[] =
     "  --help        this text\n";
 
 const char ex_verdict_rules[] =
-    "columns: closed = the note's closed form; exact = the exact discrete prediction\n"
-    "(mcspec theory); measured +- stderr over the trials; z = (measured - prediction)/stderr.\n"
-    "verdict, computed per row from those numbers:\n"
-    "  holds   |closed - exact| <= 1e-9 relative: the closed form is exact here\n"
-    "  limit   not exact, but an N -> infinity form whose gap to the exact value at\n"
-    "          a larger N is less than half its gap at this N\n"
-    "  fails   gap above 10% relative, |z_closed| > 5 and |z_exact| <= 5: measured\n"
-    "          and exact agree, the closed form does not\n"
-    "  approx  otherwise: an approximation; the gap column states its size\n";
+    "columns: closed = the note's closed form (for a bound row, the bound);\n"
+    "exact = the exact discrete prediction (mcspec theory); measured +- stderr over\n"
+    "the trials; z = (measured - prediction) / max(stderr, floor), floor being the\n"
+    "row's rounding scale (so deterministic values that agree get z = 0);\n"
+    "gap = |closed - exact| / max(|closed|, |exact|, floor).\n"
+    "verdict, computed per row from those numbers (empty if closed or exact is -):\n"
+    "  holds   gap <= 1e-9 (0 if |closed - exact| <= floor): the closed form is exact here\n"
+    "  limit   not exact, but an N -> infinity form whose gap to the exact value\n"
+    "          at a larger N (computed from exact finite-N values) is less than\n"
+    "          half its gap at this N\n"
+    "  fails   neither, and |z_closed| > 5 while |z_exact| <= 5: measured and\n"
+    "          exact agree, the closed form does not\n"
+    "  approx  otherwise: not exact, but this many trials do not separate it from\n"
+    "          the exact value; the gap column states the size of its error\n"
+    "bound rows (the note's inequalities): closed is the bound;\n"
+    "  holds   exact <= bound (1e-9 relative): the bound is valid here\n"
+    "  fails   exact > bound and z_closed > 5 while |z_exact| <= 5: the\n"
+    "          measurement lies above the bound\n"
+    "  approx  otherwise\n";
 
 static int parse_u64(const char *s, uint64_t *out)
 {
@@ -113,24 +124,31 @@ int ex_parse_options(int argc, char **argv, ex_options *opt, size_t max_n, const
     return EX_PARSE_OK;
 }
 
-double ex_z(double measured, double predicted, double stderr_)
+static double floor_or_tiny(double abs_floor)
+{
+    return abs_floor > 0.0 ? abs_floor : 1e-300;
+}
+
+double ex_z(double measured, double predicted, double stderr_, double abs_floor)
 {
     if (isnan(measured) || isnan(predicted) || isnan(stderr_))
         return EX_NA;
-    double d = measured - predicted;
-    if (stderr_ > 0.0)
-        return d / stderr_;
-    /* Deterministic measurement: agreement to rounding is z = 0. */
-    double scale = fabs(measured) + fabs(predicted);
-    if (fabs(d) <= 1e-9 * scale + 1e-300)
-        return 0.0;
-    return d > 0.0 ? INFINITY : -INFINITY;
+    double scale = fmax(stderr_, floor_or_tiny(abs_floor));
+    return (measured - predicted) / scale;
 }
 
 double ex_rel_gap(double closed_form, double exact, double abs_floor)
 {
-    double scale = fmax(fmax(fabs(closed_form), fabs(exact)), abs_floor);
-    return fabs(closed_form - exact) / scale;
+    double fl = floor_or_tiny(abs_floor), d = fabs(closed_form - exact);
+    if (d <= fl)
+        return 0.0; /* a difference below the rounding scale is no difference */
+    return d / fmax(fmax(fabs(closed_form), fabs(exact)), fl);
+}
+
+/* The measurement sides with the exact value against the closed form. */
+static int refutes(double zc, double ze)
+{
+    return !isnan(zc) && !isnan(ze) && fabs(zc) > EX_Z_REJECT && fabs(ze) <= EX_Z_REJECT;
 }
 
 const char *ex_verdict(double closed_form, double exact, double measured, double stderr_,
@@ -141,12 +159,27 @@ const char *ex_verdict(double closed_form, double exact, double measured, double
         return "holds";
     if (!isnan(gap_larger_n) && gap_larger_n < 0.5 * gap)
         return "limit";
-    double zc = ex_z(measured, closed_form, stderr_);
-    double ze = ex_z(measured, exact, stderr_);
-    if (gap > EX_APPROX_RTOL && fabs(zc) > EX_Z_REJECT && fabs(ze) <= EX_Z_REJECT)
+    double zc = ex_z(measured, closed_form, stderr_, abs_floor);
+    double ze = ex_z(measured, exact, stderr_, abs_floor);
+    if (refutes(zc, ze))
         return "fails";
     return "approx";
 }
+
+const char *ex_verdict_bound(double bound, double exact, double measured, double stderr_,
+                             double abs_floor)
+{
+    double scale = fmax(fmax(fabs(bound), fabs(exact)), floor_or_tiny(abs_floor));
+    if (exact - bound <= EX_EXACT_RTOL * scale)
+        return "holds";
+    double zc = ex_z(measured, bound, stderr_, abs_floor);
+    double ze = ex_z(measured, exact, stderr_, abs_floor);
+    if (refutes(zc, ze) && zc > 0.0)
+        return "fails";
+    return "approx";
+}
+
+static unsigned disagreements = 0u;
 
 static void csv_double(double v)
 {
@@ -166,15 +199,17 @@ static void csv_freq(long f)
 
 void ex_begin(const ex_options *opt, const char *title)
 {
+    disagreements = 0u;
     if (opt->csv) {
         printf("section,quantity,equation,pattern,n,k,freq,freq2,closed_form,exact,measured,"
                "stderr,z_closed,z_exact,verdict\n");
         return;
     }
     printf("%s\n", title);
-    printf("N = %zu bins, K = %zu samples, %lu trials, seed %" PRIu64 "\n\n", opt->n, opt->k,
+    printf("N = %zu bins, K = %zu samples, %lu trials, seed %" PRIu64 "\n", opt->n, opt->k,
            opt->trials, opt->seed);
-    printf("%-30s %-8s %-11s %-7s %12s %12s %12s %10s %8s %8s %8s  %s\n", "quantity", "eq.",
+    printf("(verdict rules: --help)\n\n");
+    printf("%-30s %-9s %-14s %-7s %12s %12s %12s %10s %8s %8s %8s  %s\n", "quantity", "eq.",
            "pattern", "freq", "closed", "exact", "measured", "stderr", "z_closed", "z_exact",
            "gap", "verdict");
 }
@@ -189,16 +224,21 @@ static void table_double(double v, int width, int prec)
         printf(" %*.*g", width, prec, v);
 }
 
-void ex_row_print(const ex_options *opt, const ex_row *row)
+static const char *row_print(const ex_options *opt, const ex_row *row, int bound)
 {
-    double zc = ex_z(row->measured, row->closed_form, row->stderr_);
-    double ze = ex_z(row->measured, row->exact, row->stderr_);
-    double floor_ = row->abs_floor > 0.0 ? row->abs_floor : 1e-300;
+    double zc = ex_z(row->measured, row->closed_form, row->stderr_, row->abs_floor);
+    double ze = ex_z(row->measured, row->exact, row->stderr_, row->abs_floor);
     int comparable = !isnan(row->closed_form) && !isnan(row->exact);
-    double gap = comparable ? ex_rel_gap(row->closed_form, row->exact, floor_) : EX_NA;
-    const char *verdict = comparable ? ex_verdict(row->closed_form, row->exact, row->measured,
-                                                  row->stderr_, row->limit_gap, floor_)
-                                     : "";
+    double gap = comparable ? ex_rel_gap(row->closed_form, row->exact, row->abs_floor) : EX_NA;
+    const char *verdict = "";
+    if (comparable && bound)
+        verdict = ex_verdict_bound(row->closed_form, row->exact, row->measured, row->stderr_,
+                                   row->abs_floor);
+    else if (comparable)
+        verdict = ex_verdict(row->closed_form, row->exact, row->measured, row->stderr_,
+                             row->limit_gap, row->abs_floor);
+    if (!isnan(ze) && fabs(ze) > EX_Z_REJECT)
+        ++disagreements;
     if (opt->csv) {
         printf("%s,%s,%s,%s,%zu,%zu", row->section, row->quantity, row->equation, row->pattern,
                opt->n, opt->k);
@@ -208,17 +248,17 @@ void ex_row_print(const ex_options *opt, const ex_row *row)
         csv_double(row->exact);
         csv_double(row->measured);
         csv_double(row->stderr_);
-        csv_double(isinf(zc) ? EX_NA : zc);
-        csv_double(isinf(ze) ? EX_NA : ze);
+        csv_double(zc);
+        csv_double(ze);
         printf(",%s\n", verdict);
-        return;
+        return verdict;
     }
     char freq[48] = "-";
     if (row->freq >= 0 && row->freq2 >= 0)
         snprintf(freq, sizeof freq, "%ld,%ld", row->freq, row->freq2);
     else if (row->freq >= 0)
         snprintf(freq, sizeof freq, "%ld", row->freq);
-    printf("%-30s %-8s %-11s %-7s", row->quantity, row->equation, row->pattern, freq);
+    printf("%-30s %-9s %-14s %-7s", row->quantity, row->equation, row->pattern, freq);
     table_double(row->closed_form, 12, 6);
     table_double(row->exact, 12, 6);
     table_double(row->measured, 12, 6);
@@ -226,7 +266,18 @@ void ex_row_print(const ex_options *opt, const ex_row *row)
     table_double(zc, 8, 3);
     table_double(ze, 8, 3);
     table_double(gap, 8, 2);
-    printf("  %s\n", verdict);
+    printf("  %s%s\n", bound ? "bound " : "", verdict);
+    return verdict;
+}
+
+const char *ex_row_print(const ex_options *opt, const ex_row *row)
+{
+    return row_print(opt, row, 0);
+}
+
+const char *ex_row_print_bound(const ex_options *opt, const ex_row *row)
+{
+    return row_print(opt, row, 1);
 }
 
 void ex_heading(const ex_options *opt, const char *text)
@@ -239,4 +290,29 @@ void ex_note(const ex_options *opt, const char *text)
 {
     if (!opt->csv)
         printf("%s\n", text);
+}
+
+void ex_notef(const ex_options *opt, const char *fmt, ...)
+{
+    if (opt->csv)
+        return;
+    va_list ap;
+    va_start(ap, fmt);
+    vprintf(fmt, ap);
+    va_end(ap);
+    printf("\n");
+}
+
+unsigned ex_end(const ex_options *opt)
+{
+    if (!opt->csv) {
+        if (disagreements > 0u)
+            printf("\nWARNING: %u row(s) with |z_exact| > %g: the measurement disagrees with "
+                   "the exact prediction\n",
+                   disagreements, EX_Z_REJECT);
+        else
+            printf("\nEvery measured value agrees with its exact prediction (|z_exact| <= %g).\n",
+                   EX_Z_REJECT);
+    }
+    return disagreements;
 }

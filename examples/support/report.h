@@ -37,7 +37,7 @@ typedef struct {
     const char *equation; /* "eq. 23" or "23"; no commas */
     const char *pattern;  /* pattern kind name, or "" */
     long freq, freq2;     /* frequency indices or EX_NO_FREQ */
-    double closed_form;   /* the note's closed form, or EX_NA */
+    double closed_form;   /* the note's closed form (the bound, for ex_row_print_bound), or EX_NA */
     double exact;         /* exact discrete prediction, or EX_NA */
     double measured;      /* measured value, or EX_NA */
     double stderr_;       /* its standard error (0 for a deterministic value) */
@@ -49,40 +49,63 @@ typedef struct {
 
 /* Relative gap below which a closed form counts as equal to the exact value. */
 #define EX_EXACT_RTOL 1e-9
-/* Relative gap up to which a closed form that is not exact is "approx". */
-#define EX_APPROX_RTOL 0.10
 /* |z| above which a measurement refutes a prediction. */
 #define EX_Z_REJECT 5.0
 
-/* (measured - predicted) / stderr; EX_NA if either is missing; if stderr is
- * 0 it is +-inf or 0 by the sign of the difference (deterministic values). */
-double ex_z(double measured, double predicted, double stderr_);
+/* (measured - predicted) / max(stderr, abs_floor): a deterministic value
+ * (stderr 0) that agrees to rounding gets z = 0, not 0/0. EX_NA if any input
+ * is missing. abs_floor <= 0 means 1e-300. */
+double ex_z(double measured, double predicted, double stderr_, double abs_floor);
 
-/* Relative gap |closed - exact| / max(|closed|, |exact|, abs_floor). */
+/* Relative gap |closed - exact| / max(|closed|, |exact|, abs_floor); 0 when
+ * |closed - exact| <= abs_floor (below the rounding scale). */
 double ex_rel_gap(double closed_form, double exact, double abs_floor);
 
-/* The verdict rule (printed by --help in ex_verdict_rules):
+/* The verdict rule for a value (printed by --help in ex_verdict_rules):
  *   holds  : rel_gap(closed, exact) <= EX_EXACT_RTOL;
  *   limit  : not holds, the closed form is an N -> infinity form, and its gap
  *            to the exact value at a larger N (gap_larger_n, computed by the
  *            caller from exact values) is below half the gap at this N;
- *   fails  : not holds, not limit, the rel gap exceeds EX_APPROX_RTOL and the
- *            measurement refutes the closed form (|z_closed| > EX_Z_REJECT)
- *            while agreeing with the exact value (|z_exact| <= EX_Z_REJECT);
- *   approx : otherwise.
+ *   fails  : not holds, not limit, and the measurement refutes the closed form
+ *            (|z_closed| > EX_Z_REJECT) while agreeing with the exact value
+ *            (|z_exact| <= EX_Z_REJECT);
+ *   approx : otherwise: the closed form is not exact, but the measurement does
+ *            not separate it from the exact value (the gap column gives the size).
  * gap_larger_n: EX_NA if the form is not a limit form. abs_floor: the scale
  * below which a difference counts as zero (e.g. K/N * 1e-12). */
 const char *ex_verdict(double closed_form, double exact, double measured, double stderr_,
                        double gap_larger_n, double abs_floor);
 
+/* The verdict rule for an upper bound on a quantity whose exact value is known:
+ *   holds  : exact <= bound (to EX_EXACT_RTOL relative): the bound is valid here;
+ *   fails  : exact > bound, and the measurement exceeds the bound
+ *            (z_closed > EX_Z_REJECT) while agreeing with the exact value;
+ *   approx : otherwise (violated by less than the measurement resolves). */
+const char *ex_verdict_bound(double bound, double exact, double measured, double stderr_,
+                             double abs_floor);
+
 /* Starts output: the CSV header, or a title and the table header. */
 void ex_begin(const ex_options *opt, const char *title);
 /* One row, in the chosen format; the verdict is computed by ex_verdict from
- * the row's numbers (empty when closed_form or exact is EX_NA). */
-void ex_row_print(const ex_options *opt, const ex_row *row);
+ * the row's numbers (empty when closed_form or exact is EX_NA). The verdict
+ * is also returned ("" if none). */
+const char *ex_row_print(const ex_options *opt, const ex_row *row);
+/* The same for a row whose closed_form is an upper bound on the quantity
+ * (the note's inequalities): the verdict is ex_verdict_bound's, and table
+ * mode marks it "bound". */
+const char *ex_row_print_bound(const ex_options *opt, const ex_row *row);
 /* A sub-heading in table mode (ignored in CSV mode). */
 void ex_heading(const ex_options *opt, const char *text);
 /* A free-text line in table mode (ignored in CSV mode). */
 void ex_note(const ex_options *opt, const char *text);
+/* The same with printf formatting. */
+#if defined(__GNUC__)
+__attribute__((format(printf, 2, 3)))
+#endif
+void ex_notef(const ex_options *opt, const char *fmt, ...);
+/* Ends output: in table mode, a line counting the rows whose measurement
+ * disagrees with the exact prediction (|z_exact| > EX_Z_REJECT), if any.
+ * Returns that count. */
+unsigned ex_end(const ex_options *opt);
 
 #endif /* MCSPEC_EXAMPLE_REPORT_H */

@@ -1,0 +1,166 @@
+#include "measure.h"
+#include "report.h"
+
+#include <math.h>
+#include <string.h>
+
+mcs_status ex_run_init(ex_run *run, mcs_pattern_kind kind, size_t n, size_t k,
+                       const mcs_importance *importance, uint64_t seed, uint64_t stream)
+{
+    if (k > EX_MAX_K)
+        return MCS_ERR_K_RANGE;
+    mcs_status st = mcs_pattern_init(&run->pattern, kind, n, k, importance);
+    if (st != MCS_OK)
+        return st;
+    mcs_rng_seed(&run->rng, seed, stream);
+    run->n = n;
+    run->k = k;
+    run->nfreq = run->npair = run->nf = 0u;
+    mcs_welford_init(&run->parseval);
+    /* Twiddles by exact index: cos(2 pi t/N) for t < N, so k n_j is reduced mod N
+     * in integers and no phase error grows with k n_j. */
+    const double two_pi = 6.283185307179586476925286766559;
+    for (size_t t = 0; t < n; ++t) {
+        double a = two_pi * (double)t / (double)n;
+        run->cos_table[t] = cos(a);
+        run->sin_table[t] = sin(a);
+    }
+    return MCS_OK;
+}
+
+int ex_run_probe(ex_run *run, size_t freq)
+{
+    if (freq >= run->n)
+        return -1;
+    for (size_t i = 0; i < run->nfreq; ++i)
+        if (run->freq[i] == freq)
+            return (int)i;
+    if (run->nfreq >= EX_MAX_PROBE)
+        return -1;
+    size_t i = run->nfreq++;
+    run->freq[i] = freq;
+    mcs_welford_init(&run->s_re[i]);
+    mcs_welford_init(&run->s_im[i]);
+    return (int)i;
+}
+
+int ex_run_probe_pair(ex_run *run, size_t k, size_t l)
+{
+    if (k >= run->n || l >= run->n)
+        return -1;
+    for (size_t i = 0; i < run->npair; ++i)
+        if (run->pair_k[i] == k && run->pair_l[i] == l)
+            return (int)i;
+    if (run->npair >= EX_MAX_PAIR || ex_run_probe(run, k) < 0 || ex_run_probe(run, l) < 0)
+        return -1;
+    size_t i = run->npair++;
+    run->pair_k[i] = k;
+    run->pair_l[i] = l;
+    mcs_welford_init(&run->x_re[i]);
+    mcs_welford_init(&run->x_im[i]);
+    return (int)i;
+}
+
+int ex_run_integrand(ex_run *run, const double *f)
+{
+    if (run->nf >= EX_MAX_F)
+        return -1;
+    size_t i = run->nf++;
+    run->f[i] = f;
+    mcs_welford_init(&run->estimate[i]);
+    return (int)i;
+}
+
+static size_t probe_index(const ex_run *run, size_t freq)
+{
+    for (size_t i = 0; i < run->nfreq; ++i)
+        if (run->freq[i] == freq)
+            return i;
+    return 0u; /* unreachable: pairs probe both frequencies */
+}
+
+/* One trial's statistics beyond the library accumulators. */
+static mcs_status add_trial(ex_run *run, const size_t *bins, const double *weights, double *s)
+{
+    double re[EX_MAX_PROBE], im[EX_MAX_PROBE];
+    double norm = 1.0 / sqrt((double)run->n);
+    for (size_t i = 0; i < run->nfreq; ++i) {
+        size_t fr = run->freq[i];
+        double a = 0.0, b = 0.0;
+        for (size_t j = 0; j < run->k; ++j) {
+            size_t t = (size_t)(((uint64_t)fr * (uint64_t)bins[j]) % (uint64_t)run->n);
+            a += weights[j] * run->cos_table[t];
+            b -= weights[j] * run->sin_table[t];
+        }
+        re[i] = a * norm;
+        im[i] = b * norm;
+        mcs_welford_add(&run->s_re[i], re[i]);
+        mcs_welford_add(&run->s_im[i], im[i]);
+    }
+    for (size_t i = 0; i < run->npair; ++i) {
+        size_t a = probe_index(run, run->pair_k[i]), b = probe_index(run, run->pair_l[i]);
+        /* S_k S_l* = (a_r + i a_i)(b_r - i b_i) */
+        mcs_welford_add(&run->x_re[i], re[a] * re[b] + im[a] * im[b]);
+        mcs_welford_add(&run->x_im[i], im[a] * re[b] - re[a] * im[b]);
+    }
+    for (size_t i = 0; i < run->nf; ++i) {
+        double est = 0.0;
+        mcs_status st = mcs_estimate_bins(run->n, run->f[i], run->k, bins, weights, &est);
+        if (st != MCS_OK)
+            return st;
+        mcs_welford_add(&run->estimate[i], est);
+    }
+    mcs_status st = mcs_pattern_dense(run->n, run->k, bins, weights, s);
+    if (st != MCS_OK)
+        return st;
+    double sum = 0.0, sum2 = 0.0;
+    for (size_t b = 0; b < run->n; ++b) {
+        sum += s[b];
+        sum2 += s[b] * s[b];
+    }
+    return mcs_welford_add(&run->parseval, sum2 - sum * sum / (double)run->n);
+}
+
+mcs_status ex_run_go(ex_run *run, unsigned long trials, mcs_spectrum *spectrum,
+                     mcs_moment *moment)
+{
+    static size_t bins[EX_MAX_K];
+    static double weights[EX_MAX_K];
+    static double s[MCS_MAX_N];
+    for (unsigned long t = 0; t < trials; ++t) {
+        mcs_status st = mcs_pattern_draw(&run->pattern, &run->rng, run->k, bins, weights, NULL);
+        if (st == MCS_OK && spectrum != NULL)
+            st = mcs_spectrum_add_bins(spectrum, run->k, bins, weights);
+        if (st == MCS_OK && moment != NULL)
+            st = mcs_moment_add_bins(moment, run->k, bins, weights);
+        if (st == MCS_OK)
+            st = add_trial(run, bins, weights, s);
+        if (st != MCS_OK)
+            return st;
+    }
+    return MCS_OK;
+}
+
+double ex_mean(const mcs_welford *w, double *stderr_out)
+{
+    double m = EX_NA, se = EX_NA;
+    if (mcs_welford_mean(w, &m) != MCS_OK)
+        m = EX_NA;
+    if (mcs_welford_stderr(w, &se) != MCS_OK)
+        se = EX_NA;
+    if (stderr_out != NULL)
+        *stderr_out = se;
+    return m;
+}
+
+double ex_variance(const mcs_welford *w, double *stderr_out)
+{
+    double v = EX_NA, se = EX_NA;
+    if (mcs_welford_variance(w, &v) != MCS_OK)
+        v = EX_NA;
+    if (mcs_welford_variance_stderr(w, &se) != MCS_OK)
+        se = EX_NA;
+    if (stderr_out != NULL)
+        *stderr_out = se;
+    return v;
+}
