@@ -74,7 +74,9 @@ static mcs_status check_n_k(size_t n, size_t cap, size_t k)
     return MCS_OK;
 }
 
-/* ---- small direct DFTs (N <= MCS_MAX_COV_N, no dft module needed) -------- */
+/* ---- small direct DFTs (no dft module needed) ------------------------------
+ * No work arrays: every frame stays small (the library's stack check allows
+ * 1 KiB per frame), so transforms are taken one coefficient at a time. */
 
 /* cos, sin of 2 pi t / n for t in [0, n): exact index reduction keeps every
  * twiddle within an ulp, whatever k * n is. */
@@ -87,21 +89,19 @@ static void twiddles(size_t n, double *c, double *s)
     }
 }
 
-/* Eq. 7: X_k = N^{-1/2} sum_t e^{-2 pi i k t / N} x_t, for all k. */
-static void dft_direct(size_t n, const double *c, const double *s, const double *x, double *re,
-                       double *im)
+/* Eq. 7 at one frequency: X_k = N^{-1/2} sum_t e^{-2 pi i k t / N} x_t, with
+ * the twiddle computed per term from the reduced index (k t mod N). */
+static void dft_coefficient(size_t n, const double *x, size_t k, double *re, double *im)
 {
-    double scale = 1.0 / sqrt((double)n);
-    for (size_t k = 0; k < n; ++k) {
-        double r = 0.0, i = 0.0;
-        for (size_t t = 0; t < n; ++t) {
-            size_t idx = (k * t) % n;
-            r += c[idx] * x[t];
-            i -= s[idx] * x[t];
-        }
-        re[k] = r * scale;
-        im[k] = i * scale;
+    double r = 0.0, i = 0.0;
+    for (size_t t = 0; t < n; ++t) {
+        double a = 2.0 * MCS_PI * (double)((k * t) % n) / (double)n;
+        r += cos(a) * x[t];
+        i -= sin(a) * x[t];
     }
+    double scale = 1.0 / sqrt((double)n);
+    *re = r * scale;
+    *im = i * scale;
 }
 
 /* ---- exact moments -------------------------------------------------------- */
@@ -193,21 +193,46 @@ static size_t uniform_bin(const mcs_pattern *pat, size_t j)
 static void homogenize(mcs_theory *th)
 {
     size_t n = th->n;
-    double lag[MCS_MAX_COV_N];
     double mean = 0.0;
+    for (size_t d = 0; d < n; ++d)
+        mean += th->mean_s[d];
+    mean /= (double)n;
+    /* The lag averages go through mean_s as scratch (no stack array), then
+     * fill every row; mean_s gets the (constant) homogenized mean last. */
     for (size_t d = 0; d < n; ++d) {
         double acc = 0.0;
         for (size_t a = 0; a < n; ++a)
             acc += th->second[a * n + (a + d) % n];
-        lag[d] = acc / (double)n;
-        mean += th->mean_s[d];
+        th->mean_s[d] = acc / (double)n;
     }
-    mean /= (double)n;
-    for (size_t m = 0; m < n; ++m) {
-        th->mean_s[m] = mean;
+    for (size_t m = 0; m < n; ++m)
         for (size_t b = 0; b < n; ++b)
-            th->second[m * n + b] = lag[(b + n - m) % n];
-    }
+            th->second[m * n + b] = th->mean_s[(b + n - m) % n];
+    for (size_t m = 0; m < n; ++m)
+        th->mean_s[m] = mean;
+}
+
+/* Bin b of the pattern is [edge(b), edge(b + 1)) in t = u K units (its CDF
+ * interval with importance, [b/N, (b+1)/N) without); its length in u is the
+ * probability one uniform u lands in it; 1/p_b its weight. */
+static double bin_edge(const mcs_pattern *pat, size_t b)
+{
+    double kd = (double)pat->k;
+    if (pat->importance != NULL)
+        return pat->importance->cdf[b] * kd;
+    return ((double)b * kd) / (double)pat->n; /* exact product, one rounding */
+}
+
+static double bin_length(const mcs_pattern *pat, size_t b)
+{
+    if (pat->importance != NULL)
+        return pat->importance->cdf[b + 1u] - pat->importance->cdf[b];
+    return 1.0 / (double)pat->n;
+}
+
+static double bin_inv_p(const mcs_pattern *pat, size_t b)
+{
+    return pat->importance != NULL ? 1.0 / pat->importance->p[b] : 1.0;
 }
 
 static mcs_status check_pattern(const mcs_pattern *pat)
@@ -235,58 +260,48 @@ mcs_status mcs_theory_init(mcs_theory *th, const mcs_pattern *pat)
 
     const size_t n = pat->n;
     const double kd = (double)pat->k;
-    const mcs_importance *imp = pat->importance;
-    /* Bin n is [edge[n], edge[n+1]) in t = u K units; len[n] its length in u
-     * (the probability one uniform u lands in it); inv_p[n] = 1/p_n. */
-    double edge[MCS_MAX_COV_N + 1];
-    double len[MCS_MAX_COV_N];
-    double inv_p[MCS_MAX_COV_N];
-    for (size_t b = 0; b <= n; ++b)
-        edge[b] = imp != NULL ? imp->cdf[b] * kd : ((double)b * kd) / (double)n;
-    for (size_t b = 0; b < n; ++b) {
-        len[b] = imp != NULL ? imp->cdf[b + 1] - imp->cdf[b] : 1.0 / (double)n;
-        inv_p[b] = imp != NULL ? 1.0 / imp->p[b] : 1.0;
-    }
-
     th->kind = pat->kind;
     th->n = n;
     th->k = pat->k;
-    th->has_importance = imp != NULL;
+    th->has_importance = pat->importance != NULL;
     twiddles(n, th->cos_table, th->sin_table);
 
     if (pat->kind == MCS_PATTERN_UNIFORM) {
-        double count[MCS_MAX_COV_N];
+        /* mean_s holds the bin counts r_n until the weights are applied */
         for (size_t b = 0; b < n; ++b)
-            count[b] = 0.0;
+            th->mean_s[b] = 0.0;
         for (size_t j = 0; j < pat->k; ++j)
-            count[uniform_bin(pat, j)] += 1.0;
-        for (size_t m = 0; m < n; ++m) {
-            th->mean_s[m] = count[m] * inv_p[m];
+            th->mean_s[uniform_bin(pat, j)] += 1.0;
+        for (size_t m = 0; m < n; ++m)
+            th->mean_s[m] *= bin_inv_p(pat, m);
+        for (size_t m = 0; m < n; ++m)
             for (size_t b = 0; b < n; ++b)
-                th->second[m * n + b] = count[m] * count[b] * inv_p[m] * inv_p[b];
-        }
+                th->second[m * n + b] = th->mean_s[m] * th->mean_s[b];
         return MCS_OK;
     }
 
     for (size_t m = 0; m < n; ++m) {
+        double len_m = bin_length(pat, m), inv_pm = bin_inv_p(pat, m);
+        double am = bin_edge(pat, m), bm = bin_edge(pat, m + 1u);
         /* sum_j P(u_j in I_m) = K |I_m| for random, stratified and jitter alike. */
-        th->mean_s[m] = kd * len[m] * inv_p[m];
+        th->mean_s[m] = kd * len_m * inv_pm;
         for (size_t b = 0; b < n; ++b) {
-            double diag = m == b ? kd * len[m] : 0.0; /* j = j': P(u_j in I_m cap I_n) */
+            double len_b = bin_length(pat, b);
+            double diag = m == b ? kd * len_m : 0.0; /* j = j': P(u_j in I_m cap I_n) */
             double rr;
             switch (pat->kind) {
             case MCS_PATTERN_RANDOM: /* j != j' independent: K (K - 1) |I_m| |I_n| */
-                rr = diag + kd * (kd - 1.0) * len[m] * len[b];
+                rr = diag + kd * (kd - 1.0) * len_m * len_b;
                 break;
             case MCS_PATTERN_JITTER: /* one shared beta: exact integral */
-                rr = jitter_pair(edge[m], edge[m + 1], edge[b], edge[b + 1]);
+                rr = jitter_pair(am, bm, bin_edge(pat, b), bin_edge(pat, b + 1u));
                 break;
             default: /* stratified, homogenized: independent across strata only */
-                rr = diag + kd * kd * len[m] * len[b] -
-                     strat_pair(edge[m], edge[m + 1], edge[b], edge[b + 1]);
+                rr = diag + kd * kd * len_m * len_b -
+                     strat_pair(am, bm, bin_edge(pat, b), bin_edge(pat, b + 1u));
                 break;
             }
-            th->second[m * n + b] = rr * inv_p[m] * inv_p[b];
+            th->second[m * n + b] = rr * inv_pm * bin_inv_p(pat, b);
         }
     }
     if (pat->kind == MCS_PATTERN_HOMOGENIZED)
@@ -320,38 +335,53 @@ mcs_status mcs_theory_second(const mcs_theory *th, size_t m, size_t n, double *o
     return MCS_OK;
 }
 
-static void spectrum_mean(const mcs_theory *th, size_t freq, double *re, double *im)
+/* Eq. 7 at one frequency from the theory's twiddle table; the index k t mod N
+ * is stepped, not divided (k < N). */
+static void table_dft(const mcs_theory *th, const double *x, size_t freq, double *re,
+                      double *im)
 {
-    size_t n = th->n;
+    size_t n = th->n, idx = 0;
     double r = 0.0, i = 0.0;
-    for (size_t b = 0; b < n; ++b) {
-        size_t idx = (freq * b) % n;
-        r += th->cos_table[idx] * th->mean_s[b];
-        i -= th->sin_table[idx] * th->mean_s[b];
+    for (size_t t = 0; t < n; ++t) {
+        r += th->cos_table[idx] * x[t];
+        i -= th->sin_table[idx] * x[t];
+        idx += freq;
+        if (idx >= n)
+            idx -= n;
     }
     double scale = 1.0 / sqrt((double)n);
     *re = r * scale;
     *im = i * scale;
 }
 
+static void spectrum_mean(const mcs_theory *th, size_t freq, double *re, double *im)
+{
+    table_dft(th, th->mean_s, freq, re, im);
+}
+
 /* Eq. 16, separably: inner sum over n with e^{+2 pi i l n/N}, outer over m
- * with e^{-2 pi i k m/N}. */
+ * with e^{-2 pi i k m/N}. O(N^2). */
 static void cross(const mcs_theory *th, size_t fk, size_t fl, double *re, double *im)
 {
-    size_t n = th->n;
+    size_t n = th->n, idx_m = 0;
     double r = 0.0, i = 0.0;
     for (size_t m = 0; m < n; ++m) {
         const double *row = &th->second[m * n];
         double rr = 0.0, ri = 0.0;
+        size_t idx = 0;
         for (size_t b = 0; b < n; ++b) {
-            size_t idx = (fl * b) % n;
             rr += th->cos_table[idx] * row[b];
             ri += th->sin_table[idx] * row[b];
+            idx += fl;
+            if (idx >= n)
+                idx -= n;
         }
-        size_t idx = (fk * m) % n;
-        double c = th->cos_table[idx], s = th->sin_table[idx];
+        double c = th->cos_table[idx_m], s = th->sin_table[idx_m];
         r += c * rr + s * ri;
         i += c * ri - s * rr;
+        idx_m += fk;
+        if (idx_m >= n)
+            idx_m -= n;
     }
     *re = r / (double)n;
     *im = i / (double)n;
@@ -451,42 +481,30 @@ static double primal_form(const mcs_theory *th, const double *f, const double *g
 }
 
 /* (1/K^2) sum_{k,l >= first} F_k* F_l X_kl, with X = Cov(S) (centred) or
- * <S S*> (raw), built row by row through eq. 16 in O(N^3) with O(N) stack. */
+ * <S S*> (raw), every X_kl through eq. 16: O(N^4), about 17 M multiply-adds
+ * at N = 64, and no work arrays (frames stay small). */
 static double spectral_form(const mcs_theory *th, const double *f, int centred, size_t first)
 {
     size_t n = th->n;
-    double fr[MCS_MAX_COV_N], fi[MCS_MAX_COV_N];
-    double gr[MCS_MAX_COV_N], gi[MCS_MAX_COV_N];
-    dft_direct(n, th->cos_table, th->sin_table, f, fr, fi);
     double total = 0.0;
     for (size_t k = first; k < n; ++k) {
-        /* G_b = sum_m e^{-2 pi i k m/N} X_mb (primal, before the l transform) */
-        for (size_t b = 0; b < n; ++b) {
-            double r = 0.0, i = 0.0;
-            for (size_t m = 0; m < n; ++m) {
-                double x = th->second[m * n + b];
-                if (centred)
-                    x -= th->mean_s[m] * th->mean_s[b];
-                size_t idx = (k * m) % n;
-                r += th->cos_table[idx] * x;
-                i -= th->sin_table[idx] * x;
-            }
-            gr[b] = r;
-            gi[b] = i;
-        }
+        double fkr, fki, mkr = 0.0, mki = 0.0;
+        table_dft(th, f, k, &fkr, &fki);
+        if (centred)
+            spectrum_mean(th, k, &mkr, &mki);
         for (size_t l = first; l < n; ++l) {
-            double cr = 0.0, ci = 0.0;
-            for (size_t b = 0; b < n; ++b) {
-                size_t idx = (l * b) % n;
-                double c = th->cos_table[idx], s = th->sin_table[idx];
-                cr += c * gr[b] - s * gi[b];
-                ci += c * gi[b] + s * gr[b];
+            double flr, fli, cr, ci;
+            table_dft(th, f, l, &flr, &fli);
+            cross(th, k, l, &cr, &ci);
+            if (centred) { /* Cov = <S_k S_l*> - <S_k><S_l>* */
+                double mlr, mli;
+                spectrum_mean(th, l, &mlr, &mli);
+                cr -= mkr * mlr + mki * mli;
+                ci -= mki * mlr - mkr * mli;
             }
-            cr /= (double)n;
-            ci /= (double)n;
-            /* F_k* F_l = (fr_k - i fi_k)(fr_l + i fi_l); keep the real part of the product */
-            double ar = fr[k] * fr[l] + fi[k] * fi[l];
-            double ai = fr[k] * fi[l] - fi[k] * fr[l];
+            /* F_k* F_l = (fkr - i fki)(flr + i fli); the real part of the product */
+            double ar = fkr * flr + fki * fli;
+            double ai = fkr * fli - fki * flr;
             total += ar * cr - ai * ci;
         }
     }
@@ -599,12 +617,11 @@ mcs_status mcs_eq4_correlated_variance(const mcs_theory *th, size_t n, const dou
         st = check_theory_array(th, n, g);
     if (st != MCS_OK)
         return st;
-    double h[MCS_MAX_COV_N];
     for (size_t b = 0; b < n; ++b)
-        h[b] = f[b] - g[b];
-    if (!all_finite(n, h)) /* f - g can overflow */
-        return MCS_ERR_NOT_FINITE;
-    *out = primal_form(th, h, h);
+        if (!isfinite(f[b] - g[b])) /* f - g can overflow */
+            return MCS_ERR_NOT_FINITE;
+    /* (f - g)^T Cov (f - g), expanded so no difference array is needed */
+    *out = primal_form(th, f, f) + primal_form(th, g, g) - 2.0 * primal_form(th, f, g);
     return MCS_OK;
 }
 
@@ -646,12 +663,12 @@ mcs_status mcs_eq14_variance(size_t n, size_t k, const double *f, const double *
         return st;
     if (!all_finite(n, f) || !all_finite(n - 1u, power + 1))
         return MCS_ERR_NOT_FINITE;
-    double c[MCS_MAX_COV_N] = {0.0}, s[MCS_MAX_COV_N] = {0.0}, fr[MCS_MAX_COV_N], fi[MCS_MAX_COV_N];
-    twiddles(n, c, s);
-    dft_direct(n, c, s, f, fr, fi);
     double sum = 0.0;
-    for (size_t b = 1; b < n; ++b)
-        sum += (fr[b] * fr[b] + fi[b] * fi[b]) * power[b];
+    for (size_t b = 1; b < n; ++b) {
+        double fr, fi;
+        dft_coefficient(n, f, b, &fr, &fi);
+        sum += (fr * fr + fi * fi) * power[b];
+    }
     double kd = (double)k;
     *out = sum / (kd * kd);
     return MCS_OK;
@@ -692,12 +709,12 @@ mcs_status mcs_eq23_random_power(size_t n, size_t k, size_t freq, double *out)
 /* Sum over k >= 1 of |F_k|^2 by a direct DFT. */
 static double ac_energy(size_t n, const double *f)
 {
-    double c[MCS_MAX_COV_N] = {0.0}, s[MCS_MAX_COV_N] = {0.0}, fr[MCS_MAX_COV_N], fi[MCS_MAX_COV_N];
-    twiddles(n, c, s);
-    dft_direct(n, c, s, f, fr, fi);
     double sum = 0.0;
-    for (size_t b = 1; b < n; ++b)
-        sum += fr[b] * fr[b] + fi[b] * fi[b];
+    for (size_t b = 1; b < n; ++b) {
+        double fr, fi;
+        dft_coefficient(n, f, b, &fr, &fi);
+        sum += fr * fr + fi * fi;
+    }
     return sum;
 }
 
@@ -1138,25 +1155,24 @@ static mcs_status check_imp_f(const mcs_importance *imp, size_t k, const double 
     return MCS_OK;
 }
 
-/* Re sum_{k >= k0, l >= l0} F_k* F_l Q_{k-l}: F of f, Q of 1/p, both eq. 7. */
+/* Re sum_{k >= k0, l >= l0} F_k* F_l Q_{k-l}: F of f, Q of 1/p, both eq. 7,
+ * each coefficient computed where it is used (O(N^3) trig, no work arrays). */
 static double fq_form(const mcs_importance *imp, const double *f, size_t k0, size_t l0)
 {
     size_t n = imp->n;
-    double c[MCS_MAX_COV_N] = {0.0}, s[MCS_MAX_COV_N] = {0.0}, q[MCS_MAX_COV_N] = {0.0};
-    double fr[MCS_MAX_COV_N], fi[MCS_MAX_COV_N], qr[MCS_MAX_COV_N], qi[MCS_MAX_COV_N];
-    twiddles(n, c, s);
-    for (size_t b = 0; b < n; ++b)
-        q[b] = 1.0 / imp->p[b];
-    dft_direct(n, c, s, f, fr, fi);
-    dft_direct(n, c, s, q, qr, qi);
     double sum = 0.0;
-    for (size_t a = k0; a < n; ++a)
+    for (size_t a = k0; a < n; ++a) {
+        double far, fai;
+        dft_coefficient(n, f, a, &far, &fai);
         for (size_t b = l0; b < n; ++b) {
-            size_t d = (a + n - b) % n;
-            double ar = fr[a] * fr[b] + fi[a] * fi[b]; /* F_a* F_b */
-            double ai = fr[a] * fi[b] - fi[a] * fr[b];
-            sum += ar * qr[d] - ai * qi[d];
+            double fbr, fbi, qr, qi;
+            dft_coefficient(n, f, b, &fbr, &fbi);
+            q_coefficient(imp, (a + n - b) % n, &qr, &qi);
+            double ar = far * fbr + fai * fbi; /* F_a* F_b */
+            double ai = far * fbi - fai * fbr;
+            sum += ar * qr - ai * qi;
         }
+    }
     return sum;
 }
 

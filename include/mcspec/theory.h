@@ -49,9 +49,11 @@
  * [0, n); S_k = N^{-1/2} sum_n e^{-2 pi i k n / N} s_n (eq. 7); F is the same
  * transform of f; Q is the same transform of 1/p_n (eq. 43). Every function
  * validates all inputs before writing anything: on error every output and
- * the theory object are byte-for-byte unchanged. Nothing allocates; arrays
- * of length N used inside live on the stack (at most a few
- * MCS_MAX_COV_N-double arrays, about 4 KiB at the default 64).
+ * the theory object are byte-for-byte unchanged. Nothing allocates, and
+ * nothing keeps work arrays on the stack: transforms are taken one
+ * coefficient at a time, so every frame stays under 300 bytes (the
+ * library's `make stack` limit is 1 KiB) at the price of the costs noted
+ * per function (all well under a second at N = 64).
  */
 #ifndef MCSPEC_THEORY_H
 #define MCSPEC_THEORY_H
@@ -125,8 +127,9 @@ mcs_status mcs_theory_estimator_mean(const mcs_theory *th, size_t n, const doubl
 mcs_status mcs_theory_variance(const mcs_theory *th, size_t n, const double *f, double *out);
 
 /* The same Var[I] through the spectra: (1/K^2) sum over ALL k, l of
- * F_k* F_l Cov(S_k, S_l), O(N^3) separable sums. Agrees with
- * mcs_theory_variance to rounding. Same statuses. */
+ * F_k* F_l Cov(S_k, S_l), each Cov(S_k, S_l) by eq. 16: O(N^4), about
+ * 17 M multiply-adds (tens of ms) at N = 64. Agrees with mcs_theory_variance
+ * to rounding. Same statuses. */
 mcs_status mcs_theory_variance_spectral(const mcs_theory *th, size_t n, const double *f,
                                         double *out);
 
@@ -170,8 +173,9 @@ mcs_status mcs_eq11_unbiased_mean(size_t n, const double *f, double *out);
 /* Eq. 13: (1/K^2) sum_{m,n >= 1} F_m* F_n <S_m S_n*>, the full double sum
  * from the exact moments of th (second moments, not covariances, and no
  * k = 0 terms, as printed; it is the variance when <S_{k>0}> = 0 and S_0 is
- * deterministic, i.e. unbiased kinds without importance).
- * f[n], n == th->n. Same statuses as mcs_theory_variance. */
+ * deterministic, i.e. unbiased kinds without importance). O(N^4) like
+ * mcs_theory_variance_spectral. f[n], n == th->n. Same statuses as
+ * mcs_theory_variance. */
 mcs_status mcs_eq13_variance(const mcs_theory *th, size_t n, const double *f, double *out);
 
 /* Eq. 14: (1/K^2) sum_{n >= 1} |F_n|^2 power[n], the diagonal (stationary)
@@ -302,7 +306,8 @@ mcs_status mcs_eq51_importance_stratified_power0(size_t n, size_t k, double h, d
 
 /* Eq. 52 as printed: (1/K) N^{-3/2} sum_{k,l >= 1} F_k* F_l Q_{k-l}.
  * Not the variance under importance sampling (S_0 is random there).
- * f[imp->n], imp->n <= MCS_MAX_COV_N (else MCS_ERR_N_RANGE). */
+ * f[imp->n], imp->n <= MCS_MAX_COV_N (else MCS_ERR_N_RANGE); O(N^3) trig
+ * (eq. 52 corrected and eq. 55 too). */
 mcs_status mcs_eq52_variance_printed(const mcs_importance *imp, size_t k, const double *f,
                                      double *out);
 
