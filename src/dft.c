@@ -71,42 +71,53 @@ static int plan_is_valid(const mcs_dft *plan)
 }
 
 /* Every s_n finite. x * 0 is 0 for finite x and NaN for NaN or infinity, so a
- * branch-free sum of them is 0 exactly when all are finite (and vectorises). */
+ * branch-free sum of them is 0 exactly when all are finite; four partial sums
+ * keep the adds from waiting on each other. */
 static int all_finite(size_t n, const double *s)
 {
-    double z = 0.0;
-    for (size_t j = 0; j < n; ++j)
-        z += s[j] * 0.0;
-    return z == 0.0;
+    double z0 = 0.0, z1 = 0.0, z2 = 0.0, z3 = 0.0;
+    size_t j = 0;
+    for (; j + 4u <= n; j += 4u) {
+        z0 += s[j] * 0.0;
+        z1 += s[j + 1u] * 0.0;
+        z2 += s[j + 2u] * 0.0;
+        z3 += s[j + 3u] * 0.0;
+    }
+    for (; j < n; ++j)
+        z0 += s[j] * 0.0;
+    return (z0 + z1) + (z2 + z3) == 0.0;
 }
 
 /* Even N = 2L: z_j = s_{2j} + i s_{2j+1}, Z = FFT_L(z); then with
- * E_k = (Z_k + Z*_{L-k})/2 (the even samples' DFT) and
- * O_k = (Z_k - Z*_{L-k})/(2i) (the odd samples'), X_k = E_k + e^{-2 pi i k/N} O_k. */
+ * E_k = (Z_k + Z*_{L-k})/2 (the even samples' DFT),
+ * O_k = (Z_k - Z*_{L-k})/(2i) (the odd samples') and T = e^{-2 pi i k/N} O_k,
+ * X_k = E_k + T and X_{L-k} = conj(E_k - T): one pass over k <= L/2 gives both. */
 static void half_kiss_real(mcs_dft *plan, const double *s, double *re, double *im, double scale)
 {
     const size_t len = plan->fft_len;
     kiss_fft_cpx *z = (kiss_fft_cpx *)plan->work;
     kiss_fft((kiss_fft_cfg)plan->kiss_state, (const kiss_fft_cpx *)s, z);
-    /* s is fully read; re or im may alias it from here on. */
+    /* s is fully read; re or im may alias it from here on. Without im, the
+     * imaginary parts go to scratch beyond z, so the loop has no branch. */
+    double *imo = im != NULL ? im : plan->work + 2u * len;
     const double z0r = z[0].r, z0i = z[0].i;
-    for (size_t k = 1; k < len; ++k) {
+    for (size_t k = 1; k <= len / 2u; ++k) {
         const double ar = z[k].r, ai = z[k].i;
         const double br = z[len - k].r, bi = -z[len - k].i;
         const double er = 0.5 * (ar + br), ei = 0.5 * (ai + bi);
         const double or_ = 0.5 * (ai - bi), oi = -0.5 * (ar - br);
         const double c = plan->cos_table[k], sn = plan->sin_table[k];
-        /* (c - i sn)(or + i oi) */
-        re[k] = scale * (er + c * or_ + sn * oi);
-        if (im != NULL)
-            im[k] = scale * (ei + c * oi - sn * or_);
+        /* T = (c - i sn)(or + i oi) */
+        const double tr = c * or_ + sn * oi, ti = c * oi - sn * or_;
+        re[k] = scale * (er + tr);
+        imo[k] = scale * (ei + ti);
+        re[len - k] = scale * (er - tr);
+        imo[len - k] = scale * (ti - ei);
     }
     re[0] = scale * (z0r + z0i);
     re[len] = scale * (z0r - z0i);
-    if (im != NULL) {
-        im[0] = 0.0;
-        im[len] = 0.0;
-    }
+    imo[0] = 0.0;
+    imo[len] = 0.0;
 }
 
 static void half_kiss_complex(mcs_dft *plan, const double *s, double *re, double *im,

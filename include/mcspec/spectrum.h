@@ -32,8 +32,9 @@
 extern "C" {
 #endif
 
-/* Number of stored frequencies k = 0..MCS_MAX_N/2. */
-#define MCS_SPECTRUM_HALF ((MCS_MAX_N) / 2 + 1)
+/* Stored frequencies k = 0..MCS_MAX_N/2, rounded up to an even count so the
+ * per-frequency update can run two frequencies at a time (the pad stays 0). */
+#define MCS_SPECTRUM_HALF (((MCS_MAX_N) / 2 + 2) / 2 * 2)
 
 /* How a sparse trial is transformed. */
 typedef enum {
@@ -46,6 +47,7 @@ typedef struct {
     size_t n;                            /* N; 0 before init */
     uint64_t count;                      /* trials added */
     mcs_spectrum_path path;              /* path policy, AUTO after init */
+    size_t sparse_max_k;                 /* AUTO takes the sparse path for k <= this */
     mcs_dft plan;                        /* DFT plan for N, twiddle table shared with the sparse path */
     double mean_re[MCS_SPECTRUM_HALF];   /* running mean of Re S_k */
     double mean_im[MCS_SPECTRUM_HALF];   /* running mean of Im S_k */
