@@ -38,22 +38,13 @@ static double var_of(const mcs_welford *w, double *se)
     return v;
 }
 
-/* Population variance of f over its n bins divided by K: eq. 25. */
-static double eq25(const double *f, size_t n, size_t k)
-{
-    double mean = 0.0, v = 0.0;
-    for (size_t b = 0; b < n; ++b)
-        mean += f[b];
-    mean /= (double)n;
-    for (size_t b = 0; b < n; ++b)
-        v += (f[b] - mean) * (f[b] - mean);
-    return v / (double)n / (double)k;
-}
-
 #define SEC1_MAX_K 4096
 static size_t bins_a[SEC1_MAX_K], bins_b[SEC1_MAX_K], bins_c[SEC1_MAX_K];
 static double w_a[SEC1_MAX_K], w_b[SEC1_MAX_K], w_c[SEC1_MAX_K];
 static double f[MCS_MAX_COV_N], g[MCS_MAX_COV_N], h[MCS_MAX_COV_N];
+/* Exact variances are differences of second moments of size ~ mean f^2, so
+ * anything below 1e-12 of that is rounding, not variance. */
+static double noise_floor;
 
 static int measure(const ex_options *opt, mcs_pattern_kind kind, sec1_measure *m)
 {
@@ -86,9 +77,51 @@ static int measure(const ex_options *opt, mcs_pattern_kind kind, sec1_measure *m
     return 1;
 }
 
+static void row(const ex_options *opt, const char *quantity, const char *eq,
+                mcs_pattern_kind kind, double closed, double exact, const mcs_welford *w)
+{
+    double se = 0.0, v = var_of(w, &se);
+    ex_row r = {"sec1", quantity, eq, mcs_pattern_kind_str(kind), EX_NO_FREQ, EX_NO_FREQ,
+                closed, exact, v, se, EX_NA, noise_floor};
+    ex_row_print(opt, &r);
+}
+
+/* Exact variances of the kind from mcs_theory beside the note's forms. */
+static int predict_rows(const ex_options *opt, mcs_pattern_kind kind, const sec1_measure *m)
+{
+    static mcs_theory th;
+    mcs_pattern pat;
+    double vf, vg, vh, cov_fg, eq2, eq4;
+    if (mcs_pattern_init(&pat, kind, opt->n, opt->k, NULL) != MCS_OK ||
+        mcs_theory_init(&th, &pat) != MCS_OK ||
+        mcs_theory_variance(&th, opt->n, f, &vf) != MCS_OK ||
+        mcs_theory_variance(&th, opt->n, g, &vg) != MCS_OK ||
+        mcs_theory_variance(&th, opt->n, h, &vh) != MCS_OK ||
+        mcs_theory_estimator_covariance(&th, opt->n, f, g, &cov_fg) != MCS_OK ||
+        mcs_eq2_uncorrelated_variance_fg(&th, opt->n, f, g, &eq2) != MCS_OK ||
+        mcs_eq4_correlated_variance(&th, opt->n, f, g, &eq4) != MCS_OK)
+        return 0;
+    /* Independent trials: no covariance, so the exact variance of the
+     * difference is Var[f] + Var[g]; eq. 2's "~ 2 Var[f]" is the approximation. */
+    row(opt, "Var[If-Ig] independent", "eq. 2", kind, eq2, vf + vg, &m->indep);
+    row(opt, "Var[If-Ig] indep ~ 2Var[f]", "eq. 2", kind, 2.0 * vf, vf + vg, &m->indep);
+    /* Shared samples: eq. 4 (Var[h]) and eq. 6 (Var[f]+Var[g]-2Cov) against
+     * the exact variance of the one-trial difference. */
+    row(opt, "Var[If-Ig] shared", "eq. 4", kind, eq4, vf + vg - 2.0 * cov_fg, &m->shared);
+    row(opt, "Var[Ih] own trials", "eq. 4", kind, eq4, vh, &m->h_alone);
+    row(opt, "Var[If]", "exact", kind, EX_NA, vf, &m->f);
+    if (kind == MCS_PATTERN_RANDOM) {
+        double e25;
+        if (mcs_eq25_random_variance(opt->n, opt->k, f, &e25) != MCS_OK)
+            return 0;
+        row(opt, "Var[If] population/K", "eq. 25", kind, e25, vf, &m->f);
+    }
+    return 1;
+}
+
 int main(int argc, char **argv)
 {
-    ex_options opt = {64u, 8u, 20000ul, 1u, 0};
+    ex_options opt = {64u, 8u, 100000ul, 1u, 0};
     int rc = ex_parse_options(argc, argv, &opt, MCS_MAX_COV_N, help_text);
     if (rc == EX_PARSE_HELP)
         return 0;
@@ -101,6 +134,7 @@ int main(int argc, char **argv)
         f[b] = image(x0, y);
         g[b] = image(x0 - 1.0, y);
         h[b] = f[b] - g[b];
+        noise_floor = fmax(noise_floor, 1e-12 * fmax(f[b] * f[b], g[b] * g[b]));
     }
 
     static const mcs_pattern_kind kinds[MCS_PATTERN_KIND_COUNT] = {
@@ -113,8 +147,8 @@ int main(int argc, char **argv)
 
     if (!opt.csv) {
         printf("Section 1: gradient variance, independent (eq. 1-2) vs shared samples (eq. 3-4)\n");
-        printf("N = %zu bins, K = %zu samples, %lu trials, seed %llu\n\n", opt.n, opt.k,
-               opt.trials, (unsigned long long)opt.seed);
+        printf("N = %zu bins, K = %zu samples, %lu trials, seed %llu; all values measured\n\n",
+               opt.n, opt.k, opt.trials, (unsigned long long)opt.seed);
         printf("%-12s %22s %12s %12s %22s %12s %9s\n", "pattern", "Var[If-Ig] indep",
                "Var[f]+Var[g]", "2 Var[f]", "Var[If-Ig] shared", "Var[h]", "ratio");
         for (int i = 0; i < MCS_PATTERN_KIND_COUNT; ++i) {
@@ -131,9 +165,13 @@ int main(int argc, char **argv)
                    mcs_pattern_kind_str(kinds[i]), vi, se_i, vf + vg, 2.0 * vf, vs, se_s, vh,
                    ratio);
         }
-        printf("\nrandom, eq. 25 (population variance / K): Var[f] = %.4e, Var[g] = %.4e, "
-               "Var[h] = %.4e\n\n",
-               eq25(f, opt.n, opt.k), eq25(g, opt.n, opt.k), eq25(h, opt.n, opt.k));
+        printf("(ratio = independent / shared; Var[h] is measured on its own trials)\n\n");
+    }
+
+    ex_begin(&opt, "Predicted beside measured: the note's form, the exact discrete variance");
+    for (int i = 0; i < MCS_PATTERN_KIND_COUNT; ++i) {
+        if (!predict_rows(&opt, kinds[i], &m[i]))
+            return 1;
     }
     return 0;
 }
