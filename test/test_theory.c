@@ -694,6 +694,41 @@ static void test_stratified_importance_matches_eq50_eq51_only_for_uniform_g(void
     TEST_ASSERT_TRUE(worst > 1e-3);
 }
 
+static void test_stratified_importance_obeys_eq49_to_51_whenever_each_stratum_is_n_over_k_whole_bins(void)
+{
+    /* g non-uniform but every block of N/K = 4 bins has mass 1/K: the strata
+     * are whole bins, eq. 48 holds exactly, and with it eq. 49 (with the
+     * strata phase of corrected eq. 30), eq. 51 and the finite-N eq. 50. */
+    const size_t n = 16, k = 4;
+    double w[NMAX] = {0.0};
+    for (size_t b = 0; b < n; ++b)
+        w[b] = 1.0 + (double)(b % 4u);
+    init_importance(n, w);
+    init_theory(&th, MCS_PATTERN_STRATIFIED, n, k, &imp);
+    double c = (double)k / (double)n / sqrt((double)n);
+    for (size_t a = 0; a < n; ++a)
+        for (size_t b = 0; b < n; ++b) {
+            double cr, ci, qr, qi, dr, di, pr, pi;
+            mcs_theory_cross(&th, a, b, &cr, &ci);
+            mcs_theory_q(&imp, (a + n - b) % n, &qr, &qi);
+            mcs_eq30_stratified_delta_corrected(n, k, a, b, &dr, &di);
+            double er = c * qr + dr + (a == 0u && b == 0u ? (double)(k * k) / (double)n : 0.0);
+            assert_close(er, cr, 1e-13, "eq. 49 corrected re");
+            assert_close(c * qi + di, ci, 1e-13, "eq. 49 corrected im");
+            if (a != 0u && b != 0u && (a + n - b) % k == 0u) {
+                TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_eq49_importance_stratified_cross(&imp, k, a, b,
+                                                                                   &pr, &pi));
+                assert_close(cr, pr, 1e-13, "eq. 49 printed re, k = l mod K");
+                assert_close(ci, pi, 1e-13, "eq. 49 printed im, k = l mod K");
+            }
+        }
+    double p0, e51;
+    mcs_theory_power(&th, 0u, &p0);
+    mcs_eq51_importance_stratified_power0(n, k, imp.harmonic_mean, &e51);
+    assert_close(e51, p0, 1e-13, "eq. 51, whole-bin strata");
+    TEST_ASSERT_TRUE(imp.harmonic_mean < 0.9); /* genuinely non-uniform */
+}
+
 static void test_eq52_printed_misses_the_k0_terms_and_the_corrected_forms_are_the_variance(void)
 {
     const size_t n = 16, k = 3;
@@ -1313,6 +1348,7 @@ int main(void)
     RUN_TEST(test_uniform_is_biased_at_multiples_of_k_as_eq34_and_jitter_matches_eq35_and_eq37);
     RUN_TEST(test_random_importance_matches_eq41_eq43_eq44_eq45_eq46_exactly);
     RUN_TEST(test_stratified_importance_matches_eq50_eq51_only_for_uniform_g);
+    RUN_TEST(test_stratified_importance_obeys_eq49_to_51_whenever_each_stratum_is_n_over_k_whole_bins);
     RUN_TEST(test_eq52_printed_misses_the_k0_terms_and_the_corrected_forms_are_the_variance);
     RUN_TEST(test_eq55_vanishes_for_f_proportional_to_p_and_equals_its_parseval_form);
     RUN_TEST(test_eq58_printed_is_not_a_bound_and_the_corrected_bound_holds);

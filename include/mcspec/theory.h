@@ -288,20 +288,26 @@ mcs_status mcs_eq46_importance_power0(size_t n, size_t k, double h, double *out)
 
 /* Eq. 49 as printed: stratified with importance, <S_k S_l*> =
  * (K/N) N^{-1/2} Q_{k-l} + Delta_kl (eq. 30 as printed). K dividing imp->n,
- * freq_k and freq_l in [1, N), else MCS_ERR_DOMAIN. Holds only for uniform
- * g (strata on bins); also inherits eq. 30's missing [k = l mod K]. */
+ * freq_k and freq_l in [1, N), else MCS_ERR_DOMAIN. Exact only when every
+ * stratum is N/K whole bins (each block of N/K bins has mass 1/K: uniform g,
+ * or any g so balanced), and then only for k = l (mod K): it inherits
+ * eq. 30's missing strata phase (elsewhere the exact value is its Q term). */
 mcs_status mcs_eq49_importance_stratified_cross(const mcs_importance *imp, size_t k,
                                                 size_t freq_k, size_t freq_l, double *re,
                                                 double *im);
 
 /* Eq. 50: stratified with importance, <|S_k|^2> = (K/N)(1/H - sinc^2(pi k/K)),
- * freq in [1, N), K dividing N, else MCS_ERR_DOMAIN. The note's claim; exact
- * only in the N -> infinity limit and only for uniform g (H = 1). */
+ * freq in [1, N), K dividing N, else MCS_ERR_DOMAIN. The note's claim; its
+ * finite-N form (K/N)/H + eq. 32 is exact only when every stratum is N/K
+ * whole bins (uniform g, or any g whose blocks of N/K bins have mass 1/K),
+ * and the sinc form only as N -> infinity. */
 mcs_status mcs_eq50_importance_stratified_power(size_t n, size_t k, double h, size_t freq,
                                                 double *out);
 
 /* Eq. 51: stratified with importance, <|S_0|^2> = K^2/N + (K/N)(1/H - 1),
- * K dividing N, else MCS_ERR_DOMAIN. Exact only for uniform g. */
+ * K dividing N, else MCS_ERR_DOMAIN. Exact under the same whole-bin-strata
+ * condition as eq. 50; otherwise stratification also removes variance from
+ * S_0 and the exact value is lower. */
 mcs_status mcs_eq51_importance_stratified_power0(size_t n, size_t k, double h, double *out);
 
 /* Eq. 52 as printed: (1/K) N^{-3/2} sum_{k,l >= 1} F_k* F_l Q_{k-l}.
