@@ -209,7 +209,7 @@ void ex_begin(const ex_options *opt, const char *title)
     printf("N = %zu bins, K = %zu samples, %lu trials, seed %" PRIu64 "\n", opt->n, opt->k,
            opt->trials, opt->seed);
     printf("(verdict rules: --help)\n\n");
-    printf("%-30s %-9s %-14s %-7s %12s %12s %12s %10s %8s %8s %8s  %s\n", "quantity", "eq.",
+    printf("%-30s %-9s %-15s %-7s %12s %12s %12s %10s %8s %8s %8s  %s\n", "quantity", "eq.",
            "pattern", "freq", "closed", "exact", "measured", "stderr", "z_closed", "z_exact",
            "gap", "verdict");
 }
@@ -258,7 +258,7 @@ static const char *row_print(const ex_options *opt, const ex_row *row, int bound
         snprintf(freq, sizeof freq, "%ld,%ld", row->freq, row->freq2);
     else if (row->freq >= 0)
         snprintf(freq, sizeof freq, "%ld", row->freq);
-    printf("%-30s %-9s %-14s %-7s", row->quantity, row->equation, row->pattern, freq);
+    printf("%-30s %-9s %-15s %-7s", row->quantity, row->equation, row->pattern, freq);
     table_double(row->closed_form, 12, 6);
     table_double(row->exact, 12, 6);
     table_double(row->measured, 12, 6);
