@@ -1,0 +1,639 @@
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "mcspec.h"
+#include "spectra_ref.h"
+#include "unity.h"
+
+void setUp(void) {}
+void tearDown(void) {}
+
+#define PI 3.14159265358979323846
+#define COV MCS_MAX_COV_N
+
+static mcs_moment mom, mom2, mom3, mom_before;
+static mcs_autocorr ac, ac2, ac3, ac_before;
+static mcs_spectrum spec;
+static mcs_importance imp;
+static mcs_dft plan;
+static size_t bins[256];
+static double weights[256], dense[MCS_MAX_N], re[MCS_MAX_N], im[MCS_MAX_N];
+static double power[MCS_MAX_N];
+static double mat_re[COV * COV], mat_im[COV * COV];
+
+typedef struct {
+    mcs_pattern pat;
+    mcs_rng rng;
+    size_t k;
+} stream;
+
+static void stream_init(stream *st, mcs_pattern_kind kind, size_t n, size_t k,
+                        const mcs_importance *importance, uint64_t seed)
+{
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_init(&st->pat, kind, n, k, importance));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_rng_seed(&st->rng, seed, 0xabcdu));
+    st->k = k;
+}
+
+static void stream_draw(stream *st)
+{
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_draw(&st->pat, &st->rng, st->k, bins, weights, NULL));
+}
+
+static void make_importance(size_t n)
+{
+    static double g[MCS_MAX_N];
+    for (size_t b = 0; b < n; ++b)
+        g[b] = 0.3 + (double)((b * 5u) % n) / (double)n + (b == 2u ? 1.5 : 0.0);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_init(&imp, n, g));
+}
+
+static void assert_close(double expected, double actual, double tol, double scale,
+                         const char *what, size_t a, size_t b)
+{
+    if (!(fabs(actual - expected) <= tol * (fabs(expected) + scale))) {
+        char msg[160];
+        (void)snprintf(msg, sizeof msg, "%s (%zu, %zu): expected %.17g, got %.17g", what, a, b,
+                       expected, actual);
+        TEST_FAIL_MESSAGE(msg);
+    }
+}
+
+/* ---------------- agreement with the spectrum accumulator ---------------- */
+
+static double mean_power(const mcs_spectrum *a)
+{
+    double sum = 0.0;
+    for (size_t f = 0; f < a->n; ++f) {
+        double p;
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_power(a, f, &p));
+        sum += p;
+    }
+    return sum / (double)a->n;
+}
+
+static void test_moment_and_spectrum_agree_on_every_mean_and_power(void)
+{
+    static const struct {
+        size_t n, k;
+        mcs_pattern_kind kind;
+        int importance;
+    } cases[] = {
+        {1u, 2u, MCS_PATTERN_RANDOM, 0},      {2u, 3u, MCS_PATTERN_STRATIFIED, 0},
+        {7u, 3u, MCS_PATTERN_RANDOM, 1},      {16u, 4u, MCS_PATTERN_STRATIFIED, 1},
+        {24u, 5u, MCS_PATTERN_JITTER, 0},     {33u, 8u, MCS_PATTERN_HOMOGENIZED, 0},
+        {(size_t)COV, 64u, MCS_PATTERN_RANDOM, 1},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        size_t n = cases[i].n, k = cases[i].k;
+        const mcs_importance *ip = NULL;
+        if (cases[i].importance) {
+            make_importance(n);
+            ip = &imp;
+        }
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_init(&mom, n));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&spec, n));
+        stream st;
+        stream_init(&st, cases[i].kind, n, k, ip, 60u + i);
+        for (size_t t = 0; t < 2000u; ++t) {
+            stream_draw(&st);
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_add_bins(&mom, k, bins, weights));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_bins(&spec, k, bins, weights));
+        }
+        /* Rounding in either method is relative to the pattern's energy, not to
+         * one frequency's value (jitter has exact zeros): the scale is the mean
+         * power (1/N) sum_k <|S_k|^2> = <sum_n s_n^2> / N. */
+        const double level = mean_power(&spec);
+        for (size_t f = 0; f < n; ++f) {
+            double mr, mi, sr, si, mp, sp;
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_spectrum_mean(&mom, f, &mr, &mi));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_mean(&spec, f, &sr, &si));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_power(&mom, f, &mp));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_power(&spec, f, &sp));
+            /* relative to the frequency's own scale sqrt(<|S_k|^2>) for the mean */
+            assert_close(sr, mr, 1e-10, sqrt(level), "Re <S_k>", n, f);
+            assert_close(si, mi, 1e-10, sqrt(level), "Im <S_k>", n, f);
+            assert_close(sp, mp, 1e-10, level, "<|S_k|^2>", n, f);
+        }
+    }
+}
+
+static void test_autocorrelation_and_spectrum_agree_for_any_n(void)
+{
+    static const struct {
+        size_t n, k;
+        mcs_pattern_kind kind;
+        int importance;
+    } cases[] = {
+        {1u, 3u, MCS_PATTERN_RANDOM, 0},       {2u, 2u, MCS_PATTERN_RANDOM, 1},
+        {3u, 2u, MCS_PATTERN_STRATIFIED, 0},   {16u, 4u, MCS_PATTERN_RANDOM, 1},
+        {97u, 10u, MCS_PATTERN_STRATIFIED, 1}, {1000u, 33u, MCS_PATTERN_JITTER, 0},
+        {4093u, 16u, MCS_PATTERN_RANDOM, 0},   {4096u, 64u, MCS_PATTERN_STRATIFIED, 1},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        size_t n = cases[i].n, k = cases[i].k;
+        const mcs_importance *ip = NULL;
+        if (cases[i].importance) {
+            make_importance(n);
+            ip = &imp;
+        }
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_autocorr_init(&ac, n));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&spec, n));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_dft_init(&plan, n));
+        stream st;
+        stream_init(&st, cases[i].kind, n, k, ip, 80u + i);
+        size_t trials = n > 1000u ? 50u : 500u;
+        for (size_t t = 0; t < trials; ++t) {
+            stream_draw(&st);
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_autocorr_add_bins(&ac, k, bins, weights));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_bins(&spec, k, bins, weights));
+        }
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_autocorr_power(&ac, &plan, n, power));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_autocorr_mean(&ac, &plan, n, re, im));
+        const double level = mean_power(&spec);
+        for (size_t f = 0; f < n; ++f) {
+            double sr, si, sp;
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_mean(&spec, f, &sr, &si));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_power(&spec, f, &sp));
+            assert_close(sr, re[f], 1e-10, sqrt(level), "Re <S_k>", n, f);
+            assert_close(si, im[f], 1e-10, sqrt(level), "Im <S_k>", n, f);
+            assert_close(sp, power[f], 1e-10, level, "<|S_k|^2>", n, f);
+        }
+    }
+}
+
+/* ---------------- primal sums and eq. 16 against brute force ---------------- */
+
+static void test_primal_moments_and_cross_spectrum_match_brute_force(void)
+{
+    enum { N = 10, K = 4, T = 300 };
+    static double sum_s[N], sum_ss[N][N];
+    static double cross_re[N][N], cross_im[N][N];
+    make_importance(N);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_init(&mom, N));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_dft_init(&plan, N));
+    memset(sum_s, 0, sizeof sum_s);
+    memset(sum_ss, 0, sizeof sum_ss);
+    memset(cross_re, 0, sizeof cross_re);
+    memset(cross_im, 0, sizeof cross_im);
+    stream st;
+    stream_init(&st, MCS_PATTERN_STRATIFIED, N, K, &imp, 3u);
+    for (size_t t = 0; t < T; ++t) {
+        stream_draw(&st);
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_add_bins(&mom, K, bins, weights));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_dense(N, K, bins, weights, dense));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_dft_real(&plan, N, dense, re, im));
+        for (size_t m = 0; m < N; ++m) {
+            sum_s[m] += dense[m];
+            for (size_t c = 0; c < N; ++c) {
+                sum_ss[m][c] += dense[m] * dense[c];
+                /* S_m S_c* */
+                cross_re[m][c] += re[m] * re[c] + im[m] * im[c];
+                cross_im[m][c] += im[m] * re[c] - re[m] * im[c];
+            }
+        }
+    }
+    uint64_t count;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_count(&mom, &count));
+    TEST_ASSERT_EQUAL_UINT64(T, count);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_cross_matrix(&mom, N, mat_re, mat_im));
+    for (size_t m = 0; m < N; ++m) {
+        double v;
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_mean_s(&mom, m, &v));
+        assert_close(sum_s[m] / T, v, 1e-13, 0.0, "<s_n>", m, m);
+        for (size_t c = 0; c < N; ++c) {
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_second(&mom, m, c, &v));
+            assert_close(sum_ss[m][c] / T, v, 1e-13, 0.0, "<s_m s_n>", m, c);
+            double xr, xi;
+            const double scale = sqrt(cross_re[m][m] * cross_re[c][c]) / T;
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_cross(&mom, m, c, &xr, &xi));
+            assert_close(cross_re[m][c] / T, xr, 1e-12, scale, "Re <S_k S_l*>", m, c);
+            assert_close(cross_im[m][c] / T, xi, 1e-12, scale, "Im <S_k S_l*>", m, c);
+            assert_close(xr, mat_re[m * N + c], 1e-12, scale, "matrix Re", m, c);
+            assert_close(xi, mat_im[m * N + c], 1e-12, scale, "matrix Im", m, c);
+        }
+    }
+}
+
+static void test_covariance_is_the_cross_spectrum_minus_the_mean_product(void)
+{
+    enum { N = 9, K = 5 };
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_init(&mom, N));
+    stream st;
+    stream_init(&st, MCS_PATTERN_UNIFORM, N, K, NULL, 1u); /* biased: <S_k> != 0 */
+    for (size_t t = 0; t < 3u; ++t) {
+        stream_draw(&st);
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_add_bins(&mom, K, bins, weights));
+    }
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_covariance_matrix(&mom, N, mat_re, mat_im));
+    for (size_t k = 0; k < N; ++k) {
+        double mk_r, mk_i, p;
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_spectrum_mean(&mom, k, &mk_r, &mk_i));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_power(&mom, k, &p));
+        for (size_t l = 0; l < N; ++l) {
+            double ml_r, ml_i, xr, xi, cr, ci;
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_spectrum_mean(&mom, l, &ml_r, &ml_i));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_cross(&mom, k, l, &xr, &xi));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_covariance(&mom, k, l, &cr, &ci));
+            const double want_r = xr - (mk_r * ml_r + mk_i * ml_i);
+            const double want_i = xi - (mk_i * ml_r - mk_r * ml_i);
+            const double scale = (double)(K * K) / N;
+            /* a deterministic pattern: every covariance vanishes */
+            TEST_ASSERT_DOUBLE_WITHIN(1e-12 * scale, want_r, cr);
+            TEST_ASSERT_DOUBLE_WITHIN(1e-12 * scale, want_i, ci);
+            TEST_ASSERT_DOUBLE_WITHIN(1e-12 * scale, 0.0, cr);
+            TEST_ASSERT_DOUBLE_WITHIN(1e-12 * scale, 0.0, ci);
+            TEST_ASSERT_DOUBLE_WITHIN(1e-12 * scale, cr, mat_re[k * N + l]);
+            TEST_ASSERT_DOUBLE_WITHIN(1e-12 * scale, ci, mat_im[k * N + l]);
+            if (k == l) {
+                TEST_ASSERT_DOUBLE_WITHIN(1e-12 * scale, p, xr);
+                TEST_ASSERT_DOUBLE_WITHIN(1e-12 * scale, 0.0, xi);
+            }
+        }
+    }
+}
+
+static void test_dense_and_sparse_trials_accumulate_the_same_sums(void)
+{
+    enum { N = 20, K = 9 };
+    make_importance(N);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_init(&mom, N));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_init(&mom2, N));
+    stream st;
+    stream_init(&st, MCS_PATTERN_RANDOM, N, K, &imp, 12u);
+    for (size_t t = 0; t < 200u; ++t) {
+        stream_draw(&st);
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_add_bins(&mom, K, bins, weights));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_dense(N, K, bins, weights, dense));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_add_dense(&mom2, N, dense));
+    }
+    for (size_t m = 0; m < N; ++m)
+        for (size_t c = 0; c < N; ++c) {
+            double a, b;
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_second(&mom, m, c, &a));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_second(&mom2, m, c, &b));
+            assert_close(a, b, 1e-13, 0.0, "<s_m s_n>", m, c);
+        }
+}
+
+static void test_merge_of_halves_equals_one_pass(void)
+{
+    enum { N = 30, K = 7 };
+    make_importance(N);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_init(&mom, N));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_init(&mom2, N));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_init(&mom3, N));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_autocorr_init(&ac, N));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_autocorr_init(&ac2, N));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_autocorr_init(&ac3, N));
+    stream st;
+    stream_init(&st, MCS_PATTERN_STRATIFIED, N, K, &imp, 21u);
+    for (size_t t = 0; t < 500u; ++t) {
+        stream_draw(&st);
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_add_bins(&mom, K, bins, weights));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_autocorr_add_bins(&ac, K, bins, weights));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_add_bins(t < 200u ? &mom2 : &mom3, K, bins, weights));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_autocorr_add_bins(t < 200u ? &ac2 : &ac3, K, bins, weights));
+    }
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_merge(&mom2, &mom3));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_autocorr_merge(&ac2, &ac3));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_dft_init(&plan, N));
+    static double power2[MCS_MAX_N];
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_autocorr_power(&ac, &plan, N, power));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_autocorr_power(&ac2, &plan, N, power2));
+    uint64_t c1, c2;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_count(&mom2, &c1));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_autocorr_count(&ac2, &c2));
+    TEST_ASSERT_EQUAL_UINT64(500u, c1);
+    TEST_ASSERT_EQUAL_UINT64(500u, c2);
+    for (size_t k = 0; k < N; ++k) {
+        for (size_t l = 0; l < N; ++l) {
+            double ar, ai, br, bi;
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_cross(&mom, k, l, &ar, &ai));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_cross(&mom2, k, l, &br, &bi));
+            assert_close(ar, br, 1e-12, 1.0, "Re <S_k S_l*>", k, l);
+            assert_close(ai, bi, 1e-12, 1.0, "Im <S_k S_l*>", k, l);
+        }
+        assert_close(power[k], power2[k], 1e-12, 0.0, "autocorr power", k, k);
+    }
+}
+
+/* ---------------- the note, measured on the moment accumulator ---------------- */
+
+/* Eq. 43: importance-sampled random, <S_k S_l*> = (K/N) N^{-1/2} Q_{k-l} for
+ * (k, l) != (0, 0), Q the DFT of 1/p; the diagonal is eq. 45, and eq. 46 at 0.
+ * Standard errors from Welford accumulators of S_k S_l* per trial. */
+static void test_importance_sampled_cross_spectrum_is_q_of_k_minus_l(void)
+{
+    enum { N = 12, K = 3, T = 150000, NK = 3 };
+    static const size_t ks[NK] = {0u, 1u, 5u};
+    static mcs_welford wr[NK][N], wi[NK][N];
+    static double q_re[N], q_im[N], inv_p[N];
+    make_importance(N);
+    for (size_t b = 0; b < N; ++b)
+        inv_p[b] = 1.0 / imp.p[b];
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_dft_init(&plan, N));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_dft_real(&plan, N, inv_p, q_re, q_im));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_init(&mom, N));
+    for (size_t a = 0; a < NK; ++a)
+        for (size_t l = 0; l < N; ++l) {
+            mcs_welford_init(&wr[a][l]);
+            mcs_welford_init(&wi[a][l]);
+        }
+    stream st;
+    stream_init(&st, MCS_PATTERN_RANDOM, N, K, &imp, 77u);
+    for (size_t t = 0; t < T; ++t) {
+        stream_draw(&st);
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_add_bins(&mom, K, bins, weights));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_dense(N, K, bins, weights, dense));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_dft_real(&plan, N, dense, re, im));
+        for (size_t a = 0; a < NK; ++a) {
+            const size_t k = ks[a];
+            for (size_t l = 0; l < N; ++l) {
+                mcs_welford_add(&wr[a][l], re[k] * re[l] + im[k] * im[l]);
+                mcs_welford_add(&wi[a][l], im[k] * re[l] - re[k] * im[l]);
+            }
+        }
+    }
+    const double kn = (double)K / N, h = imp.harmonic_mean;
+    for (size_t a = 0; a < NK; ++a) {
+        const size_t k = ks[a];
+        for (size_t l = 0; l < N; ++l) {
+            double pr, pi, xr, xi, mr, mi, ser, sei;
+            const size_t d = (k + N - l) % N;
+            if (k == 0u && l == 0u) {
+                pr = (double)(K * K) / N + kn * (1.0 / h - 1.0); /* eq. 46 */
+                pi = 0.0;
+            } else {
+                pr = kn / sqrt((double)N) * q_re[d]; /* eq. 43 */
+                pi = kn / sqrt((double)N) * q_im[d];
+            }
+            if (k == l && k != 0u)
+                TEST_ASSERT_DOUBLE_WITHIN(1e-12, kn / h, pr); /* eq. 45 is eq. 43 at k = l */
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_cross(&mom, k, l, &xr, &xi));
+            mcs_welford_mean(&wr[a][l], &mr);
+            mcs_welford_mean(&wi[a][l], &mi);
+            mcs_welford_stderr(&wr[a][l], &ser);
+            mcs_welford_stderr(&wi[a][l], &sei);
+            /* the accumulator is the trial average, to rounding */
+            assert_close(mr, xr, 1e-10, sqrt(ser * ser + sei * sei) * 1e2, "Re vs trials", k, l);
+            assert_close(mi, xi, 1e-10, sqrt(ser * ser + sei * sei) * 1e2, "Im vs trials", k, l);
+            /* and the note's prediction, within 5 standard errors */
+            if (!(fabs(xr - pr) <= 5.0 * ser + 1e-12) || !(fabs(xi - pi) <= 5.0 * sei + 1e-12)) {
+                char msg[200];
+                (void)snprintf(msg, sizeof msg,
+                               "<S_%zu S_%zu*> = %.5g%+.5gi +- (%.2g, %.2g), eq. 43 %.5g%+.5gi", k,
+                               l, xr, xi, ser, sei, pr, pi);
+                TEST_FAIL_MESSAGE(msg);
+            }
+        }
+    }
+}
+
+/* Stratified with K | N (eq. 28-30): <S_k S_l*> = (K/N) delta_kl + Delta_kl
+ * with Delta_kl = -(K/N)^3 A_k conj(A_l) when k = l (mod K) and 0 otherwise,
+ * A_k = (1 - e^{-2 pi i k/K}) / (1 - e^{-2 pi i k/N}); (k, l) != (0, 0). The
+ * off-diagonal terms with k = l (mod K) are what makes the pattern
+ * non-stationary. */
+static void test_stratified_off_diagonal_terms_follow_eq_30(void)
+{
+    enum { N = 16, K = 4, T = 100000 };
+    static mcs_welford wr[N][N], wi[N][N];
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_init(&mom, N));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_dft_init(&plan, N));
+    for (size_t k = 0; k < N; ++k)
+        for (size_t l = 0; l < N; ++l) {
+            mcs_welford_init(&wr[k][l]);
+            mcs_welford_init(&wi[k][l]);
+        }
+    stream st;
+    stream_init(&st, MCS_PATTERN_STRATIFIED, N, K, NULL, 99u);
+    for (size_t t = 0; t < T; ++t) {
+        stream_draw(&st);
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_add_bins(&mom, K, bins, weights));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_dense(N, K, bins, weights, dense));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_dft_real(&plan, N, dense, re, im));
+        for (size_t k = 1; k < 4u; ++k)
+            for (size_t l = 0; l < N; ++l) {
+                mcs_welford_add(&wr[k][l], re[k] * re[l] + im[k] * im[l]);
+                mcs_welford_add(&wi[k][l], im[k] * re[l] - re[k] * im[l]);
+            }
+    }
+    const double kn = (double)K / N;
+    size_t nonzero_off_diagonal = 0u;
+    for (size_t k = 1; k < 4u; ++k) {
+        for (size_t l = 0; l < N; ++l) {
+            double pr = k == l ? kn : 0.0, pi = 0.0;
+            if ((k + N - l) % K == 0u && l % K != 0u) {
+                /* A_k conj(A_l) */
+                const double ak = 2.0 * PI * (double)k, al = 2.0 * PI * (double)l;
+                const double nr_k = 1.0 - cos(ak / K), ni_k = sin(ak / K);
+                const double dr_k = 1.0 - cos(ak / N), di_k = sin(ak / N);
+                const double nr_l = 1.0 - cos(al / K), ni_l = sin(al / K);
+                const double dr_l = 1.0 - cos(al / N), di_l = sin(al / N);
+                /* A_k = (nr_k + i ni_k) / (dr_k + i di_k) */
+                const double den_k = dr_k * dr_k + di_k * di_k, den_l = dr_l * dr_l + di_l * di_l;
+                const double akr = (nr_k * dr_k + ni_k * di_k) / den_k;
+                const double aki = (ni_k * dr_k - nr_k * di_k) / den_k;
+                const double alr = (nr_l * dr_l + ni_l * di_l) / den_l;
+                const double ali = (ni_l * dr_l - nr_l * di_l) / den_l;
+                pr -= kn * kn * kn * (akr * alr + aki * ali);
+                pi -= kn * kn * kn * (aki * alr - akr * ali);
+                if (k != l)
+                    ++nonzero_off_diagonal;
+            }
+            double xr, xi, ser, sei;
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_cross(&mom, k, l, &xr, &xi));
+            mcs_welford_stderr(&wr[k][l], &ser);
+            mcs_welford_stderr(&wi[k][l], &sei);
+            if (!(fabs(xr - pr) <= 5.0 * ser + 1e-12) || !(fabs(xi - pi) <= 5.0 * sei + 1e-12)) {
+                char msg[200];
+                (void)snprintf(msg, sizeof msg,
+                               "<S_%zu S_%zu*> = %.5g%+.5gi +- (%.2g, %.2g), eq. 30 %.5g%+.5gi", k,
+                               l, xr, xi, ser, sei, pr, pi);
+                TEST_FAIL_MESSAGE(msg);
+            }
+        }
+    }
+    TEST_ASSERT_TRUE(nonzero_off_diagonal >= 6u);
+}
+
+/* ---------------- bad input ---------------- */
+
+#define MOM_UNCHANGED(status, call)                                                          \
+    do {                                                                                     \
+        memcpy(&mom_before, &mom, sizeof mom);                                               \
+        TEST_ASSERT_EQUAL_INT((status), (call));                                             \
+        TEST_ASSERT_EQUAL_MEMORY(&mom_before, &mom, sizeof mom);                             \
+    } while (0)
+
+#define AC_UNCHANGED(status, call)                                                           \
+    do {                                                                                     \
+        memcpy(&ac_before, &ac, sizeof ac);                                                  \
+        TEST_ASSERT_EQUAL_INT((status), (call));                                             \
+        TEST_ASSERT_EQUAL_MEMORY(&ac_before, &ac, sizeof ac);                                \
+    } while (0)
+
+static void test_bad_input_to_the_moment_accumulator_changes_nothing(void)
+{
+    size_t b[3] = {0u, 4u, 7u};
+    double w[3] = {1.0, 2.0, 0.5};
+    double v = 7.0, vr = 7.0, vi = 7.0;
+    uint64_t c = 7u;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_init(&mom, 8u));
+
+    /* empty: no read-outs */
+    MOM_UNCHANGED(MCS_ERR_EMPTY, mcs_moment_mean_s(&mom, 0u, &v));
+    MOM_UNCHANGED(MCS_ERR_EMPTY, mcs_moment_power(&mom, 0u, &v));
+    MOM_UNCHANGED(MCS_ERR_EMPTY, mcs_moment_cross(&mom, 0u, 1u, &vr, &vi));
+    MOM_UNCHANGED(MCS_ERR_EMPTY, mcs_moment_cross_matrix(&mom, 8u, mat_re, mat_im));
+
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_add_bins(&mom, 3u, b, w));
+    MOM_UNCHANGED(MCS_ERR_NULL, mcs_moment_init(NULL, 8u));
+    MOM_UNCHANGED(MCS_ERR_N_RANGE, mcs_moment_init(&mom, 0u));
+    MOM_UNCHANGED(MCS_ERR_N_RANGE, mcs_moment_init(&mom, (size_t)COV + 1u));
+
+    MOM_UNCHANGED(MCS_ERR_NULL, mcs_moment_add_bins(&mom, 3u, NULL, w));
+    MOM_UNCHANGED(MCS_ERR_NULL, mcs_moment_add_bins(&mom, 3u, b, NULL));
+    MOM_UNCHANGED(MCS_ERR_K_RANGE, mcs_moment_add_bins(&mom, 0u, b, w));
+    b[2] = 8u;
+    MOM_UNCHANGED(MCS_ERR_BIN_RANGE, mcs_moment_add_bins(&mom, 3u, b, w));
+    b[2] = 7u;
+    w[1] = NAN;
+    MOM_UNCHANGED(MCS_ERR_NOT_FINITE, mcs_moment_add_bins(&mom, 3u, b, w));
+    w[1] = -INFINITY;
+    MOM_UNCHANGED(MCS_ERR_NOT_FINITE, mcs_moment_add_bins(&mom, 3u, b, w));
+    w[1] = -2.0;
+    MOM_UNCHANGED(MCS_ERR_NEGATIVE, mcs_moment_add_bins(&mom, 3u, b, w));
+    w[1] = 2.0;
+
+    for (size_t j = 0; j < 8u; ++j)
+        dense[j] = 1.0;
+    MOM_UNCHANGED(MCS_ERR_NULL, mcs_moment_add_dense(&mom, 8u, NULL));
+    MOM_UNCHANGED(MCS_ERR_MISMATCH, mcs_moment_add_dense(&mom, 9u, dense));
+    dense[5] = NAN;
+    MOM_UNCHANGED(MCS_ERR_NOT_FINITE, mcs_moment_add_dense(&mom, 8u, dense));
+    dense[5] = -1.0;
+    MOM_UNCHANGED(MCS_ERR_NEGATIVE, mcs_moment_add_dense(&mom, 8u, dense));
+    dense[5] = 1.0;
+
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_init(&mom2, 9u));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_add_bins(&mom2, 3u, b, w));
+    MOM_UNCHANGED(MCS_ERR_MISMATCH, mcs_moment_merge(&mom, &mom2));
+    MOM_UNCHANGED(MCS_ERR_NULL, mcs_moment_merge(&mom, NULL));
+    memset(&mom3, 0, sizeof mom3);
+    MOM_UNCHANGED(MCS_ERR_UNINIT, mcs_moment_merge(&mom, &mom3));
+
+    MOM_UNCHANGED(MCS_ERR_NULL, mcs_moment_count(&mom, NULL));
+    MOM_UNCHANGED(MCS_ERR_BIN_RANGE, mcs_moment_mean_s(&mom, 8u, &v));
+    MOM_UNCHANGED(MCS_ERR_NULL, mcs_moment_mean_s(&mom, 1u, NULL));
+    MOM_UNCHANGED(MCS_ERR_BIN_RANGE, mcs_moment_second(&mom, 1u, 8u, &v));
+    MOM_UNCHANGED(MCS_ERR_BIN_RANGE, mcs_moment_second(&mom, 8u, 1u, &v));
+    MOM_UNCHANGED(MCS_ERR_FREQ_RANGE, mcs_moment_spectrum_mean(&mom, 8u, &vr, &vi));
+    MOM_UNCHANGED(MCS_ERR_NULL, mcs_moment_spectrum_mean(&mom, 1u, &vr, NULL));
+    MOM_UNCHANGED(MCS_ERR_FREQ_RANGE, mcs_moment_power(&mom, 8u, &v));
+    MOM_UNCHANGED(MCS_ERR_FREQ_RANGE, mcs_moment_cross(&mom, 8u, 0u, &vr, &vi));
+    MOM_UNCHANGED(MCS_ERR_FREQ_RANGE, mcs_moment_cross(&mom, 0u, 8u, &vr, &vi));
+    MOM_UNCHANGED(MCS_ERR_NULL, mcs_moment_cross(&mom, 0u, 1u, NULL, &vi));
+    MOM_UNCHANGED(MCS_ERR_FREQ_RANGE, mcs_moment_covariance(&mom, 9u, 0u, &vr, &vi));
+    MOM_UNCHANGED(MCS_ERR_NULL, mcs_moment_covariance(&mom, 0u, 0u, &vr, NULL));
+    for (size_t j = 0; j < 64u; ++j)
+        mat_re[j] = mat_im[j] = 7.0;
+    MOM_UNCHANGED(MCS_ERR_MISMATCH, mcs_moment_cross_matrix(&mom, 7u, mat_re, mat_im));
+    MOM_UNCHANGED(MCS_ERR_NULL, mcs_moment_cross_matrix(&mom, 8u, mat_re, NULL));
+    MOM_UNCHANGED(MCS_ERR_MISMATCH, mcs_moment_covariance_matrix(&mom, 9u, mat_re, mat_im));
+    MOM_UNCHANGED(MCS_ERR_NULL, mcs_moment_covariance_matrix(&mom, 8u, NULL, mat_im));
+    for (size_t j = 0; j < 64u; ++j) {
+        TEST_ASSERT_EQUAL_DOUBLE(7.0, mat_re[j]);
+        TEST_ASSERT_EQUAL_DOUBLE(7.0, mat_im[j]);
+    }
+    TEST_ASSERT_EQUAL_DOUBLE(7.0, v);
+    TEST_ASSERT_EQUAL_DOUBLE(7.0, vr);
+    TEST_ASSERT_EQUAL_DOUBLE(7.0, vi);
+
+    memset(&mom, 0, sizeof mom);
+    MOM_UNCHANGED(MCS_ERR_UNINIT, mcs_moment_add_bins(&mom, 3u, b, w));
+    MOM_UNCHANGED(MCS_ERR_UNINIT, mcs_moment_add_dense(&mom, 8u, dense));
+    MOM_UNCHANGED(MCS_ERR_UNINIT, mcs_moment_count(&mom, &c));
+    MOM_UNCHANGED(MCS_ERR_UNINIT, mcs_moment_power(&mom, 0u, &v));
+    MOM_UNCHANGED(MCS_ERR_UNINIT, mcs_moment_merge(&mom, &mom2));
+    TEST_ASSERT_EQUAL_UINT64(7u, c);
+}
+
+static void test_bad_input_to_the_autocorrelation_changes_nothing(void)
+{
+    size_t b[3] = {0u, 4u, 7u};
+    double w[3] = {1.0, 2.0, 0.5};
+    uint64_t c = 7u;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_autocorr_init(&ac, 8u));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_dft_init(&plan, 8u));
+    for (size_t j = 0; j < 16u; ++j)
+        power[j] = re[j] = im[j] = 7.0;
+    AC_UNCHANGED(MCS_ERR_EMPTY, mcs_autocorr_power(&ac, &plan, 8u, power));
+    AC_UNCHANGED(MCS_ERR_EMPTY, mcs_autocorr_mean(&ac, &plan, 8u, re, im));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_autocorr_add_bins(&ac, 3u, b, w));
+
+    AC_UNCHANGED(MCS_ERR_NULL, mcs_autocorr_init(NULL, 8u));
+    AC_UNCHANGED(MCS_ERR_N_RANGE, mcs_autocorr_init(&ac, 0u));
+    AC_UNCHANGED(MCS_ERR_N_RANGE, mcs_autocorr_init(&ac, (size_t)MCS_MAX_N + 1u));
+    AC_UNCHANGED(MCS_ERR_NULL, mcs_autocorr_add_bins(&ac, 3u, NULL, w));
+    AC_UNCHANGED(MCS_ERR_NULL, mcs_autocorr_add_bins(&ac, 3u, b, NULL));
+    AC_UNCHANGED(MCS_ERR_K_RANGE, mcs_autocorr_add_bins(&ac, 0u, b, w));
+    b[0] = 8u;
+    AC_UNCHANGED(MCS_ERR_BIN_RANGE, mcs_autocorr_add_bins(&ac, 3u, b, w));
+    b[0] = 0u;
+    w[2] = NAN;
+    AC_UNCHANGED(MCS_ERR_NOT_FINITE, mcs_autocorr_add_bins(&ac, 3u, b, w));
+    w[2] = -0.5;
+    AC_UNCHANGED(MCS_ERR_NEGATIVE, mcs_autocorr_add_bins(&ac, 3u, b, w));
+    w[2] = 0.5;
+
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_autocorr_init(&ac2, 9u));
+    AC_UNCHANGED(MCS_ERR_MISMATCH, mcs_autocorr_merge(&ac, &ac2));
+    AC_UNCHANGED(MCS_ERR_NULL, mcs_autocorr_merge(NULL, &ac2));
+    memset(&ac3, 0, sizeof ac3);
+    AC_UNCHANGED(MCS_ERR_UNINIT, mcs_autocorr_merge(&ac, &ac3));
+    AC_UNCHANGED(MCS_ERR_NULL, mcs_autocorr_count(&ac, NULL));
+
+    static mcs_dft plan_before, plan9, zero_plan;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_dft_init(&plan9, 9u));
+    memset(&zero_plan, 0, sizeof zero_plan);
+    memcpy(&plan_before, &plan, sizeof plan);
+    AC_UNCHANGED(MCS_ERR_MISMATCH, mcs_autocorr_power(&ac, &plan, 7u, power));
+    AC_UNCHANGED(MCS_ERR_MISMATCH, mcs_autocorr_power(&ac, &plan9, 8u, power));
+    AC_UNCHANGED(MCS_ERR_UNINIT, mcs_autocorr_power(&ac, &zero_plan, 8u, power));
+    AC_UNCHANGED(MCS_ERR_NULL, mcs_autocorr_power(&ac, NULL, 8u, power));
+    AC_UNCHANGED(MCS_ERR_NULL, mcs_autocorr_power(&ac, &plan, 8u, NULL));
+    AC_UNCHANGED(MCS_ERR_MISMATCH, mcs_autocorr_mean(&ac, &plan, 9u, re, im));
+    AC_UNCHANGED(MCS_ERR_NULL, mcs_autocorr_mean(&ac, &plan, 8u, re, NULL));
+    AC_UNCHANGED(MCS_ERR_NULL, mcs_autocorr_mean(&ac, &plan, 8u, NULL, im));
+    TEST_ASSERT_EQUAL_MEMORY(&plan_before, &plan, sizeof plan);
+    for (size_t j = 0; j < 16u; ++j) {
+        TEST_ASSERT_EQUAL_DOUBLE(7.0, power[j]);
+        TEST_ASSERT_EQUAL_DOUBLE(7.0, re[j]);
+        TEST_ASSERT_EQUAL_DOUBLE(7.0, im[j]);
+    }
+
+    memset(&ac, 0, sizeof ac);
+    AC_UNCHANGED(MCS_ERR_UNINIT, mcs_autocorr_add_bins(&ac, 3u, b, w));
+    AC_UNCHANGED(MCS_ERR_UNINIT, mcs_autocorr_count(&ac, &c));
+    AC_UNCHANGED(MCS_ERR_UNINIT, mcs_autocorr_power(&ac, &plan, 8u, power));
+    TEST_ASSERT_EQUAL_UINT64(7u, c);
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_moment_and_spectrum_agree_on_every_mean_and_power);
+    RUN_TEST(test_autocorrelation_and_spectrum_agree_for_any_n);
+    RUN_TEST(test_primal_moments_and_cross_spectrum_match_brute_force);
+    RUN_TEST(test_covariance_is_the_cross_spectrum_minus_the_mean_product);
+    RUN_TEST(test_dense_and_sparse_trials_accumulate_the_same_sums);
+    RUN_TEST(test_merge_of_halves_equals_one_pass);
+    RUN_TEST(test_importance_sampled_cross_spectrum_is_q_of_k_minus_l);
+    RUN_TEST(test_stratified_off_diagonal_terms_follow_eq_30);
+    RUN_TEST(test_bad_input_to_the_moment_accumulator_changes_nothing);
+    RUN_TEST(test_bad_input_to_the_autocorrelation_changes_nothing);
+    return UNITY_END();
+}
