@@ -36,7 +36,7 @@ static size_t sparse_limit(const mcs_dft *plan)
 static int spectrum_is_valid(const mcs_spectrum *acc)
 {
     return acc->n >= 1u && acc->n <= (size_t)MCS_MAX_N && acc->plan.n == acc->n &&
-           acc->path >= MCS_SPECTRUM_PATH_AUTO && acc->path <= MCS_SPECTRUM_PATH_FFT;
+           (unsigned)acc->path <= (unsigned)MCS_SPECTRUM_PATH_FFT; /* enum may be unsigned */
 }
 
 mcs_status mcs_spectrum_init(mcs_spectrum *acc, size_t n)

@@ -10,9 +10,10 @@
  * allocate scratch) uses a direct sum over the non-zero s_n with a twiddle
  * table: O(N * nnz), exact index reduction, no allocation.
  *
- * Size: sizeof(mcs_dft) is about 64 * MCS_MAX_N bytes (256 KiB at the default
- * 4096): the twiddle table (2 * MCS_MAX_N doubles), KissFFT's state
- * (MCS_DFT_KISS_DOUBLES) and complex scratch (4 * MCS_MAX_N doubles). */
+ * Size: sizeof(mcs_dft) is about 64 * MCS_MAX_N bytes (262 680 at the default
+ * 4096 on x86-64, 16 920 at MCS_MAX_N = 256): the twiddle table (2 * MCS_MAX_N
+ * doubles), KissFFT's state (MCS_DFT_KISS_DOUBLES) and complex scratch
+ * (4 * MCS_MAX_N doubles, all of it needed by odd N). */
 #ifndef MCSPEC_DFT_H
 #define MCSPEC_DFT_H
 
@@ -57,7 +58,8 @@ mcs_status mcs_dft_init(mcs_dft *plan, size_t n);
 
 /* All n frequencies of eq. 7: re[k] + i im[k] = S_k, k = 0..n-1, with
  * S_{n-k} = conj(S_k) exactly. s[n]: finite reals (any sign). re[n] written;
- * im[n] written unless im is NULL. s may be the same array as re or im.
+ * im[n] written unless im is NULL. s may be the same array as re or im (but
+ * must not point into plan->work, the plan's own scratch).
  * MCS_ERR_NULL (plan, s, re), MCS_ERR_UNINIT, MCS_ERR_MISMATCH (n != plan n),
  * MCS_ERR_NOT_FINITE. On error neither outputs nor the plan change. */
 mcs_status mcs_dft_real(mcs_dft *plan, size_t n, const double *s, double *re, double *im);

@@ -16,9 +16,10 @@
  * MCS_SPECTRUM_PATH_AUTO picks the cheaper one per trial from K and N.
  *
  * Size: sizeof(mcs_spectrum) is the embedded mcs_dft (about 64 * MCS_MAX_N
- * bytes) plus 11 * (MCS_MAX_N / 2 + 1) + MCS_MAX_N doubles of statistics and
- * scratch: about 164 * MCS_MAX_N bytes in all (about 660 KiB at 4096; use
- * -DMCS_MAX_N=... to shrink it). It holds no pointers. */
+ * bytes) plus 7 * MCS_SPECTRUM_HALF + MCS_MAX_N doubles of statistics and
+ * scratch: about 100 * MCS_MAX_N bytes in all (410 280 at the default 4096 on
+ * x86-64, 26 280 at MCS_MAX_N = 256; shrink it with -DMCS_MAX_N=...). It holds
+ * no pointers, so it may be copied. */
 #ifndef MCSPEC_SPECTRUM_H
 #define MCSPEC_SPECTRUM_H
 
