@@ -218,6 +218,11 @@ int main(int argc, char **argv)
     }
 
     ex_heading(&opt, "summary (computed from the rows above)");
+    if (!(vex[P_STRAT] > 0.0) || !(vme[P_STRAT] > 0.0) || !(vme[P_RANDOM] > 0.0)) {
+        ex_note(&opt, "(no summary: the variances vanish for this N and K)");
+        ex_end(&opt);
+        return 0;
+    }
     ex_notef(&opt,
              "stationary patterns: eq. 14 = eq. 13 to %.2g (random) and %.2g (jitter) relative; "
              "both equal the measured variance within %.1f and %.1f stderr",

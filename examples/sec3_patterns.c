@@ -474,14 +474,18 @@ int main(int argc, char **argv)
                  "random: %.4g +- %.2g",
                  meas[P_STRAT], se[P_STRAT], meas[P_HOMOG], se[P_HOMOG], meas[P_RANDOM],
                  se[P_RANDOM]);
-        ex_notef(&opt,
+        if (!isnan(v14_limit) && !isnan(v14_exact))
+            ex_notef(&opt,
                  "eq. 14 with eq. 33 (sinc^2) vs with the exact finite-N power: %.3g relative "
                  "at N = %zu, %.3g at N = %zu (homogenized, where eq. 14 is exact)",
                  ex_rel_gap(v14_limit, v14_exact, 1e-300), n, limit_gap_big, big);
     }
 
     ex_heading(&opt, "summary (computed from the rows above)");
-    ex_notef(&opt,
+    if (isnan(fixed_gap) || isnan(homog_gap))
+        ex_note(&opt, "eq. 33 is defined only when K divides N: no eq. 14 comparison here");
+    else
+        ex_notef(&opt,
              "eq. 14 with eq. 33 misses the fixed-strata variance by %.0f%% (z = %.1f); with "
              "homogenized strata it is off by %.2g%% (z = %.2f)",
              100.0 * fixed_gap, fixed_z, 100.0 * homog_gap, homog_z);

@@ -19,8 +19,11 @@ static const char help_text[] =
     "bin centres, normalised): g1 = 0.45 + 0.3 sin(2 pi x) + 0.3 [x >= 0.35]\n"
     "roughly follows f; g2 = 0.2 + (1 - x)^2 does not (it is high where f is\n"
     "low); 'flat' is the uniform g (p_n = 1), where the stratified forms should\n"
-    "reduce to section 3. Runs: random and stratified without importance, and\n"
-    "random and stratified warped through g1, g2 (and flat for stratified).\n"
+    "reduce to section 3; g1b is g1 with each block of N/K bins rescaled to mass\n"
+    "1/K, so that every warped stratum is N/K whole bins (the condition under\n"
+    "which eq. 49-51 can hold) though g1b is far from uniform. Runs: random and\n"
+    "stratified without importance, random warped through g1 and g2, and\n"
+    "stratified warped through g1, g2, flat and g1b.\n"
     "Measured per run (T trials each, its own PCG32 stream): the power spectrum\n"
     "(mcs_spectrum), S_k and S_k S_l* at a few frequencies by direct sums\n"
     "(Welford, Re and Im each with its standard error), the estimator I of both\n"
@@ -28,18 +31,19 @@ static const char help_text[] =
     "and the Parseval sum sum_{k>=1} |S_k|^2 per trial (the mean power over\n"
     "k >= 1 with an honest standard error).\n"
     "Bound rows (eq. 58) put the bound in the closed column; their verdict is\n"
-    "the bound rule below. Eq. 50 is an N -> infinity form for flat g: its limit\n"
-    "check uses eq. 33's exact finite-N form at 16 N, which is the exact flat-g\n"
-    "spectrum (checked at N in the notes). The note's N -> infinity forms are\n"
+    "the bound rule below. Eq. 50 is an N -> infinity form when the strata are\n"
+    "whole bins (flat g, g1b): its limit check uses the exact finite-N form\n"
+    "there, eq. 33's exact form + (K/N)(1/H - 1), at 16 N (checked against\n"
+    "mcspec theory at N in the notes). The note's N -> infinity forms are\n"
     "evaluated at the signed frequency min(k, N - k) wherever a sum over all k\n"
     "is formed.\n";
 
 #define LARGE_N_FACTOR 16u
 
-enum { G_NONE, G_FOLLOW, G_MISMATCH, G_FLAT, G_COUNT };
+enum { G_NONE, G_FOLLOW, G_MISMATCH, G_FLAT, G_BALANCED, G_COUNT };
 
 enum { R_RANDOM, R_STRAT, R_RANDOM_G1, R_RANDOM_G2, R_STRAT_G1, R_STRAT_G2, R_STRAT_FLAT,
-       R_COUNT };
+       R_STRAT_BAL, R_COUNT };
 
 typedef struct {
     mcs_pattern_kind kind;
@@ -55,9 +59,11 @@ static const run_spec specs[R_COUNT] = {
     {MCS_PATTERN_STRATIFIED, G_FOLLOW, "stratified+g1"},
     {MCS_PATTERN_STRATIFIED, G_MISMATCH, "stratified+g2"},
     {MCS_PATTERN_STRATIFIED, G_FLAT, "stratified+flat"},
+    {MCS_PATTERN_STRATIFIED, G_BALANCED, "stratified+g1b"},
 };
 
 static mcs_importance imps[G_COUNT];
+static mcs_importance imp_big; /* a g at a larger N, for limit checks */
 static ex_run runs[R_COUNT];
 static mcs_spectrum spectra[R_COUNT];
 static mcs_theory theories[R_COUNT];
@@ -75,12 +81,34 @@ static double g_weight(int g, double x)
 {
     switch (g) {
     case G_FOLLOW:
+    case G_BALANCED:
         return 0.45 + 0.3 * sin(2.0 * pi * x) + (x >= 0.35 ? 0.3 : 0.0);
     case G_MISMATCH:
         return 0.2 + (1.0 - x) * (1.0 - x);
     default:
         return 1.0;
     }
+}
+
+/* Importance function g over m bins. g1b is g1 with every block of m/K bins
+ * rescaled to mass 1/K, so each stratum of the warped pattern is m/K whole
+ * bins (when K divides m; otherwise it is g1). */
+static mcs_status importance_for(int g, size_t m, mcs_importance *imp)
+{
+    static double w[MCS_MAX_N];
+    for (size_t b = 0; b < m; ++b)
+        w[b] = g_weight(g, ((double)b + 0.5) / (double)m);
+    if (g == G_BALANCED && m % k_samples == 0u) {
+        size_t block = m / k_samples;
+        for (size_t s0 = 0; s0 < m; s0 += block) {
+            double mass = 0.0;
+            for (size_t b = s0; b < s0 + block; ++b)
+                mass += w[b];
+            for (size_t b = s0; b < s0 + block; ++b)
+                w[b] /= mass;
+        }
+    }
+    return mcs_importance_init(imp, m, w);
 }
 
 static const mcs_importance *imp_of(int r)
@@ -130,13 +158,9 @@ static size_t pick_freqs(size_t n, size_t k, size_t *out)
 
 static int setup_and_measure(const ex_options *opt, const size_t *freqs, size_t nfreq)
 {
-    static double w[MCS_MAX_COV_N];
-    for (int g = G_FOLLOW; g < G_COUNT; ++g) {
-        for (size_t b = 0; b < opt->n; ++b)
-            w[b] = g_weight(g, ((double)b + 0.5) / (double)opt->n);
-        if (mcs_importance_init(&imps[g], opt->n, w) != MCS_OK)
+    for (int g = G_FOLLOW; g < G_COUNT; ++g)
+        if (importance_for(g, opt->n, &imps[g]) != MCS_OK)
             return 0;
-    }
     for (int r = 0; r < R_COUNT; ++r) {
         ex_run *run = &runs[r];
         mcs_status st = ex_run_init(run, specs[r].kind, opt->n, opt->k, imp_of(r), opt->seed,
@@ -151,6 +175,7 @@ static int setup_and_measure(const ex_options *opt, const size_t *freqs, size_t 
                 ex_run_probe(run, freqs[i]);
             ex_run_probe_pair(run, 1u, 2u);
             ex_run_probe_pair(run, 3u, 1u);
+            ex_run_probe_pair(run, 1u, opt->k + 1u);
             ex_run_integrand(run, f);
             ex_run_integrand(run, f_const);
             st = ex_run_go(run, opt->trials, &spectra[r], NULL);
@@ -178,25 +203,69 @@ static double theory_mean_power(int r)
     return sum / (double)(n_bins - 1u);
 }
 
-/* Mean over k >= 1 of the note's power for run r at M bins (eq. 23, 33, 45, 50;
- * the sinc^2 forms at the signed frequency), or of eq. 33's exact finite-N
- * form if exact33. */
-static double closed_mean_power(int r, size_t m, int exact33)
+/* H of run r's g discretised over m bins (1 without importance or flat). */
+static double h_at(int r, size_t m)
 {
-    double sum = 0.0, v = 0.0, h = h_of(r);
-    for (size_t q = 1; q < m; ++q) {
-        mcs_status st;
-        if (exact33)
-            st = mcs_eq33_stratified_power_exact(m, k_samples, q, &v);
-        else if (specs[r].kind == MCS_PATTERN_RANDOM)
-            st = mcs_eq45_importance_power(m, k_samples, h, q, &v);
-        else
-            st = mcs_eq50_importance_stratified_power(m, k_samples, h, fold(m, q), &v);
-        if (st != MCS_OK)
-            return EX_NA;
-        sum += v;
-    }
+    int g = specs[r].g;
+    if (m == n_bins || g == G_NONE || g == G_FLAT)
+        return h_of(r);
+    if (importance_for(g, m, &imp_big) != MCS_OK)
+        return EX_NA;
+    return imp_big.harmonic_mean;
+}
+
+/* The note's power for run r at m bins and DFT index q (eq. 23, 33, 45, 50;
+ * the sinc^2 forms at the signed frequency min(q, m - q)). */
+static double closed_power_at(int r, size_t m, size_t q)
+{
+    double v = 0.0, h = h_at(r, m);
+    int g = specs[r].g;
+    mcs_status st;
+    if (specs[r].kind == MCS_PATTERN_RANDOM)
+        st = g == G_NONE ? mcs_eq23_random_power(m, k_samples, q, &v)
+                         : mcs_eq45_importance_power(m, k_samples, h, q, &v);
+    else if (g == G_NONE)
+        st = mcs_eq33_stratified_power_limit(m, k_samples, fold(m, q), &v);
+    else
+        st = mcs_eq50_importance_stratified_power(m, k_samples, h, fold(m, q), &v);
+    return or_na(st, &v);
+}
+
+/* The exact power of a stratified run at m bins where it is known in closed
+ * form: strata of m/K whole bins (no g, flat g, g1b) give
+ * (K/m)/H + eq. 32 = eq. 33's exact form + (K/m)(1/H - 1) (mcspec's theory
+ * tests check this; the notes below check it at N). EX_NA otherwise. */
+static double exact_power_at(int r, size_t m, size_t q)
+{
+    int g = specs[r].g;
+    double v = 0.0, h = h_at(r, m);
+    if (specs[r].kind != MCS_PATTERN_STRATIFIED ||
+        (g != G_NONE && g != G_FLAT && !(g == G_BALANCED && m % k_samples == 0u)))
+        return EX_NA;
+    if (mcs_eq33_stratified_power_exact(m, k_samples, q, &v) != MCS_OK)
+        return EX_NA;
+    return v + (double)k_samples / (double)m * (1.0 / h - 1.0);
+}
+
+/* Mean over k >= 1 of the closed form (exact = 0) or of exact_power_at (1). */
+static double mean_power_at(int r, size_t m, int exact)
+{
+    double sum = 0.0;
+    for (size_t q = 1; q < m; ++q)
+        sum += exact ? exact_power_at(r, m, q) : closed_power_at(r, m, q);
     return sum / (double)(m - 1u);
+}
+
+/* Relative gap of the closed form to the exact value at LARGE_N_FACTOR N,
+ * at index q, or of their means over k >= 1 if q == 0. */
+static double gap_at_large_n(int r, size_t q, double floor_)
+{
+    size_t big = LARGE_N_FACTOR * n_bins;
+    double c = q == 0u ? mean_power_at(r, big, 0) : closed_power_at(r, big, q);
+    double e = q == 0u ? mean_power_at(r, big, 1) : exact_power_at(r, big, q);
+    if (isnan(c) || isnan(e))
+        return EX_NA;
+    return ex_rel_gap(c, e, floor_ / (double)LARGE_N_FACTOR);
 }
 
 static void measured_power(int r, size_t q, double *value, double *se)
@@ -233,9 +302,11 @@ int main(int argc, char **argv)
         return 1;
 
     ex_begin(&opt, "Section 4: importance sampling (eq. 38-58)");
-    ex_notef(&opt, "harmonic means of p = N g: H(g1) = %.6f, H(g2) = %.6f, H(flat) = %.6f",
+    ex_notef(&opt,
+             "harmonic means of p = N g: H(g1) = %.6f, H(g2) = %.6f, H(flat) = %.6f, "
+             "H(g1b) = %.6f",
              imps[G_FOLLOW].harmonic_mean, imps[G_MISMATCH].harmonic_mean,
-             imps[G_FLAT].harmonic_mean);
+             imps[G_FLAT].harmonic_mean, imps[G_BALANCED].harmonic_mean);
 
     /* ---- unbiasedness ---- */
     ex_heading(&opt, "unbiasedness under importance sampling: <s_n> = K/N, so <I> = mean of f "
@@ -267,15 +338,18 @@ int main(int argc, char **argv)
     /* ---- <|S_k|^2>, k >= 1 ---- */
     ex_heading(&opt, "<|S_k|^2>, k >= 1: eq. 45 (random, K/(N H)) and eq. 50 (stratified, "
                      "(K/N)(1/H - sinc^2(pi k/K)))");
-    double flat_vs_33 = 0.0;
+    double whole_bin_check = 0.0;
     for (size_t q = 1; q < n; ++q) {
-        double v = 0.0;
-        if (mcs_eq33_stratified_power_exact(n, k, q, &v) == MCS_OK)
-            flat_vs_33 = fmax(flat_vs_33, fabs(theory_power(R_STRAT_FLAT, q) - v) / kn);
+        const int wr[3] = {R_STRAT, R_STRAT_FLAT, R_STRAT_BAL};
+        for (int i = 0; i < 3; ++i) {
+            double e = exact_power_at(wr[i], n, q);
+            if (!isnan(e))
+                whole_bin_check = fmax(whole_bin_check, fabs(theory_power(wr[i], q) - e) / kn);
+        }
     }
     {
-        const int rs[4] = {R_RANDOM_G1, R_RANDOM_G2, R_STRAT_G1, R_STRAT_FLAT};
-        for (int i = 0; i < 4; ++i) {
+        const int rs[5] = {R_RANDOM_G1, R_RANDOM_G2, R_STRAT_G1, R_STRAT_FLAT, R_STRAT_BAL};
+        for (int i = 0; i < 5; ++i) {
             int r = rs[i];
             int is_random = specs[r].kind == MCS_PATTERN_RANDOM;
             for (size_t j = 0; j < nfreq; ++j) {
@@ -288,34 +362,30 @@ int main(int argc, char **argv)
                 measured_power(r, q, &meas, &se);
                 ex_row row = row_of("<|S_k|^2>", is_random ? "eq. 45" : "eq. 50", r, (long)q,
                                     EX_NO_FREQ, closed, theory_power(r, q), meas, se, pfloor);
-                if (r == R_STRAT_FLAT) {
-                    /* Flat g: the exact spectrum is eq. 33's exact form at any N. */
-                    size_t big = LARGE_N_FACTOR * n;
-                    double lim = 0.0, ex = 0.0;
-                    if (mcs_eq50_importance_stratified_power(big, k, 1.0, q, &lim) == MCS_OK &&
-                        mcs_eq33_stratified_power_exact(big, k, q, &ex) == MCS_OK)
-                        row.limit_gap = ex_rel_gap(lim, ex, pfloor / (double)LARGE_N_FACTOR);
-                }
+                row.limit_gap = gap_at_large_n(r, q, pfloor);
                 ex_row_print(&opt, &row);
             }
         }
     }
     ex_notef(&opt,
-             "stratified+flat: mcspec theory's spectrum equals eq. 33's exact finite-N form to "
-             "%.2g K/N over all k",
-             flat_vs_33);
+             "strata of N/K whole bins (none, flat, g1b): mcspec theory's spectrum equals "
+             "eq. 33's exact finite-N form + (K/N)(1/H - 1) to %.2g K/N over all k; the limit "
+             "checks use that form at %u N",
+             whole_bin_check, LARGE_N_FACTOR);
 
     /* ---- cross spectrum Q_{k-l} ---- */
     ex_heading(&opt, "<S_k S_l*>, k != l (= Cov(S_k, S_l): <S_k> = 0 for k >= 1): eq. 43 "
                      "(K/N) N^{-1/2} Q_{k-l} (random), eq. 49 (stratified)");
     double q_worst_z = 0.0;
     {
-        const int rs[3] = {R_RANDOM_G1, R_RANDOM_G2, R_STRAT_G1};
-        const size_t pk[2] = {1u, 3u}, pl[2] = {2u, 1u};
-        for (int i = 0; i < 3; ++i) {
+        const int rs[4] = {R_RANDOM_G1, R_RANDOM_G2, R_STRAT_G1, R_STRAT_BAL};
+        const size_t pk[3] = {1u, 3u, 1u}, pl[3] = {2u, 1u, k + 1u};
+        for (int i = 0; i < 4; ++i) {
             int r = rs[i];
             int is_random = specs[r].kind == MCS_PATTERN_RANDOM;
-            for (int j = 0; j < 2; ++j) {
+            for (int j = 0; j < 3; ++j) {
+                if (j == 2 && r != R_STRAT_BAL)
+                    continue; /* k = l (mod K): where eq. 49 can hold */
                 int idx = ex_run_probe_pair(&runs[r], pk[j], pl[j]);
                 if (idx < 0)
                     continue;
@@ -368,15 +438,9 @@ int main(int argc, char **argv)
         const char *eq = is_random ? (specs[r].g == G_NONE ? "eq. 23" : "eq. 45")
                                    : (specs[r].g == G_NONE ? "eq. 33" : "eq. 50");
         ex_row row = row_of("mean_k>=1 <|S_k|^2>", eq, r, EX_NO_FREQ, EX_NO_FREQ,
-                            closed_mean_power(r, n, 0), mean_exact[r], mean_meas[r], mean_se[r],
+                            mean_power_at(r, n, 0), mean_exact[r], mean_meas[r], mean_se[r],
                             pfloor);
-        if (!is_random && specs[r].g != G_FLAT && specs[r].g != G_NONE)
-            row.limit_gap = EX_NA; /* no exact value at a larger N for a warped g */
-        else if (!is_random) {
-            size_t big = LARGE_N_FACTOR * n;
-            row.limit_gap = ex_rel_gap(closed_mean_power(r, big, 0), closed_mean_power(r, big, 1),
-                                       pfloor / (double)LARGE_N_FACTOR);
-        }
+        row.limit_gap = gap_at_large_n(r, 0u, pfloor); /* EX_NA unless strata are whole bins */
         ex_row_print(&opt, &row);
     }
     /* Importance minus none, same base pattern: independent runs, so the
@@ -399,11 +463,12 @@ int main(int argc, char **argv)
         }
     }
     {
-        const int pairs[4][2] = {{R_RANDOM_G1, R_RANDOM},
+        const int pairs[5][2] = {{R_RANDOM_G1, R_RANDOM},
                                  {R_RANDOM_G2, R_RANDOM},
                                  {R_STRAT_G1, R_STRAT},
-                                 {R_STRAT_G2, R_STRAT}};
-        for (int i = 0; i < 4; ++i) {
+                                 {R_STRAT_G2, R_STRAT},
+                                 {R_STRAT_BAL, R_STRAT}};
+        for (int i = 0; i < 5; ++i) {
             int a = pairs[i][0], b = pairs[i][1];
             double claim = kn * (1.0 / h_of(a) - 1.0); /* eq. 45 - eq. 23 = eq. 50 - eq. 33 */
             double se = sqrt(mean_se[a] * mean_se[a] + mean_se[b] * mean_se[b]);
@@ -504,6 +569,11 @@ int main(int argc, char **argv)
 
     /* ---- summary ---- */
     ex_heading(&opt, "summary (computed from the rows above)");
+    if (n < 2u || !(var_exact[R_RANDOM_G2] > 0.0)) {
+        ex_note(&opt, "(no summary: N = 1 has no frequency k >= 1)");
+        ex_end(&opt);
+        return 0;
+    }
     ex_notef(&opt,
              "random: the exact power %s at every k >= 1 with g1 and %s with g2; mean power "
              "%.4g -> %.4g with g1 (ratio %.4f, 1/H = %.4f), %.4g with g2 (ratio %.4f, 1/H = "
