@@ -21,7 +21,8 @@ const char ex_verdict_rules[] =
     "columns: closed = the note's closed form (for a bound row, the bound);\n"
     "exact = the exact discrete prediction (mcspec theory); measured +- stderr over\n"
     "the trials; z = (measured - prediction) / max(stderr, floor), floor being the\n"
-    "row's rounding scale (so deterministic values that agree get z = 0);\n"
+    "row's rounding scale (1e-10 of K/N or K^2/N for spectra, 1e-12 of the size of\n"
+    "a variance), so deterministic values that agree get z = 0;\n"
     "gap = |closed - exact| / max(|closed|, |exact|, floor).\n"
     "verdict, computed per row from those numbers (empty if closed or exact is -):\n"
     "  holds   gap <= 1e-9 (0 if |closed - exact| <= floor): the closed form is exact here\n"
@@ -63,7 +64,9 @@ int ex_parse_options(int argc, char **argv, ex_options *opt, size_t max_n, const
     for (int i = 1; i < argc; ++i) {
         const char *a = argv[i];
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            printf("usage: %s [options]\n\n%s\n%s\n%s", prog, help, ex_common_usage,
+            printf("usage: %s [options]\n\n%s\n%sdefaults: --n %zu (at most %zu) --k %zu "
+                   "--trials %lu --seed %" PRIu64 "\n\n%s",
+                   prog, help, ex_common_usage, opt->n, max_n, opt->k, opt->trials, opt->seed,
                    ex_verdict_rules);
             return EX_PARSE_HELP;
         }
