@@ -22,12 +22,12 @@ static size_t log2_ceil(size_t n)
 }
 
 /* Largest K for which the sparse sum is expected to be cheaper. For a plan
- * on the direct path (a prime factor above 5) the "FFT" is itself a sum over
- * the non-zero bins, so the sparse path is never worse. */
+ * on the direct path (a prime factor above 5) the "FFT" is itself the same sum
+ * over the non-zero bins, at most min(K, N) of them: sparse while K <= N. */
 static size_t sparse_limit(const mcs_dft *plan)
 {
     if (plan->path == MCS_DFT_PATH_DIRECT)
-        return SIZE_MAX;
+        return plan->n;
     size_t n = plan->n, h1 = n / 2u + 1u;
     size_t fft_cost = FFT_COST_PER_NLOGN * n * log2_ceil(n);
     return fft_cost / (SPARSE_COST_PER_TERM * h1);

@@ -105,7 +105,8 @@ static void test_sparse_and_fft_paths_give_the_same_statistics(void)
         size_t n, k;
         int importance;
     } cases[] = {{1u, 3u, 0}, {2u, 5u, 0}, {7u, 5u, 1},  {16u, 4u, 0},
-                 {45u, 9u, 1}, {64u, 13u, 0}, {100u, 30u, 1}, {1024u, 6u, 0}};
+                 {45u, 9u, 1}, {64u, 13u, 0}, {100u, 30u, 1}, {1024u, 6u, 0},
+                 {13u, 40u, 1}, {26u, 20u, 0}};
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
         size_t n = cases[i].n, k = cases[i].k;
         const mcs_importance *ip = NULL;

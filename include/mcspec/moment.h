@@ -33,8 +33,8 @@ typedef struct {
     size_t n;                                       /* N, 1..MCS_MAX_COV_N; 0 before init */
     uint64_t count;                                 /* trials added */
     double sum_s[MCS_MAX_COV_N];                    /* sum over trials of s_n */
-    double sum_ss[MCS_MAX_COV_N * MCS_MAX_COV_N];   /* sum of s_m s_n, row-major, upper
-                                                       triangle m <= n only (symmetric) */
+    double sum_ss[MCS_MAX_COV_N * MCS_MAX_COV_N];   /* sum of s_m s_n at [m * N + n],
+                                                       upper triangle m <= n only */
     double cos_table[MCS_MAX_COV_N];                /* cos(2 pi j / N) */
     double sin_table[MCS_MAX_COV_N];                /* sin(2 pi j / N) */
 } mcs_moment;
