@@ -257,11 +257,11 @@ int main(int argc, char **argv)
     ex_heading(&opt, "stratified correction Delta_kk = <|S_k|^2> - K/N: eq. 31 as printed "
                      "(squared bracket) and eq. 32");
     {
-        const size_t dk[2] = {1u, k + 1u};
-        for (int i = 0; i < 2; ++i) {
+        const size_t dk[3] = {1u, k / 2u, k + 1u};
+        for (int i = 0; i < 3; ++i) {
             size_t q = dk[i];
             double v = 0.0, exact = EX_NA, meas = EX_NA, se = EX_NA;
-            if (q >= n)
+            if (q == 0u || q >= n || (i > 0 && q == dk[i - 1]) || (i == 2 && q == dk[0]))
                 continue;
             if (mcs_theory_power(&theories[P_STRAT], q, &v) == MCS_OK)
                 exact = v - kn;

@@ -2,7 +2,8 @@
 # Command-line and output-format checks for the section examples (issue 4).
 #
 # usage: sh test/examples_check.sh [example binary ...]
-#        (default: build/examples/sec*; set TRIALS to change the trial count)
+#        (default: the binaries in $EXAMPLES, else build/examples/sec*;
+#        TRIALS sets the trial count)
 #
 # For each binary:
 #   --help exits 0 and prints a usage line to stdout;
@@ -15,13 +16,16 @@
 #   numbers (or are empty);
 #   the same seed gives byte-identical output (CSV and table), and a
 #   different seed changes it.
-# Ends with one line "N passed, N failed"; exit status non-zero on failure.
+# Ends with a Unity-style summary ("N Tests F Failures 0 Ignored", then OK or
+# FAIL), so test/run_tests.sh can count it as one more runner; exit status
+# non-zero on failure.
 
 TRIALS=${TRIALS:-400}
 HEADER='section,quantity,equation,pattern,n,k,freq,freq2,closed_form,exact,measured,stderr,z_closed,z_exact,verdict'
 
 if [ "$#" -eq 0 ]; then
-    set -- build/examples/sec*
+    # shellcheck disable=SC2086 # a list of paths
+    set -- ${EXAMPLES:-build/examples/sec*}
 fi
 
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/examples_check.XXXXXX") || exit 1
@@ -99,5 +103,7 @@ for bin in "$@"; do
     if cmp -s "$tmp/csv1" "$tmp/csv4"; then ok; else bad "$name: --opt=value differs from --opt value"; fi
 done
 
-echo "$passed passed, $failed failed"
+echo "-----------------------"
+echo "$((passed + failed)) Tests $failed Failures 0 Ignored"
+if [ "$failed" -eq 0 ]; then echo "OK"; else echo "FAIL"; fi
 [ "$failed" -eq 0 ]
