@@ -66,8 +66,15 @@ mcs_status mcs_dft_init(mcs_dft *plan, size_t n)
 
 static int plan_is_valid(const mcs_dft *plan)
 {
-    return plan->n >= 1u && plan->n <= (size_t)MCS_MAX_N && plan->path >= MCS_DFT_PATH_TRIVIAL &&
-           plan->path <= MCS_DFT_PATH_DIRECT;
+    if (!(plan->n >= 1u && plan->n <= (size_t)MCS_MAX_N && plan->path >= MCS_DFT_PATH_TRIVIAL &&
+          plan->path <= MCS_DFT_PATH_DIRECT))
+        return 0;
+    if (plan->fft_len == 0u)
+        return plan->path == MCS_DFT_PATH_TRIVIAL || plan->path == MCS_DFT_PATH_DIRECT;
+    /* KissFFT's state starts with its nfft: a cheap check that it was placed. */
+    int nfft;
+    memcpy(&nfft, plan->kiss_state, sizeof nfft);
+    return plan->fft_len <= (size_t)MCS_MAX_N && nfft == (int)plan->fft_len;
 }
 
 /* Every s_n finite. x * 0 is 0 for finite x and NaN for NaN or infinity, so a
@@ -193,14 +200,24 @@ static void half_trivial(size_t n, const double *s, double *re, double *im)
     }
 }
 
-static mcs_status check(const mcs_dft *plan, size_t n, const double *s, const double *re)
+mcs_status mcs_dft_check(const mcs_dft *plan, size_t n)
 {
-    if (plan == NULL || s == NULL || re == NULL)
+    if (plan == NULL)
         return MCS_ERR_NULL;
     if (!plan_is_valid(plan))
         return MCS_ERR_UNINIT;
     if (n != plan->n)
         return MCS_ERR_MISMATCH;
+    return MCS_OK;
+}
+
+static mcs_status check(const mcs_dft *plan, size_t n, const double *s, const double *re)
+{
+    if (plan == NULL || s == NULL || re == NULL)
+        return MCS_ERR_NULL;
+    mcs_status st = mcs_dft_check(plan, n);
+    if (st != MCS_OK)
+        return st;
     if (!all_finite(n, s))
         return MCS_ERR_NOT_FINITE;
     return MCS_OK;

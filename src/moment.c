@@ -484,11 +484,13 @@ static mcs_status autocorr_readout(const mcs_autocorr *acc, const mcs_dft *plan,
 {
     if (acc == NULL || plan == NULL || out == NULL)
         return MCS_ERR_NULL;
-    if (!autocorr_is_valid(acc) || !(plan->n >= 1u && plan->n <= (size_t)MCS_MAX_N) ||
-        plan->path == MCS_DFT_PATH_NONE)
+    if (!autocorr_is_valid(acc))
         return MCS_ERR_UNINIT;
-    if (n != acc->n || plan->n != acc->n)
+    if (n != acc->n)
         return MCS_ERR_MISMATCH;
+    mcs_status st = mcs_dft_check(plan, n); /* UNINIT or MISMATCH */
+    if (st != MCS_OK)
+        return st;
     if (acc->count == 0u)
         return MCS_ERR_EMPTY;
     return MCS_OK;

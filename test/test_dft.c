@@ -288,6 +288,15 @@ static void test_bad_input_returns_an_error_and_changes_nothing(void)
     TEST_ASSERT_EQUAL_INT(MCS_ERR_N_RANGE, mcs_dft_init(&plan, (size_t)MCS_MAX_N + 1u));
     TEST_ASSERT_EQUAL_MEMORY(&before, &plan, sizeof plan);
 
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_dft_check(&plan, 64u));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_dft_check(NULL, 64u));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_MISMATCH, mcs_dft_check(&plan, 65u));
+    memcpy(&plan_copy, &plan, sizeof plan);
+    memset(plan_copy.kiss_state, 0, sizeof plan_copy.kiss_state); /* KissFFT state lost */
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_UNINIT, mcs_dft_check(&plan_copy, 64u));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_UNINIT, mcs_dft_real(&plan_copy, 64u, s, re, im));
+    TEST_ASSERT_EQUAL_MEMORY(&before, &plan, sizeof plan);
+
     for (int half = 0; half < 2; ++half) {
         mcs_status (*fn)(mcs_dft *, size_t, const double *, double *, double *) =
             half ? mcs_dft_real_half : mcs_dft_real;

@@ -56,6 +56,11 @@ typedef struct {
  * *plan untouched on error. */
 mcs_status mcs_dft_init(mcs_dft *plan, size_t n);
 
+/* MCS_OK if plan was set up by mcs_dft_init for n points (lets a caller
+ * validate before writing anything). MCS_ERR_NULL, MCS_ERR_UNINIT,
+ * MCS_ERR_MISMATCH (n != plan n). */
+mcs_status mcs_dft_check(const mcs_dft *plan, size_t n);
+
 /* All n frequencies of eq. 7: re[k] + i im[k] = S_k, k = 0..n-1, with
  * S_{n-k} = conj(S_k) exactly. s[n]: finite reals (any sign). re[n] written;
  * im[n] written unless im is NULL. s may be the same array as re or im (but
