@@ -52,6 +52,8 @@ BENCH_SRC  := $(sort $(wildcard test/bench/*.c))
 BENCH_BIN  := $(BENCH_SRC:test/bench/%.c=$(BUILD)/bench/%)
 
 .PHONY: all lib tests examples benches run test bench clean
+# Keep intermediate objects (test and example support) instead of deleting them.
+.SECONDARY:
 .DEFAULT_GOAL := all
 
 all: lib tests examples benches
@@ -107,8 +109,10 @@ $(BUILD)/bench/%: test/bench/%.c $(LIB)
 run: all
 	@set -e; for b in $(SECTION_BIN); do echo "== $$b"; $$b; echo; done
 
-test: $(TEST_BIN)
-	@sh test/run_tests.sh $(TEST_BIN)
+# Every Unity runner, then the command-line and CSV checks of the section
+# examples (test/examples_check.sh prints a Unity-style summary too).
+test: $(TEST_BIN) $(SECTION_BIN)
+	@EXAMPLES="$(SECTION_BIN)" sh test/run_tests.sh $(TEST_BIN) test/examples_check.sh
 
 bench: $(BENCH_BIN)
 	@set -e; for b in $(BENCH_BIN); do $$b; done
