@@ -35,26 +35,14 @@ check-alloc-nm: $(LIB)
 
 # The runtime build archives the library with tools/ar_counted.sh, which
 # renames the library's allocator references to the counters of
-# tools/malloc_count.c; every test and example links that object.
+# tools/malloc_count.c; every test and example links that object. Then
+# tools/check_alloc_run.sh runs them all (the examples also through
+# test/examples_check.sh) and requires a zero count from every program.
 check-alloc-runtime:
 	@$(MAKE) --no-print-directory BUILD=$(ALLOC_BUILD) AR='sh tools/ar_counted.sh' \
 	    LDLIBS='$(ALLOC_SHIM) -lm' SAN= tests examples
-	@rm -f $(ALLOC_LOG)
-	@rc=0; \
-	MCS_MALLOC_LOG=$(ALLOC_LOG) sh test/run_tests.sh $(ALLOC_TESTS) >$(ALLOC_BUILD)/tests.out 2>&1 || \
-	    { rc=1; cat $(ALLOC_BUILD)/tests.out; echo "check-alloc: tests failed in the counting build"; }; \
-	tail -n 1 $(ALLOC_BUILD)/tests.out; \
-	for b in $(ALLOC_EXAMPLES); do \
-	    MCS_MALLOC_LOG=$(ALLOC_LOG) $$b >$$b.out 2>&1 || \
-	        { rc=1; cat $$b.out; echo "check-alloc: $$b failed in the counting build"; }; \
-	done; \
-	awk -v want=$(words $(ALLOC_TESTS) $(ALLOC_EXAMPLES)) \
-	    '{ n++; s += $$1; if ($$1 > 0) print "check-alloc FAILED: " $$2 ": " $$1 " allocator call(s) from library code" } \
-	     END { if (n != want) { printf "check-alloc FAILED: %d of %d programs reported a count\n", n, want; exit 1 } \
-	           if (s > 0) exit 1; \
-	           printf "check-alloc OK at run time: %d tests and examples, 0 allocator calls from library code\n", n }' \
-	    $(ALLOC_LOG) || rc=1; \
-	exit $$rc
+	@EXAMPLES='$(filter $(ALLOC_BUILD)/examples/sec%,$(ALLOC_EXAMPLES))' \
+	    sh tools/check_alloc_run.sh $(ALLOC_LOG) $(ALLOC_TESTS) -- $(ALLOC_EXAMPLES)
 
 ifeq ($(BUILD),$(ALLOC_BUILD))
 $(TEST_BIN) $(EXAMPLE_BIN): $(ALLOC_SHIM) tools/ar_counted.sh
