@@ -32,23 +32,33 @@ FW_FORBIDDEN := malloc|_malloc_r|calloc|_calloc_r|realloc|_realloc_r|free|_free_
 
 cross: cross-m4 cross-m7 cross-rv sizes
 
+# Compile lines are summarised ("CC build/cross-m4/obj/src/dft.o"); V=1 shows them.
+ifeq ($(V),1)
+EMB_Q :=
+else
+EMB_Q := @
+endif
+
 # A library build in directory $(1) with compiler prefix $(2) and flags $(3).
 # Vendored code keeps its own warnings, but an undeclared function is an error
 # there too (with tools/freestanding that is how a stray malloc shows up).
 define MCS_CROSS_LIB
 $(1)/obj/src/vendor/%.o: src/vendor/%.c
 	@mkdir -p $$(@D)
-	$(2)gcc $$(VENDOR_WARN) -Werror=implicit-function-declaration $(3) $$(KISS_DEFS) \
+	@echo "CC $$@"
+	$$(EMB_Q)$(2)gcc $$(VENDOR_WARN) -Werror=implicit-function-declaration $(3) $$(KISS_DEFS) \
 	    -MMD -MP -c $$< -o $$@
 
 $(1)/obj/src/%.o: src/%.c
 	@mkdir -p $$(@D)
-	$(2)gcc $$(WARN) $(3) $$(CPPFLAGS) -isystem src/vendor/kissfft $$(KISS_DEFS) \
+	@echo "CC $$@"
+	$$(EMB_Q)$(2)gcc $$(WARN) $(3) $$(CPPFLAGS) -isystem src/vendor/kissfft $$(KISS_DEFS) \
 	    -MMD -MP -c $$< -o $$@
 
 $(1)/libmcspec.a: $$(LIB_SRC:%.c=$(1)/obj/%.o) $$(KISS_SRC:%.c=$(1)/obj/%.o)
 	@rm -f $$@
-	$(2)ar rcs $$@ $$^
+	@echo "AR $$@"
+	$$(EMB_Q)$(2)ar rcs $$@ $$^
 
 -include $$(wildcard $(1)/obj/src/*.d $(1)/obj/src/vendor/kissfft/*.d)
 endef
@@ -60,7 +70,8 @@ $(call MCS_CROSS_LIB,build/cross-$(1)/fw,$(ARM_PREFIX),$(2) $(CROSS_COMMON) $(FW
 
 build/cross-$(1)/fw/obj/examples/firmware/%.o: examples/firmware/%.c
 	@mkdir -p $$(@D)
-	$(ARM_PREFIX)gcc $$(WARN) $(2) $(CROSS_COMMON) $(FW_OPT) $(FW_DEFS) -fstack-usage \
+	@echo "CC $$@"
+	$$(EMB_Q)$(ARM_PREFIX)gcc $$(WARN) $(2) $(CROSS_COMMON) $(FW_OPT) $(FW_DEFS) -fstack-usage \
 	    -fcallgraph-info=su $$(CPPFLAGS) -MMD -MP -c $$< -o $$@
 
 -include $$(wildcard build/cross-$(1)/fw/obj/examples/firmware/*.d)
@@ -71,7 +82,8 @@ build/cross-$(1)/fw/obj/examples/firmware/%.o: examples/firmware/%.c
 build/cross-$(1)/fw/firmware.elf: build/cross-$(1)/fw/obj/examples/firmware/main.o \
         build/cross-$(1)/fw/obj/examples/firmware/startup.o build/cross-$(1)/fw/libmcspec.a \
         examples/firmware/$(1).ld examples/firmware/sections.ld
-	$(ARM_PREFIX)gcc $(2) --specs=nano.specs --specs=nosys.specs -nostartfiles \
+	@echo "LD $$@"
+	$$(EMB_Q)$(ARM_PREFIX)gcc $(2) --specs=nano.specs --specs=nosys.specs -nostartfiles \
 	    -Wl,--gc-sections -Wl,-Map=build/cross-$(1)/fw/firmware.map -Lexamples/firmware \
 	    -T $(1).ld $$(filter %.o,$$^) build/cross-$(1)/fw/libmcspec.a -lm -o $$@
 
