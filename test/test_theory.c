@@ -961,6 +961,114 @@ static void test_exact_moments_and_cross_spectra_agree_with_the_generator_within
         run_stat_case(&cases[i], 40000u, 1000u + i);
 }
 
+/* The same comparison through the library's own primal accumulator: B
+ * independent batches of trials, each read out through mcs_moment (eq. 15,
+ * 16), and the spread of the batch values gives the standard error. */
+#define MOMENT_BATCHES 64u
+static mcs_moment batch;
+static mcs_welford bat_s[NMAX], bat_ss[NMAX * NMAX], bat_cr[NMAX * NMAX], bat_ci[NMAX * NMAX],
+    bat_cov_r[NMAX * NMAX], bat_cov_i[NMAX * NMAX], bat_pow[NMAX], bat_mr[NMAX], bat_mi[NMAX];
+
+static void run_moment_case(const stat_case *c, size_t trials_per_batch, uint64_t seed)
+{
+    size_t n = c->n, k = c->k;
+    if (c->importance)
+        lumpy_importance(n);
+    mcs_pattern pat;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_init(&pat, c->kind, n, k, c->importance ? &imp : NULL));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_theory_init(&th, &pat));
+    for (size_t i = 0; i < n; ++i) {
+        mcs_welford_init(&bat_s[i]);
+        mcs_welford_init(&bat_pow[i]);
+        mcs_welford_init(&bat_mr[i]);
+        mcs_welford_init(&bat_mi[i]);
+    }
+    for (size_t i = 0; i < n * n; ++i) {
+        mcs_welford_init(&bat_ss[i]);
+        mcs_welford_init(&bat_cr[i]);
+        mcs_welford_init(&bat_ci[i]);
+        mcs_welford_init(&bat_cov_r[i]);
+        mcs_welford_init(&bat_cov_i[i]);
+    }
+    mcs_rng rng;
+    mcs_rng_seed(&rng, seed, 29u);
+    size_t bins[KMAX];
+    double w[KMAX];
+    for (size_t bt = 0; bt < MOMENT_BATCHES; ++bt) {
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_init(&batch, n));
+        for (size_t t = 0; t < trials_per_batch; ++t) {
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_draw(&pat, &rng, k, bins, w, NULL));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_add_bins(&batch, k, bins, w));
+        }
+        for (size_t m = 0; m < n; ++m) {
+            double v, r, i;
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_mean_s(&batch, m, &v));
+            mcs_welford_add(&bat_s[m], v);
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_power(&batch, m, &v));
+            mcs_welford_add(&bat_pow[m], v);
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_spectrum_mean(&batch, m, &r, &i));
+            mcs_welford_add(&bat_mr[m], r);
+            mcs_welford_add(&bat_mi[m], i);
+            for (size_t b = 0; b < n; ++b) {
+                TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_second(&batch, m, b, &v));
+                mcs_welford_add(&bat_ss[m * n + b], v);
+                TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_cross(&batch, m, b, &r, &i));
+                mcs_welford_add(&bat_cr[m * n + b], r);
+                mcs_welford_add(&bat_ci[m * n + b], i);
+                TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_covariance(&batch, m, b, &r, &i));
+                mcs_welford_add(&bat_cov_r[m * n + b], r);
+                mcs_welford_add(&bat_cov_i[m * n + b], i);
+            }
+        }
+    }
+    char what[128];
+    const char *name = mcs_pattern_kind_str(c->kind);
+    const char *tag = c->importance ? "+imp" : "";
+    for (size_t m = 0; m < n; ++m) {
+        double v, r, i;
+        snprintf(what, sizeof what, "moment %s%s <s_%zu>", name, tag, m);
+        check_within(&bat_s[m], th.mean_s[m], what);
+        mcs_theory_power(&th, m, &v);
+        snprintf(what, sizeof what, "moment %s%s <|S_%zu|^2>", name, tag, m);
+        check_within(&bat_pow[m], v, what);
+        mcs_theory_spectrum_mean(&th, m, &r, &i);
+        snprintf(what, sizeof what, "moment %s%s Re<S_%zu>", name, tag, m);
+        check_within(&bat_mr[m], r, what);
+        snprintf(what, sizeof what, "moment %s%s Im<S_%zu>", name, tag, m);
+        check_within(&bat_mi[m], i, what);
+        for (size_t b = 0; b < n; ++b) {
+            snprintf(what, sizeof what, "moment %s%s <s_%zu s_%zu>", name, tag, m, b);
+            check_within(&bat_ss[m * n + b], th.second[m * n + b], what);
+            mcs_theory_cross(&th, m, b, &r, &i);
+            snprintf(what, sizeof what, "moment %s%s Re<S_%zu S_%zu*>", name, tag, m, b);
+            check_within(&bat_cr[m * n + b], r, what);
+            snprintf(what, sizeof what, "moment %s%s Im<S_%zu S_%zu*>", name, tag, m, b);
+            check_within(&bat_ci[m * n + b], i, what);
+            /* A batch's Cov(S_k, S_l) is centred on its own means: biased by
+             * a factor (T - 1)/T, which the comparison must include. */
+            mcs_theory_covariance(&th, m, b, &r, &i);
+            double shrink = ((double)trials_per_batch - 1.0) / (double)trials_per_batch;
+            snprintf(what, sizeof what, "moment %s%s Re Cov(S_%zu, S_%zu)", name, tag, m, b);
+            check_within(&bat_cov_r[m * n + b], r * shrink, what);
+            snprintf(what, sizeof what, "moment %s%s Im Cov(S_%zu, S_%zu)", name, tag, m, b);
+            check_within(&bat_cov_i[m * n + b], i * shrink, what);
+        }
+    }
+}
+
+static void test_exact_moments_agree_with_the_moment_accumulator_within_5_standard_errors(void)
+{
+    static const stat_case cases[] = {
+        {MCS_PATTERN_RANDOM, 8u, 3u, 0},      {MCS_PATTERN_STRATIFIED, 8u, 4u, 0},
+        {MCS_PATTERN_STRATIFIED, 7u, 3u, 0},  {MCS_PATTERN_HOMOGENIZED, 6u, 4u, 0},
+        {MCS_PATTERN_UNIFORM, 8u, 3u, 0},     {MCS_PATTERN_JITTER, 7u, 3u, 0},
+        {MCS_PATTERN_RANDOM, 8u, 3u, 1},      {MCS_PATTERN_STRATIFIED, 8u, 4u, 1},
+        {MCS_PATTERN_STRATIFIED, 6u, 5u, 1},  {MCS_PATTERN_UNIFORM, 7u, 4u, 1},
+        {MCS_PATTERN_JITTER, 8u, 3u, 1},      {MCS_PATTERN_JITTER, 5u, 7u, 1}};
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i)
+        run_moment_case(&cases[i], 500u, 2000u + i);
+}
+
 static void test_correlated_and_uncorrelated_gradient_variance_match_eq4_and_eq2_on_trials(void)
 {
     const size_t n = 16, k = 4, trials = 40000;
@@ -1354,6 +1462,7 @@ int main(void)
     RUN_TEST(test_eq58_printed_is_not_a_bound_and_the_corrected_bound_holds);
     RUN_TEST(test_eq4_is_var_f_plus_var_g_minus_twice_the_covariance_and_eq2_drops_it);
     RUN_TEST(test_exact_moments_and_cross_spectra_agree_with_the_generator_within_5_standard_errors);
+    RUN_TEST(test_exact_moments_agree_with_the_moment_accumulator_within_5_standard_errors);
     RUN_TEST(test_correlated_and_uncorrelated_gradient_variance_match_eq4_and_eq2_on_trials);
     RUN_TEST(test_bad_theory_init_returns_an_error_and_changes_nothing);
     RUN_TEST(test_bad_read_outs_return_an_error_and_change_nothing);
