@@ -121,11 +121,12 @@ awk -v depth="$DEPTH" -v limit="$LIMIT" -v top="$TOP" '
 ' "$tmp/public" "$tmp/graph"
 
 if [ -s "$tmp/chains" ]; then
-    echo "Deepest static call chain of public functions (bytes; own frame + callees):"
+    if [ -n "$ROOTS" ]; then what="of $ROOTS"; else what="of public functions"; fi
+    echo "Deepest static call chain $what (bytes; own frame + callees):"
     sort -k1,1nr "$tmp/chains" | head -n "$TOP" | awk -F '\t' '{
         printf "  %6d  %s%s\n", $1, $2, ($3 == "" ? "" : " > " $3) }'
     sort -k1,1nr "$tmp/chains" | head -n 1 | awk -F '\t' '{
-        printf "Deepest public function: %s, %d bytes\n", $2, $1 }'
+        printf "Deepest: %s, %d bytes\n", $2, $1 }'
 fi
 
 awk -v limit="$LIMIT" '
