@@ -931,11 +931,15 @@ mcs_status mcs_eq33_stratified_power_exact(size_t n, size_t k, size_t freq, doub
     return MCS_OK;
 }
 
-/* sinc^2(pi freq / K) with sinc x = sin x / x, freq >= 1. */
-static double sinc2(size_t k, size_t freq)
+/* sinc^2(pi freq / K) with sinc x = sin x / x, freq in [1, N). The limit
+ * forms are functions of the signed frequency: index freq > N/2 is freq - N,
+ * and sinc^2 is even, so fold it to min(freq, N - freq) (sin^2(pi freq/K) is
+ * unchanged by the fold because K divides N). */
+static double sinc2(size_t n, size_t k, size_t freq)
 {
-    double x = MCS_PI * (double)freq / (double)k;
-    return sin2_over_k(k, freq) / (x * x);
+    size_t folded = freq <= n - freq ? freq : n - freq;
+    double x = MCS_PI * (double)folded / (double)k;
+    return sin2_over_k(k, folded) / (x * x);
 }
 
 mcs_status mcs_eq33_stratified_power_limit(size_t n, size_t k, size_t freq, double *out)
@@ -945,7 +949,7 @@ mcs_status mcs_eq33_stratified_power_limit(size_t n, size_t k, size_t freq, doub
     mcs_status st = check_strat_form(n, k, freq, 1);
     if (st != MCS_OK)
         return st;
-    *out = (double)k / (double)n * (1.0 - sinc2(k, freq));
+    *out = (double)k / (double)n * (1.0 - sinc2(n, k, freq));
     return MCS_OK;
 }
 
@@ -1126,7 +1130,7 @@ mcs_status mcs_eq50_importance_stratified_power(size_t n, size_t k, double h, si
     mcs_status st = check_h_form(n, k, h, freq, 1, 1);
     if (st != MCS_OK)
         return st;
-    *out = (double)k / (double)n * (1.0 / h - sinc2(k, freq));
+    *out = (double)k / (double)n * (1.0 / h - sinc2(n, k, freq));
     return MCS_OK;
 }
 
