@@ -68,7 +68,13 @@ awk -v label="$LABEL" '
     }
     END {
         n = 0; list = ""
-        for (s in used) { list = list " " s; n++ }
+        for (s in used) names[++n] = s
+        for (i = 2; i <= n; i++) {          # insertion sort: stable output
+            v = names[i]; j = i - 1
+            while (j > 0 && names[j] > v) { names[j + 1] = names[j]; j-- }
+            names[j + 1] = v
+        }
+        for (i = 1; i <= n; i++) list = list " " names[i]
         h = 0; for (s in helper) h++
         if (nbad > 0) {
             printf "check-alloc FAILED for %s:\n", label
