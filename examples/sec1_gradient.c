@@ -122,11 +122,9 @@ static int predict_rows(const ex_options *opt, mcs_pattern_kind kind, const sec1
 int main(int argc, char **argv)
 {
     ex_options opt = {64u, 8u, 100000ul, 1u, 0};
-    int rc = ex_parse_options(argc, argv, &opt, MCS_MAX_COV_N, help_text);
-    if (rc == EX_PARSE_HELP)
-        return 0;
-    if (rc != EX_PARSE_OK || opt.k > SEC1_MAX_K)
-        return 2;
+    int rc = ex_parse_options(argc, argv, &opt, MCS_MAX_COV_N, SEC1_MAX_K, help_text);
+    if (rc != EX_PARSE_OK)
+        return rc == EX_PARSE_HELP ? 0 : 2;
 
     const double x0 = 10.0;
     for (size_t b = 0; b < opt.n; ++b) {

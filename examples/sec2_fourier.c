@@ -37,12 +37,6 @@ static mcs_theory theories[P_COUNT];
 static mcs_dft plan;
 static double f[MCS_MAX_COV_N], f_re[MCS_MAX_COV_N], f_im[MCS_MAX_COV_N];
 
-static double integrand(double x)
-{
-    const double pi = 3.14159265358979323846;
-    return 0.5 + 0.3 * sin(2.0 * pi * x) + (x >= 0.3 ? 0.4 : 0.0);
-}
-
 static ex_row row_of(const char *quantity, const char *equation, const char *pattern, long k,
                      double closed, double exact, double measured, double se, double floor_)
 {
@@ -112,19 +106,12 @@ static double eq8_check(const ex_options *opt, mcs_pattern_kind kind, unsigned l
 int main(int argc, char **argv)
 {
     ex_options opt = {64u, 8u, 200000ul, 1u, 0};
-    int rc = ex_parse_options(argc, argv, &opt, MCS_MAX_COV_N, help_text);
-    if (rc == EX_PARSE_HELP)
-        return 0;
+    int rc = ex_parse_options(argc, argv, &opt, MCS_MAX_COV_N, EX_MAX_K, help_text);
     if (rc != EX_PARSE_OK)
-        return 2;
-    if (opt.k > EX_MAX_K) {
-        fprintf(stderr, "sec2: --k must be at most %d\n", EX_MAX_K);
-        return 2;
-    }
+        return rc == EX_PARSE_HELP ? 0 : 2;
     const size_t n = opt.n, k = opt.k;
     const double kn = (double)k / (double)n;
-    for (size_t b = 0; b < n; ++b)
-        f[b] = integrand(((double)b + 0.5) / (double)n);
+    ex_integrand_bins(n, f);
     if (mcs_dft_init(&plan, n) != MCS_OK || mcs_dft_real(&plan, n, f, f_re, f_im) != MCS_OK)
         return 1;
     if (!measure_all(&opt))

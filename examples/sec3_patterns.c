@@ -39,12 +39,6 @@ static mcs_dft big_plan;
 static double f[MCS_MAX_COV_N];
 static double f_big[MCS_MAX_N], big_re[MCS_MAX_N], big_im[MCS_MAX_N];
 
-static double integrand(double x)
-{
-    const double pi = 3.14159265358979323846;
-    return 0.5 + 0.3 * sin(2.0 * pi * x) + (x >= 0.3 ? 0.4 : 0.0);
-}
-
 static ex_row row_of(const char *quantity, const char *equation, const char *pattern, long k,
                      long l, double closed, double exact, double measured, double se,
                      double floor_)
@@ -103,8 +97,7 @@ static double eq14_stratified_at(size_t m, size_t k, int exact_form)
 {
     if (m > MCS_MAX_N || mcs_dft_init(&big_plan, m) != MCS_OK)
         return EX_NA;
-    for (size_t b = 0; b < m; ++b)
-        f_big[b] = integrand(((double)b + 0.5) / (double)m);
+    ex_integrand_bins(m, f_big);
     if (mcs_dft_real(&big_plan, m, f_big, big_re, big_im) != MCS_OK)
         return EX_NA;
     double sum = 0.0;
@@ -195,19 +188,12 @@ static void power_rows(const ex_options *opt, int p, const size_t *freqs, size_t
 int main(int argc, char **argv)
 {
     ex_options opt = {64u, 8u, 200000ul, 1u, 0};
-    int rc = ex_parse_options(argc, argv, &opt, MCS_MAX_COV_N, help_text);
-    if (rc == EX_PARSE_HELP)
-        return 0;
+    int rc = ex_parse_options(argc, argv, &opt, MCS_MAX_COV_N, EX_MAX_K, help_text);
     if (rc != EX_PARSE_OK)
-        return 2;
-    if (opt.k > EX_MAX_K) {
-        fprintf(stderr, "sec3: --k must be at most %d\n", EX_MAX_K);
-        return 2;
-    }
+        return rc == EX_PARSE_HELP ? 0 : 2;
     const size_t n = opt.n, k = opt.k;
     const double kn = (double)k / (double)n;
-    for (size_t b = 0; b < n; ++b)
-        f[b] = integrand(((double)b + 0.5) / (double)n);
+    ex_integrand_bins(n, f);
 
     size_t freqs[6];
     size_t nfreq = pick_freqs(n, k, freqs);

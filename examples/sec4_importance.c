@@ -72,11 +72,6 @@ static size_t n_bins, k_samples;
 
 static const double pi = 3.14159265358979323846;
 
-static double integrand(double x)
-{
-    return 0.5 + 0.3 * sin(2.0 * pi * x) + (x >= 0.3 ? 0.4 : 0.0);
-}
-
 static double g_weight(int g, double x)
 {
     switch (g) {
@@ -278,24 +273,17 @@ static void measured_power(int r, size_t q, double *value, double *se)
 int main(int argc, char **argv)
 {
     ex_options opt = {64u, 8u, 200000ul, 1u, 0};
-    int rc = ex_parse_options(argc, argv, &opt, MCS_MAX_COV_N, help_text);
-    if (rc == EX_PARSE_HELP)
-        return 0;
+    int rc = ex_parse_options(argc, argv, &opt, MCS_MAX_COV_N, EX_MAX_K, help_text);
     if (rc != EX_PARSE_OK)
-        return 2;
-    if (opt.k > EX_MAX_K) {
-        fprintf(stderr, "sec4: --k must be at most %d\n", EX_MAX_K);
-        return 2;
-    }
+        return rc == EX_PARSE_HELP ? 0 : 2;
     const size_t n = opt.n, k = opt.k;
     n_bins = n;
     k_samples = k;
     const double kn = (double)k / (double)n;
     const double pfloor = 1e-10 * kn * (double)k;
-    for (size_t b = 0; b < n; ++b) {
-        f[b] = integrand(((double)b + 0.5) / (double)n);
+    ex_integrand_bins(n, f);
+    for (size_t b = 0; b < n; ++b)
         f_const[b] = 1.0;
-    }
     size_t freqs[5];
     size_t nfreq = pick_freqs(n, k, freqs);
     if (!setup_and_measure(&opt, freqs, nfreq))

@@ -58,7 +58,8 @@ static void usage_error(const char *prog, const char *what, const char *arg)
             arg ? arg : "", prog, ex_common_usage);
 }
 
-int ex_parse_options(int argc, char **argv, ex_options *opt, size_t max_n, const char *help)
+int ex_parse_options(int argc, char **argv, ex_options *opt, size_t max_n, size_t max_k,
+                     const char *help)
 {
     const char *prog = argc > 0 ? argv[0] : "example";
     for (int i = 1; i < argc; ++i) {
@@ -106,8 +107,9 @@ int ex_parse_options(int argc, char **argv, ex_options *opt, size_t max_n, const
             opt->n = (size_t)v;
             break;
         case 1:
-            if (v < 1u || v > 4096u) {
-                usage_error(prog, "--k must be in 1..4096", val);
+            if (v < 1u || v > max_k) {
+                fprintf(stderr, "%s: --k must be in 1..%zu\n", prog, max_k);
+                usage_error(prog, "bad value for --k", val);
                 return EX_PARSE_ERROR;
             }
             opt->k = (size_t)v;
@@ -318,4 +320,16 @@ unsigned ex_end(const ex_options *opt)
                    EX_Z_REJECT);
     }
     return disagreements;
+}
+
+double ex_integrand(double x)
+{
+    const double pi = 3.14159265358979323846;
+    return 0.5 + 0.3 * sin(2.0 * pi * x) + (x >= 0.3 ? 0.4 : 0.0);
+}
+
+void ex_integrand_bins(size_t n, double *f)
+{
+    for (size_t b = 0; b < n; ++b)
+        f[b] = ex_integrand(((double)b + 0.5) / (double)n);
 }

@@ -18,10 +18,17 @@ typedef struct {
 enum { EX_PARSE_OK = 0, EX_PARSE_HELP = 1, EX_PARSE_ERROR = 2 };
 
 /* Parses --n N, --k K, --trials T, --seed S, --csv, --help (also --opt=V).
- * *opt holds the defaults on entry. max_n bounds --n. On --help prints
- * `help` to stdout and returns EX_PARSE_HELP; on a bad option prints the
- * problem and the usage to stderr and returns EX_PARSE_ERROR. */
-int ex_parse_options(int argc, char **argv, ex_options *opt, size_t max_n, const char *help);
+ * *opt holds the defaults on entry. max_n bounds --n, max_k bounds --k. On
+ * --help prints `help` to stdout and returns EX_PARSE_HELP; on a bad option
+ * prints the problem and the usage to stderr and returns EX_PARSE_ERROR. */
+int ex_parse_options(int argc, char **argv, ex_options *opt, size_t max_n, size_t max_k,
+                     const char *help);
+
+/* The integrand the sections share: a smooth wave plus an edge at x = 0.3,
+ * 0.5 + 0.3 sin(2 pi x) + 0.4 [x >= 0.3]. */
+double ex_integrand(double x);
+/* f[n] = ex_integrand at the centre of each of n bins. */
+void ex_integrand_bins(size_t n, double *f);
 
 /* Text every --help shows after the example's own description. */
 extern const char ex_verdict_rules[];
