@@ -171,5 +171,6 @@ int main(int argc, char **argv)
         if (!predict_rows(&opt, kinds[i], &m[i]))
             return 1;
     }
+    ex_end(&opt);
     return 0;
 }
