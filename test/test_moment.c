@@ -22,23 +22,12 @@ static double weights[256], dense[MCS_MAX_N], re[MCS_MAX_N], im[MCS_MAX_N];
 static double power[MCS_MAX_N];
 static double mat_re[COV * COV], mat_im[COV * COV];
 
-typedef struct {
-    mcs_pattern pat;
-    mcs_rng rng;
-    size_t k;
-} stream;
+/* Every stream of this file uses PCG32 sequence 0xabcdu. */
+#define STREAM_SEQ 0xabcdu
 
-static void stream_init(stream *st, mcs_pattern_kind kind, size_t n, size_t k,
-                        const mcs_importance *importance, uint64_t seed)
+static void stream_draw(spectra_stream *st)
 {
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_init(&st->pat, kind, n, k, importance));
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_rng_seed(&st->rng, seed, 0xabcdu));
-    st->k = k;
-}
-
-static void stream_draw(stream *st)
-{
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_draw(&st->pat, &st->rng, st->k, bins, weights, NULL));
+    spectra_stream_draw(st, bins, weights, NULL);
 }
 
 static void make_importance(size_t n)
@@ -94,8 +83,8 @@ static void test_moment_and_spectrum_agree_on_every_mean_and_power(void)
         }
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_init(&mom, n));
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&spec, n));
-        stream st;
-        stream_init(&st, cases[i].kind, n, k, ip, 60u + i);
+        spectra_stream st;
+        spectra_stream_init(&st, cases[i].kind, n, k, ip, 60u + i, STREAM_SEQ);
         for (size_t t = 0; t < 2000u; ++t) {
             stream_draw(&st);
             TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_add_bins(&mom, k, bins, weights));
@@ -141,8 +130,8 @@ static void test_autocorrelation_and_spectrum_agree_for_any_n(void)
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_autocorr_init(&ac, n));
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&spec, n));
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_dft_init(&plan, n));
-        stream st;
-        stream_init(&st, cases[i].kind, n, k, ip, 80u + i);
+        spectra_stream st;
+        spectra_stream_init(&st, cases[i].kind, n, k, ip, 80u + i, STREAM_SEQ);
         size_t trials = n > 1000u ? 50u : 500u;
         for (size_t t = 0; t < trials; ++t) {
             stream_draw(&st);
@@ -177,8 +166,8 @@ static void test_primal_moments_and_cross_spectrum_match_brute_force(void)
     memset(sum_ss, 0, sizeof sum_ss);
     memset(cross_re, 0, sizeof cross_re);
     memset(cross_im, 0, sizeof cross_im);
-    stream st;
-    stream_init(&st, MCS_PATTERN_STRATIFIED, N, K, &imp, 3u);
+    spectra_stream st;
+    spectra_stream_init(&st, MCS_PATTERN_STRATIFIED, N, K, &imp, 3u, STREAM_SEQ);
     for (size_t t = 0; t < T; ++t) {
         stream_draw(&st);
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_add_bins(&mom, K, bins, weights));
@@ -220,8 +209,8 @@ static void test_covariance_is_the_cross_spectrum_minus_the_mean_product(void)
 {
     enum { N = 9, K = 5 };
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_init(&mom, N));
-    stream st;
-    stream_init(&st, MCS_PATTERN_UNIFORM, N, K, NULL, 1u); /* biased: <S_k> != 0 */
+    spectra_stream st;
+    spectra_stream_init(&st, MCS_PATTERN_UNIFORM, N, K, NULL, 1u, STREAM_SEQ); /* biased: <S_k> != 0 */
     for (size_t t = 0; t < 3u; ++t) {
         stream_draw(&st);
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_add_bins(&mom, K, bins, weights));
@@ -260,8 +249,8 @@ static void test_dense_and_sparse_trials_accumulate_the_same_sums(void)
     make_importance(N);
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_init(&mom, N));
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_init(&mom2, N));
-    stream st;
-    stream_init(&st, MCS_PATTERN_RANDOM, N, K, &imp, 12u);
+    spectra_stream st;
+    spectra_stream_init(&st, MCS_PATTERN_RANDOM, N, K, &imp, 12u, STREAM_SEQ);
     for (size_t t = 0; t < 200u; ++t) {
         stream_draw(&st);
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_add_bins(&mom, K, bins, weights));
@@ -287,8 +276,8 @@ static void test_merge_of_halves_equals_one_pass(void)
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_autocorr_init(&ac, N));
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_autocorr_init(&ac2, N));
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_autocorr_init(&ac3, N));
-    stream st;
-    stream_init(&st, MCS_PATTERN_STRATIFIED, N, K, &imp, 21u);
+    spectra_stream st;
+    spectra_stream_init(&st, MCS_PATTERN_STRATIFIED, N, K, &imp, 21u, STREAM_SEQ);
     for (size_t t = 0; t < 500u; ++t) {
         stream_draw(&st);
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_add_bins(&mom, K, bins, weights));
@@ -341,8 +330,8 @@ static void test_importance_sampled_cross_spectrum_is_q_of_k_minus_l(void)
             mcs_welford_init(&wr[a][l]);
             mcs_welford_init(&wi[a][l]);
         }
-    stream st;
-    stream_init(&st, MCS_PATTERN_RANDOM, N, K, &imp, 77u);
+    spectra_stream st;
+    spectra_stream_init(&st, MCS_PATTERN_RANDOM, N, K, &imp, 77u, STREAM_SEQ);
     for (size_t t = 0; t < T; ++t) {
         stream_draw(&st);
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_add_bins(&mom, K, bins, weights));
@@ -407,8 +396,8 @@ static void test_stratified_off_diagonal_terms_follow_eq_30(void)
             mcs_welford_init(&wr[k][l]);
             mcs_welford_init(&wi[k][l]);
         }
-    stream st;
-    stream_init(&st, MCS_PATTERN_STRATIFIED, N, K, NULL, 99u);
+    spectra_stream st;
+    spectra_stream_init(&st, MCS_PATTERN_STRATIFIED, N, K, NULL, 99u, STREAM_SEQ);
     for (size_t t = 0; t < T; ++t) {
         stream_draw(&st);
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_add_bins(&mom, K, bins, weights));

@@ -57,32 +57,20 @@ static void assert_same_statistics(const mcs_spectrum *a, const mcs_spectrum *b,
     }
 }
 
-typedef struct {
-    mcs_pattern pat;
-    mcs_rng rng;
-    size_t k;
-} stream;
+/* Every stream of this file uses PCG32 sequence 0x5eedu. */
+#define STREAM_SEQ 0x5eedu
 
-static void stream_init(stream *st, mcs_pattern_kind kind, size_t n, size_t k,
-                        const mcs_importance *importance, uint64_t seed)
+static void stream_draw(spectra_stream *st)
 {
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_init(&st->pat, kind, n, k, importance));
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_rng_seed(&st->rng, seed, 0x5eedu));
-    st->k = k;
-}
-
-static void stream_draw(stream *st)
-{
-    TEST_ASSERT_EQUAL_INT(MCS_OK,
-                          mcs_pattern_draw(&st->pat, &st->rng, st->k, bins, weights, points));
+    spectra_stream_draw(st, bins, weights, points);
 }
 
 /* Feeds `trials` trials of a pattern to acc. */
 static void run(mcs_spectrum *a, mcs_pattern_kind kind, size_t n, size_t k,
                 const mcs_importance *importance, uint64_t seed, size_t trials)
 {
-    stream st;
-    stream_init(&st, kind, n, k, importance, seed);
+    spectra_stream st;
+    spectra_stream_init(&st, kind, n, k, importance, seed, STREAM_SEQ);
     for (size_t t = 0; t < trials; ++t) {
         stream_draw(&st);
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_bins(a, k, bins, weights));
@@ -119,8 +107,8 @@ static void test_sparse_and_fft_paths_give_the_same_statistics(void)
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc3, n));
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_set_path(&acc, MCS_SPECTRUM_PATH_SPARSE));
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_set_path(&acc2, MCS_SPECTRUM_PATH_FFT));
-        stream st;
-        stream_init(&st, MCS_PATTERN_STRATIFIED, n, k, ip, 100u + i);
+        spectra_stream st;
+        spectra_stream_init(&st, MCS_PATTERN_STRATIFIED, n, k, ip, 100u + i, STREAM_SEQ);
         for (size_t t = 0; t < 200u; ++t) {
             stream_draw(&st);
             TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_bins(&acc, k, bins, weights));
@@ -141,8 +129,8 @@ static void test_bins_dense_and_points_give_the_same_statistics(void)
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc, n));
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc2, n));
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc3, n));
-        stream st;
-        stream_init(&st, MCS_PATTERN_RANDOM, n, k, &imp, 7u + i);
+        spectra_stream st;
+        spectra_stream_init(&st, MCS_PATTERN_RANDOM, n, k, &imp, 7u + i, STREAM_SEQ);
         for (size_t t = 0; t < 100u; ++t) {
             stream_draw(&st);
             TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_bins(&acc, k, bins, weights));
@@ -159,8 +147,8 @@ static void test_points_without_weights_count_as_weight_one(void)
 {
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc, 20u));
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc2, 20u));
-    stream st;
-    stream_init(&st, MCS_PATTERN_JITTER, 20u, 6u, NULL, 3u);
+    spectra_stream st;
+    spectra_stream_init(&st, MCS_PATTERN_JITTER, 20u, 6u, NULL, 3u, STREAM_SEQ);
     for (size_t t = 0; t < 50u; ++t) {
         stream_draw(&st);
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_points(&acc, 6u, points, NULL));
@@ -178,8 +166,8 @@ static void test_one_trial_matches_the_naive_dft(void)
         for (int path = 1; path <= 2; ++path) {
             TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc, n));
             TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_set_path(&acc, (mcs_spectrum_path)path));
-            stream st;
-            stream_init(&st, MCS_PATTERN_RANDOM, n, 9u, NULL, 5u);
+            spectra_stream st;
+            spectra_stream_init(&st, MCS_PATTERN_RANDOM, n, 9u, NULL, 5u, STREAM_SEQ);
             stream_draw(&st);
             TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_bins(&acc, 9u, bins, weights));
             TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_dense(n, 9u, bins, weights, dense));
@@ -249,8 +237,8 @@ static void test_merge_of_halves_equals_one_pass(void)
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc, n));
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc2, n));
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc3, n));
-        stream st;
-        stream_init(&st, MCS_PATTERN_RANDOM, n, k, &imp, 40u + i);
+        spectra_stream st;
+        spectra_stream_init(&st, MCS_PATTERN_RANDOM, n, k, &imp, 40u + i, STREAM_SEQ);
         for (size_t t = 0; t < 700u; ++t) {
             stream_draw(&st);
             TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_bins(&acc, k, bins, weights));

@@ -1,4 +1,5 @@
 #include "spectra_ref.h"
+#include "unity.h"
 
 #include <math.h>
 
@@ -47,4 +48,18 @@ double spectra_max_rel_err(size_t n, const double *a, const double *b, double sc
             worst = e;
     }
     return worst;
+}
+
+void spectra_stream_init(spectra_stream *st, mcs_pattern_kind kind, size_t n, size_t k,
+                         const mcs_importance *importance, uint64_t seed, uint64_t seq)
+{
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_init(&st->pat, kind, n, k, importance));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_rng_seed(&st->rng, seed, seq));
+    st->k = k;
+}
+
+void spectra_stream_draw(spectra_stream *st, size_t *bins, double *weights, double *points)
+{
+    TEST_ASSERT_EQUAL_INT(MCS_OK,
+                          mcs_pattern_draw(&st->pat, &st->rng, st->k, bins, weights, points));
 }
