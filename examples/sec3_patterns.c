@@ -58,17 +58,8 @@ static double or_na(mcs_status st, const double *v)
 /* The chosen frequencies, deduplicated, each in [1, N). */
 static size_t pick_freqs(size_t n, size_t k, size_t *out)
 {
-    size_t cand[6] = {1u, k / 2u, k, k + 1u, 2u * k, n / 2u};
-    size_t count = 0;
-    for (size_t i = 0; i < 6; ++i) {
-        size_t c = cand[i];
-        int dup = c == 0u || c >= n;
-        for (size_t j = 0; j < count && !dup; ++j)
-            dup = out[j] == c;
-        if (!dup)
-            out[count++] = c;
-    }
-    return count;
+    const size_t cand[6] = {1u, k / 2u, k, k + 1u, 2u * k, n / 2u};
+    return ex_pick_freqs(n, cand, 6u, out);
 }
 
 /* Eq. 33's sinc^2 form against the exact finite-N form at M bins, relative. */

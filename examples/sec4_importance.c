@@ -138,17 +138,8 @@ static size_t fold(size_t m, size_t q)
 /* The chosen frequencies, deduplicated, each in [1, N). */
 static size_t pick_freqs(size_t n, size_t k, size_t *out)
 {
-    size_t cand[5] = {1u, k / 2u, k, 2u * k, n / 2u};
-    size_t count = 0;
-    for (size_t i = 0; i < 5; ++i) {
-        size_t c = cand[i];
-        int dup = c == 0u || c >= n;
-        for (size_t j = 0; j < count && !dup; ++j)
-            dup = out[j] == c;
-        if (!dup)
-            out[count++] = c;
-    }
-    return count;
+    const size_t cand[5] = {1u, k / 2u, k, 2u * k, n / 2u};
+    return ex_pick_freqs(n, cand, 5u, out);
 }
 
 static int setup_and_measure(const ex_options *opt, const size_t *freqs, size_t nfreq)

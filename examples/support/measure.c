@@ -164,3 +164,17 @@ double ex_variance(const mcs_welford *w, double *stderr_out)
         *stderr_out = se;
     return v;
 }
+
+size_t ex_pick_freqs(size_t n, const size_t *cand, size_t ncand, size_t *out)
+{
+    size_t count = 0;
+    for (size_t i = 0; i < ncand; ++i) {
+        size_t c = cand[i];
+        int dup = c == 0u || c >= n;
+        for (size_t j = 0; j < count && !dup; ++j)
+            dup = out[j] == c;
+        if (!dup)
+            out[count++] = c;
+    }
+    return count;
+}

@@ -62,6 +62,10 @@ int ex_run_integrand(ex_run *run, const double *f);
 mcs_status ex_run_go(ex_run *run, unsigned long trials, mcs_spectrum *spectrum,
                      mcs_moment *moment);
 
+/* Copies the candidate frequencies that lie in [1, N) to out, dropping
+ * repeats, in order; returns how many. out holds at least ncand. */
+size_t ex_pick_freqs(size_t n, const size_t *cand, size_t ncand, size_t *out);
+
 /* Mean and standard error of a Welford accumulator (EX_NA if too few values). */
 double ex_mean(const mcs_welford *w, double *stderr_out);
 /* Unbiased variance and its standard error (EX_NA if too few values). */
