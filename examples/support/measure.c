@@ -82,7 +82,7 @@ static size_t probe_index(const ex_run *run, size_t freq)
 /* One trial's statistics beyond the library accumulators. */
 static mcs_status add_trial(ex_run *run, const size_t *bins, const double *weights, double *s)
 {
-    double re[EX_MAX_PROBE], im[EX_MAX_PROBE];
+    double re[EX_MAX_PROBE] = {0.0}, im[EX_MAX_PROBE] = {0.0}; /* defined even for an unprobed index */
     double norm = 1.0 / sqrt((double)run->n);
     for (size_t i = 0; i < run->nfreq; ++i) {
         size_t fr = run->freq[i];
