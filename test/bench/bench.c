@@ -76,7 +76,7 @@ static int parse_options(int argc, char **argv, bench_options *opt)
         }
     }
     if (opt->rounds == 0u)
-        opt->rounds = opt->quick ? 7u : 21u;
+        opt->rounds = opt->quick ? 7u : 31u;
     if (opt->rounds > BENCH_MAX_ROUNDS || !(opt->slice_seconds > 0.0)) {
         fprintf(stderr, "bench: rounds must be 1..%d, the slice positive\n", BENCH_MAX_ROUNDS);
         return 1;

@@ -29,8 +29,10 @@ static int calibrate(bench_contender *c)
     }
 }
 
-/* One slice of about `seconds`: a fixed number of calls from the last pace,
- * between two clock reads (no clock inside the timed loop). */
+/* One slice of about `seconds`: a fixed number of calls between two clock
+ * reads (no clock inside the timed loop). The count comes from the fastest
+ * pace seen, so a slice that another process preempted does not shrink the
+ * next one. */
 static int timed_slice(bench_contender *c, double seconds, bench_slice *out)
 {
     if (c->slice != NULL)
@@ -41,7 +43,7 @@ static int timed_slice(bench_contender *c, double seconds, bench_slice *out)
     if (c->run(c->ctx, calls) != BENCH_OK)
         return BENCH_FAILED;
     double t = bench_now() - t0;
-    c->pace = t / (double)calls;
+    c->pace = t / (double)calls < c->pace ? t / (double)calls : c->pace;
     out->trials = (double)calls * (double)c->trials_per_call;
     out->seconds = t;
     return BENCH_OK;

@@ -47,7 +47,7 @@ typedef struct {
     /* Optional: a read-out (e.g. <|S_1|^2> and its standard error) used to
      * check that contenders compute the same quantity. */
     int (*readout)(void *ctx, size_t freq, double *value, double *stderr_out);
-    double pace; /* harness-owned: seconds per call, last estimate */
+    double pace; /* harness-owned: fastest seconds per call seen in this cell */
 } bench_contender;
 
 /* Trials/s of every contender in every round of one cell. */
