@@ -8,7 +8,8 @@
  *   moment   mcs_moment_add_bins against three plain C loops (same sums)
  *   draw     mcs_pattern_draw against a bare PCG32 bounded draw per sample
  *
- * Options: --quick (a subset, fewer rounds), --rounds R, --slice-ms T,
+ * Options: --quick (a subset, fewer rounds), --wall-clock (time slices by the
+ * wall clock instead of the thread's CPU clock), --rounds R, --slice-ms T,
  * --python PATH (an interpreter that imports numpy), --numpy-peer SCRIPT.
  * Timing: test/bench/src/harness.h; peers: peer_fftw.h, peer_numpy.h. */
 
@@ -40,6 +41,7 @@
 
 typedef struct {
     int quick;
+    int wall;
     size_t rounds;
     double slice_seconds;
     const char *python;
@@ -49,6 +51,7 @@ typedef struct {
 static int parse_options(int argc, char **argv, bench_options *opt)
 {
     opt->quick = 0;
+    opt->wall = 0;
     opt->rounds = 0u;
     opt->slice_seconds = 2e-3;
     opt->python = NULL;
@@ -57,6 +60,8 @@ static int parse_options(int argc, char **argv, bench_options *opt)
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         if (strcmp(a, "--quick") == 0) {
             opt->quick = 1;
+        } else if (strcmp(a, "--wall-clock") == 0) {
+            opt->wall = 1;
         } else if (strcmp(a, "--rounds") == 0 && v != NULL) {
             opt->rounds = (size_t)strtoul(v, NULL, 10);
             ++i;
@@ -70,8 +75,8 @@ static int parse_options(int argc, char **argv, bench_options *opt)
             opt->numpy_script = v;
             ++i;
         } else {
-            fprintf(stderr, "usage: %s [--quick] [--rounds R] [--slice-ms T] [--python PATH] "
-                            "[--numpy-peer SCRIPT]\n", argv[0]);
+            fprintf(stderr, "usage: %s [--quick] [--wall-clock] [--rounds R] [--slice-ms T] "
+                            "[--python PATH] [--numpy-peer SCRIPT]\n", argv[0]);
             return 1;
         }
     }
@@ -248,6 +253,11 @@ static void print_setup(const bench_options *opt)
     printf("mcspec speed bench%s: %zu interleaved rounds of %.1f ms slices per cell\n",
            opt->quick ? " (BENCH_QUICK: a subset of the grid)" : "", opt->rounds,
            1e3 * opt->slice_seconds);
+    printf("slices timed by %s\n",
+           opt->wall ? "the wall clock (CLOCK_MONOTONIC; Python time.perf_counter)"
+                     : "the running thread's CPU clock (CLOCK_THREAD_CPUTIME_ID; Python "
+                       "time.thread_time):\ntime in which another process holds the core is "
+                       "not counted");
     bench_print_machine(BENCH_CC, BENCH_CC_VERSION, BENCH_FLAGS);
     printf("FFTW peer: %s\n", bench_fftw_available() ? bench_fftw_version() : "not available");
     printf("numpy peer: %s\n", bench_numpy_describe());
@@ -264,7 +274,8 @@ int main(int argc, char **argv)
         return 1;
     }
     memset(&tally, 0, sizeof tally);
-    (void)bench_numpy_start(opt.python, opt.numpy_script);
+    bench_use_wall_clock(opt.wall);
+    (void)bench_numpy_start(opt.python, opt.numpy_script, opt.wall);
     double t0 = bench_now();
     print_setup(&opt);
     int rc = run_grid(&opt, &tally);

@@ -5,7 +5,8 @@
  * slice of time (~2 ms) in turn, round after round; the starting contender
  * rotates each round so that none always runs first or after the same one.
  * Slowdowns from other processes hit the contenders alike, and the median
- * over rounds discards the slices they spoiled. Ratios are medians of
+ * over rounds discards the slices they spoiled; by default a slice is timed
+ * with the thread's CPU clock, so preemption is not counted at all. Ratios are medians of
  * per-round ratios, so each compares slices that ran next to each other. */
 #ifndef BENCH_HARNESS_H
 #define BENCH_HARNESS_H
@@ -58,8 +59,14 @@ typedef struct {
     double rate[BENCH_MAX_CONTENDERS][BENCH_MAX_ROUNDS];
 } bench_run;
 
-/* Monotonic seconds. */
+/* Monotonic wall-clock seconds. */
 double bench_now(void);
+
+/* Slices are timed by the calling thread's CPU clock (CLOCK_THREAD_CPUTIME_ID)
+ * unless wall is non-zero: on a shared machine a slice then does not count
+ * the time another process held the core. A contender that times itself
+ * (the numpy peer) is told which clock to use through its own interface. */
+void bench_use_wall_clock(int wall);
 
 /* Prepares every contender for cell, then runs `rounds` interleaved rounds of
  * slices of `seconds` each. BENCH_FAILED if a contender fails. */

@@ -53,7 +53,42 @@ static int handshake(const char *python)
     return BENCH_OK;
 }
 
-int bench_numpy_start(const char *python, const char *script)
+/* Parses a reply "KEYWORD A [B]" into values[0..count); BENCH_OK only if the
+ * keyword matches and every value is a whole number token. */
+static int parse_reply(const char *line, const char *keyword, double *values, size_t count)
+{
+    size_t len = strlen(keyword);
+    if (strncmp(line, keyword, len) != 0 || line[len] != ' ')
+        return BENCH_FAILED;
+    const char *p = line + len;
+    for (size_t i = 0; i < count; ++i) {
+        char *end;
+        values[i] = strtod(p, &end);
+        if (end == p || (*end != ' ' && *end != '\0'))
+            return BENCH_FAILED;
+        p = end;
+    }
+    return *p == '\0' ? BENCH_OK : BENCH_FAILED;
+}
+
+/* Sends one command line and reads the reply into buf. */
+static int command(char *buf, size_t len, const char *cmd)
+{
+    if (peer.to == NULL || fputs(cmd, peer.to) == EOF || fflush(peer.to) != 0)
+        return BENCH_FAILED;
+    return read_line(buf, len);
+}
+
+static int choose_clock(int wall)
+{
+    char line[64];
+    double zero;
+    if (command(line, sizeof line, wall ? "clock wall\n" : "clock cpu\n") != BENCH_OK)
+        return BENCH_FAILED;
+    return parse_reply(line, "ok", &zero, 1u);
+}
+
+int bench_numpy_start(const char *python, const char *script, int wall)
 {
     int to_child[2], from_child[2];
     if (python == NULL || python[0] == '\0' || script == NULL)
@@ -79,7 +114,8 @@ int bench_numpy_start(const char *python, const char *script)
     peer.pid = pid;
     peer.to = fdopen(to_child[1], "w");
     peer.from = fdopen(from_child[0], "r");
-    if (peer.to == NULL || peer.from == NULL || handshake(python) != BENCH_OK) {
+    if (peer.to == NULL || peer.from == NULL || handshake(python) != BENCH_OK ||
+        choose_clock(wall) != BENCH_OK) {
         fprintf(stderr, "bench: numpy peer did not start with %s\n", python);
         bench_numpy_stop();
         return BENCH_UNAVAILABLE;
@@ -110,32 +146,6 @@ const char *bench_numpy_describe(void)
 size_t bench_numpy_batch(void)
 {
     return peer.batch;
-}
-
-/* Parses a reply "KEYWORD A [B]" into values[0..count); BENCH_OK only if the
- * keyword matches and every value is a whole number token. */
-static int parse_reply(const char *line, const char *keyword, double *values, size_t count)
-{
-    size_t len = strlen(keyword);
-    if (strncmp(line, keyword, len) != 0 || line[len] != ' ')
-        return BENCH_FAILED;
-    const char *p = line + len;
-    for (size_t i = 0; i < count; ++i) {
-        char *end;
-        values[i] = strtod(p, &end);
-        if (end == p || (*end != ' ' && *end != '\0'))
-            return BENCH_FAILED;
-        p = end;
-    }
-    return *p == '\0' ? BENCH_OK : BENCH_FAILED;
-}
-
-/* Sends one command line and reads the reply into buf. */
-static int command(char *buf, size_t len, const char *cmd)
-{
-    if (peer.to == NULL || fputs(cmd, peer.to) == EOF || fflush(peer.to) != 0)
-        return BENCH_FAILED;
-    return read_line(buf, len);
 }
 
 static int numpy_prepare(void *ctx, const bench_cell *cell)

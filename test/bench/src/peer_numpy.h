@@ -2,8 +2,9 @@
  * once per run and driven over two pipes, one command per line. While it runs
  * a slice the C harness waits on the pipe, so the peer has the core to itself
  * exactly like a C contender during its slice, and its slices take their turn
- * in the same interleaved rounds. The peer times itself (perf_counter around
- * whole batches), so pipe latency is not counted; a slice is at least one
+ * in the same interleaved rounds. The peer times itself around whole batches
+ * with the same kind of clock as the harness (its thread's CPU time unless
+ * told otherwise), so pipe latency is not counted; a slice is at least one
  * batch, so at large N it can run longer than the C contenders' ~2 ms. */
 #ifndef BENCH_PEER_NUMPY_H
 #define BENCH_PEER_NUMPY_H
@@ -11,9 +12,11 @@
 #include <stddef.h>
 #include "harness.h"
 
-/* Starts `python script`. BENCH_OK, or BENCH_UNAVAILABLE (no interpreter
- * given, or it could not start or import numpy; the reason goes to stderr). */
-int bench_numpy_start(const char *python, const char *script);
+/* Starts `python script`, timing by the wall clock if wall is non-zero, else
+ * by the thread's CPU clock (as the harness). BENCH_OK, or BENCH_UNAVAILABLE
+ * (no interpreter given, or it could not start or import numpy; the reason
+ * goes to stderr). */
+int bench_numpy_start(const char *python, const char *script, int wall);
 
 /* Tells the co-process to quit and reaps it. */
 void bench_numpy_stop(void);
