@@ -54,7 +54,7 @@ static int handshake(const char *python)
 }
 
 /* Parses a reply "KEYWORD A [B]" into values[0..count); BENCH_OK only if the
- * keyword matches and every value is a whole number token. */
+ * keyword matches and each value is a complete number token. */
 static int parse_reply(const char *line, const char *keyword, double *values, size_t count)
 {
     size_t len = strlen(keyword);
