@@ -238,9 +238,6 @@ run: all
 test: $(TEST_BIN) $(SECTION_BIN)
 	@EXAMPLES="$(SECTION_BIN)" sh test/run_tests.sh $(TEST_BIN) test/examples_check.sh
 
-bench: $(BENCH_BIN)
-	@set -e; for b in $(BENCH_BIN); do $$b; done
-
 clean:
 	rm -rf build
 
