@@ -59,8 +59,8 @@ DEPFLAGS := -MMD -MP
 LDLIBS   += -lm
 
 # Library sources by wildcard: a new src/*.c is picked up without edits.
-# kiss_fftr.c is not built: nothing in the library calls the real transform
-# (dft.c untangles it itself); the file stays in the tree as shipped.
+# kiss_fftr.c is not built: nothing calls the real transform (dft.c
+# untangles it itself); the file stays in the tree as shipped.
 LIB_SRC    := $(wildcard src/*.c)
 KISS_SRC   := src/vendor/kissfft/kiss_fft.c
 LIB_OBJ    := $(LIB_SRC:%.c=$(BUILD)/obj/%.o)
@@ -214,20 +214,10 @@ $(BUILD)/examples/%: examples/%.c $(EXAMPLE_SUPPORT_OBJ) $(LIB) $(FLAGS_STAMP)
 	$(Q)$(MCS_CC) -Iexamples/support -MMD -MP -MF $(BUILD)/obj/examples/$*.d $< \
 	    $(EXAMPLE_SUPPORT_OBJ) $(LIB) $(LDFLAGS) $(LDLIBS) -o $@
 
-# The benchmark times KissFFT's own real transform beside mcspec, so it
-# links its own copy of KissFFT (both files, plain names, double), as a
-# renderer with its own KissFFT would; the library's stays hidden.
-BENCH_KISS_OBJ := $(BUILD)/obj/bench/kissfft/kiss_fft.o $(BUILD)/obj/bench/kissfft/kiss_fftr.o
-$(BUILD)/obj/bench/kissfft/%.o: src/vendor/kissfft/%.c $(FLAGS_STAMP)
-	@mkdir -p $(@D)
-	@echo "CC $@"
-	$(Q)$(VEND_CC) $(KISS_CONFIG) $(DEPFLAGS) -c $< -o $@
-
-$(BUILD)/bench/%: test/bench/%.c $(BENCH_KISS_OBJ) $(LIB)
+$(BUILD)/bench/%: test/bench/%.c $(LIB) $(FLAGS_STAMP)
 	@mkdir -p $(@D) $(BUILD)/obj/bench
 	@echo "LD $@"
-	$(Q)$(MCS_CC) -isystem src/vendor/kissfft $(KISS_CONFIG) -MMD -MP -MF $(BUILD)/obj/bench/$*.d \
-	    $< $(BENCH_KISS_OBJ) $(LIB) $(LDFLAGS) $(LDLIBS) -o $@
+	$(Q)$(MCS_CC) -MMD -MP -MF $(BUILD)/obj/bench/$*.d $< $(LIB) $(LDFLAGS) $(LDLIBS) -o $@
 
 # The main job: every section example of the note with its defaults.
 run: all
