@@ -1,4 +1,5 @@
 #include "mcspec/spectrum.h"
+#include "internal.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -74,15 +75,6 @@ mcs_status mcs_spectrum_set_path(mcs_spectrum *acc, mcs_spectrum_path path)
         path != MCS_SPECTRUM_PATH_FFT)
         return MCS_ERR_KIND;
     acc->path = path;
-    return MCS_OK;
-}
-
-static mcs_status check_weight(double w)
-{
-    if (!isfinite(w))
-        return MCS_ERR_NOT_FINITE;
-    if (w < 0.0)
-        return MCS_ERR_NEGATIVE;
     return MCS_OK;
 }
 
@@ -217,15 +209,9 @@ mcs_status mcs_spectrum_add_bins(mcs_spectrum *acc, size_t k, const size_t *bins
         return MCS_ERR_NULL;
     if (!spectrum_is_valid(acc))
         return MCS_ERR_UNINIT;
-    if (k == 0u)
-        return MCS_ERR_K_RANGE;
-    for (size_t j = 0; j < k; ++j) {
-        if (bins[j] >= acc->n)
-            return MCS_ERR_BIN_RANGE;
-        mcs_status st = check_weight(weights[j]);
-        if (st != MCS_OK)
-            return st;
-    }
+    mcs_status st = mcs_check_sparse_(acc->n, k, bins, weights);
+    if (st != MCS_OK)
+        return st;
     if (use_sparse(acc, k)) {
         sparse_group g = {{0u}, {0.0}, 0u};
         clear_half(acc);
@@ -250,21 +236,12 @@ mcs_status mcs_spectrum_add_dense(mcs_spectrum *acc, size_t n, const double *s)
         return MCS_ERR_UNINIT;
     if (n != acc->n)
         return MCS_ERR_MISMATCH;
-    for (size_t j = 0; j < n; ++j) {
-        mcs_status st = check_weight(s[j]);
-        if (st != MCS_OK)
-            return st;
-    }
+    mcs_status st = mcs_check_weights_(n, s);
+    if (st != MCS_OK)
+        return st;
     memcpy(acc->s, s, n * sizeof s[0]);
     finish_fft(acc);
     return MCS_OK;
-}
-
-/* floor(N x) for x in [0,1), kept below N under rounding (as mcs_pattern_bin_points). */
-static size_t point_bin(double x, size_t n)
-{
-    size_t b = (size_t)(x * (double)n);
-    return b < n ? b : n - 1u;
 }
 
 mcs_status mcs_spectrum_add_points(mcs_spectrum *acc, size_t k, const double *points,
@@ -276,27 +253,21 @@ mcs_status mcs_spectrum_add_points(mcs_spectrum *acc, size_t k, const double *po
         return MCS_ERR_UNINIT;
     if (k == 0u)
         return MCS_ERR_K_RANGE;
-    for (size_t j = 0; j < k; ++j) {
-        if (!(points[j] >= 0.0 && points[j] < 1.0))
-            return MCS_ERR_POINT_RANGE;
-        if (weights != NULL) {
-            mcs_status st = check_weight(weights[j]);
-            if (st != MCS_OK)
-                return st;
-        }
-    }
+    mcs_status st = mcs_check_points_(k, points, weights);
+    if (st != MCS_OK)
+        return st;
     const size_t n = acc->n;
     if (use_sparse(acc, k)) {
         sparse_group g = {{0u}, {0.0}, 0u};
         clear_half(acc);
         for (size_t j = 0; j < k; ++j)
-            group_push(acc, &g, point_bin(points[j], n), weights != NULL ? weights[j] : 1.0);
+            group_push(acc, &g, mcs_point_bin_(points[j], n), weights != NULL ? weights[j] : 1.0);
         group_flush(acc, &g);
         welford_update(acc, sparse_scale(acc));
     } else {
         clear_dense(acc);
         for (size_t j = 0; j < k; ++j)
-            acc->s[point_bin(points[j], n)] += weights != NULL ? weights[j] : 1.0;
+            acc->s[mcs_point_bin_(points[j], n)] += weights != NULL ? weights[j] : 1.0;
         finish_fft(acc);
     }
     return MCS_OK;
