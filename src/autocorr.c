@@ -4,30 +4,27 @@
 #include <math.h>
 #include <string.h>
 
-static int autocorr_is_valid(const mcs_autocorr *acc)
-{
-    return acc->n >= 1u && acc->n <= (size_t)MCS_MAX_N;
-}
-
 mcs_status mcs_autocorr_init(mcs_autocorr *acc, size_t n)
 {
-    if (acc == NULL)
-        return MCS_ERR_NULL;
-    if (n == 0u || n > (size_t)MCS_MAX_N)
-        return MCS_ERR_N_RANGE;
+    mcs_status st = mcs_check_init_(acc, n, (size_t)MCS_MAX_N);
+    if (st != MCS_OK)
+        return st;
     memset(acc, 0, sizeof *acc);
-    acc->n = n;
+    acc->n = n; /* last: only a complete object counts as initialised */
     return MCS_OK;
+}
+
+static mcs_status autocorr_check(const mcs_autocorr *acc)
+{
+    return mcs_check_object_(acc, acc != NULL ? acc->n : 0u, (size_t)MCS_MAX_N);
 }
 
 mcs_status mcs_autocorr_add_bins(mcs_autocorr *acc, size_t k, const size_t *bins,
                                  const double *weights)
 {
-    if (acc == NULL || bins == NULL || weights == NULL)
-        return MCS_ERR_NULL;
-    if (!autocorr_is_valid(acc))
-        return MCS_ERR_UNINIT;
-    mcs_status st = mcs_check_sparse_(acc->n, k, bins, weights);
+    mcs_status st = bins == NULL || weights == NULL ? MCS_ERR_NULL : autocorr_check(acc);
+    if (st == MCS_OK)
+        st = mcs_check_sparse_(acc->n, k, bins, weights);
     if (st != MCS_OK)
         return st;
     /* Folded storage: an unordered pair {j, j'} at circular distance
@@ -55,12 +52,13 @@ mcs_status mcs_autocorr_add_bins(mcs_autocorr *acc, size_t k, const size_t *bins
 
 mcs_status mcs_autocorr_merge(mcs_autocorr *dst, const mcs_autocorr *src)
 {
-    if (dst == NULL || src == NULL)
-        return MCS_ERR_NULL;
-    if (!autocorr_is_valid(dst) || !autocorr_is_valid(src))
-        return MCS_ERR_UNINIT;
-    if (dst->n != src->n)
-        return MCS_ERR_MISMATCH;
+    mcs_status st = src == NULL ? MCS_ERR_NULL : autocorr_check(dst);
+    if (st == MCS_OK)
+        st = autocorr_check(src);
+    if (st == MCS_OK && dst->n != src->n)
+        st = MCS_ERR_MISMATCH;
+    if (st != MCS_OK)
+        return st;
     const size_t n = dst->n, h = n / 2u;
     for (size_t j = 0; j < n; ++j)
         dst->sum_s[j] += src->sum_s[j];
@@ -72,29 +70,23 @@ mcs_status mcs_autocorr_merge(mcs_autocorr *dst, const mcs_autocorr *src)
 
 mcs_status mcs_autocorr_count(const mcs_autocorr *acc, uint64_t *count)
 {
-    if (acc == NULL || count == NULL)
-        return MCS_ERR_NULL;
-    if (!autocorr_is_valid(acc))
-        return MCS_ERR_UNINIT;
-    *count = acc->count;
-    return MCS_OK;
+    mcs_status st = count == NULL ? MCS_ERR_NULL : autocorr_check(acc);
+    if (st == MCS_OK)
+        *count = acc->count;
+    return st;
 }
 
 static mcs_status autocorr_readout(const mcs_autocorr *acc, const mcs_dft *plan, size_t n,
                                    const double *out)
 {
-    if (acc == NULL || plan == NULL || out == NULL)
-        return MCS_ERR_NULL;
-    if (!autocorr_is_valid(acc))
-        return MCS_ERR_UNINIT;
-    if (n != acc->n)
-        return MCS_ERR_MISMATCH;
-    mcs_status st = mcs_dft_check(plan, n); /* UNINIT or MISMATCH */
-    if (st != MCS_OK)
-        return st;
-    if (acc->count == 0u)
-        return MCS_ERR_EMPTY;
-    return MCS_OK;
+    mcs_status st = plan == NULL || out == NULL ? MCS_ERR_NULL : autocorr_check(acc);
+    if (st == MCS_OK && n != acc->n)
+        st = MCS_ERR_MISMATCH;
+    if (st == MCS_OK)
+        st = mcs_dft_check(plan, n); /* UNINIT or MISMATCH */
+    if (st == MCS_OK && acc->count == 0u)
+        st = MCS_ERR_EMPTY;
+    return st;
 }
 
 mcs_status mcs_autocorr_mean(const mcs_autocorr *acc, mcs_dft *plan, size_t n, double *re,

@@ -1,5 +1,6 @@
 /* The note's closed forms of sections 1-3 (section 4, importance sampling,
- * is src/eq_importance.c), and the helpers both files share. */
+ * is src/eq_importance.c), and the helpers both files share. Every form
+ * checks all its inputs with one call, so a failed call writes nothing. */
 #include "mcspec/eq.h"
 #include "eq_internal.h"
 #include "internal.h"
@@ -21,6 +22,20 @@ mcs_status mcs_eq_check_n_k(size_t n, size_t cap, size_t k)
 int mcs_eq_k_divides_n(size_t n, size_t k)
 {
     return k <= n && n % k == 0u;
+}
+
+mcs_status mcs_eq_check_pair(int outputs, size_t n, size_t k, size_t freq_k, size_t freq_l)
+{
+    if (!outputs)
+        return MCS_ERR_NULL;
+    mcs_status st = mcs_eq_check_n_k(n, (size_t)MCS_MAX_N, k);
+    if (st != MCS_OK)
+        return st;
+    if (freq_k >= n || freq_l >= n)
+        return MCS_ERR_FREQ_RANGE;
+    if (!mcs_eq_k_divides_n(n, k))
+        return MCS_ERR_DOMAIN;
+    return MCS_OK;
 }
 
 void mcs_eq_dft_at(size_t n, const double *x, size_t freq, double *re, double *im)
@@ -49,58 +64,58 @@ double mcs_eq_ac_energy(size_t n, const double *f)
 
 /* ---- Section 1: the exact moments' read-out of two integrands ------------ */
 
-/* Opens th for the integrands f and g (both checked, in that order). */
-static mcs_status open_pair(const mcs_theory *th, size_t n, size_t k, const double *f,
-                            const double *g, mcs_readout *view)
+/* Var[I_f] + Var[I_g], less 2 Cov(I_f, I_g) when f and g are estimated from
+ * one shared trial (eq. 4); independent trials have no covariance (eq. 2). */
+static mcs_status gradient_variance(const mcs_theory *th, size_t n, size_t k, const double *f,
+                                    const double *g, int shared, double *out)
 {
-    mcs_status st = mcs_readout_check_integrand(th, mcs_readout_open_theory, n, k, f, view);
-    if (st == MCS_OK)
-        st = mcs_readout_check_integrand(th, mcs_readout_open_theory, n, k, g, view);
-    return st;
+    mcs_readout v;
+    mcs_status st =
+        mcs_readout_check_integrands(out != NULL, th, mcs_readout_open_theory, n, k, f, g, &v);
+    for (size_t b = 0; shared && st == MCS_OK && b < n; ++b)
+        if (!isfinite(f[b] - g[b])) /* f - g can overflow */
+            st = MCS_ERR_NOT_FINITE;
+    if (st != MCS_OK)
+        return st;
+    /* (f - g)^T Cov (f - g), expanded so no difference array is needed */
+    double var = mcs_readout_form(&v, k, f, f) + mcs_readout_form(&v, k, g, g);
+    if (shared)
+        var -= 2.0 * mcs_readout_form(&v, k, f, g);
+    *out = var;
+    return MCS_OK;
 }
 
 mcs_status mcs_eq2_uncorrelated_variance(const mcs_theory *th, size_t n, size_t k,
                                          const double *f, const double *g, double *out)
 {
-    if (th == NULL || f == NULL || g == NULL || out == NULL)
-        return MCS_ERR_NULL;
-    mcs_readout v;
-    mcs_status st = open_pair(th, n, k, f, g, &v);
-    if (st != MCS_OK)
-        return st;
-    /* independent trials: Cov[f, g] = 0 */
-    *out = mcs_readout_form(&v, k, f, f) + mcs_readout_form(&v, k, g, g);
-    return MCS_OK;
+    return gradient_variance(th, n, k, f, g, 0, out);
 }
 
 mcs_status mcs_eq4_correlated_variance(const mcs_theory *th, size_t n, size_t k,
                                        const double *f, const double *g, double *out)
 {
-    if (th == NULL || f == NULL || g == NULL || out == NULL)
-        return MCS_ERR_NULL;
-    mcs_readout v;
-    mcs_status st = open_pair(th, n, k, f, g, &v);
-    if (st != MCS_OK)
-        return st;
-    for (size_t b = 0; b < n; ++b)
-        if (!isfinite(f[b] - g[b])) /* f - g can overflow */
-            return MCS_ERR_NOT_FINITE;
-    /* (f - g)^T Cov (f - g), expanded so no difference array is needed */
-    *out = mcs_readout_form(&v, k, f, f) + mcs_readout_form(&v, k, g, g) -
-           2.0 * mcs_readout_form(&v, k, f, g);
-    return MCS_OK;
+    return gradient_variance(th, n, k, f, g, 1, out);
 }
 
 /* ---- Section 2 ------------------------------------------------------------ */
 
+/* An integrand's closed form: outputs given (else NULL), n in [1, cap],
+ * k >= 1, f[n] finite. */
+static mcs_status check_f(int outputs, size_t n, size_t cap, size_t k, const double *f)
+{
+    if (!outputs)
+        return MCS_ERR_NULL;
+    mcs_status st = mcs_eq_check_n_k(n, cap, k);
+    if (st == MCS_OK && !mcs_all_finite_(n, f))
+        st = MCS_ERR_NOT_FINITE;
+    return st;
+}
+
 mcs_status mcs_eq11_unbiased_mean(size_t n, const double *f, double *out)
 {
-    if (f == NULL || out == NULL)
-        return MCS_ERR_NULL;
-    if (n == 0u || n > (size_t)MCS_MAX_N)
-        return MCS_ERR_N_RANGE;
-    if (!mcs_all_finite_(n, f))
-        return MCS_ERR_NOT_FINITE;
+    mcs_status st = check_f(f != NULL && out != NULL, n, (size_t)MCS_MAX_N, 1u, f);
+    if (st != MCS_OK)
+        return st;
     double sum = 0.0;
     for (size_t b = 0; b < n; ++b)
         sum += f[b];
@@ -111,10 +126,9 @@ mcs_status mcs_eq11_unbiased_mean(size_t n, const double *f, double *out)
 mcs_status mcs_eq13_variance(const mcs_theory *th, size_t n, size_t k, const double *f,
                              double *out)
 {
-    if (th == NULL || f == NULL || out == NULL)
-        return MCS_ERR_NULL;
     mcs_readout v;
-    mcs_status st = mcs_readout_check_integrand(th, mcs_readout_open_theory, n, k, f, &v);
+    mcs_status st =
+        mcs_readout_check_integrand(out != NULL, th, mcs_readout_open_theory, n, k, f, &v);
     if (st != MCS_OK)
         return st;
     /* sum_{k,l >= 1} F_k* F_l <S_k S_l*>, every term through eq. 16 and the
@@ -128,9 +142,7 @@ mcs_status mcs_eq13_variance(const mcs_theory *th, size_t n, size_t k, const dou
             mcs_readout_dft(&v, f, b, &flr, &fli);
             mcs_readout_cross_at(&v, a, b, &cr, &ci);
             /* F_k* F_l = (fkr - i fki)(flr + i fli); the real part of the product */
-            double ar = fkr * flr + fki * fli;
-            double ai = fkr * fli - fki * flr;
-            total += ar * cr - ai * ci;
+            total += (fkr * flr + fki * fli) * cr - (fkr * fli - fki * flr) * ci;
         }
     }
     double kd = (double)k;
@@ -141,13 +153,12 @@ mcs_status mcs_eq13_variance(const mcs_theory *th, size_t n, size_t k, const dou
 mcs_status mcs_eq14_variance(size_t n, size_t k, const double *f, const double *power,
                              double *out)
 {
-    if (f == NULL || power == NULL || out == NULL)
-        return MCS_ERR_NULL;
-    mcs_status st = mcs_eq_check_n_k(n, (size_t)MCS_MAX_COV_N, k);
+    int outputs = f != NULL && power != NULL && out != NULL;
+    mcs_status st = check_f(outputs, n, (size_t)MCS_MAX_COV_N, k, f);
+    if (st == MCS_OK && !mcs_all_finite_(n - 1u, power + 1))
+        st = MCS_ERR_NOT_FINITE;
     if (st != MCS_OK)
         return st;
-    if (!mcs_all_finite_(n, f) || !mcs_all_finite_(n - 1u, power + 1))
-        return MCS_ERR_NOT_FINITE;
     double sum = 0.0;
     for (size_t b = 1; b < n; ++b) {
         double fr, fi;
@@ -161,52 +172,42 @@ mcs_status mcs_eq14_variance(size_t n, size_t k, const double *f, const double *
 
 /* ---- Section 3 ------------------------------------------------------------ */
 
-/* Common checks for a closed form at one frequency. */
-static mcs_status check_freq_form(size_t n, size_t k, size_t freq)
+/* A closed form at one frequency: outputs given (else NULL), n and k in
+ * range, freq < n; DOMAIN for freq 0 when positive_freq, and for K not
+ * dividing N when need_divides (the stratified forms put N/K bins in each
+ * stratum). */
+static mcs_status check_freq(int outputs, size_t n, size_t k, size_t freq, int positive_freq,
+                             int need_divides)
 {
+    if (!outputs)
+        return MCS_ERR_NULL;
     mcs_status st = mcs_eq_check_n_k(n, (size_t)MCS_MAX_N, k);
     if (st != MCS_OK)
         return st;
     if (freq >= n)
         return MCS_ERR_FREQ_RANGE;
+    if ((positive_freq && freq == 0u) || (need_divides && !mcs_eq_k_divides_n(n, k)))
+        return MCS_ERR_DOMAIN;
     return MCS_OK;
 }
 
 mcs_status mcs_eq23_random_power(size_t n, size_t k, size_t freq, double *out)
 {
-    if (out == NULL)
-        return MCS_ERR_NULL;
-    mcs_status st = check_freq_form(n, k, freq);
-    if (st != MCS_OK)
-        return st;
-    if (freq == 0u)
-        return MCS_ERR_DOMAIN;
-    *out = (double)k / (double)n;
-    return MCS_OK;
+    mcs_status st = check_freq(out != NULL, n, k, freq, 1, 0);
+    return st == MCS_OK ? mcs_set_(out, (double)k / (double)n) : st;
 }
 
 mcs_status mcs_eq24_random_variance(size_t n, size_t k, const double *f, double *out)
 {
-    if (f == NULL || out == NULL)
-        return MCS_ERR_NULL;
-    mcs_status st = mcs_eq_check_n_k(n, (size_t)MCS_MAX_COV_N, k);
-    if (st != MCS_OK)
-        return st;
-    if (!mcs_all_finite_(n, f))
-        return MCS_ERR_NOT_FINITE;
-    *out = mcs_eq_ac_energy(n, f) / ((double)k * (double)n);
-    return MCS_OK;
+    mcs_status st = check_f(f != NULL && out != NULL, n, (size_t)MCS_MAX_COV_N, k, f);
+    return st == MCS_OK ? mcs_set_(out, mcs_eq_ac_energy(n, f) / ((double)k * (double)n)) : st;
 }
 
 mcs_status mcs_eq25_random_variance(size_t n, size_t k, const double *f, double *out)
 {
-    if (f == NULL || out == NULL)
-        return MCS_ERR_NULL;
-    mcs_status st = mcs_eq_check_n_k(n, (size_t)MCS_MAX_N, k);
+    mcs_status st = check_f(f != NULL && out != NULL, n, (size_t)MCS_MAX_N, k, f);
     if (st != MCS_OK)
         return st;
-    if (!mcs_all_finite_(n, f))
-        return MCS_ERR_NOT_FINITE;
     double mean = 0.0;
     for (size_t b = 0; b < n; ++b)
         mean += f[b];
@@ -245,42 +246,35 @@ static void stratum_sum(size_t n, size_t k, size_t freq, double *re, double *im)
     *im = i;
 }
 
-mcs_status mcs_eq_check_pair(size_t n, size_t k, size_t fk, size_t fl)
+/* -(K/N)^3 A B* for the two brackets A = ar + i ai, B = br + i bi of eq. 30. */
+static void delta_of(size_t n, size_t k, double ar, double ai, double br, double bi, double *re,
+                     double *im)
 {
-    mcs_status st = mcs_eq_check_n_k(n, (size_t)MCS_MAX_N, k);
-    if (st != MCS_OK)
-        return st;
-    if (fk >= n || fl >= n)
-        return MCS_ERR_FREQ_RANGE;
-    if (!mcs_eq_k_divides_n(n, k))
-        return MCS_ERR_DOMAIN;
-    return MCS_OK;
-}
-
-void mcs_eq_delta_printed(size_t n, size_t k, size_t fk, size_t fl, double *re, double *im)
-{
-    double ar, ai, br, bi;
-    eq30_ratio(n, k, fk, &ar, &ai);
-    eq30_ratio(n, k, fl, &br, &bi);
-    bi = -bi; /* the second bracket is the conjugate ratio at l */
+    bi = -bi; /* the second bracket is the conjugate one, at l */
     double c = (double)k / (double)n;
     c = -c * c * c;
     *re = c * (ar * br - ai * bi);
     *im = c * (ar * bi + ai * br);
 }
 
+void mcs_eq_delta_printed(size_t n, size_t k, size_t freq_k, size_t freq_l, double *re,
+                          double *im)
+{
+    double ar, ai, br, bi;
+    eq30_ratio(n, k, freq_k, &ar, &ai);
+    eq30_ratio(n, k, freq_l, &br, &bi);
+    delta_of(n, k, ar, ai, br, bi, re, im);
+}
+
 mcs_status mcs_eq30_stratified_delta_printed(size_t n, size_t k, size_t freq_k, size_t freq_l,
                                              double *re, double *im)
 {
-    if (re == NULL || im == NULL)
-        return MCS_ERR_NULL;
-    mcs_status st = mcs_eq_check_pair(n, k, freq_k, freq_l);
-    if (st != MCS_OK)
-        return st;
-    if (freq_k == 0u || freq_l == 0u)
-        return MCS_ERR_DOMAIN;
-    mcs_eq_delta_printed(n, k, freq_k, freq_l, re, im);
-    return MCS_OK;
+    mcs_status st = mcs_eq_check_pair(re != NULL && im != NULL, n, k, freq_k, freq_l);
+    if (st == MCS_OK && (freq_k == 0u || freq_l == 0u)) /* the ratios are 0/0 there */
+        st = MCS_ERR_DOMAIN;
+    if (st == MCS_OK)
+        mcs_eq_delta_printed(n, k, freq_k, freq_l, re, im);
+    return st;
 }
 
 /* Delta_kl with the strata phase sum: the K strata at offsets q N/K add
@@ -295,31 +289,22 @@ static void eq30_corrected(size_t n, size_t k, size_t fk, size_t fl, double *re,
     double ar, ai, br, bi;
     stratum_sum(n, k, fk, &ar, &ai);
     stratum_sum(n, k, fl, &br, &bi);
-    bi = -bi;
-    double c = (double)k / (double)n;
-    c = -c * c * c;
-    *re = c * (ar * br - ai * bi);
-    *im = c * (ar * bi + ai * br);
+    delta_of(n, k, ar, ai, br, bi, re, im);
 }
 
 mcs_status mcs_eq30_stratified_delta_corrected(size_t n, size_t k, size_t freq_k,
                                                size_t freq_l, double *re, double *im)
 {
-    if (re == NULL || im == NULL)
-        return MCS_ERR_NULL;
-    mcs_status st = mcs_eq_check_pair(n, k, freq_k, freq_l);
-    if (st != MCS_OK)
-        return st;
-    eq30_corrected(n, k, freq_k, freq_l, re, im);
-    return MCS_OK;
+    mcs_status st = mcs_eq_check_pair(re != NULL && im != NULL, n, k, freq_k, freq_l);
+    if (st == MCS_OK)
+        eq30_corrected(n, k, freq_k, freq_l, re, im);
+    return st;
 }
 
 mcs_status mcs_eq30_stratified_cross(size_t n, size_t k, size_t freq_k, size_t freq_l,
                                      double *re, double *im)
 {
-    if (re == NULL || im == NULL)
-        return MCS_ERR_NULL;
-    mcs_status st = mcs_eq_check_pair(n, k, freq_k, freq_l);
+    mcs_status st = mcs_eq_check_pair(re != NULL && im != NULL, n, k, freq_k, freq_l);
     if (st != MCS_OK)
         return st;
     double dr, di;
@@ -331,18 +316,6 @@ mcs_status mcs_eq30_stratified_cross(size_t n, size_t k, size_t freq_k, size_t f
         dr += (double)k * kn; /* eq. 28's constant K^2/N^2 term */
     *re = dr;
     *im = di;
-    return MCS_OK;
-}
-
-/* Checks for the one-frequency stratified/jitter forms: K | N and, when
- * positive_freq, freq >= 1. */
-static mcs_status check_strat_form(size_t n, size_t k, size_t freq, int positive_freq)
-{
-    mcs_status st = check_freq_form(n, k, freq);
-    if (st != MCS_OK)
-        return st;
-    if (!mcs_eq_k_divides_n(n, k) || (positive_freq && freq == 0u))
-        return MCS_ERR_DOMAIN;
     return MCS_OK;
 }
 
@@ -363,9 +336,7 @@ static double eq32(size_t n, size_t k, size_t freq)
 
 mcs_status mcs_eq31_stratified_delta_printed(size_t n, size_t k, size_t freq, double *out)
 {
-    if (out == NULL)
-        return MCS_ERR_NULL;
-    mcs_status st = check_strat_form(n, k, freq, 1);
+    mcs_status st = check_freq(out != NULL, n, k, freq, 1, 1);
     if (st != MCS_OK)
         return st;
     double kn = (double)k / (double)n;
@@ -378,24 +349,14 @@ mcs_status mcs_eq31_stratified_delta_printed(size_t n, size_t k, size_t freq, do
 
 mcs_status mcs_eq32_stratified_delta(size_t n, size_t k, size_t freq, double *out)
 {
-    if (out == NULL)
-        return MCS_ERR_NULL;
-    mcs_status st = check_strat_form(n, k, freq, 1);
-    if (st != MCS_OK)
-        return st;
-    *out = eq32(n, k, freq);
-    return MCS_OK;
+    mcs_status st = check_freq(out != NULL, n, k, freq, 1, 1);
+    return st == MCS_OK ? mcs_set_(out, eq32(n, k, freq)) : st;
 }
 
 mcs_status mcs_eq33_stratified_power_exact(size_t n, size_t k, size_t freq, double *out)
 {
-    if (out == NULL)
-        return MCS_ERR_NULL;
-    mcs_status st = check_strat_form(n, k, freq, 1);
-    if (st != MCS_OK)
-        return st;
-    *out = (double)k / (double)n + eq32(n, k, freq);
-    return MCS_OK;
+    mcs_status st = check_freq(out != NULL, n, k, freq, 1, 1);
+    return st == MCS_OK ? mcs_set_(out, (double)k / (double)n + eq32(n, k, freq)) : st;
 }
 
 /* sinc^2(pi freq / K) with sinc x = sin x / x, freq in [1, N). The limit
@@ -411,41 +372,30 @@ double mcs_eq_sinc2(size_t n, size_t k, size_t freq)
 
 mcs_status mcs_eq33_stratified_power_limit(size_t n, size_t k, size_t freq, double *out)
 {
-    if (out == NULL)
-        return MCS_ERR_NULL;
-    mcs_status st = check_strat_form(n, k, freq, 1);
-    if (st != MCS_OK)
-        return st;
-    *out = (double)k / (double)n * (1.0 - mcs_eq_sinc2(n, k, freq));
-    return MCS_OK;
+    mcs_status st = check_freq(out != NULL, n, k, freq, 1, 1);
+    return st == MCS_OK ? mcs_set_(out, (double)k / (double)n * (1.0 - mcs_eq_sinc2(n, k, freq)))
+                        : st;
 }
 
 mcs_status mcs_eq34_uniform_spectrum(size_t n, size_t k, size_t freq, double *re, double *im)
 {
-    if (re == NULL || im == NULL)
-        return MCS_ERR_NULL;
-    mcs_status st = check_strat_form(n, k, freq, 0);
+    mcs_status st = check_freq(re != NULL && im != NULL, n, k, freq, 0, 1);
+    if (st == MCS_OK && (n / k) % 2u != 0u) /* (alpha + 1/2) N/K must be a whole bin */
+        st = MCS_ERR_DOMAIN;
     if (st != MCS_OK)
         return st;
-    if ((n / k) % 2u != 0u) /* (alpha + 1/2) N/K must be a whole bin */
-        return MCS_ERR_DOMAIN;
-    if (freq % k != 0u) {
-        *re = 0.0;
-        *im = 0.0;
-        return MCS_OK;
-    }
-    /* e^{-2 pi i k beta/K} at k = mu K, beta = 1/2: (-1)^mu */
-    double mag = (double)k / sqrt((double)n);
-    *re = (freq / k) % 2u == 0u ? mag : -mag;
+    *re = 0.0;
     *im = 0.0;
+    if (freq % k == 0u) { /* e^{-2 pi i k beta/K} at k = mu K, beta = 1/2: (-1)^mu */
+        double mag = (double)k / sqrt((double)n);
+        *re = (freq / k) % 2u == 0u ? mag : -mag;
+    }
     return MCS_OK;
 }
 
 mcs_status mcs_eq35_jitter_mean(size_t n, size_t k, size_t freq, double *re, double *im)
 {
-    if (re == NULL || im == NULL)
-        return MCS_ERR_NULL;
-    mcs_status st = check_strat_form(n, k, freq, 0);
+    mcs_status st = check_freq(re != NULL && im != NULL, n, k, freq, 0, 1);
     if (st != MCS_OK)
         return st;
     *re = freq == 0u ? (double)k / sqrt((double)n) : 0.0;
@@ -455,11 +405,7 @@ mcs_status mcs_eq35_jitter_mean(size_t n, size_t k, size_t freq, double *re, dou
 
 mcs_status mcs_eq37_jitter_power(size_t n, size_t k, size_t freq, double *out)
 {
-    if (out == NULL)
-        return MCS_ERR_NULL;
-    mcs_status st = check_strat_form(n, k, freq, 0);
-    if (st != MCS_OK)
-        return st;
-    *out = freq % k == 0u ? (double)k * (double)k / (double)n : 0.0;
-    return MCS_OK;
+    mcs_status st = check_freq(out != NULL, n, k, freq, 0, 1);
+    return st == MCS_OK ? mcs_set_(out, freq % k == 0u ? (double)k * (double)k / (double)n : 0.0)
+                        : st;
 }

@@ -14,9 +14,10 @@ mcs_status mcs_eq_check_n_k(size_t n, size_t cap, size_t k);
 /* The stratified forms of the note put N/K whole bins in each stratum. */
 int mcs_eq_k_divides_n(size_t n, size_t k);
 
-/* A pair of frequencies for a stratified form: check_n_k at MCS_MAX_N, both
- * frequencies < n (FREQ_RANGE), K dividing N (DOMAIN). */
-mcs_status mcs_eq_check_pair(size_t n, size_t k, size_t freq_k, size_t freq_l);
+/* A pair of frequencies for a stratified form: outputs given (else NULL),
+ * check_n_k at MCS_MAX_N, both frequencies < n (FREQ_RANGE), K dividing N
+ * (DOMAIN). */
+mcs_status mcs_eq_check_pair(int outputs, size_t n, size_t k, size_t freq_k, size_t freq_l);
 
 /* Eq. 7 at one frequency with the twiddle computed per term from the reduced
  * index (freq t mod N): no table, so any N. */

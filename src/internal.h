@@ -71,11 +71,38 @@ static inline mcs_status mcs_check_sparse_(size_t n, size_t k, const size_t *bin
     return MCS_OK;
 }
 
-/* Every value of x[n] as mcs_check_weight_ (a dense trial, or weights). */
-static inline mcs_status mcs_check_weights_(size_t n, const double *x)
+/* The checks of an init call: MCS_ERR_NULL without the object, MCS_ERR_N_RANGE
+ * unless n is in [1, cap]. */
+static inline mcs_status mcs_check_init_(const void *obj, size_t n, size_t cap)
 {
+    if (obj == NULL)
+        return MCS_ERR_NULL;
+    return n >= 1u && n <= cap ? MCS_OK : MCS_ERR_N_RANGE;
+}
+
+/* The first check of every other call on an object: MCS_ERR_NULL without it,
+ * MCS_ERR_UNINIT unless its n (0 before init) is in [1, cap]. */
+static inline mcs_status mcs_check_object_(const void *obj, size_t n, size_t cap)
+{
+    if (obj == NULL)
+        return MCS_ERR_NULL;
+    return n >= 1u && n <= cap ? MCS_OK : MCS_ERR_UNINIT;
+}
+
+/* A dense trial s[n] for an object of N = obj_n bins whose own check gave
+ * obj_status: MCS_ERR_NULL without s, then obj_status, MCS_ERR_MISMATCH
+ * unless n == obj_n, then every s_n as mcs_check_weight_. */
+static inline mcs_status mcs_check_dense_(mcs_status obj_status, size_t obj_n, size_t n,
+                                          const double *s)
+{
+    if (s == NULL)
+        return MCS_ERR_NULL;
+    if (obj_status != MCS_OK)
+        return obj_status;
+    if (n != obj_n)
+        return MCS_ERR_MISMATCH;
     for (size_t j = 0; j < n; ++j) {
-        mcs_status st = mcs_check_weight_(x[j]);
+        mcs_status st = mcs_check_weight_(s[j]);
         if (st != MCS_OK)
             return st;
     }
@@ -112,6 +139,14 @@ static inline mcs_status mcs_check_points_(size_t k, const double *points, const
         if (st != MCS_OK)
             return st;
     }
+    return MCS_OK;
+}
+
+/* Writes a checked result: *out = value, MCS_OK. Lets a closed form read
+ * "checked ? mcs_set_(out, formula) : status". */
+static inline mcs_status mcs_set_(double *out, double value)
+{
+    *out = value;
     return MCS_OK;
 }
 

@@ -4,21 +4,20 @@
 
 #include <string.h>
 
-static int moment_is_valid(const mcs_moment *acc)
-{
-    return acc->n >= 1u && acc->n <= (size_t)MCS_MAX_COV_N;
-}
-
 mcs_status mcs_moment_init(mcs_moment *acc, size_t n)
 {
-    if (acc == NULL)
-        return MCS_ERR_NULL;
-    if (n == 0u || n > (size_t)MCS_MAX_COV_N)
-        return MCS_ERR_N_RANGE;
+    mcs_status st = mcs_check_init_(acc, n, (size_t)MCS_MAX_COV_N);
+    if (st != MCS_OK)
+        return st;
     memset(acc, 0, sizeof *acc);
-    acc->n = n;
     mcs_twiddles_(n, acc->cos_table, acc->sin_table);
+    acc->n = n; /* last: only a complete object counts as initialised */
     return MCS_OK;
+}
+
+static mcs_status moment_check(const mcs_moment *acc)
+{
+    return mcs_check_object_(acc, acc != NULL ? acc->n : 0u, (size_t)MCS_MAX_COV_N);
 }
 
 /* Adds sample pair contributions. s_m s_n = sum over ordered pairs (j, j')
@@ -52,26 +51,17 @@ static void add_sample_pairs(mcs_moment *acc, size_t k, const size_t *bins,
 mcs_status mcs_moment_add_bins(mcs_moment *acc, size_t k, const size_t *bins,
                                const double *weights)
 {
-    if (acc == NULL || bins == NULL || weights == NULL)
-        return MCS_ERR_NULL;
-    if (!moment_is_valid(acc))
-        return MCS_ERR_UNINIT;
-    mcs_status st = mcs_check_sparse_(acc->n, k, bins, weights);
-    if (st != MCS_OK)
-        return st;
-    add_sample_pairs(acc, k, bins, weights);
-    return MCS_OK;
+    mcs_status st = bins == NULL || weights == NULL ? MCS_ERR_NULL : moment_check(acc);
+    if (st == MCS_OK)
+        st = mcs_check_sparse_(acc->n, k, bins, weights);
+    if (st == MCS_OK)
+        add_sample_pairs(acc, k, bins, weights);
+    return st;
 }
 
 mcs_status mcs_moment_add_dense(mcs_moment *acc, size_t n, const double *s)
 {
-    if (acc == NULL || s == NULL)
-        return MCS_ERR_NULL;
-    if (!moment_is_valid(acc))
-        return MCS_ERR_UNINIT;
-    if (n != acc->n)
-        return MCS_ERR_MISMATCH;
-    mcs_status st = mcs_check_weights_(n, s);
+    mcs_status st = mcs_check_dense_(moment_check(acc), acc != NULL ? acc->n : 0u, n, s);
     if (st != MCS_OK)
         return st;
     /* Each non-zero bin as one sample of weight s_m: the diagonal gets s_m^2
@@ -95,12 +85,13 @@ mcs_status mcs_moment_add_dense(mcs_moment *acc, size_t n, const double *s)
 
 mcs_status mcs_moment_merge(mcs_moment *dst, const mcs_moment *src)
 {
-    if (dst == NULL || src == NULL)
-        return MCS_ERR_NULL;
-    if (!moment_is_valid(dst) || !moment_is_valid(src))
-        return MCS_ERR_UNINIT;
-    if (dst->n != src->n)
-        return MCS_ERR_MISMATCH;
+    mcs_status st = src == NULL ? MCS_ERR_NULL : moment_check(dst);
+    if (st == MCS_OK)
+        st = moment_check(src);
+    if (st == MCS_OK && dst->n != src->n)
+        st = MCS_ERR_MISMATCH;
+    if (st != MCS_OK)
+        return st;
     const size_t n = dst->n;
     for (size_t j = 0; j < n; ++j)
         dst->sum_s[j] += src->sum_s[j];
@@ -112,12 +103,10 @@ mcs_status mcs_moment_merge(mcs_moment *dst, const mcs_moment *src)
 
 mcs_status mcs_moment_count(const mcs_moment *acc, uint64_t *count)
 {
-    if (acc == NULL || count == NULL)
-        return MCS_ERR_NULL;
-    if (!moment_is_valid(acc))
-        return MCS_ERR_UNINIT;
-    *count = acc->count;
-    return MCS_OK;
+    mcs_status st = count == NULL ? MCS_ERR_NULL : moment_check(acc);
+    if (st == MCS_OK)
+        *count = acc->count;
+    return st;
 }
 
 /* ---- read-out (src/readout.c): the trial averages are the sums / count ---- */
@@ -125,80 +114,15 @@ mcs_status mcs_moment_count(const mcs_moment *acc, uint64_t *count)
 mcs_status mcs_readout_open_moment(const void *obj, mcs_readout *view)
 {
     const mcs_moment *acc = (const mcs_moment *)obj;
-    if (!moment_is_valid(acc))
-        return MCS_ERR_UNINIT;
+    mcs_status st = moment_check(acc);
+    if (st != MCS_OK)
+        return st;
     if (acc->count == 0u)
         return MCS_ERR_EMPTY;
-    view->n = acc->n;
-    view->k = 0u; /* the caller names K */
-    view->scale = 1.0 / (double)acc->count;
-    view->first = acc->sum_s;
-    view->second = acc->sum_ss;
-    view->cos_table = acc->cos_table;
-    view->sin_table = acc->sin_table;
+    /* k = 0: the accumulator does not know K, the caller names it */
+    *view = (mcs_readout){acc->n,     0u,          1.0 / (double)acc->count, acc->sum_s,
+                          acc->sum_ss, acc->cos_table, acc->sin_table};
     return MCS_OK;
 }
 
-static const mcs_readout_open trial_averages = mcs_readout_open_moment;
-
-mcs_status mcs_moment_bin_mean(const mcs_moment *acc, size_t bin, double *out)
-{
-    return mcs_readout_bin_mean(acc, trial_averages, bin, out);
-}
-
-mcs_status mcs_moment_bin_second(const mcs_moment *acc, size_t bin_m, size_t bin_n,
-                                 double *out)
-{
-    return mcs_readout_bin_second(acc, trial_averages, bin_m, bin_n, out);
-}
-
-mcs_status mcs_moment_mean(const mcs_moment *acc, size_t freq, double *re, double *im)
-{
-    return mcs_readout_mean(acc, trial_averages, freq, re, im);
-}
-
-mcs_status mcs_moment_power(const mcs_moment *acc, size_t freq, double *out)
-{
-    return mcs_readout_power(acc, trial_averages, freq, out);
-}
-
-mcs_status mcs_moment_cross(const mcs_moment *acc, size_t freq_k, size_t freq_l, double *re,
-                            double *im)
-{
-    return mcs_readout_cross(acc, trial_averages, freq_k, freq_l, re, im);
-}
-
-mcs_status mcs_moment_covariance(const mcs_moment *acc, size_t freq_k, size_t freq_l,
-                                 double *re, double *im)
-{
-    return mcs_readout_covariance(acc, trial_averages, freq_k, freq_l, re, im);
-}
-
-mcs_status mcs_moment_cross_matrix(const mcs_moment *acc, size_t n, double *re, double *im)
-{
-    return mcs_readout_cross_matrix(acc, trial_averages, n, re, im);
-}
-
-mcs_status mcs_moment_covariance_matrix(const mcs_moment *acc, size_t n, double *re,
-                                        double *im)
-{
-    return mcs_readout_covariance_matrix(acc, trial_averages, n, re, im);
-}
-
-mcs_status mcs_moment_estimator_mean(const mcs_moment *acc, size_t n, size_t k, const double *f,
-                                     double *out)
-{
-    return mcs_readout_estimator_mean(acc, trial_averages, n, k, f, out);
-}
-
-mcs_status mcs_moment_variance(const mcs_moment *acc, size_t n, size_t k, const double *f,
-                               double *out)
-{
-    return mcs_readout_variance(acc, trial_averages, n, k, f, out);
-}
-
-mcs_status mcs_moment_estimator_covariance(const mcs_moment *acc, size_t n, size_t k,
-                                           const double *f, const double *g, double *out)
-{
-    return mcs_readout_estimator_covariance(acc, trial_averages, n, k, f, g, out);
-}
+MCS_READOUT_DEFINE(moment, mcs_moment, mcs_readout_open_moment)

@@ -98,95 +98,81 @@ double mcs_readout_form(const mcs_readout *view, size_t k, const double *f, cons
 
 /* ---- checked read-outs ---------------------------------------------------- */
 
+/* Opens obj for a read-out: outputs given (else NULL), the object's own
+ * checks (UNINIT, EMPTY), then indices a, b below N (else range). */
+static mcs_status open_for(int outputs, const void *obj, mcs_readout_open open, size_t a,
+                           size_t b, mcs_status range, mcs_readout *view)
+{
+    if (!outputs || obj == NULL)
+        return MCS_ERR_NULL;
+    mcs_status st = open(obj, view);
+    if (st == MCS_OK && (a >= view->n || b >= view->n))
+        st = range;
+    return st;
+}
+
 mcs_status mcs_readout_bin_mean(const void *obj, mcs_readout_open open, size_t bin, double *out)
 {
-    if (obj == NULL || out == NULL)
-        return MCS_ERR_NULL;
     mcs_readout v;
-    mcs_status st = open(obj, &v);
-    if (st != MCS_OK)
-        return st;
-    if (bin >= v.n)
-        return MCS_ERR_BIN_RANGE;
-    *out = v.first[bin] * v.scale;
-    return MCS_OK;
+    mcs_status st = open_for(out != NULL, obj, open, bin, bin, MCS_ERR_BIN_RANGE, &v);
+    return st == MCS_OK ? mcs_set_(out, v.first[bin] * v.scale) : st;
 }
 
 mcs_status mcs_readout_bin_second(const void *obj, mcs_readout_open open, size_t bin_m,
                                   size_t bin_n, double *out)
 {
-    if (obj == NULL || out == NULL)
-        return MCS_ERR_NULL;
     mcs_readout v;
-    mcs_status st = open(obj, &v);
-    if (st != MCS_OK)
-        return st;
-    if (bin_m >= v.n || bin_n >= v.n)
-        return MCS_ERR_BIN_RANGE;
-    *out = v.second[bin_m * v.n + bin_n] * v.scale;
-    return MCS_OK;
+    mcs_status st = open_for(out != NULL, obj, open, bin_m, bin_n, MCS_ERR_BIN_RANGE, &v);
+    return st == MCS_OK ? mcs_set_(out, v.second[bin_m * v.n + bin_n] * v.scale) : st;
 }
 
-/* Opens obj for a read-out at frequencies freq_k, freq_l (both < N). */
-static mcs_status open_at(const void *obj, mcs_readout_open open, size_t freq_k, size_t freq_l,
-                          mcs_readout *view)
+/* A complex read-out at frequencies freq_k, freq_l, the value from at. */
+typedef void (*complex_at)(const mcs_readout *view, size_t freq_k, size_t freq_l, double *re,
+                           double *im);
+
+static mcs_status read_complex(const void *obj, mcs_readout_open open, size_t freq_k,
+                               size_t freq_l, double *re, double *im, complex_at at)
 {
-    mcs_status st = open(obj, view);
-    if (st != MCS_OK)
-        return st;
-    if (freq_k >= view->n || freq_l >= view->n)
-        return MCS_ERR_FREQ_RANGE;
-    return MCS_OK;
+    mcs_readout v;
+    int outputs = re != NULL && im != NULL;
+    mcs_status st = open_for(outputs, obj, open, freq_k, freq_l, MCS_ERR_FREQ_RANGE, &v);
+    if (st == MCS_OK)
+        at(&v, freq_k, freq_l, re, im);
+    return st;
+}
+
+/* <S_k> as a complex_at: one frequency, freq_l == freq_k. */
+static void mean_at_k(const mcs_readout *view, size_t freq_k, size_t freq_l, double *re,
+                      double *im)
+{
+    (void)freq_l;
+    mean_at(view, freq_k, re, im);
 }
 
 mcs_status mcs_readout_mean(const void *obj, mcs_readout_open open, size_t freq, double *re,
                             double *im)
 {
-    if (obj == NULL || re == NULL || im == NULL)
-        return MCS_ERR_NULL;
-    mcs_readout v;
-    mcs_status st = open_at(obj, open, freq, freq, &v);
-    if (st == MCS_OK)
-        mean_at(&v, freq, re, im);
-    return st;
+    return read_complex(obj, open, freq, freq, re, im, mean_at_k);
 }
 
 mcs_status mcs_readout_power(const void *obj, mcs_readout_open open, size_t freq, double *out)
 {
-    if (obj == NULL || out == NULL)
-        return MCS_ERR_NULL;
-    mcs_readout v;
-    mcs_status st = open_at(obj, open, freq, freq, &v);
-    if (st != MCS_OK)
-        return st;
-    double re, im;
-    mcs_readout_cross_at(&v, freq, freq, &re, &im);
-    *out = re; /* im is 0 up to rounding: <s_m s_n> is real and symmetric */
-    return MCS_OK;
+    double re = 0.0, im = 0.0;
+    mcs_status st = read_complex(obj, open, freq, freq, out != NULL ? &re : NULL, &im,
+                                 mcs_readout_cross_at);
+    return st == MCS_OK ? mcs_set_(out, re) : st; /* im is 0 up to rounding: <s s^T> is symmetric */
 }
 
 mcs_status mcs_readout_cross(const void *obj, mcs_readout_open open, size_t freq_k,
                              size_t freq_l, double *re, double *im)
 {
-    if (obj == NULL || re == NULL || im == NULL)
-        return MCS_ERR_NULL;
-    mcs_readout v;
-    mcs_status st = open_at(obj, open, freq_k, freq_l, &v);
-    if (st == MCS_OK)
-        mcs_readout_cross_at(&v, freq_k, freq_l, re, im);
-    return st;
+    return read_complex(obj, open, freq_k, freq_l, re, im, mcs_readout_cross_at);
 }
 
 mcs_status mcs_readout_covariance(const void *obj, mcs_readout_open open, size_t freq_k,
                                   size_t freq_l, double *re, double *im)
 {
-    if (obj == NULL || re == NULL || im == NULL)
-        return MCS_ERR_NULL;
-    mcs_readout v;
-    mcs_status st = open_at(obj, open, freq_k, freq_l, &v);
-    if (st == MCS_OK)
-        covariance_at(&v, freq_k, freq_l, re, im);
-    return st;
+    return read_complex(obj, open, freq_k, freq_l, re, im, covariance_at);
 }
 
 /* ---- matrices ------------------------------------------------------------- */
@@ -252,24 +238,24 @@ static void cross_matrix_at(const mcs_readout *view, double *re, double *im)
     }
 }
 
-static mcs_status open_matrix(const void *obj, mcs_readout_open open, size_t n, const double *re,
-                              const double *im, mcs_readout *view)
+/* Opens obj for an array of its N: outputs given (else NULL), the object's
+ * checks (UNINIT, EMPTY), n equal to its N (else MISMATCH). */
+static mcs_status open_n(int outputs, const void *obj, mcs_readout_open open, size_t n,
+                         mcs_readout *view)
 {
-    if (obj == NULL || re == NULL || im == NULL)
+    if (!outputs || obj == NULL)
         return MCS_ERR_NULL;
     mcs_status st = open(obj, view);
-    if (st != MCS_OK)
-        return st;
-    if (n != view->n)
-        return MCS_ERR_MISMATCH;
-    return MCS_OK;
+    if (st == MCS_OK && n != view->n)
+        st = MCS_ERR_MISMATCH;
+    return st;
 }
 
 mcs_status mcs_readout_cross_matrix(const void *obj, mcs_readout_open open, size_t n,
                                     double *re, double *im)
 {
     mcs_readout v;
-    mcs_status st = open_matrix(obj, open, n, re, im, &v);
+    mcs_status st = open_n(re != NULL && im != NULL, obj, open, n, &v);
     if (st == MCS_OK)
         cross_matrix_at(&v, re, im);
     return st;
@@ -279,7 +265,7 @@ mcs_status mcs_readout_covariance_matrix(const void *obj, mcs_readout_open open,
                                          double *re, double *im)
 {
     mcs_readout v;
-    mcs_status st = open_matrix(obj, open, n, re, im, &v);
+    mcs_status st = open_n(re != NULL && im != NULL, obj, open, n, &v);
     if (st != MCS_OK)
         return st;
     cross_matrix_at(&v, re, im);
@@ -299,14 +285,12 @@ mcs_status mcs_readout_covariance_matrix(const void *obj, mcs_readout_open open,
 
 /* ---- the estimator -------------------------------------------------------- */
 
-mcs_status mcs_readout_check_integrand(const void *obj, mcs_readout_open open, size_t n,
-                                       size_t k, const double *f, mcs_readout *view)
+mcs_status mcs_readout_check_integrand(int outputs, const void *obj, mcs_readout_open open,
+                                       size_t n, size_t k, const double *f, mcs_readout *view)
 {
-    mcs_status st = open(obj, view);
+    mcs_status st = open_n(outputs && f != NULL, obj, open, n, view);
     if (st != MCS_OK)
         return st;
-    if (n != view->n)
-        return MCS_ERR_MISMATCH;
     if (k == 0u)
         return MCS_ERR_K_RANGE;
     if (view->k != 0u && k != view->k) /* exact moments are for one K */
@@ -316,13 +300,19 @@ mcs_status mcs_readout_check_integrand(const void *obj, mcs_readout_open open, s
     return MCS_OK;
 }
 
+mcs_status mcs_readout_check_integrands(int outputs, const void *obj, mcs_readout_open open,
+                                        size_t n, size_t k, const double *f, const double *g,
+                                        mcs_readout *view)
+{
+    mcs_status st = mcs_readout_check_integrand(outputs && g != NULL, obj, open, n, k, f, view);
+    return st == MCS_OK ? mcs_readout_check_integrand(1, obj, open, n, k, g, view) : st;
+}
+
 mcs_status mcs_readout_estimator_mean(const void *obj, mcs_readout_open open, size_t n,
                                       size_t k, const double *f, double *out)
 {
-    if (obj == NULL || f == NULL || out == NULL)
-        return MCS_ERR_NULL;
     mcs_readout v;
-    mcs_status st = mcs_readout_check_integrand(obj, open, n, k, f, &v);
+    mcs_status st = mcs_readout_check_integrand(out != NULL, obj, open, n, k, f, &v);
     if (st != MCS_OK)
         return st;
     double sum = 0.0;
@@ -342,14 +332,7 @@ mcs_status mcs_readout_estimator_covariance(const void *obj, mcs_readout_open op
                                             size_t k, const double *f, const double *g,
                                             double *out)
 {
-    if (obj == NULL || f == NULL || g == NULL || out == NULL)
-        return MCS_ERR_NULL;
     mcs_readout v;
-    mcs_status st = mcs_readout_check_integrand(obj, open, n, k, f, &v);
-    if (st == MCS_OK)
-        st = mcs_readout_check_integrand(obj, open, n, k, g, &v);
-    if (st != MCS_OK)
-        return st;
-    *out = mcs_readout_form(&v, k, f, g);
-    return MCS_OK;
+    mcs_status st = mcs_readout_check_integrands(out != NULL, obj, open, n, k, f, g, &v);
+    return st == MCS_OK ? mcs_set_(out, mcs_readout_form(&v, k, f, g)) : st;
 }

@@ -55,11 +55,18 @@ mcs_status mcs_readout_estimator_covariance(const void *obj, mcs_readout_open op
 
 /* For the closed forms built on a read-out (eq. 2, 4, 13). */
 
-/* Opens obj (not NULL) and checks an integrand for it: f[n] finite, n equal
- * to the object's N, k as for mcs_readout_estimator_mean. MCS_ERR_UNINIT,
- * MCS_ERR_EMPTY, MCS_ERR_MISMATCH, MCS_ERR_K_RANGE, MCS_ERR_NOT_FINITE. */
-mcs_status mcs_readout_check_integrand(const void *obj, mcs_readout_open open, size_t n,
-                                       size_t k, const double *f, mcs_readout *view);
+/* Opens obj and checks an integrand for it: outputs given and obj, f not
+ * NULL (else MCS_ERR_NULL), the object's checks (MCS_ERR_UNINIT,
+ * MCS_ERR_EMPTY), n equal to its N (MCS_ERR_MISMATCH), k >= 1
+ * (MCS_ERR_K_RANGE) and, for exact moments, equal to their K
+ * (MCS_ERR_MISMATCH), f[n] finite (MCS_ERR_NOT_FINITE). */
+mcs_status mcs_readout_check_integrand(int outputs, const void *obj, mcs_readout_open open,
+                                       size_t n, size_t k, const double *f, mcs_readout *view);
+
+/* The same for two integrands f, g, every NULL first, then f, then g. */
+mcs_status mcs_readout_check_integrands(int outputs, const void *obj, mcs_readout_open open,
+                                        size_t n, size_t k, const double *f, const double *g,
+                                        mcs_readout *view);
 
 /* (1/K^2) f^T Cov(s) g, K = k, both checked. */
 double mcs_readout_form(const mcs_readout *view, size_t k, const double *f, const double *g);
@@ -71,5 +78,64 @@ void mcs_readout_dft(const mcs_readout *view, const double *x, size_t freq, doub
 /* <S_k S_l*> (eq. 16), freq_k and freq_l < N. */
 void mcs_readout_cross_at(const mcs_readout *view, size_t freq_k, size_t freq_l, double *re,
                           double *im);
+
+/* Defines the public read-out of one object type as declared in its header
+ * (include/mcspec/moment.h, theory.h), every call forwarding to the code
+ * above with the object's open function: MCS_READOUT_DEFINE(moment,
+ * mcs_moment, open) defines mcs_moment_bin_mean ... mcs_moment_estimator_covariance.
+ * One definition for both objects keeps their argument lists identical. */
+#define MCS_READOUT_DEFINE(module, type, open)                                               \
+    mcs_status mcs_##module##_bin_mean(const type *obj, size_t bin, double *out)             \
+    {                                                                                        \
+        return mcs_readout_bin_mean(obj, open, bin, out);                                    \
+    }                                                                                        \
+    mcs_status mcs_##module##_bin_second(const type *obj, size_t bin_m, size_t bin_n,        \
+                                         double *out)                                        \
+    {                                                                                        \
+        return mcs_readout_bin_second(obj, open, bin_m, bin_n, out);                         \
+    }                                                                                        \
+    mcs_status mcs_##module##_mean(const type *obj, size_t freq, double *re, double *im)     \
+    {                                                                                        \
+        return mcs_readout_mean(obj, open, freq, re, im);                                    \
+    }                                                                                        \
+    mcs_status mcs_##module##_power(const type *obj, size_t freq, double *out)               \
+    {                                                                                        \
+        return mcs_readout_power(obj, open, freq, out);                                      \
+    }                                                                                        \
+    mcs_status mcs_##module##_cross(const type *obj, size_t freq_k, size_t freq_l,           \
+                                    double *re, double *im)                                  \
+    {                                                                                        \
+        return mcs_readout_cross(obj, open, freq_k, freq_l, re, im);                         \
+    }                                                                                        \
+    mcs_status mcs_##module##_covariance(const type *obj, size_t freq_k, size_t freq_l,      \
+                                         double *re, double *im)                             \
+    {                                                                                        \
+        return mcs_readout_covariance(obj, open, freq_k, freq_l, re, im);                    \
+    }                                                                                        \
+    mcs_status mcs_##module##_cross_matrix(const type *obj, size_t n, double *re, double *im) \
+    {                                                                                        \
+        return mcs_readout_cross_matrix(obj, open, n, re, im);                               \
+    }                                                                                        \
+    mcs_status mcs_##module##_covariance_matrix(const type *obj, size_t n, double *re,       \
+                                                double *im)                                  \
+    {                                                                                        \
+        return mcs_readout_covariance_matrix(obj, open, n, re, im);                          \
+    }                                                                                        \
+    mcs_status mcs_##module##_estimator_mean(const type *obj, size_t n, size_t k,            \
+                                             const double *f, double *out)                   \
+    {                                                                                        \
+        return mcs_readout_estimator_mean(obj, open, n, k, f, out);                          \
+    }                                                                                        \
+    mcs_status mcs_##module##_variance(const type *obj, size_t n, size_t k, const double *f, \
+                                       double *out)                                          \
+    {                                                                                        \
+        return mcs_readout_variance(obj, open, n, k, f, out);                                \
+    }                                                                                        \
+    mcs_status mcs_##module##_estimator_covariance(const type *obj, size_t n, size_t k,      \
+                                                   const double *f, const double *g,         \
+                                                   double *out)                              \
+    {                                                                                        \
+        return mcs_readout_estimator_covariance(obj, open, n, k, f, g, out);                 \
+    }
 
 #endif /* MCSPEC_READOUT_H */

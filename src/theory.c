@@ -224,76 +224,9 @@ mcs_status mcs_readout_open_theory(const void *obj, mcs_readout *view)
     const mcs_theory *th = (const mcs_theory *)obj;
     if (!theory_is_valid(th))
         return MCS_ERR_UNINIT;
-    view->n = th->n;
-    view->k = th->k;
-    view->scale = 1.0;
-    view->first = th->mean_s;
-    view->second = th->second;
-    view->cos_table = th->cos_table;
-    view->sin_table = th->sin_table;
+    *view = (mcs_readout){th->n,      th->k,         1.0, th->mean_s,
+                          th->second, th->cos_table, th->sin_table};
     return MCS_OK;
 }
 
-static const mcs_readout_open expectations = mcs_readout_open_theory;
-
-mcs_status mcs_theory_bin_mean(const mcs_theory *th, size_t bin, double *out)
-{
-    return mcs_readout_bin_mean(th, expectations, bin, out);
-}
-
-mcs_status mcs_theory_bin_second(const mcs_theory *th, size_t bin_m, size_t bin_n,
-                                 double *out)
-{
-    return mcs_readout_bin_second(th, expectations, bin_m, bin_n, out);
-}
-
-mcs_status mcs_theory_mean(const mcs_theory *th, size_t freq, double *re, double *im)
-{
-    return mcs_readout_mean(th, expectations, freq, re, im);
-}
-
-mcs_status mcs_theory_power(const mcs_theory *th, size_t freq, double *out)
-{
-    return mcs_readout_power(th, expectations, freq, out);
-}
-
-mcs_status mcs_theory_cross(const mcs_theory *th, size_t freq_k, size_t freq_l, double *re,
-                            double *im)
-{
-    return mcs_readout_cross(th, expectations, freq_k, freq_l, re, im);
-}
-
-mcs_status mcs_theory_covariance(const mcs_theory *th, size_t freq_k, size_t freq_l,
-                                 double *re, double *im)
-{
-    return mcs_readout_covariance(th, expectations, freq_k, freq_l, re, im);
-}
-
-mcs_status mcs_theory_cross_matrix(const mcs_theory *th, size_t n, double *re, double *im)
-{
-    return mcs_readout_cross_matrix(th, expectations, n, re, im);
-}
-
-mcs_status mcs_theory_covariance_matrix(const mcs_theory *th, size_t n, double *re,
-                                        double *im)
-{
-    return mcs_readout_covariance_matrix(th, expectations, n, re, im);
-}
-
-mcs_status mcs_theory_estimator_mean(const mcs_theory *th, size_t n, size_t k, const double *f,
-                                     double *out)
-{
-    return mcs_readout_estimator_mean(th, expectations, n, k, f, out);
-}
-
-mcs_status mcs_theory_variance(const mcs_theory *th, size_t n, size_t k, const double *f,
-                               double *out)
-{
-    return mcs_readout_variance(th, expectations, n, k, f, out);
-}
-
-mcs_status mcs_theory_estimator_covariance(const mcs_theory *th, size_t n, size_t k,
-                                           const double *f, const double *g, double *out)
-{
-    return mcs_readout_estimator_covariance(th, expectations, n, k, f, g, out);
-}
+MCS_READOUT_DEFINE(theory, mcs_theory, mcs_readout_open_theory)

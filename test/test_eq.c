@@ -543,7 +543,7 @@ static void expect_fail(mcs_status want, mcs_status got)
     reset_out();
 }
 
-static void test_bad_arguments_to_sections_2_and_3_return_an_error_and_change_nothing(void)
+static void test_bad_arguments_to_the_section_2_and_random_forms_return_an_error(void)
 {
     theory_init(&th, MCS_PATTERN_RANDOM, 4u, 2u, NULL);
     memcpy(&th_copy, &th, sizeof th);
@@ -584,7 +584,14 @@ static void test_bad_arguments_to_sections_2_and_3_return_an_error_and_change_no
     }
     expect_fail(MCS_ERR_N_RANGE, mcs_eq24_random_variance(cov_big, 2u, f, &o1));
     expect_fail(MCS_ERR_N_RANGE, mcs_eq25_random_variance(too_big, 2u, f, &o1));
+}
 
+static void test_bad_arguments_to_the_stratified_and_jitter_forms_return_an_error(void)
+{
+    const size_t too_big = (size_t)MCS_MAX_N + 1u;
+    theory_init(&th, MCS_PATTERN_RANDOM, 4u, 2u, NULL);
+    memcpy(&th_copy, &th, sizeof th);
+    reset_out();
     /* pair forms of eq. 30 */
     mcs_status (*const pair[])(size_t, size_t, size_t, size_t, double *, double *) = {
         mcs_eq30_stratified_delta_printed, mcs_eq30_stratified_delta_corrected,
@@ -629,7 +636,6 @@ static void test_bad_arguments_to_sections_2_and_3_return_an_error_and_change_no
         expect_fail(MCS_ERR_DOMAIN, cplx[i](8u, 5u, 1u, &o1, &o2));
     }
     expect_fail(MCS_ERR_DOMAIN, mcs_eq34_uniform_spectrum(12u, 4u, 1u, &o1, &o2)); /* N/K odd */
-
 }
 
 static void test_bad_importance_arguments_return_an_error_and_change_nothing(void)
@@ -743,7 +749,8 @@ int main(void)
     RUN_TEST(test_eq58_printed_is_not_a_bound_and_the_corrected_bound_holds);
     RUN_TEST(test_eq4_is_var_f_plus_var_g_minus_twice_the_covariance_and_eq2_drops_it);
     RUN_TEST(test_correlated_and_uncorrelated_gradient_variance_match_eq4_and_eq2_on_trials);
-    RUN_TEST(test_bad_arguments_to_sections_2_and_3_return_an_error_and_change_nothing);
+    RUN_TEST(test_bad_arguments_to_the_section_2_and_random_forms_return_an_error);
+    RUN_TEST(test_bad_arguments_to_the_stratified_and_jitter_forms_return_an_error);
     RUN_TEST(test_bad_importance_arguments_return_an_error_and_change_nothing);
     RUN_TEST(test_bad_arguments_to_the_section_1_and_eq13_forms_return_an_error);
     return UNITY_END();

@@ -582,65 +582,52 @@ static void test_exact_moments_and_cross_spectra_agree_with_the_generator_within
 #define MOMENT_BATCHES 64u
 static mcs_moment batch;
 static mcs_welford bat_s[NMAX], bat_ss[NMAX * NMAX], bat_cr[NMAX * NMAX], bat_ci[NMAX * NMAX],
-    bat_cov_r[NMAX * NMAX], bat_cov_i[NMAX * NMAX], bat_pow[NMAX], bat_mr[NMAX], bat_mi[NMAX];
+    bat_cov_r[NMAX * NMAX], bat_cov_i[NMAX * NMAX], bat_pow[NMAX], bat_mr[NMAX], bat_mi[NMAX],
+    bat_est, bat_var;
 
-static void run_moment_case(const stat_case *c, size_t trials_per_batch, uint64_t seed)
+/* One batch's read-outs, each into the Welford accumulator of its entry. */
+static void add_batch_read_outs(size_t n, size_t k, const double *f)
 {
-    size_t n = c->n, k = c->k;
-    if (c->importance)
-        theory_lumpy_importance(&imp, n);
-    mcs_pattern pat;
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_init(&pat, c->kind, n, k, c->importance ? &imp : NULL));
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_theory_init(&th, &pat));
-    for (size_t i = 0; i < n; ++i) {
-        mcs_welford_init(&bat_s[i]);
-        mcs_welford_init(&bat_pow[i]);
-        mcs_welford_init(&bat_mr[i]);
-        mcs_welford_init(&bat_mi[i]);
-    }
-    for (size_t i = 0; i < n * n; ++i) {
-        mcs_welford_init(&bat_ss[i]);
-        mcs_welford_init(&bat_cr[i]);
-        mcs_welford_init(&bat_ci[i]);
-        mcs_welford_init(&bat_cov_r[i]);
-        mcs_welford_init(&bat_cov_i[i]);
-    }
-    mcs_rng rng;
-    mcs_rng_seed(&rng, seed, 29u);
-    size_t bins[KMAX];
-    double w[KMAX];
-    for (size_t bt = 0; bt < MOMENT_BATCHES; ++bt) {
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_init(&batch, n));
-        for (size_t t = 0; t < trials_per_batch; ++t) {
-            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_draw(&pat, &rng, k, bins, w, NULL));
-            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_add_bins(&batch, k, bins, w));
-        }
-        for (size_t m = 0; m < n; ++m) {
-            double v, r, i;
-            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_bin_mean(&batch, m, &v));
-            mcs_welford_add(&bat_s[m], v);
-            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_power(&batch, m, &v));
-            mcs_welford_add(&bat_pow[m], v);
-            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_mean(&batch, m, &r, &i));
-            mcs_welford_add(&bat_mr[m], r);
-            mcs_welford_add(&bat_mi[m], i);
-            for (size_t b = 0; b < n; ++b) {
-                TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_bin_second(&batch, m, b, &v));
-                mcs_welford_add(&bat_ss[m * n + b], v);
-                TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_cross(&batch, m, b, &r, &i));
-                mcs_welford_add(&bat_cr[m * n + b], r);
-                mcs_welford_add(&bat_ci[m * n + b], i);
-                TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_covariance(&batch, m, b, &r, &i));
-                mcs_welford_add(&bat_cov_r[m * n + b], r);
-                mcs_welford_add(&bat_cov_i[m * n + b], i);
-            }
-        }
-    }
-    char what[128];
-    const char *name = mcs_pattern_kind_str(c->kind);
-    const char *tag = c->importance ? "+imp" : "";
+    double v, r, i;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_estimator_mean(&batch, n, k, f, &v));
+    mcs_welford_add(&bat_est, v);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_variance(&batch, n, k, f, &v));
+    mcs_welford_add(&bat_var, v);
     for (size_t m = 0; m < n; ++m) {
-        double v, r, i;
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_bin_mean(&batch, m, &v));
+        mcs_welford_add(&bat_s[m], v);
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_power(&batch, m, &v));
+        mcs_welford_add(&bat_pow[m], v);
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_mean(&batch, m, &r, &i));
+        mcs_welford_add(&bat_mr[m], r);
+        mcs_welford_add(&bat_mi[m], i);
+        for (size_t b = 0; b < n; ++b) {
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_bin_second(&batch, m, b, &v));
+            mcs_welford_add(&bat_ss[m * n + b], v);
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_cross(&batch, m, b, &r, &i));
+            mcs_welford_add(&bat_cr[m * n + b], r);
+            mcs_welford_add(&bat_ci[m * n + b], i);
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_covariance(&batch, m, b, &r, &i));
+            mcs_welford_add(&bat_cov_r[m * n + b], r);
+            mcs_welford_add(&bat_cov_i[m * n + b], i);
+        }
+    }
+}
+
+/* Every batch read-out against the exact value; a batch's covariances (and
+ * its Var[I]) are centred on its own means, biased by (T - 1)/T. */
+static void check_batches(const char *name, const char *tag, size_t n, size_t k, const double *f,
+                          double shrink)
+{
+    char what[128];
+    double v, r, i;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_theory_estimator_mean(&th, n, k, f, &v));
+    snprintf(what, sizeof what, "moment %s%s <I>", name, tag);
+    check_within(&bat_est, v, what);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_theory_variance(&th, n, k, f, &v));
+    snprintf(what, sizeof what, "moment %s%s Var[I]", name, tag);
+    check_within(&bat_var, v * shrink, what);
+    for (size_t m = 0; m < n; ++m) {
         snprintf(what, sizeof what, "moment %s%s <s_%zu>", name, tag, m);
         check_within(&bat_s[m], th.mean_s[m], what);
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_theory_power(&th, m, &v));
@@ -659,16 +646,54 @@ static void run_moment_case(const stat_case *c, size_t trials_per_batch, uint64_
             check_within(&bat_cr[m * n + b], r, what);
             snprintf(what, sizeof what, "moment %s%s Im<S_%zu S_%zu*>", name, tag, m, b);
             check_within(&bat_ci[m * n + b], i, what);
-            /* A batch's Cov(S_k, S_l) is centred on its own means: biased by
-             * a factor (T - 1)/T, which the comparison must include. */
             TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_theory_covariance(&th, m, b, &r, &i));
-            double shrink = ((double)trials_per_batch - 1.0) / (double)trials_per_batch;
             snprintf(what, sizeof what, "moment %s%s Re Cov(S_%zu, S_%zu)", name, tag, m, b);
             check_within(&bat_cov_r[m * n + b], r * shrink, what);
             snprintf(what, sizeof what, "moment %s%s Im Cov(S_%zu, S_%zu)", name, tag, m, b);
             check_within(&bat_cov_i[m * n + b], i * shrink, what);
         }
     }
+}
+
+static void run_moment_case(const stat_case *c, size_t trials_per_batch, uint64_t seed)
+{
+    size_t n = c->n, k = c->k;
+    if (c->importance)
+        theory_lumpy_importance(&imp, n);
+    mcs_pattern pat;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_init(&pat, c->kind, n, k, c->importance ? &imp : NULL));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_theory_init(&th, &pat));
+    mcs_welford_init(&bat_est);
+    mcs_welford_init(&bat_var);
+    for (size_t i = 0; i < n; ++i) {
+        mcs_welford_init(&bat_s[i]);
+        mcs_welford_init(&bat_pow[i]);
+        mcs_welford_init(&bat_mr[i]);
+        mcs_welford_init(&bat_mi[i]);
+    }
+    for (size_t i = 0; i < n * n; ++i) {
+        mcs_welford_init(&bat_ss[i]);
+        mcs_welford_init(&bat_cr[i]);
+        mcs_welford_init(&bat_ci[i]);
+        mcs_welford_init(&bat_cov_r[i]);
+        mcs_welford_init(&bat_cov_i[i]);
+    }
+    double f[NMAX];
+    theory_make_f(n, f, 0.9);
+    mcs_rng rng;
+    mcs_rng_seed(&rng, seed, 29u);
+    size_t bins[KMAX];
+    double w[KMAX];
+    for (size_t bt = 0; bt < MOMENT_BATCHES; ++bt) {
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_init(&batch, n));
+        for (size_t t = 0; t < trials_per_batch; ++t) {
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_draw(&pat, &rng, k, bins, w, NULL));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_add_bins(&batch, k, bins, w));
+        }
+        add_batch_read_outs(n, k, f);
+    }
+    double shrink = ((double)trials_per_batch - 1.0) / (double)trials_per_batch;
+    check_batches(mcs_pattern_kind_str(c->kind), c->importance ? "+imp" : "", n, k, f, shrink);
 }
 
 static void test_exact_moments_agree_with_the_moment_accumulator_within_5_standard_errors(void)
