@@ -66,35 +66,35 @@ double mcs_eq_ac_energy(size_t n, const double *f)
 
 /* Var[I_f] + Var[I_g], less 2 Cov(I_f, I_g) when f and g are estimated from
  * one shared trial (eq. 4); independent trials have no covariance (eq. 2). */
-static mcs_status gradient_variance(const mcs_theory *th, size_t n, size_t k, const double *f,
-                                    const double *g, int shared, double *out)
+static double gradient_variance(const mcs_readout *view, size_t k, const double *f,
+                                const double *g, int shared)
 {
-    mcs_readout v;
-    mcs_status st =
-        mcs_readout_check_integrands(out != NULL, th, mcs_readout_open_theory, n, k, f, g, &v);
-    for (size_t b = 0; shared && st == MCS_OK && b < n; ++b)
-        if (!isfinite(f[b] - g[b])) /* f - g can overflow */
-            st = MCS_ERR_NOT_FINITE;
-    if (st != MCS_OK)
-        return st;
     /* (f - g)^T Cov (f - g), expanded so no difference array is needed */
-    double var = mcs_readout_form(&v, k, f, f) + mcs_readout_form(&v, k, g, g);
+    double var = mcs_readout_form(view, k, f, f) + mcs_readout_form(view, k, g, g);
     if (shared)
-        var -= 2.0 * mcs_readout_form(&v, k, f, g);
-    *out = var;
-    return MCS_OK;
+        var -= 2.0 * mcs_readout_form(view, k, f, g);
+    return var;
 }
 
 mcs_status mcs_eq2_uncorrelated_variance(const mcs_theory *th, size_t n, size_t k,
                                          const double *f, const double *g, double *out)
 {
-    return gradient_variance(th, n, k, f, g, 0, out);
+    const mcs_readout_source src = {th, mcs_readout_open_theory};
+    mcs_readout v;
+    mcs_status st = out == NULL ? MCS_ERR_NULL : mcs_readout_check_integrands(&src, n, k, f, g, &v);
+    return st == MCS_OK ? mcs_set_(out, gradient_variance(&v, k, f, g, 0)) : st;
 }
 
 mcs_status mcs_eq4_correlated_variance(const mcs_theory *th, size_t n, size_t k,
                                        const double *f, const double *g, double *out)
 {
-    return gradient_variance(th, n, k, f, g, 1, out);
+    const mcs_readout_source src = {th, mcs_readout_open_theory};
+    mcs_readout v;
+    mcs_status st = out == NULL ? MCS_ERR_NULL : mcs_readout_check_integrands(&src, n, k, f, g, &v);
+    for (size_t b = 0; st == MCS_OK && b < n; ++b)
+        if (!isfinite(f[b] - g[b])) /* f - g can overflow */
+            st = MCS_ERR_NOT_FINITE;
+    return st == MCS_OK ? mcs_set_(out, gradient_variance(&v, k, f, g, 1)) : st;
 }
 
 /* ---- Section 2 ------------------------------------------------------------ */
@@ -123,31 +123,32 @@ mcs_status mcs_eq11_unbiased_mean(size_t n, const double *f, double *out)
     return MCS_OK;
 }
 
-mcs_status mcs_eq13_variance(const mcs_theory *th, size_t n, size_t k, const double *f,
-                             double *out)
+/* (1/K^2) sum_{k,l >= 1} F_k* F_l <S_k S_l*>, every term through eq. 16 and
+ * the theory's own twiddles: O(N^4), and no work arrays. */
+static double eq13_sum(const mcs_readout *view, size_t k, const double *f)
 {
-    mcs_readout v;
-    mcs_status st =
-        mcs_readout_check_integrand(out != NULL, th, mcs_readout_open_theory, n, k, f, &v);
-    if (st != MCS_OK)
-        return st;
-    /* sum_{k,l >= 1} F_k* F_l <S_k S_l*>, every term through eq. 16 and the
-     * theory's own twiddles: O(N^4), and no work arrays. */
+    const size_t n = view->n;
     double total = 0.0;
     for (size_t a = 1; a < n; ++a) {
         double fkr, fki;
-        mcs_readout_dft(&v, f, a, &fkr, &fki);
+        mcs_readout_dft(view, f, a, &fkr, &fki);
         for (size_t b = 1; b < n; ++b) {
             double flr, fli, cr, ci;
-            mcs_readout_dft(&v, f, b, &flr, &fli);
-            mcs_readout_cross_at(&v, a, b, &cr, &ci);
+            mcs_readout_dft(view, f, b, &flr, &fli);
+            mcs_readout_cross_at(view, a, b, &cr, &ci);
             /* F_k* F_l = (fkr - i fki)(flr + i fli); the real part of the product */
             total += (fkr * flr + fki * fli) * cr - (fkr * fli - fki * flr) * ci;
         }
     }
     double kd = (double)k;
-    *out = total / (kd * kd);
-    return MCS_OK;
+    return total / (kd * kd);
+}
+
+mcs_status mcs_eq13_variance(const mcs_theory *th, size_t n, size_t k, const double *f,
+                             double *out)
+{
+    const mcs_readout_source src = {th, mcs_readout_open_theory};
+    return mcs_readout_integrand_value(&src, n, k, f, eq13_sum, out);
 }
 
 mcs_status mcs_eq14_variance(size_t n, size_t k, const double *f, const double *power,

@@ -100,29 +100,29 @@ double mcs_readout_form(const mcs_readout *view, size_t k, const double *f, cons
 
 /* Opens obj for a read-out: outputs given (else NULL), the object's own
  * checks (UNINIT, EMPTY), then indices a, b below N (else range). */
-static mcs_status open_for(int outputs, const void *obj, mcs_readout_open open, size_t a,
+static mcs_status open_for(int outputs, const mcs_readout_source *src, size_t a,
                            size_t b, mcs_status range, mcs_readout *view)
 {
-    if (!outputs || obj == NULL)
+    if (!outputs || src->obj == NULL)
         return MCS_ERR_NULL;
-    mcs_status st = open(obj, view);
+    mcs_status st = src->open(src->obj, view);
     if (st == MCS_OK && (a >= view->n || b >= view->n))
         st = range;
     return st;
 }
 
-mcs_status mcs_readout_bin_mean(const void *obj, mcs_readout_open open, size_t bin, double *out)
+mcs_status mcs_readout_bin_mean(const mcs_readout_source *src, size_t bin, double *out)
 {
     mcs_readout v;
-    mcs_status st = open_for(out != NULL, obj, open, bin, bin, MCS_ERR_BIN_RANGE, &v);
+    mcs_status st = open_for(out != NULL, src, bin, bin, MCS_ERR_BIN_RANGE, &v);
     return st == MCS_OK ? mcs_set_(out, v.first[bin] * v.scale) : st;
 }
 
-mcs_status mcs_readout_bin_second(const void *obj, mcs_readout_open open, size_t bin_m,
+mcs_status mcs_readout_bin_second(const mcs_readout_source *src, size_t bin_m,
                                   size_t bin_n, double *out)
 {
     mcs_readout v;
-    mcs_status st = open_for(out != NULL, obj, open, bin_m, bin_n, MCS_ERR_BIN_RANGE, &v);
+    mcs_status st = open_for(out != NULL, src, bin_m, bin_n, MCS_ERR_BIN_RANGE, &v);
     return st == MCS_OK ? mcs_set_(out, v.second[bin_m * v.n + bin_n] * v.scale) : st;
 }
 
@@ -130,12 +130,12 @@ mcs_status mcs_readout_bin_second(const void *obj, mcs_readout_open open, size_t
 typedef void (*complex_at)(const mcs_readout *view, size_t freq_k, size_t freq_l, double *re,
                            double *im);
 
-static mcs_status read_complex(const void *obj, mcs_readout_open open, size_t freq_k,
+static mcs_status read_complex(const mcs_readout_source *src, size_t freq_k,
                                size_t freq_l, double *re, double *im, complex_at at)
 {
     mcs_readout v;
     int outputs = re != NULL && im != NULL;
-    mcs_status st = open_for(outputs, obj, open, freq_k, freq_l, MCS_ERR_FREQ_RANGE, &v);
+    mcs_status st = open_for(outputs, src, freq_k, freq_l, MCS_ERR_FREQ_RANGE, &v);
     if (st == MCS_OK)
         at(&v, freq_k, freq_l, re, im);
     return st;
@@ -149,30 +149,30 @@ static void mean_at_k(const mcs_readout *view, size_t freq_k, size_t freq_l, dou
     mean_at(view, freq_k, re, im);
 }
 
-mcs_status mcs_readout_mean(const void *obj, mcs_readout_open open, size_t freq, double *re,
+mcs_status mcs_readout_mean(const mcs_readout_source *src, size_t freq, double *re,
                             double *im)
 {
-    return read_complex(obj, open, freq, freq, re, im, mean_at_k);
+    return read_complex(src, freq, freq, re, im, mean_at_k);
 }
 
-mcs_status mcs_readout_power(const void *obj, mcs_readout_open open, size_t freq, double *out)
+mcs_status mcs_readout_power(const mcs_readout_source *src, size_t freq, double *out)
 {
     double re = 0.0, im = 0.0;
-    mcs_status st = read_complex(obj, open, freq, freq, out != NULL ? &re : NULL, &im,
+    mcs_status st = read_complex(src, freq, freq, out != NULL ? &re : NULL, &im,
                                  mcs_readout_cross_at);
     return st == MCS_OK ? mcs_set_(out, re) : st; /* im is 0 up to rounding: <s s^T> is symmetric */
 }
 
-mcs_status mcs_readout_cross(const void *obj, mcs_readout_open open, size_t freq_k,
+mcs_status mcs_readout_cross(const mcs_readout_source *src, size_t freq_k,
                              size_t freq_l, double *re, double *im)
 {
-    return read_complex(obj, open, freq_k, freq_l, re, im, mcs_readout_cross_at);
+    return read_complex(src, freq_k, freq_l, re, im, mcs_readout_cross_at);
 }
 
-mcs_status mcs_readout_covariance(const void *obj, mcs_readout_open open, size_t freq_k,
+mcs_status mcs_readout_covariance(const mcs_readout_source *src, size_t freq_k,
                                   size_t freq_l, double *re, double *im)
 {
-    return read_complex(obj, open, freq_k, freq_l, re, im, covariance_at);
+    return read_complex(src, freq_k, freq_l, re, im, covariance_at);
 }
 
 /* ---- matrices ------------------------------------------------------------- */
@@ -240,32 +240,32 @@ static void cross_matrix_at(const mcs_readout *view, double *re, double *im)
 
 /* Opens obj for an array of its N: outputs given (else NULL), the object's
  * checks (UNINIT, EMPTY), n equal to its N (else MISMATCH). */
-static mcs_status open_n(int outputs, const void *obj, mcs_readout_open open, size_t n,
+static mcs_status open_n(int outputs, const mcs_readout_source *src, size_t n,
                          mcs_readout *view)
 {
-    if (!outputs || obj == NULL)
+    if (!outputs || src->obj == NULL)
         return MCS_ERR_NULL;
-    mcs_status st = open(obj, view);
+    mcs_status st = src->open(src->obj, view);
     if (st == MCS_OK && n != view->n)
         st = MCS_ERR_MISMATCH;
     return st;
 }
 
-mcs_status mcs_readout_cross_matrix(const void *obj, mcs_readout_open open, size_t n,
+mcs_status mcs_readout_cross_matrix(const mcs_readout_source *src, size_t n,
                                     double *re, double *im)
 {
     mcs_readout v;
-    mcs_status st = open_n(re != NULL && im != NULL, obj, open, n, &v);
+    mcs_status st = open_n(re != NULL && im != NULL, src, n, &v);
     if (st == MCS_OK)
         cross_matrix_at(&v, re, im);
     return st;
 }
 
-mcs_status mcs_readout_covariance_matrix(const void *obj, mcs_readout_open open, size_t n,
+mcs_status mcs_readout_covariance_matrix(const mcs_readout_source *src, size_t n,
                                          double *re, double *im)
 {
     mcs_readout v;
-    mcs_status st = open_n(re != NULL && im != NULL, obj, open, n, &v);
+    mcs_status st = open_n(re != NULL && im != NULL, src, n, &v);
     if (st != MCS_OK)
         return st;
     cross_matrix_at(&v, re, im);
@@ -285,10 +285,10 @@ mcs_status mcs_readout_covariance_matrix(const void *obj, mcs_readout_open open,
 
 /* ---- the estimator -------------------------------------------------------- */
 
-mcs_status mcs_readout_check_integrand(int outputs, const void *obj, mcs_readout_open open,
-                                       size_t n, size_t k, const double *f, mcs_readout *view)
+mcs_status mcs_readout_check_integrand(const mcs_readout_source *src, size_t n, size_t k,
+                                       const double *f, mcs_readout *view)
 {
-    mcs_status st = open_n(outputs && f != NULL, obj, open, n, view);
+    mcs_status st = open_n(f != NULL, src, n, view);
     if (st != MCS_OK)
         return st;
     if (k == 0u)
@@ -300,39 +300,52 @@ mcs_status mcs_readout_check_integrand(int outputs, const void *obj, mcs_readout
     return MCS_OK;
 }
 
-mcs_status mcs_readout_check_integrands(int outputs, const void *obj, mcs_readout_open open,
-                                        size_t n, size_t k, const double *f, const double *g,
-                                        mcs_readout *view)
+mcs_status mcs_readout_check_integrands(const mcs_readout_source *src, size_t n, size_t k,
+                                        const double *f, const double *g, mcs_readout *view)
 {
-    mcs_status st = mcs_readout_check_integrand(outputs && g != NULL, obj, open, n, k, f, view);
-    return st == MCS_OK ? mcs_readout_check_integrand(1, obj, open, n, k, g, view) : st;
+    mcs_status st = g == NULL ? MCS_ERR_NULL : mcs_readout_check_integrand(src, n, k, f, view);
+    return st == MCS_OK ? mcs_readout_check_integrand(src, n, k, g, view) : st;
 }
 
-mcs_status mcs_readout_estimator_mean(const void *obj, mcs_readout_open open, size_t n,
+/* <I> = (1/K) sum_n f_n <s_n>. */
+static double estimator_mean_at(const mcs_readout *view, size_t k, const double *f)
+{
+    double sum = 0.0;
+    for (size_t b = 0; b < view->n; ++b)
+        sum += f[b] * (view->first[b] * view->scale);
+    return sum / (double)k;
+}
+
+mcs_status mcs_readout_integrand_value(const mcs_readout_source *src, size_t n,
+                                       size_t k, const double *f, mcs_readout_value value,
+                                       double *out)
+{
+    if (out == NULL)
+        return MCS_ERR_NULL;
+    mcs_readout v;
+    mcs_status st = mcs_readout_check_integrand(src, n, k, f, &v);
+    return st == MCS_OK ? mcs_set_(out, value(&v, k, f)) : st;
+}
+
+mcs_status mcs_readout_estimator_mean(const mcs_readout_source *src, size_t n,
                                       size_t k, const double *f, double *out)
 {
-    mcs_readout v;
-    mcs_status st = mcs_readout_check_integrand(out != NULL, obj, open, n, k, f, &v);
-    if (st != MCS_OK)
-        return st;
-    double sum = 0.0;
-    for (size_t b = 0; b < n; ++b)
-        sum += f[b] * (v.first[b] * v.scale);
-    *out = sum / (double)k; /* <I> = (1/K) sum_n f_n <s_n> */
-    return MCS_OK;
+    return mcs_readout_integrand_value(src, n, k, f, estimator_mean_at, out);
 }
 
-mcs_status mcs_readout_variance(const void *obj, mcs_readout_open open, size_t n, size_t k,
+mcs_status mcs_readout_variance(const mcs_readout_source *src, size_t n, size_t k,
                                 const double *f, double *out)
 {
-    return mcs_readout_estimator_covariance(obj, open, n, k, f, f, out);
+    return mcs_readout_estimator_covariance(src, n, k, f, f, out);
 }
 
-mcs_status mcs_readout_estimator_covariance(const void *obj, mcs_readout_open open, size_t n,
+mcs_status mcs_readout_estimator_covariance(const mcs_readout_source *src, size_t n,
                                             size_t k, const double *f, const double *g,
                                             double *out)
 {
+    if (out == NULL)
+        return MCS_ERR_NULL;
     mcs_readout v;
-    mcs_status st = mcs_readout_check_integrands(out != NULL, obj, open, n, k, f, g, &v);
+    mcs_status st = mcs_readout_check_integrands(src, n, k, f, g, &v);
     return st == MCS_OK ? mcs_set_(out, mcs_readout_form(&v, k, f, g)) : st;
 }
