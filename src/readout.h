@@ -11,7 +11,8 @@
 #include "mcspec/status.h"
 
 /* Where an object's moments are: <s_bin> = first[bin] * scale and
- * <s_m s_n> = second[m * n + n'] * scale (full, symmetric, stride n). */
+ * <s_bin_m s_bin_n> = second[bin_m * N + bin_n] * scale (both triangles,
+ * symmetric). */
 typedef struct {
     size_t n;              /* N */
     size_t k;              /* K of exact moments; 0: any K >= 1 the caller names */
@@ -26,9 +27,9 @@ typedef struct {
 typedef mcs_status (*mcs_readout_open)(const void *obj, mcs_readout *view);
 
 /* An object and how to open it (obj may be NULL: MCS_ERR_NULL). Every
- * read-out below takes one, so none needs more than six arguments (beyond
- * that the x86-64 and Arm calling conventions pass them on the stack, and
- * `make stack` reports a frame that adjusts around the call as dynamic). */
+ * read-out below takes one, so no call needs more than six arguments: past
+ * six, x86-64 passes them on the stack, and GCC's -fstack-usage reports the
+ * frame that pushes them as dynamic, which `make stack` refuses. */
 typedef struct {
     const void *obj;
     mcs_readout_open open;

@@ -30,8 +30,8 @@ typedef struct {
     size_t n;                                       /* N, 1..MCS_MAX_COV_N; 0 before init */
     uint64_t count;                                 /* trials added */
     double sum_s[MCS_MAX_COV_N];                    /* sum over trials of s_n */
-    double sum_ss[MCS_MAX_COV_N * MCS_MAX_COV_N];   /* sum of s_m s_n at [m * N + n] (stride N,
-                                                       both triangles, exactly symmetric) */
+    double sum_ss[MCS_MAX_COV_N * MCS_MAX_COV_N];   /* sum of s_m s_n at [bin_m * N + bin_n]
+                                                       (both triangles, exactly symmetric) */
     double cos_table[MCS_MAX_COV_N];                /* cos(2 pi j / N) */
     double sin_table[MCS_MAX_COV_N];                /* sin(2 pi j / N) */
 } mcs_moment;

@@ -62,7 +62,7 @@ typedef struct {
     size_t k;              /* samples per trial K, >= 1 */
     int has_importance;    /* 1 if the pattern warps through an importance function */
     double mean_s[MCS_MAX_COV_N]; /* <s_n>, n in [0, N) */
-    double second[MCS_MAX_COV_N * MCS_MAX_COV_N]; /* <s_m s_n> at [m * N + n] (packed
+    double second[MCS_MAX_COV_N * MCS_MAX_COV_N]; /* <s_m s_n> at [bin_m * N + bin_n] (packed
                                                      with stride N, symmetric) */
     double cos_table[MCS_MAX_COV_N]; /* cos(2 pi j / N): twiddles with exact index reduction */
     double sin_table[MCS_MAX_COV_N]; /* sin(2 pi j / N) */
