@@ -64,10 +64,10 @@ static int measure(const ex_options *opt, mcs_pattern_kind kind, sec1_measure *m
         mcs_pattern_draw(&pat, &rng, opt->k, bins_a, w_a, NULL);
         mcs_pattern_draw(&pat, &rng, opt->k, bins_b, w_b, NULL);
         mcs_pattern_draw(&pat, &rng, opt->k, bins_c, w_c, NULL);
-        mcs_estimate_bins(opt->n, f, opt->k, bins_a, w_a, &fa);
-        mcs_estimate_bins(opt->n, g, opt->k, bins_a, w_a, &ga);
-        mcs_estimate_bins(opt->n, g, opt->k, bins_b, w_b, &gb);
-        mcs_estimate_bins(opt->n, h, opt->k, bins_c, w_c, &hc);
+        mcs_estimate_bins(opt->n, opt->k, f, bins_a, w_a, &fa);
+        mcs_estimate_bins(opt->n, opt->k, g, bins_a, w_a, &ga);
+        mcs_estimate_bins(opt->n, opt->k, g, bins_b, w_b, &gb);
+        mcs_estimate_bins(opt->n, opt->k, h, bins_c, w_c, &hc);
         mcs_welford_add(&m->f, fa);
         mcs_welford_add(&m->g, gb);
         mcs_welford_add(&m->indep, fa - gb); /* eq. 1: independent samples */
@@ -94,12 +94,12 @@ static int predict_rows(const ex_options *opt, mcs_pattern_kind kind, const sec1
     double vf, vg, vh, cov_fg, eq2, eq4;
     if (mcs_pattern_init(&pat, kind, opt->n, opt->k, NULL) != MCS_OK ||
         mcs_theory_init(&th, &pat) != MCS_OK ||
-        mcs_theory_variance(&th, opt->n, f, &vf) != MCS_OK ||
-        mcs_theory_variance(&th, opt->n, g, &vg) != MCS_OK ||
-        mcs_theory_variance(&th, opt->n, h, &vh) != MCS_OK ||
-        mcs_theory_estimator_covariance(&th, opt->n, f, g, &cov_fg) != MCS_OK ||
-        mcs_eq2_uncorrelated_variance_fg(&th, opt->n, f, g, &eq2) != MCS_OK ||
-        mcs_eq4_correlated_variance(&th, opt->n, f, g, &eq4) != MCS_OK)
+        mcs_theory_variance(&th, opt->n, opt->k, f, &vf) != MCS_OK ||
+        mcs_theory_variance(&th, opt->n, opt->k, g, &vg) != MCS_OK ||
+        mcs_theory_variance(&th, opt->n, opt->k, h, &vh) != MCS_OK ||
+        mcs_theory_estimator_covariance(&th, opt->n, opt->k, f, g, &cov_fg) != MCS_OK ||
+        mcs_eq2_uncorrelated_variance(&th, opt->n, opt->k, f, g, &eq2) != MCS_OK ||
+        mcs_eq4_correlated_variance(&th, opt->n, opt->k, f, g, &eq4) != MCS_OK)
         return 0;
     /* Independent trials: no covariance, so the exact variance of the
      * difference is Var[f] + Var[g]; eq. 2's "~ 2 Var[f]" is the approximation. */

@@ -91,7 +91,7 @@ static double eq8_check(const ex_options *opt, mcs_pattern_kind kind, unsigned l
     for (unsigned long t = 0; t < trials; ++t) {
         double primal = 0.0, fourier = 0.0;
         if (mcs_pattern_draw(&pat, &rng, opt->k, bins, w, NULL) != MCS_OK ||
-            mcs_estimate_bins(opt->n, f, opt->k, bins, w, &primal) != MCS_OK ||
+            mcs_estimate_bins(opt->n, opt->k, f, bins, w, &primal) != MCS_OK ||
             mcs_pattern_dense(opt->n, opt->k, bins, w, s) != MCS_OK ||
             mcs_dft_real(&plan, opt->n, s, s_re, s_im) != MCS_OK)
             return EX_NA;
@@ -154,7 +154,7 @@ int main(int argc, char **argv)
         const size_t probes[2] = {1u, k};
         double se = 0.0, v = 0.0, im = 0.0, exact = EX_NA;
         int i0 = ex_run_probe(run, 0u);
-        if (mcs_theory_spectrum_mean(&theories[p], 0u, &v, &im) == MCS_OK)
+        if (mcs_theory_mean(&theories[p], 0u, &v, &im) == MCS_OK)
             exact = v;
         double meas = ex_mean(&run->s_re[i0], &se);
         ex_row r = row_of("<S_0>", "eq. 10", name, 0, (double)k / sqrt((double)n), exact, meas,
@@ -166,14 +166,14 @@ int main(int argc, char **argv)
             if (idx < 0 || (i == 1 && q == 1u))
                 continue;
             exact = EX_NA;
-            if (mcs_theory_spectrum_mean(&theories[p], q, &v, &im) == MCS_OK)
+            if (mcs_theory_mean(&theories[p], q, &v, &im) == MCS_OK)
                 exact = v;
             meas = ex_mean(&run->s_re[idx], &se);
             r = row_of("Re <S_k>", "eq. 10", name, (long)q, 0.0, exact, meas, se, 1e-12 * kn);
             ex_row_print(&opt, &r);
         }
         double closed = or_na(mcs_eq11_unbiased_mean(n, f, &v), &v);
-        exact = or_na(mcs_theory_estimator_mean(&theories[p], n, f, &v), &v);
+        exact = or_na(mcs_theory_estimator_mean(&theories[p], n, k, f, &v), &v);
         meas = ex_mean(&run->estimate[0], &se);
         r = row_of("<I>", "eq. 11", name, EX_NO_FREQ, closed, exact, meas, se, 1e-12);
         ex_row_print(&opt, &r);
@@ -193,9 +193,9 @@ int main(int argc, char **argv)
         int ok = 1;
         for (size_t q = 1; q < n; ++q)
             ok = ok && mcs_theory_power(&theories[p], q, &power[q]) == MCS_OK;
-        v13[p] = or_na(mcs_eq13_variance(&theories[p], n, f, &v), &v);
+        v13[p] = or_na(mcs_eq13_variance(&theories[p], n, k, f, &v), &v);
         v14[p] = ok ? or_na(mcs_eq14_variance(n, k, f, power, &v), &v) : EX_NA;
-        vex[p] = or_na(mcs_theory_variance(&theories[p], n, f, &v), &v);
+        vex[p] = or_na(mcs_theory_variance(&theories[p], n, k, f, &v), &v);
         vme[p] = ex_variance(&runs[p].estimate[0], &vse[p]);
         double fl = 1e-12 * fmax(fabs(v13[p]), 1e-12);
         ex_row r = row_of("Var[I] full double sum", "eq. 13", name, EX_NO_FREQ, v13[p], vex[p],

@@ -270,7 +270,7 @@ int main(int argc, char **argv)
             double mre = ex_mean(&run->s_re[idx], &se_re);
             double mim = ex_mean(&run->s_im[idx], &se_im);
             double a = 0.0, b = 0.0;
-            if (mcs_theory_spectrum_mean(&theories[p], k, &a, &b) == MCS_OK) {
+            if (mcs_theory_mean(&theories[p], k, &a, &b) == MCS_OK) {
                 ere = a;
                 eim = b;
             }
@@ -409,7 +409,7 @@ int main(int argc, char **argv)
 
         double ex_var[P_COUNT], meas[P_COUNT], se[P_COUNT];
         for (int p = 0; p < P_COUNT; ++p) {
-            ex_var[p] = or_na(mcs_theory_variance(&theories[p], n, f, &v), &v);
+            ex_var[p] = or_na(mcs_theory_variance(&theories[p], n, k, f, &v), &v);
             meas[p] = ex_variance(&runs[p].estimate[0], &se[p]);
         }
         double fl = 1e-12;

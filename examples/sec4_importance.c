@@ -111,6 +111,25 @@ static const mcs_importance *imp_of(int r)
     return specs[r].g == G_NONE ? NULL : &imps[specs[r].g];
 }
 
+/* Eq. 52 corrected in its primal form (1/K) [(1/N) sum_n f_n^2 / p_n - fbar^2],
+ * the cross-check on the spectral form mcs_eq52_variance_corrected (equal by
+ * Parseval). */
+static mcs_status eq52_corrected_primal(const mcs_importance *imp, size_t k, const double *ff,
+                                        double *out)
+{
+    if (imp == NULL)
+        return MCS_ERR_DOMAIN;
+    double mean = 0.0, m2 = 0.0;
+    for (size_t b = 0; b < imp->n; ++b) {
+        mean += ff[b];
+        m2 += ff[b] * ff[b] / imp->p[b];
+    }
+    mean /= (double)imp->n;
+    m2 /= (double)imp->n;
+    *out = (m2 - mean * mean) / (double)k;
+    return MCS_OK;
+}
+
 static double h_of(int r)
 {
     return specs[r].g == G_NONE ? 1.0 : imps[specs[r].g].harmonic_mean;
@@ -200,20 +219,33 @@ static double h_at(int r, size_t m)
     return imp_big.harmonic_mean;
 }
 
+/* Run r's g discretised over m bins (NULL without importance), as h_at. */
+static const mcs_importance *imp_at(int r, size_t m)
+{
+    int g = specs[r].g;
+    if (g == G_NONE)
+        return NULL;
+    if (m == n_bins)
+        return &imps[g];
+    if (importance_for(g, m, &imp_big) != MCS_OK)
+        return NULL;
+    return &imp_big;
+}
+
 /* The note's power for run r at m bins and DFT index q (eq. 23, 33, 45, 50;
  * the sinc^2 forms at the signed frequency min(q, m - q)). */
 static double closed_power_at(int r, size_t m, size_t q)
 {
-    double v = 0.0, h = h_at(r, m);
+    double v = 0.0;
     int g = specs[r].g;
     mcs_status st;
     if (specs[r].kind == MCS_PATTERN_RANDOM)
         st = g == G_NONE ? mcs_eq23_random_power(m, k_samples, q, &v)
-                         : mcs_eq45_importance_power(m, k_samples, h, q, &v);
+                         : mcs_eq45_importance_power(imp_at(r, m), k_samples, q, &v);
     else if (g == G_NONE)
         st = mcs_eq33_stratified_power_limit(m, k_samples, fold(m, q), &v);
     else
-        st = mcs_eq50_importance_stratified_power(m, k_samples, h, fold(m, q), &v);
+        st = mcs_eq50_importance_stratified_power(imp_at(r, m), k_samples, fold(m, q), &v);
     return or_na(st, &v);
 }
 
@@ -293,7 +325,7 @@ int main(int argc, char **argv)
     for (int r = R_RANDOM_G1; r < R_COUNT; ++r) {
         double v = 0.0, se = 0.0;
         double closed = or_na(mcs_eq11_unbiased_mean(n, f, &v), &v);
-        double exact = or_na(mcs_theory_estimator_mean(&theories[r], n, f, &v), &v);
+        double exact = or_na(mcs_theory_estimator_mean(&theories[r], n, k, f, &v), &v);
         double meas = ex_mean(&runs[r].estimate[0], &se);
         ex_row row = row_of("<I>", "eq. 11", r, EX_NO_FREQ, EX_NO_FREQ, closed, exact, meas, se,
                             1e-12);
@@ -304,10 +336,12 @@ int main(int argc, char **argv)
     ex_heading(&opt, "<|S_0|^2>: S_0 is random under importance sampling; eq. 46 (random), "
                      "eq. 51 (stratified)");
     for (int r = R_RANDOM_G1; r < R_COUNT; ++r) {
-        double v = 0.0, meas, se, h = h_of(r);
+        double v = 0.0, meas, se;
         int is_random = specs[r].kind == MCS_PATTERN_RANDOM;
-        double closed = is_random ? or_na(mcs_eq46_importance_power0(n, k, h, &v), &v)
-                                  : or_na(mcs_eq51_importance_stratified_power0(n, k, h, &v), &v);
+        /* eq. 51 is eq. 46's expression, defined by the note for K dividing N */
+        double closed = is_random || n % k == 0u
+                            ? or_na(mcs_eq46_importance_power0(imp_of(r), k, &v), &v)
+                            : EX_NA;
         measured_power(r, 0u, &meas, &se);
         ex_row row = row_of("<|S_0|^2>", is_random ? "eq. 46" : "eq. 51", r, 0, EX_NO_FREQ,
                             closed, theory_power(r, 0u), meas, se, pfloor);
@@ -333,10 +367,11 @@ int main(int argc, char **argv)
             int is_random = specs[r].kind == MCS_PATTERN_RANDOM;
             for (size_t j = 0; j < nfreq; ++j) {
                 size_t q = freqs[j];
-                double v = 0.0, meas, se, h = h_of(r);
+                double v = 0.0, meas, se;
                 double closed = is_random
-                                    ? or_na(mcs_eq45_importance_power(n, k, h, q, &v), &v)
-                                    : or_na(mcs_eq50_importance_stratified_power(n, k, h, q, &v),
+                                    ? or_na(mcs_eq45_importance_power(imp_of(r), k, q, &v), &v)
+                                    : or_na(mcs_eq50_importance_stratified_power(imp_of(r), k, q,
+                                                                                 &v),
                                             &v);
                 measured_power(r, q, &meas, &se);
                 ex_row row = row_of("<|S_k|^2>", is_random ? "eq. 45" : "eq. 50", r, (long)q,
@@ -480,14 +515,14 @@ int main(int argc, char **argv)
     for (int r = 0; r < R_COUNT; ++r) {
         double v = 0.0;
         var_meas[r] = ex_variance(&runs[r].estimate[0], &var_se[r]);
-        var_exact[r] = or_na(mcs_theory_variance(&theories[r], n, f, &v), &v);
+        var_exact[r] = or_na(mcs_theory_variance(&theories[r], n, k, f, &v), &v);
     }
     double primal_vs_spectral = 0.0;
     for (int r = R_RANDOM_G1; r <= R_RANDOM_G2; ++r) {
         double v = 0.0, fl = 1e-12 * fmax(fabs(var_exact[r]), 1e-12);
         double printed = or_na(mcs_eq52_variance_printed(imp_of(r), k, f, &v), &v);
         double corrected = or_na(mcs_eq52_variance_corrected(imp_of(r), k, f, &v), &v);
-        double primal = or_na(mcs_eq52_variance_corrected_primal(imp_of(r), k, f, &v), &v);
+        double primal = or_na(eq52_corrected_primal(imp_of(r), k, f, &v), &v);
         double conv = or_na(mcs_eq55_variance_convolution(imp_of(r), k, f, &v), &v);
         primal_vs_spectral = fmax(primal_vs_spectral, ex_rel_gap(primal, corrected, 1e-300));
         ex_row row = row_of("Var[I] as printed", "eq. 52", r, EX_NO_FREQ, EX_NO_FREQ, printed,
@@ -521,11 +556,11 @@ int main(int argc, char **argv)
     for (int r = R_RANDOM_G1; r <= R_RANDOM_G2; ++r) {
         for (int which = 0; which < 2; ++which) {
             const double *ff = which == 0 ? f : f_const;
-            double v = 0.0, se = 0.0, h = h_of(r);
-            double exact = or_na(mcs_theory_variance(&theories[r], n, ff, &v), &v);
+            double v = 0.0, se = 0.0;
+            double exact = or_na(mcs_theory_variance(&theories[r], n, k, ff, &v), &v);
             double meas = ex_variance(&runs[r].estimate[which], &se);
-            double printed = or_na(mcs_eq58_bound_printed(n, k, h, ff, &v), &v);
-            double corrected = or_na(mcs_eq58_bound_corrected(n, k, h, ff, &v), &v);
+            double printed = or_na(mcs_eq58_bound_printed(imp_of(r), k, ff, &v), &v);
+            double corrected = or_na(mcs_eq58_bound_corrected(imp_of(r), k, ff, &v), &v);
             double fl = 1e-12 * fmax(fabs(exact), 1e-12);
             const char *qn = which == 0 ? "Var[I] bound f" : "Var[I] bound f = 1";
             const char *qc = which == 0 ? "Var[I] bound f corrected" : "Var[I] bound f=1 corrected";

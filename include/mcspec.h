@@ -1,5 +1,7 @@
 /* mcspec: Fourier analysis of Monte Carlo sampling patterns.
- * Umbrella header: one header per module, in data-flow order. */
+ * Umbrella header: one header per module, in data-flow order (patterns, then
+ * the estimator and the accumulators that consume them, then the exact
+ * moments and closed forms they are checked against). */
 #ifndef MCSPEC_H
 #define MCSPEC_H
 
@@ -10,9 +12,12 @@
 #include "mcspec/importance.h"
 #include "mcspec/pattern.h"
 #include "mcspec/estimate.h"
+#include "mcspec/welford.h"
 #include "mcspec/dft.h"
 #include "mcspec/spectrum.h"
 #include "mcspec/moment.h"
+#include "mcspec/autocorr.h"
 #include "mcspec/theory.h"
+#include "mcspec/eq.h"
 
 #endif /* MCSPEC_H */

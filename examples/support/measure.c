@@ -105,7 +105,7 @@ static mcs_status add_trial(ex_run *run, const size_t *bins, const double *weigh
     }
     for (size_t i = 0; i < run->nf; ++i) {
         double est = 0.0;
-        mcs_status st = mcs_estimate_bins(run->n, run->f[i], run->k, bins, weights, &est);
+        mcs_status st = mcs_estimate_bins(run->n, run->k, run->f[i], bins, weights, &est);
         if (st != MCS_OK)
             return st;
         mcs_welford_add(&run->estimate[i], est);
