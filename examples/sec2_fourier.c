@@ -6,6 +6,7 @@
  * fixed strata) and a biased one (uniform). */
 #include "mcspec.h"
 #include "measure.h"
+#include "readout.h"
 #include "report.h"
 
 #include <math.h>

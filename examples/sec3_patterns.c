@@ -5,6 +5,7 @@
  * the estimator variance of eq. 14. */
 #include "mcspec.h"
 #include "measure.h"
+#include "readout.h"
 #include "report.h"
 
 #include <math.h>

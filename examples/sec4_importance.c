@@ -7,6 +7,7 @@
  * corrected. */
 #include "mcspec.h"
 #include "measure.h"
+#include "readout.h"
 #include "report.h"
 
 #include <math.h>
