@@ -184,10 +184,11 @@ mcs_status ex_run_go(ex_run *run, unsigned long trials, mcs_spectrum *spectrum,
     return MCS_OK;
 }
 
-/* Mean of the parts re and im, with their standard errors. */
+/* Mean of the parts re and im, with their standard errors (se may be NULL). */
 static ex_complex mean_parts(const mcs_welford *re, const mcs_welford *im, ex_complex *se)
 {
-    ex_complex m = {ex_mean(re, &se->re), ex_mean(im, &se->im)};
+    ex_complex m = {ex_mean(re, se != NULL ? &se->re : NULL),
+                    ex_mean(im, se != NULL ? &se->im : NULL)};
     return m;
 }
 

@@ -85,9 +85,11 @@ int ex_run_difference(ex_run *run, int a, int b);
 mcs_status ex_run_go(ex_run *run, unsigned long trials, mcs_spectrum *spectrum,
                      mcs_moment *moment);
 
-/* Measured <S_freq> at probe index idx, and the standard errors of its parts. */
+/* Measured <S_freq> at probe index idx, and the standard errors of its parts
+ * (stderr_out may be NULL). */
 ex_complex ex_run_mean(const ex_run *run, int idx, ex_complex *stderr_out);
-/* Measured <S_k S_l*> at pair index idx, and the standard errors of its parts. */
+/* Measured <S_k S_l*> at pair index idx, and the standard errors of its parts
+ * (stderr_out may be NULL). */
 ex_complex ex_run_mean_pair(const ex_run *run, int idx, ex_complex *stderr_out);
 
 /* Copies the candidate frequencies that lie in [1, N) to out, dropping
