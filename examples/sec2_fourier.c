@@ -44,16 +44,17 @@ typedef struct {
     double v13[P_COUNT], v14[P_COUNT], vex[P_COUNT], vme[P_COUNT], vse[P_COUNT];
 } sec2_summary;
 
+/* f at the bin centres and its DFT, then every pattern's run. */
 static int measure_all(const ex_options *opt)
 {
+    ex_integrand_bins(opt->n, f);
+    if (mcs_dft_init(&plan, opt->n) != MCS_OK ||
+        mcs_dft_real(&plan, opt->n, f, f_re, f_im) != MCS_OK)
+        return 0;
     for (int p = 0; p < P_COUNT; ++p) {
         ex_run *run = &runs[p];
-        mcs_status st = ex_run_init(run, kinds[p], opt->n, opt->k, NULL, opt->seed,
-                                    0x200u + (uint64_t)kinds[p]);
-        if (st == MCS_OK)
-            st = mcs_theory_init(&theories[p], &run->pattern);
-        if (st == MCS_OK)
-            st = mcs_spectrum_init(&spectra[p], opt->n);
+        mcs_status st = ex_run_setup(run, &theories[p], &spectra[p], kinds[p], opt->n, opt->k,
+                                     NULL, opt->seed, 0x200u + (uint64_t)kinds[p]);
         if (st == MCS_OK) {
             ex_run_probe(run, 0u);
             ex_run_probe(run, 1u);
@@ -151,16 +152,11 @@ static void unbiasedness_rows(const ex_options *opt, int p, sec2_summary *s)
         mean_row(opt, p, "Re <S_k>", 1u, 0.0);
     if (ex_run_probe(&runs[p], k) >= 0 && k != 1u)
         mean_row(opt, p, "Re <S_k>", k, 0.0);
-    double v = 0.0, se = 0.0;
-    double closed = ex_or_na(mcs_eq11_unbiased_mean(n, f, &v), &v);
-    double exact = ex_or_na(mcs_theory_estimator_mean(&theories[p], n, f, &v), &v);
-    double meas = ex_mean(&runs[p].estimate[0], &se);
-    ex_row r = ex_row_of("sec2", "<I>", "eq. 11", mcs_pattern_kind_str(kinds[p]), EX_NO_FREQ,
-                         EX_NO_FREQ, closed, exact, meas, se, 1e-12);
-    ex_row_print(opt, &r);
+    ex_row r = ex_estimator_mean_row(opt, "sec2", mcs_pattern_kind_str(kinds[p]), &theories[p],
+                                     &runs[p], f);
     if (p == P_UNIFORM) {
-        s->bias_uniform = meas - closed;
-        s->bias_z = ex_z(meas, closed, se, 1e-12);
+        s->bias_uniform = r.measured - r.closed_form;
+        s->bias_z = ex_z(r.measured, r.closed_form, r.stderr_, 1e-12);
     }
 }
 
@@ -240,9 +236,7 @@ int main(int argc, char **argv)
     int rc = ex_parse_options(argc, argv, &opt, MCS_MAX_COV_N, EX_MAX_K, help_text);
     if (rc != EX_PARSE_OK)
         return rc;
-    ex_integrand_bins(opt.n, f);
-    if (mcs_dft_init(&plan, opt.n) != MCS_OK ||
-        mcs_dft_real(&plan, opt.n, f, f_re, f_im) != MCS_OK || !measure_all(&opt))
+    if (!measure_all(&opt))
         return 1;
 
     sec2_summary summary;

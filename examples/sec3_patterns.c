@@ -90,18 +90,17 @@ static double eq14_stratified_at(size_t m, size_t k, int exact_form)
     return sum / ((double)k * (double)k);
 }
 
-static int measure_all(const ex_options *opt)
+/* f at the bin centres, then every pattern's run (fixed strata also into
+ * the moment accumulator). */
+static int measure_spectra(const ex_options *opt)
 {
+    ex_integrand_bins(opt->n, f);
     size_t freqs[6];
     size_t nfreq = pick_freqs(opt->n, opt->k, freqs);
     for (int p = 0; p < P_COUNT; ++p) {
         ex_run *run = &runs[p];
-        mcs_status st = ex_run_init(run, kinds[p], opt->n, opt->k, NULL, opt->seed,
-                                    0x300u + (uint64_t)kinds[p]);
-        if (st == MCS_OK)
-            st = mcs_theory_init(&theories[p], &run->pattern);
-        if (st == MCS_OK)
-            st = mcs_spectrum_init(&spectra[p], opt->n);
+        mcs_status st = ex_run_setup(run, &theories[p], &spectra[p], kinds[p], opt->n, opt->k,
+                                     NULL, opt->seed, 0x300u + (uint64_t)kinds[p]);
         if (st != MCS_OK) {
             fprintf(stderr, "sec3: %s: %s\n", mcs_pattern_kind_str(kinds[p]), mcs_status_str(st));
             return 0;
@@ -135,9 +134,8 @@ static void power_rows(const ex_options *opt, int p, const size_t *freqs, size_t
         size_t q = freqs[i];
         double closed = EX_NA, gap_big = EX_NA, v = 0.0;
         const char *eq = "";
-        double exact = ex_or_na(mcs_theory_power(&theories[p], q, &v), &v);
-        double meas = ex_or_na(mcs_spectrum_power(&spectra[p], q, &v), &v);
-        double se = ex_or_na(mcs_spectrum_power_stderr(&spectra[p], q, &v), &v);
+        double se, meas = ex_spectrum_power(&spectra[p], q, &se);
+        double exact = ex_theory_power(&theories[p], q);
         switch (p) {
         case P_RANDOM:
             eq = "eq. 23";
@@ -217,14 +215,12 @@ static void delta_section(const ex_options *opt)
     const size_t dk[3] = {1u, k / 2u, k + 1u};
     for (int i = 0; i < 3; ++i) {
         size_t q = dk[i];
-        double v = 0.0, exact = EX_NA, meas = EX_NA;
         if (q == 0u || q >= n || (i > 0 && q == dk[i - 1]) || (i == 2 && q == dk[0]))
             continue;
-        if (mcs_theory_power(&theories[P_STRAT], q, &v) == MCS_OK)
-            exact = v - kn;
-        if (mcs_spectrum_power(&spectra[P_STRAT], q, &v) == MCS_OK)
-            meas = v - kn; /* K/N is a constant: the stderr is the power's */
-        double se = ex_or_na(mcs_spectrum_power_stderr(&spectra[P_STRAT], q, &v), &v);
+        double v = 0.0;
+        double exact = ex_theory_power(&theories[P_STRAT], q) - kn;
+        /* K/N is a constant: the stderr is the power's */
+        double se, meas = ex_spectrum_power(&spectra[P_STRAT], q, &se) - kn;
         double p31 = ex_or_na(mcs_eq31_stratified_delta_printed(n, k, q, &v), &v);
         double p32 = ex_or_na(mcs_eq32_stratified_delta(n, k, q, &v), &v);
         ex_row r = ex_row_of("sec3", "Delta_kk as printed", "eq. 31", "stratified", (long)q,
@@ -301,7 +297,7 @@ static double cross_rows(const ex_options *opt, int p, size_t l)
                          printed, exact, meas, se, floor_);
     ex_row_print_complex(opt, "sec3", "<S_k S_l*> corrected", "eq. 30c", name, 1, (long)l,
                          corrected, exact, meas, se, floor_);
-    return fmax(fabs(ex_z(meas.re, 0.0, se.re, floor_)), fabs(ex_z(meas.im, 0.0, se.im, floor_)));
+    return ex_z_complex(meas, zero, se, floor_);
 }
 
 /* The moment accumulator on the same trials gives the same cross moment. */
@@ -452,8 +448,7 @@ int main(int argc, char **argv)
     int rc = ex_parse_options(argc, argv, &opt, MCS_MAX_COV_N, EX_MAX_K, help_text);
     if (rc != EX_PARSE_OK)
         return rc;
-    ex_integrand_bins(opt.n, f);
-    if (!measure_all(&opt))
+    if (!measure_spectra(&opt))
         return 1;
 
     sec3_summary summary;

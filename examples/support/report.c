@@ -171,6 +171,13 @@ double ex_z(double measured, double predicted, double stderr_, double abs_floor)
     return (measured - predicted) / scale;
 }
 
+double ex_z_complex(ex_complex measured, ex_complex predicted, ex_complex stderr_,
+                    double abs_floor)
+{
+    return fmax(fabs(ex_z(measured.re, predicted.re, stderr_.re, abs_floor)),
+                fabs(ex_z(measured.im, predicted.im, stderr_.im, abs_floor)));
+}
+
 double ex_rel_gap(double closed_form, double exact, double abs_floor)
 {
     double fl = floor_or_tiny(abs_floor), d = fabs(closed_form - exact);

@@ -81,6 +81,10 @@ ex_row ex_row_of(const char *section, const char *quantity, const char *equation
  * is missing. abs_floor <= 0 means 1e-300. */
 double ex_z(double measured, double predicted, double stderr_, double abs_floor);
 
+/* The larger |z| (ex_z) of the real and the imaginary part. */
+double ex_z_complex(ex_complex measured, ex_complex predicted, ex_complex stderr_,
+                    double abs_floor);
+
 /* Relative gap |closed - exact| / max(|closed|, |exact|, abs_floor); 0 when
  * |closed - exact| <= abs_floor (below the rounding scale). */
 double ex_rel_gap(double closed_form, double exact, double abs_floor);
