@@ -349,7 +349,7 @@ static int base_of(int r)
 static void rise_scan(sec4_summary *s)
 {
     s->worst_q = 0;
-    s->worst_diff = INFINITY;
+    s->worst_diff = (double)INFINITY;
     for (int r = R_RANDOM_G1; r <= R_STRAT_G2; ++r) {
         int b = base_of(r);
         s->rises_everywhere[r] = 1;
