@@ -20,30 +20,29 @@ mcs_status mcs_pointset_init(mcs_pointset *acc, size_t freq_max)
     return MCS_OK;
 }
 
-/* S(f) += sum over four points of amp_p e^{-2 pi i f x_p}, f = 0..F: the four
- * phase recurrences are independent, so they run side by side. */
-static void add_four(mcs_pointset *acc, const double *x, const double *amp)
+/* Phase rows of point slot p: low[b] = e^{-2 pi i b x}, b < B, and
+ * high[a] = amp e^{-2 pi i a B x}, a < blocks. B x mod 1 is exact (B is a
+ * power of two), so the high row is the phase row of that fraction. */
+static void phase_rows(mcs_pointset *acc, int p, double x, double amp, size_t blocks)
 {
-    const size_t fmax = acc->freq_max;
-    double wr[4], wi[4], zr[4], zi[4];
-    for (int p = 0; p < 4; ++p)
-        mcs_ps_phase(x[p], 1u, &wr[p], &wi[p]);
-    for (size_t c = 0; c <= fmax; c += MCS_PS_ANCHOR) {
+    mcs_ps_phase_row(x, 1.0, MCS_POINTSET_BLOCK - 1u, acc->low[p][0], acc->low[p][1]);
+    double xb = (double)MCS_POINTSET_BLOCK * x;
+    mcs_ps_phase_row(xb - floor(xb), amp, blocks - 1u, acc->high[p][0], acc->high[p][1]);
+}
+
+/* S(a B + b) += sum over the four slots of high_p[a] low_p[b]. */
+static void accumulate_four(mcs_pointset *acc, size_t blocks)
+{
+    for (size_t a = 0; a < blocks; ++a) {
+        double y[8];
         for (int p = 0; p < 4; ++p) {
-            mcs_ps_phase(x[p], c, &zr[p], &zi[p]);
-            zr[p] *= amp[p];
-            zi[p] *= amp[p];
+            y[2 * p] = acc->high[p][0][a];
+            y[2 * p + 1] = acc->high[p][1][a];
         }
-        size_t end = fmax - c < MCS_PS_ANCHOR ? fmax + 1u : c + MCS_PS_ANCHOR;
-        for (size_t f = c; f < end; ++f) {
-            acc->re[f] += (zr[0] + zr[1]) + (zr[2] + zr[3]);
-            acc->im[f] += (zi[0] + zi[1]) + (zi[2] + zi[3]);
-            for (int p = 0; p < 4; ++p) {
-                double t = zr[p] * wr[p] - zi[p] * wi[p];
-                zi[p] = zr[p] * wi[p] + zi[p] * wr[p];
-                zr[p] = t;
-            }
-        }
+        size_t off = a * MCS_POINTSET_BLOCK;
+        mcs_ps_row_update4(MCS_POINTSET_BLOCK, acc->re + off, acc->im + off, acc->low[0][0],
+                           acc->low[0][1], acc->low[1][0], acc->low[1][1], acc->low[2][0],
+                           acc->low[2][1], acc->low[3][0], acc->low[3][1], y);
     }
 }
 
@@ -57,16 +56,15 @@ mcs_status mcs_pointset_add(mcs_pointset *acc, size_t k, const double *points)
         return MCS_ERR_K_RANGE;
     if (!mcs_ps_points_in_range(k, points))
         return MCS_ERR_POINT_RANGE;
-    const size_t fmax = acc->freq_max;
-    memset(acc->re, 0, (fmax + 1u) * sizeof acc->re[0]);
-    memset(acc->im, 0, (fmax + 1u) * sizeof acc->im[0]);
+    const size_t fmax = acc->freq_max, blocks = fmax / MCS_POINTSET_BLOCK + 1u;
+    memset(acc->re, 0, blocks * MCS_POINTSET_BLOCK * sizeof acc->re[0]);
+    memset(acc->im, 0, blocks * MCS_POINTSET_BLOCK * sizeof acc->im[0]);
     for (size_t j = 0; j < k; j += 4u) {
-        double x[4] = {0.0, 0.0, 0.0, 0.0}, amp[4] = {0.0, 0.0, 0.0, 0.0};
-        for (size_t p = 0; p < 4u && j + p < k; ++p) {
-            x[p] = points[j + p];
-            amp[p] = 1.0;
+        for (int p = 0; p < 4; ++p) {
+            size_t q = j + (size_t)p;
+            phase_rows(acc, p, q < k ? points[q] : 0.0, q < k ? 1.0 : 0.0, blocks);
         }
-        add_four(acc, x, amp);
+        accumulate_four(acc, blocks);
     }
     acc->count++;
     const double inv_k = 1.0 / (double)k;

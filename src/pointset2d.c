@@ -4,7 +4,8 @@
 #include <math.h>
 #include <string.h>
 
-/* Layout: wave vector (fx, fy), fy = 0..F, fx = -F..F, at fy (2F+1) + fx + F.
+/* Layout: wave vector (fx, fy), fy = 0..F, fx = -F..F, at fy (2F+2) + fx + F
+ * (column 2F+1 of each row is padding that stays 0 and is never read).
  * The fy = 0 row is stored whole; (fx, fy > 0) stands for itself and for
  * (-fx, -fy), so whole-plane sums weigh the fy = 0 row 1 and the rest 2. */
 
@@ -44,6 +45,8 @@ static void phase_rows(mcs_pointset2d *acc, int p, double x, double y, double am
         xr[fmax - f] = xr[fmax + f];
         xi[fmax - f] = -xi[fmax + f];
     }
+    xr[2u * fmax + 1u] = 0.0; /* the padding column */
+    xi[2u * fmax + 1u] = 0.0;
     mcs_ps_phase_row(y, amp, fmax, acc->phase[p][YR], acc->phase[p][YI]);
 }
 
@@ -51,23 +54,17 @@ static void phase_rows(mcs_pointset2d *acc, int p, double x, double y, double am
  * the stored wave vectors per four points. */
 static void accumulate_four(mcs_pointset2d *acc)
 {
-    const size_t fmax = acc->freq_max, row = 2u * fmax + 1u;
-    const double *x0r = acc->phase[0][XR], *x0i = acc->phase[0][XI];
-    const double *x1r = acc->phase[1][XR], *x1i = acc->phase[1][XI];
-    const double *x2r = acc->phase[2][XR], *x2i = acc->phase[2][XI];
-    const double *x3r = acc->phase[3][XR], *x3i = acc->phase[3][XI];
+    const size_t fmax = acc->freq_max, stride = 2u * fmax + 2u;
+    double (*ph)[4][MCS_POINTSET2D_ROW] = acc->phase;
     for (size_t fy = 0; fy <= fmax; ++fy) {
-        const double a0 = acc->phase[0][YR][fy], b0 = acc->phase[0][YI][fy];
-        const double a1 = acc->phase[1][YR][fy], b1 = acc->phase[1][YI][fy];
-        const double a2 = acc->phase[2][YR][fy], b2 = acc->phase[2][YI][fy];
-        const double a3 = acc->phase[3][YR][fy], b3 = acc->phase[3][YI][fy];
-        double *sr = acc->re + fy * row, *si = acc->im + fy * row;
-        for (size_t c = 0; c < row; ++c) {
-            sr[c] += ((x0r[c] * a0 - x0i[c] * b0) + (x1r[c] * a1 - x1i[c] * b1)) +
-                     ((x2r[c] * a2 - x2i[c] * b2) + (x3r[c] * a3 - x3i[c] * b3));
-            si[c] += ((x0r[c] * b0 + x0i[c] * a0) + (x1r[c] * b1 + x1i[c] * a1)) +
-                     ((x2r[c] * b2 + x2i[c] * a2) + (x3r[c] * b3 + x3i[c] * a3));
+        double y[8];
+        for (int p = 0; p < 4; ++p) {
+            y[2 * p] = ph[p][YR][fy];
+            y[2 * p + 1] = ph[p][YI][fy];
         }
+        mcs_ps_row_update4(stride, acc->re + fy * stride, acc->im + fy * stride, ph[0][XR],
+                           ph[0][XI], ph[1][XR], ph[1][XI], ph[2][XR], ph[2][XI], ph[3][XR],
+                           ph[3][XI], y);
     }
 }
 
@@ -75,7 +72,7 @@ static void accumulate_four(mcs_pointset2d *acc)
  * into theirs. The ring sums reuse the phase scratch (free by now). */
 static void update_statistics(mcs_pointset2d *acc, size_t k)
 {
-    const size_t fmax = acc->freq_max, row = 2u * fmax + 1u;
+    const size_t fmax = acc->freq_max, row = 2u * fmax + 1u, stride = row + 1u;
     double *ring_sum = acc->phase[0][XR], *ring_n = acc->phase[0][XI];
     memset(ring_sum, 0, (fmax + 1u) * sizeof *ring_sum);
     memset(ring_n, 0, (fmax + 1u) * sizeof *ring_n);
@@ -84,7 +81,7 @@ static void update_statistics(mcs_pointset2d *acc, size_t k)
     for (size_t fy = 0; fy <= fmax; ++fy) {
         const double w = fy == 0u ? 1.0 : 2.0;
         for (size_t c = 0; c < row; ++c) {
-            size_t i = fy * row + c;
+            size_t i = fy * stride + c;
             double p = (acc->re[i] * acc->re[i] + acc->im[i] * acc->im[i]) * inv_k;
             mcs_ps_welford(&acc->mean[i], &acc->m2[i], p, acc->count);
             size_t r = ring_of(fmax, c, fy);
@@ -109,7 +106,7 @@ mcs_status mcs_pointset2d_add(mcs_pointset2d *acc, size_t k, const double *point
         return MCS_ERR_K_RANGE;
     if (k > SIZE_MAX / 2u || !mcs_ps_points_in_range(2u * k, points))
         return MCS_ERR_POINT_RANGE;
-    const size_t fmax = acc->freq_max, cells = (2u * fmax + 1u) * (fmax + 1u);
+    const size_t fmax = acc->freq_max, cells = (2u * fmax + 2u) * (fmax + 1u);
     memset(acc->re, 0, cells * sizeof acc->re[0]);
     memset(acc->im, 0, cells * sizeof acc->im[0]);
     for (size_t j = 0; j < k; j += 4u) {
@@ -137,7 +134,7 @@ mcs_status mcs_pointset2d_merge(mcs_pointset2d *dst, const mcs_pointset2d *src)
     if (src->count == 0u)
         return MCS_OK;
     const uint64_t na = dst->count, nb = src->count;
-    const size_t fmax = dst->freq_max, cells = (2u * fmax + 1u) * (fmax + 1u);
+    const size_t fmax = dst->freq_max, cells = (2u * fmax + 2u) * (fmax + 1u);
     for (size_t i = 0; i < cells; ++i)
         mcs_ps_chan(&dst->mean[i], &dst->m2[i], na, src->mean[i], src->m2[i], nb);
     for (size_t r = 0; r <= fmax; ++r)
@@ -174,7 +171,7 @@ static mcs_status cell_index(const mcs_pointset2d *acc, long fx, long fy, size_t
         fx = -fx;
         fy = -fy;
     }
-    *index = (size_t)fy * (2u * fmax + 1u) + (size_t)(fx + (long)fmax);
+    *index = (size_t)fy * (2u * fmax + 2u) + (size_t)(fx + (long)fmax);
     return MCS_OK;
 }
 
@@ -247,7 +244,7 @@ static double ring_moments(const mcs_pointset2d *acc, size_t r, double *mean, do
             for (size_t c = 0; c < row; ++c) {
                 if (ring_of(fmax, c, fy) != r)
                     continue;
-                double w = fy == 0u ? 1.0 : 2.0, p = acc->mean[fy * row + c];
+                double w = fy == 0u ? 1.0 : 2.0, p = acc->mean[fy * (row + 1u) + c];
                 if (pass == 0) {
                     sum += w * p;
                     n += w;

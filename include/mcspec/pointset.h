@@ -5,13 +5,15 @@
  * P(f) = 1 at every f != 0; P(0) = K always. The points are real, so
  * P(-f) = P(f): only f >= 0 is stored and read-outs accept |f| <= F.
  *
- * The per-trial sum advances e^{-2 pi i f x_j} from f to f + 1 by one complex
- * multiplication (four points at a time), recomputing it from sin and cos
- * every 32 frequencies: O(K F) multiply-adds, a few 1e-15 of rounding.
+ * The phases e^{-2 pi i f x_j} are advanced by one complex multiplication
+ * per frequency and recomputed from sin and cos every 32 frequencies (a few
+ * 1e-15 of rounding); the sum over points is an outer product of short phase
+ * rows (below), four points at a time: O(K F) multiply-adds.
  *
- * Size: sizeof(mcs_pointset) is 16 + 32 (MCS_MAX_FREQ_1D + 1) bytes on
- * x86-64: 32 816 at the default MCS_MAX_FREQ_1D = 1024, 2 096 at 64.
- * It holds no pointers, so it may be copied. */
+ * Size: sizeof(mcs_pointset) is 2064 + 16 (F + 1) + 18 S bytes with
+ * F = MCS_MAX_FREQ_1D and S = F + 1 rounded up to a multiple of 32 (x86-64):
+ * 37 472 at the default 1024, 4 832 at 64. It holds no pointers, so it may
+ * be copied. */
 #ifndef MCSPEC_POINTSET_H
 #define MCSPEC_POINTSET_H
 
@@ -32,13 +34,23 @@ extern "C" {
 #error "MCS_MAX_FREQ_1D must be at least 1"
 #endif
 
+/* Frequencies are split as f = a B + b, b < B, so that
+ * e^{-2 pi i f x} = e^{-2 pi i a B x} e^{-2 pi i b x}: per point a row of B
+ * low phases and a row of (F + 1)/B high ones, and the sum over points is an
+ * outer product (the same vectorised kernel as the 2D spectrum). */
+#define MCS_POINTSET_BLOCK 32
+#define MCS_POINTSET_SPAN \
+    (((MCS_MAX_FREQ_1D) + MCS_POINTSET_BLOCK) / MCS_POINTSET_BLOCK * MCS_POINTSET_BLOCK)
+
 typedef struct {
     size_t freq_max;                   /* F, 1..MCS_MAX_FREQ_1D; 0 before init */
     uint64_t count;                    /* trials added */
     double mean[MCS_MAX_FREQ_1D + 1];  /* running mean of P(f), f = 0..F */
     double m2[MCS_MAX_FREQ_1D + 1];    /* Welford sum of squared deviations */
-    double re[MCS_MAX_FREQ_1D + 1];    /* scratch: S(f) of the current trial */
-    double im[MCS_MAX_FREQ_1D + 1];
+    double re[MCS_POINTSET_SPAN];      /* scratch: S(f) of the current trial, f < span */
+    double im[MCS_POINTSET_SPAN];
+    double low[4][2][MCS_POINTSET_BLOCK];                        /* scratch: e^{-2 pi i b x_p} */
+    double high[4][2][MCS_POINTSET_SPAN / MCS_POINTSET_BLOCK];   /* scratch: e^{-2 pi i a B x_p} */
 } mcs_pointset;
 
 /* Empties the accumulator for frequencies 0..freq_max. MCS_ERR_NULL,

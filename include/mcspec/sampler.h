@@ -7,8 +7,8 @@
  *   Halton          2    (phi_2(j), phi_3(j))                 Cranley-Patterson rotation
  *   Hammersley      2    (j/K, phi_2(j))                      Cranley-Patterson rotation
  *   Sobol           1,2  Sobol dimensions 1 (and 2)           hash-based Owen scrambling
- *   Kronecker       1,2  frac(j alpha), alpha = 1/golden (1D)  random shift (mod 1)
- *                        or R2 (1/g, 1/g^2), g^3 = g + 1 (2D)
+ *   Kronecker       1,2  frac(j alpha)                        random shift (mod 1)
+ *                        alpha = 1/golden (1D), or R2 (1/g, 1/g^2) with g^3 = g + 1 (2D)
  *
  * phi_b is the radical inverse in base b. Sobol points are in index order
  * (point j is the xor of the direction numbers of j's set bits, as in pbrt
