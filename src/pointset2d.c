@@ -11,6 +11,8 @@
 
 enum { XR = 0, XI = 1, YR = 2, YI = 3 };
 
+#define RING_ZERO 1e-20
+
 static int pointset2d_is_valid(const mcs_pointset2d *acc)
 {
     return acc->freq_max >= 1u && acc->freq_max <= (size_t)MCS_MAX_FREQ;
@@ -265,7 +267,9 @@ mcs_status mcs_pointset2d_anisotropy(const mcs_pointset2d *acc, size_t radius, d
         return st;
     double mean = 0.0, var = 0.0;
     double n = ring_moments(acc, radius, &mean, &var);
-    if (n < 2.0 || !(mean > 0.0) || !(var > 0.0))
+    /* An exactly empty annulus (a grid's) measures as rounding residue,
+     * around K 1e-32; below RING_ZERO its mean counts as 0. */
+    if (n < 2.0 || !(mean > RING_ZERO) || !(var > 0.0))
         return MCS_ERR_DOMAIN;
     *out_db = 10.0 * log10(var / (mean * mean));
     return MCS_OK;

@@ -98,8 +98,9 @@ mcs_status mcs_pointset2d_radial_stderr(const mcs_pointset2d *acc, size_t radius
 
 /* psa's anisotropy of annulus radius (1..F) in dB, from the mean periodogram.
  * MCS_ERR_DOMAIN when it is not finite: annulus 0 (a single wave vector), an
- * annulus mean of 0, or zero variance over the annulus. Otherwise statuses
- * as mcs_pointset2d_power. */
+ * annulus mean of 0 (below 1e-20: an exactly empty annulus, e.g. a grid's,
+ * measures as rounding residue near K 1e-32), or zero variance over the
+ * annulus. Otherwise statuses as mcs_pointset2d_power. */
 mcs_status mcs_pointset2d_anisotropy(const mcs_pointset2d *acc, size_t radius, double *out_db);
 
 /* Number of integer wave vectors in annulus radius (r <= |f| < r + 1), the
