@@ -210,8 +210,8 @@ static void draw_cmj(const mcs_pattern2d *pat, mcs_rng *rng, double *points)
         uint32_t sy = mcs_pattern2d_permute(j, n, p * 0x63d83595u);
         double jx = kensler_randfloat(s, p * 0xa399d265u);
         double jy = kensler_randfloat(s, p * 0x711ad6a5u);
-        points[2u * s] = fine_point((size_t)i * n + sy, jx, k);
-        points[2u * s + 1u] = fine_point((size_t)j * m + sx, jy, k);
+        points[(size_t)2u * s] = fine_point((size_t)i * n + sy, jx, k);
+        points[(size_t)2u * s + 1u] = fine_point((size_t)j * m + sx, jy, k);
     }
 }
 

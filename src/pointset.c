@@ -35,9 +35,9 @@ static void accumulate_four(mcs_pointset *acc, size_t blocks)
 {
     for (size_t a = 0; a < blocks; ++a) {
         double y[8];
-        for (int p = 0; p < 4; ++p) {
-            y[2 * p] = acc->high[p][0][a];
-            y[2 * p + 1] = acc->high[p][1][a];
+        for (size_t p = 0; p < 4u; ++p) {
+            y[2u * p] = acc->high[p][0][a];
+            y[2u * p + 1u] = acc->high[p][1][a];
         }
         size_t off = a * MCS_POINTSET_BLOCK;
         mcs_ps_row_update4(MCS_POINTSET_BLOCK, acc->re + off, acc->im + off, acc->low[0][0],

@@ -60,9 +60,9 @@ static void accumulate_four(mcs_pointset2d *acc)
     double (*ph)[4][MCS_POINTSET2D_ROW] = acc->phase;
     for (size_t fy = 0; fy <= fmax; ++fy) {
         double y[8];
-        for (int p = 0; p < 4; ++p) {
-            y[2 * p] = ph[p][YR][fy];
-            y[2 * p + 1] = ph[p][YI][fy];
+        for (size_t p = 0; p < 4u; ++p) {
+            y[2u * p] = ph[p][YR][fy];
+            y[2u * p + 1u] = ph[p][YI][fy];
         }
         mcs_ps_row_update4(stride, acc->re + fy * stride, acc->im + fy * stride, ph[0][XR],
                            ph[0][XI], ph[1][XR], ph[1][XI], ph[2][XR], ph[2][XI], ph[3][XR],
@@ -285,7 +285,7 @@ mcs_status mcs_pointset2d_ring_size(size_t radius, size_t *out)
         for (size_t ax = 0; ax < lim; ++ax) {
             if (mcs_ps_isqrt(ax * ax + ay * ay) != radius)
                 continue;
-            n += (ax > 0u ? 2u : 1u) * (ay > 0u ? 2u : 1u); /* the sign choices */
+            n += (size_t)(ax > 0u ? 2u : 1u) * (ay > 0u ? 2u : 1u); /* the sign choices */
         }
     *out = n;
     return MCS_OK;

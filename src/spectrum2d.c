@@ -84,9 +84,9 @@ static void accumulate_four(mcs_spectrum2d *acc)
     double (*r)[4][MCS_SPECTRUM2D_STRIDE] = acc->rows;
     for (size_t k2 = 0; k2 <= acc->n_y / 2u; ++k2) {
         double y[8];
-        for (int p = 0; p < 4; ++p) {
-            y[2 * p] = r[p][YR][k2];
-            y[2 * p + 1] = r[p][YI][k2];
+        for (size_t p = 0; p < 4u; ++p) {
+            y[2u * p] = r[p][YR][k2];
+            y[2u * p + 1u] = r[p][YI][k2];
         }
         mcs_ps_row_update4(stride, acc->re + k2 * stride, acc->im + k2 * stride, r[0][XR],
                            r[0][XI], r[1][XR], r[1][XI], r[2][XR], r[2][XI], r[3][XR], r[3][XI],

@@ -47,55 +47,70 @@ static mcs_status check_freqs(size_t n_x, size_t n_y, size_t k1, size_t k2)
     return k1 < n_x && k2 < n_y ? MCS_OK : MCS_ERR_FREQ_RANGE;
 }
 
+/* (-1)^(number of whole half-turns in pi q / n): with q mod n it gives
+ * sin(pi q/n) and e^{-i pi q/n} from a reduced angle. */
+static double half_turns_sign(size_t q, size_t n)
+{
+    return (q / n) % 2u ? -1.0 : 1.0;
+}
+
 /* sum_{u < a} e^{-2 pi i k u / n} = e^{-pi i k (a-1)/n} sin(pi k a/n) / sin(pi k/n)
- * (a at k = 0 mod n); k < n. Angles from integers reduced mod 2n. */
+ * (a at k = 0 mod n); k < n. Angles from integers reduced mod n. */
 static void block_sum(size_t k, size_t a, size_t n, double *re, double *im)
 {
-    if (k == 0u) {
+    if (k == 0u || n == 0u) { /* n = 0 cannot reach here: the callers check it */
         *re = (double)a;
         *im = 0.0;
         return;
     }
-    const double pi = MCS_PS_TWO_PI * 0.5;
-    double mag = sin(pi * (double)((k * a) % (2u * n)) / (double)n) /
-                 sin(pi * (double)k / (double)n);
-    double ph = pi * (double)((k * (a - 1u)) % (2u * n)) / (double)n;
+    const double pi = MCS_PS_TWO_PI * 0.5, nd = (double)n;
+    const size_t ka = k * a, kb = k * (a - 1u);
+    double mag = half_turns_sign(ka, n) * sin(pi * (double)(ka % n) / nd) /
+                 sin(pi * (double)k / nd);
+    double ph = pi * (double)(kb % n) / nd;
+    mag *= half_turns_sign(kb, n);
     *re = mag * cos(ph);
     *im = -mag * sin(ph);
 }
 
-/* A(k) for a jittered stratum of (N1/m) x (N2/n) bins. */
-static void stratum_sum(const mcs_pattern2d *pat, size_t n_x, size_t n_y, size_t k1, size_t k2,
-                        double *re, double *im)
+/* A pattern on its n_x x n_y bins (checked); keeps the helpers' argument
+ * lists short enough to pass in registers. */
+typedef struct {
+    const mcs_pattern2d *pat;
+    size_t n_x, n_y;
+} grid;
+
+/* A(k) = out[0] + i out[1] for a jittered stratum of (N1/m) x (N2/n) bins. */
+static void stratum_sum(const grid *g, size_t k1, size_t k2, double *out)
 {
     double ar, ai, br, bi;
-    block_sum(k1, n_x / pat->strata_x, n_x, &ar, &ai);
-    block_sum(k2, n_y / pat->strata_y, n_y, &br, &bi);
-    *re = ar * br - ai * bi;
-    *im = ar * bi + ai * br;
+    block_sum(k1, g->n_x / g->pat->strata_x, g->n_x, &ar, &ai);
+    block_sum(k2, g->n_y / g->pat->strata_y, g->n_y, &br, &bi);
+    out[0] = ar * br - ai * bi;
+    out[1] = ar * bi + ai * br;
 }
 
-/* Cov(S_k, S_l) of a checked pattern. */
-static void covariance(const mcs_pattern2d *pat, size_t n_x, size_t n_y, size_t k1, size_t k2,
-                       size_t l1, size_t l2, double *re, double *im)
+/* Cov(S_k, S_l) = out[0] + i out[1], k = (k[0], k[1]), l = (l[0], l[1]). */
+static void covariance(const grid *g, const size_t *k, const size_t *l, double *out)
 {
-    const double kd = (double)pat->k, kn = kd / ((double)n_x * (double)n_y);
-    const int same = k1 == l1 && k2 == l2, zero = same && k1 == 0u && k2 == 0u;
-    *re = 0.0;
-    *im = 0.0;
+    const mcs_pattern2d *pat = g->pat;
+    const double kd = (double)pat->k, kn = kd / ((double)g->n_x * (double)g->n_y);
+    const int same = k[0] == l[0] && k[1] == l[1], zero = same && k[0] == 0u && k[1] == 0u;
+    out[0] = 0.0;
+    out[1] = 0.0;
     if (pat->kind == MCS_PATTERN2D_RANDOM) {
-        *re = same && !zero ? kn : 0.0;
+        out[0] = same && !zero ? kn : 0.0;
     } else if (pat->kind == MCS_PATTERN2D_SHIFTED_GRID) {
-        int comb = k1 % pat->strata_x == 0u && k2 % pat->strata_y == 0u;
-        *re = same && comb && !zero ? kd * kn : 0.0;
-    } else if (k1 % pat->strata_x == l1 % pat->strata_x &&
-               k2 % pat->strata_y == l2 % pat->strata_y) {
-        double ar, ai, br, bi;
-        stratum_sum(pat, n_x, n_y, k1, k2, &ar, &ai);
-        stratum_sum(pat, n_x, n_y, l1, l2, &br, &bi);
+        int comb = k[0] % pat->strata_x == 0u && k[1] % pat->strata_y == 0u;
+        out[0] = same && comb && !zero ? kd * kn : 0.0;
+    } else if (k[0] % pat->strata_x == l[0] % pat->strata_x &&
+               k[1] % pat->strata_y == l[1] % pat->strata_y) {
+        double a[2], b[2];
+        stratum_sum(g, k[0], k[1], a);
+        stratum_sum(g, l[0], l[1], b);
         const double c3 = kn * kn * kn;
-        *re = (same ? kn : 0.0) - c3 * (ar * br + ai * bi); /* A(k) A(l)^* */
-        *im = -c3 * (ai * br - ar * bi);
+        out[0] = (same ? kn : 0.0) - c3 * (a[0] * b[0] + a[1] * b[1]); /* A(k) A(l)^* */
+        out[1] = -c3 * (a[1] * b[0] - a[0] * b[1]);
     }
 }
 
@@ -127,21 +142,28 @@ mcs_status mcs_spectrum2d_exact_covariance(const mcs_pattern2d *pat, size_t n_x,
         st = check_freqs(n_x, n_y, l1, l2);
     if (st != MCS_OK)
         return st;
-    covariance(pat, n_x, n_y, k1, k2, l1, l2, re, im);
+    const grid g = {pat, n_x, n_y};
+    const size_t k[2] = {k1, k2}, l[2] = {l1, l2};
+    double c[2];
+    covariance(&g, k, l, c);
+    *re = c[0];
+    *im = c[1];
     return MCS_OK;
 }
 
 mcs_status mcs_spectrum2d_exact_power(const mcs_pattern2d *pat, size_t n_x, size_t n_y,
                                       size_t freq_k, size_t freq_l, double *out)
 {
-    double mr = 0.0, mi = 0.0, cr = 0.0, ci = 0.0;
+    double mr = 0.0, mi = 0.0, c[2];
     if (out == NULL)
         return MCS_ERR_NULL;
     mcs_status st = mcs_spectrum2d_exact_mean(pat, n_x, n_y, freq_k, freq_l, &mr, &mi);
     if (st != MCS_OK)
         return st;
-    covariance(pat, n_x, n_y, freq_k, freq_l, freq_k, freq_l, &cr, &ci);
-    *out = cr + mr * mr + mi * mi;
+    const grid g = {pat, n_x, n_y};
+    const size_t k[2] = {freq_k, freq_l};
+    covariance(&g, k, k, c);
+    *out = c[0] + mr * mr + mi * mi;
     return MCS_OK;
 }
 
@@ -161,24 +183,23 @@ static mcs_status check_f(const mcs_pattern2d *pat, size_t n_x, size_t n_y, cons
 
 /* (K/N)^3 sum over residue classes r of |sum_{k = r mod (m,n)} F_k^* A(k)|^2:
  * the cross terms of the jittered Var[I], O(N) in all. */
-static double jittered_cross(const mcs_pattern2d *pat, size_t n_x, size_t n_y,
-                             const double *f_re, const double *f_im)
+static double jittered_cross(const grid *g, const double *f_re, const double *f_im)
 {
-    const size_t m = pat->strata_x, n = pat->strata_y;
+    const size_t m = g->pat->strata_x, n = g->pat->strata_y, n_x = g->n_x, n_y = g->n_y;
     double total = 0.0;
     for (size_t r2 = 0; r2 < n; ++r2)
         for (size_t r1 = 0; r1 < m; ++r1) {
             double sr = 0.0, si = 0.0;
             for (size_t k2 = r2; k2 < n_y; k2 += n)
                 for (size_t k1 = r1; k1 < n_x; k1 += m) {
-                    double ar, ai, fr = f_re[k2 * n_x + k1], fi = -f_im[k2 * n_x + k1];
-                    stratum_sum(pat, n_x, n_y, k1, k2, &ar, &ai);
-                    sr += fr * ar - fi * ai;
-                    si += fr * ai + fi * ar;
+                    double a[2], fr = f_re[k2 * n_x + k1], fi = -f_im[k2 * n_x + k1];
+                    stratum_sum(g, k1, k2, a);
+                    sr += fr * a[0] - fi * a[1];
+                    si += fr * a[1] + fi * a[0];
                 }
             total += sr * sr + si * si;
         }
-    const double kn = (double)pat->k / ((double)n_x * (double)n_y);
+    const double kn = (double)g->pat->k / ((double)n_x * (double)n_y);
     return kn * kn * kn * total;
 }
 
@@ -194,7 +215,8 @@ mcs_status mcs_spectrum2d_exact_variance(const mcs_pattern2d *pat, size_t n_x, s
     double diag = 0.0;
     for (size_t i = 0; i < n_x * n_y; ++i)
         diag += f_re[i] * f_re[i] + f_im[i] * f_im[i];
-    *out = (kn * diag - jittered_cross(pat, n_x, n_y, f_re, f_im)) / (kd * kd);
+    const grid g = {pat, n_x, n_y};
+    *out = (kn * diag - jittered_cross(&g, f_re, f_im)) / (kd * kd);
     return MCS_OK;
 }
 
@@ -204,15 +226,17 @@ mcs_status mcs_spectrum2d_exact_variance14(const mcs_pattern2d *pat, size_t n_x,
     mcs_status st = check_f(pat, n_x, n_y, f_re, f_im, out);
     if (st != MCS_OK)
         return st;
+    const grid g = {pat, n_x, n_y};
     double sum = 0.0;
     for (size_t k2 = 0; k2 < n_y; ++k2)
         for (size_t k1 = 0; k1 < n_x; ++k1) {
             if (k1 == 0u && k2 == 0u)
                 continue;
-            double p = 0.0, im = 0.0;
-            covariance(pat, n_x, n_y, k1, k2, k1, k2, &p, &im); /* <S_k> = 0 here */
+            const size_t k[2] = {k1, k2};
+            double c[2];
+            covariance(&g, k, k, c); /* the power: <S_k> = 0 here */
             size_t i = k2 * n_x + k1;
-            sum += (f_re[i] * f_re[i] + f_im[i] * f_im[i]) * p;
+            sum += (f_re[i] * f_re[i] + f_im[i] * f_im[i]) * c[0];
         }
     const double kd = (double)pat->k;
     *out = sum / (kd * kd);
