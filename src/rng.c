@@ -16,18 +16,28 @@ mcs_status mcs_rng_seed(mcs_rng *rng, uint64_t initstate, uint64_t initseq)
     return MCS_OK;
 }
 
-mcs_status mcs_rng_u32(mcs_rng *rng, uint32_t *out)
+/* The checks of every draw: both pointers, then a seeded generator. */
+static mcs_status check_draw(const mcs_rng *rng, const void *out)
 {
     if (rng == NULL || out == NULL)
         return MCS_ERR_NULL;
+    return mcs_rng_is_seeded_(rng) ? MCS_OK : MCS_ERR_UNINIT;
+}
+
+mcs_status mcs_rng_u32(mcs_rng *rng, uint32_t *out)
+{
+    mcs_status st = check_draw(rng, out);
+    if (st != MCS_OK)
+        return st;
     *out = mcs_rng_next_(rng);
     return MCS_OK;
 }
 
 mcs_status mcs_rng_bounded(mcs_rng *rng, uint32_t bound, uint32_t *out)
 {
-    if (rng == NULL || out == NULL)
-        return MCS_ERR_NULL;
+    mcs_status st = check_draw(rng, out);
+    if (st != MCS_OK)
+        return st;
     if (bound == 0u)
         return MCS_ERR_BOUND;
     *out = mcs_rng_bounded_(rng, bound);
@@ -36,8 +46,9 @@ mcs_status mcs_rng_bounded(mcs_rng *rng, uint32_t bound, uint32_t *out)
 
 mcs_status mcs_rng_double(mcs_rng *rng, double *out)
 {
-    if (rng == NULL || out == NULL)
-        return MCS_ERR_NULL;
+    mcs_status st = check_draw(rng, out);
+    if (st != MCS_OK)
+        return st;
     *out = mcs_rng_double_(rng);
     return MCS_OK;
 }

@@ -19,6 +19,9 @@ const char *mcs_status_str(mcs_status status)
     case MCS_ERR_DOMAIN: return "MCS_ERR_DOMAIN";
     case MCS_ERR_FREQ_RANGE: return "MCS_ERR_FREQ_RANGE";
     case MCS_ERR_UNINIT: return "MCS_ERR_UNINIT";
+    case MCS_ERR_MAGNITUDE: return "MCS_ERR_MAGNITUDE";
+    case MCS_ERR_COUNT: return "MCS_ERR_COUNT";
+    case MCS_ERR_ALIAS: return "MCS_ERR_ALIAS";
     }
     return "MCS_ERR_UNKNOWN";
 }

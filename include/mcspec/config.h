@@ -16,6 +16,12 @@
 #define MCS_MAX_COV_N 64
 #endif
 
+/* Largest count (trials, or values for a welford) any accumulator holds:
+ * 2^53, the last count a double represents exactly -- every read-out divides
+ * by it and every merge weighs by it. An add or merge that would pass it
+ * returns MCS_ERR_COUNT and changes nothing. Not a capacity: not overridable. */
+#define MCS_MAX_COUNT 9007199254740992u
+
 #if MCS_MAX_N < 1
 #error "MCS_MAX_N must be at least 1"
 #endif

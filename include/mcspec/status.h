@@ -13,7 +13,8 @@ typedef enum {
     MCS_ERR_K_RANGE = -3,         /* sample count k is 0 or above a capacity */
     MCS_ERR_NOT_FINITE = -4,      /* a weight or value is NaN or infinite */
     MCS_ERR_NEGATIVE = -5,        /* a weight is negative */
-    MCS_ERR_ZERO_WEIGHT = -6,     /* an importance weight is 0 (1/p_n would be infinite) or all are */
+    MCS_ERR_ZERO_WEIGHT = -6,     /* an importance weight is 0, or too small next to the total to be
+                                     sampled as asked (below MCS_IMPORTANCE_MIN_G of it) */
     MCS_ERR_BIN_RANGE = -7,       /* a bin index is outside [0, n) */
     MCS_ERR_POINT_RANGE = -8,     /* a point is outside [0, 1) */
     MCS_ERR_KIND = -9,            /* unknown pattern kind, or kind not defined with importance */
@@ -22,7 +23,12 @@ typedef enum {
     MCS_ERR_EMPTY = -12,          /* too few trials for the quantity asked (e.g. variance of < 2) */
     MCS_ERR_DOMAIN = -13,         /* closed form asked outside the domain where the note defines it */
     MCS_ERR_FREQ_RANGE = -14,     /* a frequency index is outside [0, n) */
-    MCS_ERR_UNINIT = -15          /* object was not initialised by its init function */
+    MCS_ERR_UNINIT = -15,         /* object was not initialised by its init function, or holds
+                                     values no sequence of calls produces (overwritten) */
+    MCS_ERR_MAGNITUDE = -16,      /* a finite value above the largest magnitude the call accepts
+                                     (its square or 4th power could overflow a sum; see the header) */
+    MCS_ERR_COUNT = -17,          /* an add or merge would take a count past MCS_MAX_COUNT */
+    MCS_ERR_ALIAS = -18           /* arrays overlap where the call cannot work in place */
 } mcs_status;
 
 /* Name of a status code as a static string ("MCS_OK", ...); never NULL. */
