@@ -55,20 +55,23 @@ static void add_work(mcs_moment *acc)
         return;
     }
     size_t len = 0u;
-    for (size_t m = 0; m < n; ++m) {
+    for (size_t m = 0; m < n; ++m) { /* compacts d != 0 without a branch (len <= m) */
         const double d = acc->work[m] - acc->shift[m];
-        if (d != 0.0) {
-            acc->work[len] = d;
-            acc->work_bins[len++] = m;
-        }
+        acc->work[len] = d;
+        acc->work_bins[len] = m;
+        len += d != 0.0;
     }
     for (size_t a = 0; a < len; ++a) {
         const size_t m = acc->work_bins[a];
         const double dm = acc->work[a];
         mcs_kahan_add_(&acc->sum_d[m], &acc->lo_d[m], dm);
-        for (size_t b = 0; b < len; ++b) {
-            const size_t i = m * n + acc->work_bins[b];
+        for (size_t b = a; b < len; ++b) {
+            /* one Kahan step for the pair, copied to the mirror entry, which
+             * has seen the same sequence of terms (so it holds the same) */
+            const size_t c = acc->work_bins[b], i = m * n + c, mirror = c * n + m;
             mcs_kahan_add_(&acc->sum_dd[i], &acc->lo_dd[i], dm * acc->work[b]);
+            acc->sum_dd[mirror] = acc->sum_dd[i];
+            acc->lo_dd[mirror] = acc->lo_dd[i];
         }
     }
     acc->count += 1u;

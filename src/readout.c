@@ -148,7 +148,7 @@ static mcs_status clamp_variance(double tol, double *v)
 {
     if (*v >= 0.0)
         return MCS_OK;
-    if (*v < -tol)
+    if (!(*v >= -tol)) /* beyond rounding (or NaN) */
         return MCS_ERR_UNINIT;
     *v = 0.0;
     return MCS_OK;
@@ -208,15 +208,16 @@ mcs_status mcs_readout_bin_second(const mcs_readout_source *src, size_t bin_m,
     return mcs_set_(out, x);
 }
 
-/* A complex read-out at frequencies freq_k, freq_l, the value from at. */
-typedef void (*complex_at)(const mcs_readout *view, size_t freq_k, size_t freq_l, double *re,
-                           double *im);
+/* A complex read-out at frequencies freq_k, freq_l: the value into re, im,
+ * and a status (only a variance can fail, see clamp_variance). */
+typedef mcs_status (*complex_at)(const mcs_readout *view, size_t freq_k, size_t freq_l,
+                                 double *re, double *im);
 
 /* The value is computed into locals and written only when finite; re and im
- * must be two different doubles (one double cannot hold both parts). A
- * variance (clamp set and k = l) goes through clamp_variance. */
+ * must be two different doubles (one double cannot hold both parts). Six
+ * arguments at most (see readout.h). */
 static mcs_status read_complex(const mcs_readout_source *src, size_t freq_k, size_t freq_l,
-                               double *re, double *im, complex_at at, int clamp)
+                               double *re, double *im, complex_at at)
 {
     mcs_readout v;
     int outputs = re != NULL && im != NULL;
@@ -225,11 +226,9 @@ static mcs_status read_complex(const mcs_readout_source *src, size_t freq_k, siz
         st = MCS_ERR_ALIAS;
     double r = 0.0, i = 0.0;
     if (st == MCS_OK)
-        at(&v, freq_k, freq_l, &r, &i);
+        st = at(&v, freq_k, freq_l, &r, &i);
     if (st == MCS_OK && !(isfinite(r) && isfinite(i)))
         st = MCS_ERR_NOT_FINITE;
-    if (st == MCS_OK && clamp && freq_k == freq_l)
-        st = clamp_variance(variance_rounding(&v), &r);
     if (st == MCS_OK) {
         *re = r;
         *im = i;
@@ -238,37 +237,53 @@ static mcs_status read_complex(const mcs_readout_source *src, size_t freq_k, siz
 }
 
 /* <S_k> as a complex_at: one frequency, freq_l == freq_k. */
-static void mean_at_k(const mcs_readout *view, size_t freq_k, size_t freq_l, double *re,
-                      double *im)
+static mcs_status mean_value(const mcs_readout *view, size_t freq_k, size_t freq_l, double *re,
+                             double *im)
 {
     (void)freq_l;
     mean_at(view, freq_k, re, im);
+    return MCS_OK;
+}
+
+/* <S_k S_l*> as a complex_at. */
+static mcs_status cross_value(const mcs_readout *view, size_t freq_k, size_t freq_l,
+                              double *re, double *im)
+{
+    mcs_readout_cross_at(view, freq_k, freq_l, re, im);
+    return MCS_OK;
+}
+
+/* Cov(S_k, S_l) as a complex_at: a variance (k = l) is never negative. */
+static mcs_status covariance_value(const mcs_readout *view, size_t freq_k, size_t freq_l,
+                                   double *re, double *im)
+{
+    covariance_at(view, freq_k, freq_l, re, im);
+    return freq_k == freq_l ? clamp_variance(variance_rounding(view), re) : MCS_OK;
 }
 
 mcs_status mcs_readout_mean(const mcs_readout_source *src, size_t freq, double *re,
                             double *im)
 {
-    return read_complex(src, freq, freq, re, im, mean_at_k, 0);
+    return read_complex(src, freq, freq, re, im, mean_value);
 }
 
 mcs_status mcs_readout_power(const mcs_readout_source *src, size_t freq, double *out)
 {
     double re = 0.0, im = 0.0;
-    mcs_status st = read_complex(src, freq, freq, out != NULL ? &re : NULL, &im,
-                                 mcs_readout_cross_at, 0);
+    mcs_status st = read_complex(src, freq, freq, out != NULL ? &re : NULL, &im, cross_value);
     return st == MCS_OK ? mcs_set_(out, re) : st; /* im is 0 up to rounding: <s s^T> is symmetric */
 }
 
 mcs_status mcs_readout_cross(const mcs_readout_source *src, size_t freq_k,
                              size_t freq_l, double *re, double *im)
 {
-    return read_complex(src, freq_k, freq_l, re, im, mcs_readout_cross_at, 0);
+    return read_complex(src, freq_k, freq_l, re, im, cross_value);
 }
 
 mcs_status mcs_readout_covariance(const mcs_readout_source *src, size_t freq_k,
                                   size_t freq_l, double *re, double *im)
 {
-    return read_complex(src, freq_k, freq_l, re, im, covariance_at, 1);
+    return read_complex(src, freq_k, freq_l, re, im, covariance_value);
 }
 
 /* ---- matrices ------------------------------------------------------------- */

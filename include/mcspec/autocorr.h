@@ -17,8 +17,8 @@
  * Kahan's compensation, so the error grows neither with K nor with the number
  * of trials.
  *
- * Size: about 32 * MCS_MAX_N bytes (131 168 at the default 4096 on x86-64).
- * It holds no pointers. */
+ * Size: about 32 * MCS_MAX_N bytes (131 120 at the default 4096 on x86-64:
+ * sums, their compensations and one trial's scratch). It holds no pointers. */
 #ifndef MCSPEC_AUTOCORR_H
 #define MCSPEC_AUTOCORR_H
 

@@ -20,8 +20,9 @@
  * exact moments in theory.h (mcs_theory_*), and run the same code: measured
  * and exact are the same call on two objects.
  *
- * Size: 8 * MCS_MAX_COV_N * (2 MCS_MAX_COV_N + 8) bytes and a header (66 576
- * at the default 64 on x86-64). It holds no pointers. */
+ * Size: 8 * MCS_MAX_COV_N * (2 MCS_MAX_COV_N + 7) bytes and a header (69 136
+ * at the default 64 on x86-64; the compensation doubles the N x N part). It
+ * holds no pointers. */
 #ifndef MCSPEC_MOMENT_H
 #define MCSPEC_MOMENT_H
 
