@@ -156,7 +156,8 @@ static int parse_point(const reader *r, const cli_pointset_format *fmt, char **t
 {
     size_t want = fmt->dim + (fmt->weights ? 1u : 0u);
     if (ntok != want) {
-        const char *hint = fmt->weights ? "the coordinate(s), then the weight"
+        const char *hint = fmt->weights ? (fmt->dim == 1u ? "a point, then its weight"
+                                                          : "the coordinates, then the weight")
                                         : (ntok == fmt->dim + 1u ? "a weight column needs --weights"
                                                                  : "one point per line");
         return cli_fail(r->cmd, "%s: line %lu: expected %zu column%s, found %zu (%s)", r->name,
@@ -258,7 +259,9 @@ int cli_read_pointsets(const char *cmd, const char *path, const cli_pointset_for
     point_buf b = {NULL, NULL, 0, 0, fmt->dim};
     rc = read_sets(&r, fmt, &b, fn, ctx, stats, progress);
     stats->lines = r.line;
-    if (rc == 0 && stats->sets == 0u)
+    if (rc == 0 && stats->sets == 0u && r.line == 0u)
+        rc = cli_fail(cmd, "%s: the input is empty (no lines, so no point sets)", r.name);
+    else if (rc == 0 && stats->sets == 0u)
         rc = cli_fail(cmd, "%s: line %lu: end of input and no point read (one point per line; "
                       "see %s --help)", r.name, r.line, cmd);
     if (stats->sets == 0u)
@@ -315,6 +318,8 @@ static int read_value_lines(reader *r, const char *what, int positive, size_t ma
     }
     if (got < 0)
         return CLI_EXIT_USAGE;
+    if (*count == 0u && r->line == 0u)
+        return cli_fail(r->cmd, "%s: the input is empty (no lines, so no %s)", r->name, what);
     if (*count == 0u)
         return cli_fail(r->cmd, "%s: line %lu: end of input and no %s read", r->name, r->line,
                         what);

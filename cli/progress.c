@@ -2,10 +2,12 @@
 #include "progress.h"
 
 #include <stdio.h>
+#include <stdlib.h>
 #include <time.h>
 #include <unistd.h>
 
-/* First line after this many seconds, then at most one per interval. */
+/* First line after this many seconds (unless MCSPEC_PROGRESS_DELAY says
+ * otherwise), then at most one per interval. */
 #define PROGRESS_DELAY 1.0
 #define PROGRESS_INTERVAL 0.25
 
@@ -24,6 +26,11 @@ void cli_progress_init(cli_progress *pr, int want, const char *label, const char
     pr->unit = unit;
     pr->total = total;
     pr->start = pr->enabled ? now() : 0.0;
+    /* MCSPEC_PROGRESS_DELAY (seconds) moves the first line; the tests set 0. */
+    const char *env = getenv("MCSPEC_PROGRESS_DELAY");
+    char *end = NULL;
+    double d = env != NULL ? strtod(env, &end) : PROGRESS_DELAY;
+    pr->delay = env != NULL && end != env && *end == '\0' && d >= 0.0 ? d : PROGRESS_DELAY;
     pr->last = pr->start;
     pr->shown = 0;
 }
@@ -35,7 +42,7 @@ void cli_progress_update(cli_progress *pr, uint64_t done)
     if (!pr->enabled || (done & 255u) != 0u)
         return;
     double t = now();
-    if (t - pr->start < PROGRESS_DELAY || t - pr->last < PROGRESS_INTERVAL)
+    if (t - pr->start < pr->delay || (pr->shown && t - pr->last < PROGRESS_INTERVAL))
         return;
     pr->last = t;
     pr->shown = 1;

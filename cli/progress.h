@@ -1,6 +1,7 @@
 /* Progress on stderr for long runs: only when stderr is a terminal, never in
  * CSV mode (the caller decides), and only once a run has taken more than a
- * second, so quick runs print nothing at all. */
+ * second (MCSPEC_PROGRESS_DELAY in the environment sets another delay in
+ * seconds), so quick runs print nothing at all. */
 #ifndef MCSPEC_CLI_PROGRESS_H
 #define MCSPEC_CLI_PROGRESS_H
 
@@ -12,6 +13,7 @@ typedef struct {
     const char *unit;   /* "trials", "sets" */
     uint64_t total;     /* 0 when unknown (reading a file) */
     double start;       /* monotonic seconds at init */
+    double delay;       /* seconds before the first line */
     double last;        /* time of the last line printed */
     int shown;          /* a line is on the terminal and must be cleared */
 } cli_progress;
