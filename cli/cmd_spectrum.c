@@ -98,9 +98,13 @@ static int report(const spectrum_opts *o, const mcs_spectrum *acc,
     if (rc == 0 && o->plot != NULL) {
         char title[512], sub[256];
         snprintf(title, sizeof title, "%s: power spectrum over N = %zu bins", name, o->n);
-        snprintf(sub, sizeof sub, "%llu point sets, K = %zu..%zu points per set%s",
-                 (unsigned long long)stats->sets, stats->k_min, stats->k_max,
-                 o->weights ? ", weighted" : "");
+        char kset[64];
+        if (stats->k_min == stats->k_max)
+            snprintf(kset, sizeof kset, "K = %zu", stats->k_min);
+        else
+            snprintf(kset, sizeof kset, "K = %zu to %zu", stats->k_min, stats->k_max);
+        snprintf(sub, sizeof sub, "%llu point sets (trials), %s points per set%s; k = 0 not drawn",
+                 (unsigned long long)stats->sets, kset, o->weights ? ", weighted" : "");
         cli_plot_info info = {title, sub, NULL, NULL};
         rc = cli_plot_spectrum(CMD, o->plot, &info, rows, nrows);
     }

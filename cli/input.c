@@ -112,12 +112,15 @@ static int parse_number(const reader *r, const char *tok, const char *what, doub
     char *end = NULL;
     errno = 0;
     double v = strtod(tok, &end);
-    if (end == tok || *end != '\0')
-        return cli_fail(r->cmd, "%s: line %lu: %s '%s' is not a number", r->name, r->line, what,
-                        tok);
-    if (!isfinite(v))
-        return cli_fail(r->cmd, "%s: line %lu: %s '%s' is not a finite number", r->name, r->line,
-                        what, tok);
+    if (end == tok || *end != '\0') {
+        cli_fail(r->cmd, "%s: line %lu: %s '%s' is not a number", r->name, r->line, what, tok);
+        return CLI_EXIT_USAGE;
+    }
+    if (!isfinite(v)) {
+        cli_fail(r->cmd, "%s: line %lu: %s '%s' is not a finite number", r->name, r->line, what,
+                 tok);
+        return CLI_EXIT_USAGE;
+    }
     *out = v;
     return 0;
 }
@@ -229,7 +232,7 @@ static int read_sets(reader *r, const cli_pointset_format *fmt, point_buf *b, cl
             continue;
         }
         char *tok[MAX_COLUMNS];
-        double coord[MAX_COLUMNS], weight = 1.0;
+        double coord[MAX_COLUMNS] = {0.0, 0.0, 0.0}, weight = 1.0;
         size_t ntok = split(s, tok, MAX_COLUMNS);
         int rc = parse_point(r, fmt, tok, ntok, coord, &weight);
         if (rc == 0)

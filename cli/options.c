@@ -43,7 +43,9 @@ void *cli_alloc(const char *cmd, size_t count, size_t size)
 {
     if (count == 0u)
         count = 1u;
-    if (size != 0u && count > (size_t)-1 / size) {
+    if (size == 0u)
+        size = 1u;
+    if (count > (size_t)-1 / size) {
         cli_internal(cmd, "out of memory (%zu x %zu bytes)", count, size);
         return NULL;
     }

@@ -284,6 +284,12 @@ run "$MCSPEC" variance --k 4 --trials 2000 --seed 5 --csv --kind stratified "$tm
 if [ "$(tail -n +2 "$tmp/out")" = "$(grep '^stratified,' "$tmp/var1.csv")" ]; then ok
 else bad "variance --kind stratified differs from its row in the all-kinds run"; fi
 printf '1\n2\n1\n2\n1\n2\n1\n2\n1\n2\n1\n2\n1\n2\n1\n2\n' >"$tmp/g16.txt"
+for kind in random stratified jitter; do
+    run "$MCSPEC" pattern "$kind" --n 16 --k 4 --trials 4000 --seed 2 --importance "$tmp/g16.txt" --csv
+    worst=$(tail -n +2 "$tmp/out" | awk -F, '{ z = $9 < 0 ? -$9 : $9; if ($9 == "") z = 99; if (z > m) m = z } END { print m + 0 }')
+    if [ "$rc" -eq 0 ] && awk -v z="$worst" 'BEGIN { exit !(z < 5) }'; then ok
+    else bad "pattern $kind --importance: status $rc, |z_exact| up to $worst"; fi
+done
 run "$MCSPEC" variance --k 4 --trials 100 --csv --importance "$tmp/g16.txt" "$tmp/f16.txt"
 kinds=$(tail -n +2 "$tmp/out" | cut -d, -f1 | tr '\n' ' ')
 if [ "$rc" -eq 0 ] && [ "$kinds" = "random stratified uniform jitter " ]; then ok
@@ -332,6 +338,14 @@ if command -v gnuplot >/dev/null 2>&1; then
     [ "$sig" = "89504e470d0a1a0a0000000d49484452000003c000000258" ] && ok ||
         bad "--plot PNG: not a 960 x 600 PNG ($sig)"
     [ -z "$(ls -A "$tmp/gptmp")" ] && ok || bad "--plot left temporary files: $(ls -A "$tmp/gptmp")"
+    # A gnuplot that fails: exit 2 with its message, no figure, nothing on stdout.
+    mkdir -p "$tmp/fakebin"
+    printf '#!/bin/sh\necho "fake gnuplot: cannot draw" >&2\nexit 1\n' >"$tmp/fakebin/gnuplot"
+    chmod +x "$tmp/fakebin/gnuplot"
+    usage_error "--plot with a failing gnuplot" 'gnuplot failed: fake gnuplot: cannot draw' \
+        env PATH="$tmp/fakebin:$PATH" TMPDIR="$tmp/gptmp" "$abs" pattern random --n 16 --k 4 --plot "$tmp/f.svg"
+    [ ! -e "$tmp/f.svg" ] && [ -z "$(ls -A "$tmp/gptmp")" ] && ok ||
+        bad "--plot with a failing gnuplot left files behind"
 else
     skip "--plot rendering: gnuplot not installed"
 fi
