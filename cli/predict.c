@@ -47,14 +47,14 @@ static double closed_form(const mcs_pattern *pat, size_t freq)
         }
         return (double)NAN;
     }
-    double h = pat->importance->harmonic_mean;
+    const mcs_importance *imp = pat->importance;
     if (pat->kind == MCS_PATTERN_RANDOM)
-        return freq == 0u ? value_or_nan(mcs_eq46_importance_power0(n, k, h, &v), &v)
-                          : value_or_nan(mcs_eq45_importance_power(n, k, h, freq, &v), &v);
-    if (pat->kind == MCS_PATTERN_STRATIFIED)
-        return freq == 0u
-                   ? value_or_nan(mcs_eq51_importance_stratified_power0(n, k, h, &v), &v)
-                   : value_or_nan(mcs_eq50_importance_stratified_power(n, k, h, freq, &v), &v);
+        return freq == 0u ? value_or_nan(mcs_eq46_importance_power0(imp, k, &v), &v)
+                          : value_or_nan(mcs_eq45_importance_power(imp, k, freq, &v), &v);
+    /* Eq. 51 is eq. 46 (eq.h); the note states it for K dividing N, as eq. 50. */
+    if (pat->kind == MCS_PATTERN_STRATIFIED && divides(k, n))
+        return freq == 0u ? value_or_nan(mcs_eq46_importance_power0(imp, k, &v), &v)
+                          : value_or_nan(mcs_eq50_importance_stratified_power(imp, k, freq, &v), &v);
     return (double)NAN;
 }
 
@@ -170,7 +170,7 @@ int cli_predict_variance(const char *cmd, const mcs_pattern *pat, const double *
             return CLI_EXIT_FAIL;
         st = mcs_theory_init(th, pat);
         if (st == MCS_OK)
-            st = mcs_theory_variance(th, pat->n, f, out);
+            st = mcs_theory_variance(th, pat->n, pat->k, f, out);
         free(th);
         *source = "mcs_theory (exact moments)";
     } else if (pat->kind == MCS_PATTERN_RANDOM && pat->importance == NULL) {

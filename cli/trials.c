@@ -12,7 +12,7 @@ static mcs_status one_trial(const mcs_pattern *pat, mcs_rng *rng, size_t *bins, 
         st = mcs_spectrum_add_bins(sinks->spectrum, pat->k, bins, weights);
     if (st == MCS_OK && sinks->estimate != NULL) {
         double value = 0.0;
-        st = mcs_estimate_bins(pat->n, sinks->f, pat->k, bins, weights, &value);
+        st = mcs_estimate_bins(pat->n, pat->k, sinks->f, bins, weights, &value);
         if (st == MCS_OK)
             st = mcs_welford_add(sinks->estimate, value);
     }

@@ -26,25 +26,28 @@ CLI_BIN  := $(BUILD)/bin/mcspec
 # The command is a hosted POSIX program (getline, mkdtemp, posix_spawn, isatty).
 CLI_DEFS := -D_POSIX_C_SOURCE=200809L
 
-PREFIX ?= /usr/local
-BINDIR ?= $(PREFIX)/bin
+PREFIX  ?= /usr/local
+BINDIR  ?= $(PREFIX)/bin
+INSTALL ?= install
 
 all: cli
 cli: $(CLI_BIN)
 # test/cli_check.sh runs $(CLI_BIN) (given to it as MCSPEC by the test recipe).
 test: $(CLI_BIN)
 
-$(BUILD)/obj/cli/%.o: cli/%.c
+$(BUILD)/obj/cli/%.o: cli/%.c $(FLAGS_STAMP)
 	@mkdir -p $(@D)
-	$(CC) $(WARN) $(OPT) $(SANFLAGS) $(CPPFLAGS) $(CLI_DEFS) $(DEPFLAGS) -c $< -o $@
+	@echo "CC $@"
+	$(Q)$(MCS_CC) $(CLI_DEFS) $(DEPFLAGS) -c $< -o $@
 
-$(CLI_BIN): $(CLI_OBJ) $(LIB)
+$(CLI_BIN): $(CLI_OBJ) $(LIB) $(FLAGS_STAMP)
 	@mkdir -p $(@D)
-	$(CC) $(OPT) $(SANFLAGS) $(CLI_OBJ) $(LIB) $(LDLIBS) -o $@
+	@echo "LD $@"
+	$(Q)$(MCS_CC) $(CLI_OBJ) $(LIB) $(LDFLAGS) $(LDLIBS) -o $@
 
 install-cli: $(CLI_BIN)
-	install -d $(DESTDIR)$(BINDIR)
-	install -m 755 $(CLI_BIN) $(DESTDIR)$(BINDIR)/mcspec
+	$(INSTALL) -d $(DESTDIR)$(BINDIR)
+	$(INSTALL) -m 755 $(CLI_BIN) $(DESTDIR)$(BINDIR)/mcspec
 
 uninstall-cli:
 	rm -f $(DESTDIR)$(BINDIR)/mcspec
