@@ -13,5 +13,6 @@
 #include "mcspec/spectrum.h"
 #include "mcspec/moment.h"
 #include "mcspec/theory.h"
+#include "mcspec/io.h"
 
 #endif /* MCSPEC_H */

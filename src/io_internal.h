@@ -1,0 +1,67 @@
+/* Private to io.c and io_kinds.c: the record codec shared by every kind.
+ *
+ * A kind describes its payload as a layout: the payload length for its
+ * shape and a few contiguous ranges, each with the rules its values obey
+ * (io.c checks them the same way on save and on load). Its emit function
+ * feeds the object's values, in payload order, to a sink that either checks
+ * them or writes them; its load code decodes them in the same order. */
+#ifndef MCSPEC_IO_INTERNAL_H
+#define MCSPEC_IO_INTERNAL_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "mcspec/io.h"
+
+/* Rules a payload value obeys besides being finite (every value, with a zero
+ * count, is 0: an empty accumulator holds nothing). */
+#define IO_RULE_NONNEG 1u /* >= 0: a sum of (products of) weights, a mean power, an M2 */
+#define IO_RULE_SPREAD 2u /* a sum of deviations from the mean: 0 with fewer than 2 trials */
+
+#define IO_MAX_RANGES 4u
+
+typedef struct {
+    size_t first, len;
+    unsigned rules;
+} io_range;
+
+typedef struct {
+    uint32_t kind;
+    uint32_t shape_len;
+    uint64_t shape[MCS_IO_MAX_SHAPE];
+    size_t payload_len;                /* binary64 values */
+    size_t nranges;
+    io_range ranges[IO_MAX_RANGES];    /* contiguous, covering the payload */
+} io_layout;
+
+/* Fills *lay for a shape (shape_len words already checked); MCS_ERR_N_RANGE
+ * when the shape is beyond this build's capacities. */
+typedef mcs_status (*io_layout_fn)(const uint64_t *shape, io_layout *lay);
+
+/* Receives payload values in order: checks them (out == NULL) or writes them. */
+typedef struct {
+    const io_layout *lay;
+    uint64_t count;
+    uint8_t *out;
+    size_t index, range;
+    int not_finite, broken;
+} io_sink;
+
+void io_sink_put(io_sink *sink, double v);
+
+typedef void (*io_emit_fn)(const void *obj, io_sink *sink);
+
+/* The value at payload index i (little-endian binary64). */
+double io_get_f64(const uint8_t *payload, size_t i);
+
+/* Save driver: checks the values emit gives, then (buf != NULL) writes the
+ * record. Statuses as the mcs_io_save_* calls, after UNINIT. */
+mcs_status io_save(const io_layout *lay, uint64_t count, const void *obj, io_emit_fn emit,
+                   size_t cap, void *buf, size_t *len);
+
+/* Load checks: framing, kind, shape (through layout), values. On MCS_OK *lay,
+ * *payload and *count describe a record the caller may commit. */
+mcs_status io_load_check(uint32_t kind, uint32_t shape_len, io_layout_fn layout, size_t len,
+                         const void *buf, io_layout *lay, const uint8_t **payload,
+                         uint64_t *count);
+
+#endif /* MCSPEC_IO_INTERNAL_H */

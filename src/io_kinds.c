@@ -1,0 +1,274 @@
+/* The four accumulator kinds of the record format (docs/format.md): for each,
+ * its layout (payload length and value rules for a shape), the emit function
+ * that lists its values in payload order, and the load that decodes them in
+ * the same order into a freshly initialised object.
+ *
+ * Adding a kind (e.g. a 2D point-set accumulator): a new mcs_io_kind number,
+ * a layout, an emit, a commit and the two public wrappers below; the framing,
+ * checksum and value checks of io.c need no change, nor does the version. */
+#include "io_internal.h"
+
+#include <string.h>
+
+/* One shape word N, 1 <= N <= max_n. */
+static mcs_status layout_n(uint32_t kind, uint64_t n, uint64_t max_n, io_layout *lay)
+{
+    if (n == 0u || n > max_n)
+        return MCS_ERR_N_RANGE;
+    memset(lay, 0, sizeof *lay);
+    lay->kind = kind;
+    lay->shape_len = 1u;
+    lay->shape[0] = n;
+    return MCS_OK;
+}
+
+static void add_range(io_layout *lay, size_t len, unsigned rules)
+{
+    io_range *r = &lay->ranges[lay->nranges++];
+    r->first = lay->payload_len;
+    r->len = len;
+    r->rules = rules;
+    lay->payload_len += len;
+}
+
+/* ---- spectrum: five half spectra k = 0..N/2 ---- */
+
+static mcs_status layout_spectrum(const uint64_t *shape, io_layout *lay)
+{
+    mcs_status st = layout_n(MCS_IO_KIND_SPECTRUM, shape[0], MCS_MAX_N, lay);
+    if (st != MCS_OK)
+        return st;
+    const size_t h1 = (size_t)shape[0] / 2u + 1u;
+    add_range(lay, 2u * h1, 0u);                          /* mean_re, mean_im */
+    add_range(lay, h1, IO_RULE_NONNEG | IO_RULE_SPREAD);  /* m2_s */
+    add_range(lay, h1, IO_RULE_NONNEG);                   /* mean_pow */
+    add_range(lay, h1, IO_RULE_NONNEG | IO_RULE_SPREAD);  /* m2_pow */
+    return MCS_OK;
+}
+
+static void put_array(io_sink *sink, const double *a, size_t len)
+{
+    for (size_t i = 0; i < len; ++i)
+        io_sink_put(sink, a[i]);
+}
+
+static void get_array(double *a, const uint8_t *payload, size_t first, size_t len)
+{
+    for (size_t i = 0; i < len; ++i)
+        a[i] = io_get_f64(payload, first + i);
+}
+
+static void emit_spectrum(const void *obj, io_sink *sink)
+{
+    const mcs_spectrum *acc = (const mcs_spectrum *)obj;
+    const size_t h1 = acc->n / 2u + 1u;
+    put_array(sink, acc->mean_re, h1);
+    put_array(sink, acc->mean_im, h1);
+    put_array(sink, acc->m2_s, h1);
+    put_array(sink, acc->mean_pow, h1);
+    put_array(sink, acc->m2_pow, h1);
+}
+
+mcs_status mcs_io_save_spectrum(const mcs_spectrum *acc, size_t cap, void *buf, size_t *len)
+{
+    uint64_t count;
+    io_layout lay;
+    if (acc == NULL || len == NULL)
+        return MCS_ERR_NULL;
+    mcs_status st = mcs_spectrum_count(acc, &count); /* MCS_ERR_UNINIT */
+    if (st != MCS_OK)
+        return st;
+    const uint64_t n = acc->n;
+    (void)layout_spectrum(&n, &lay); /* cannot fail: acc->n is in range */
+    return io_save(&lay, count, acc, emit_spectrum, cap, buf, len);
+}
+
+mcs_status mcs_io_load_spectrum(mcs_spectrum *acc, size_t len, const void *buf)
+{
+    io_layout lay;
+    const uint8_t *pl;
+    uint64_t count;
+    if (acc == NULL || buf == NULL)
+        return MCS_ERR_NULL;
+    mcs_status st = io_load_check(MCS_IO_KIND_SPECTRUM, 1u, layout_spectrum, len, buf, &lay,
+                                  &pl, &count);
+    if (st != MCS_OK)
+        return st;
+    st = mcs_spectrum_init(acc, (size_t)lay.shape[0]); /* leaves acc as it was on error */
+    if (st != MCS_OK)
+        return st;
+    const size_t h1 = (size_t)lay.shape[0] / 2u + 1u;
+    get_array(acc->mean_re, pl, 0u, h1);
+    get_array(acc->mean_im, pl, h1, h1);
+    get_array(acc->m2_s, pl, 2u * h1, h1);
+    get_array(acc->mean_pow, pl, 3u * h1, h1);
+    get_array(acc->m2_pow, pl, 4u * h1, h1);
+    acc->count = count;
+    return MCS_OK;
+}
+
+/* ---- moment: sum_s[N], then the upper triangle of sum_ss row by row ---- */
+
+static mcs_status layout_moment(const uint64_t *shape, io_layout *lay)
+{
+    mcs_status st = layout_n(MCS_IO_KIND_MOMENT, shape[0], MCS_MAX_COV_N, lay);
+    if (st != MCS_OK)
+        return st;
+    const size_t n = (size_t)shape[0];
+    /* Weights are >= 0, so every sum of weights or of their products is too. */
+    add_range(lay, n + n * (n + 1u) / 2u, IO_RULE_NONNEG);
+    return MCS_OK;
+}
+
+static void emit_moment(const void *obj, io_sink *sink)
+{
+    const mcs_moment *acc = (const mcs_moment *)obj;
+    const size_t n = acc->n;
+    put_array(sink, acc->sum_s, n);
+    for (size_t m = 0; m < n; ++m)
+        put_array(sink, acc->sum_ss + m * n + m, n - m);
+}
+
+mcs_status mcs_io_save_moment(const mcs_moment *acc, size_t cap, void *buf, size_t *len)
+{
+    uint64_t count;
+    io_layout lay;
+    if (acc == NULL || len == NULL)
+        return MCS_ERR_NULL;
+    mcs_status st = mcs_moment_count(acc, &count);
+    if (st != MCS_OK)
+        return st;
+    const uint64_t n = acc->n;
+    (void)layout_moment(&n, &lay);
+    return io_save(&lay, count, acc, emit_moment, cap, buf, len);
+}
+
+mcs_status mcs_io_load_moment(mcs_moment *acc, size_t len, const void *buf)
+{
+    io_layout lay;
+    const uint8_t *pl;
+    uint64_t count;
+    if (acc == NULL || buf == NULL)
+        return MCS_ERR_NULL;
+    mcs_status st =
+        io_load_check(MCS_IO_KIND_MOMENT, 1u, layout_moment, len, buf, &lay, &pl, &count);
+    if (st != MCS_OK)
+        return st;
+    const size_t n = (size_t)lay.shape[0];
+    st = mcs_moment_init(acc, n);
+    if (st != MCS_OK)
+        return st;
+    get_array(acc->sum_s, pl, 0u, n);
+    size_t at = n;
+    for (size_t m = 0; m < n; ++m) {
+        get_array(acc->sum_ss + m * n + m, pl, at, n - m);
+        at += n - m;
+    }
+    acc->count = count;
+    return MCS_OK;
+}
+
+/* ---- autocorr: sum_s[N], then sum_a for lags 0..N/2 ---- */
+
+static mcs_status layout_autocorr(const uint64_t *shape, io_layout *lay)
+{
+    mcs_status st = layout_n(MCS_IO_KIND_AUTOCORR, shape[0], MCS_MAX_N, lay);
+    if (st != MCS_OK)
+        return st;
+    const size_t n = (size_t)shape[0];
+    add_range(lay, n + n / 2u + 1u, IO_RULE_NONNEG);
+    return MCS_OK;
+}
+
+static void emit_autocorr(const void *obj, io_sink *sink)
+{
+    const mcs_autocorr *acc = (const mcs_autocorr *)obj;
+    put_array(sink, acc->sum_s, acc->n);
+    put_array(sink, acc->sum_a, acc->n / 2u + 1u);
+}
+
+mcs_status mcs_io_save_autocorr(const mcs_autocorr *acc, size_t cap, void *buf, size_t *len)
+{
+    uint64_t count;
+    io_layout lay;
+    if (acc == NULL || len == NULL)
+        return MCS_ERR_NULL;
+    mcs_status st = mcs_autocorr_count(acc, &count);
+    if (st != MCS_OK)
+        return st;
+    const uint64_t n = acc->n;
+    (void)layout_autocorr(&n, &lay);
+    return io_save(&lay, count, acc, emit_autocorr, cap, buf, len);
+}
+
+mcs_status mcs_io_load_autocorr(mcs_autocorr *acc, size_t len, const void *buf)
+{
+    io_layout lay;
+    const uint8_t *pl;
+    uint64_t count;
+    if (acc == NULL || buf == NULL)
+        return MCS_ERR_NULL;
+    mcs_status st =
+        io_load_check(MCS_IO_KIND_AUTOCORR, 1u, layout_autocorr, len, buf, &lay, &pl, &count);
+    if (st != MCS_OK)
+        return st;
+    const size_t n = (size_t)lay.shape[0];
+    st = mcs_autocorr_init(acc, n);
+    if (st != MCS_OK)
+        return st;
+    get_array(acc->sum_s, pl, 0u, n);
+    get_array(acc->sum_a, pl, n, n / 2u + 1u);
+    acc->count = count;
+    return MCS_OK;
+}
+
+/* ---- welford: mean, m2, m3, m4; no shape ---- */
+
+static mcs_status layout_welford(const uint64_t *shape, io_layout *lay)
+{
+    (void)shape;
+    memset(lay, 0, sizeof *lay);
+    lay->kind = MCS_IO_KIND_WELFORD;
+    add_range(lay, 1u, 0u);                               /* mean */
+    add_range(lay, 1u, IO_RULE_NONNEG | IO_RULE_SPREAD);  /* m2 */
+    add_range(lay, 1u, IO_RULE_SPREAD);                   /* m3 */
+    add_range(lay, 1u, IO_RULE_NONNEG | IO_RULE_SPREAD);  /* m4 */
+    return MCS_OK;
+}
+
+static void emit_welford(const void *obj, io_sink *sink)
+{
+    const mcs_welford *acc = (const mcs_welford *)obj;
+    io_sink_put(sink, acc->mean);
+    io_sink_put(sink, acc->m2);
+    io_sink_put(sink, acc->m3);
+    io_sink_put(sink, acc->m4);
+}
+
+mcs_status mcs_io_save_welford(const mcs_welford *acc, size_t cap, void *buf, size_t *len)
+{
+    io_layout lay;
+    if (acc == NULL || len == NULL)
+        return MCS_ERR_NULL;
+    (void)layout_welford(NULL, &lay);
+    return io_save(&lay, acc->count, acc, emit_welford, cap, buf, len);
+}
+
+mcs_status mcs_io_load_welford(mcs_welford *acc, size_t len, const void *buf)
+{
+    io_layout lay;
+    const uint8_t *pl;
+    uint64_t count;
+    if (acc == NULL || buf == NULL)
+        return MCS_ERR_NULL;
+    mcs_status st =
+        io_load_check(MCS_IO_KIND_WELFORD, 0u, layout_welford, len, buf, &lay, &pl, &count);
+    if (st != MCS_OK)
+        return st;
+    acc->count = count;
+    acc->mean = io_get_f64(pl, 0u);
+    acc->m2 = io_get_f64(pl, 1u);
+    acc->m3 = io_get_f64(pl, 2u);
+    acc->m4 = io_get_f64(pl, 3u);
+    return MCS_OK;
+}
