@@ -159,7 +159,8 @@ void io_sink_put(io_sink *sink, double v)
     const unsigned rules = lay->ranges[sink->range].rules;
     if (!isfinite(v))
         sink->not_finite = 1;
-    else if ((sink->count == 0u && v != 0.0) || ((rules & IO_RULE_NONNEG) && v < 0.0) ||
+    else if (fabs(v) > MCS_IO_MAX_MAGNITUDE || (sink->count == 0u && v != 0.0) ||
+             ((rules & IO_RULE_NONNEG) && v < 0.0) ||
              ((rules & IO_RULE_SPREAD) && sink->count < 2u && v != 0.0))
         sink->broken = 1;
     sink->index += 1u;

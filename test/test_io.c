@@ -528,6 +528,10 @@ static void test_broken_invariants_are_refused(void)
     expect_value(&kinds[0], len, 5u * h1 - 1u, -1e-300, MCS_ERR_INVARIANT);   /* m2_pow */
     expect_value(&kinds[0], len, 2u * h1 + 3u, -0.0, MCS_OK);                  /* -0 is 0 */
     expect_value(&kinds[0], len, h1 + 2u, -7.0, MCS_OK); /* means may be negative */
+    expect_value(&kinds[0], len, 1u, -MCS_IO_MAX_MAGNITUDE, MCS_OK);
+    expect_value(&kinds[0], len, 1u, -2.0 * MCS_IO_MAX_MAGNITUDE, MCS_ERR_INVARIANT);
+    expect_value(&kinds[0], len, 3u * h1 + 1u, 1.0000001 * MCS_IO_MAX_MAGNITUDE,
+                 MCS_ERR_INVARIANT);
     len = save(&kinds[1], &mom_a, rec);
     expect_value(&kinds[1], len, 2u, -1.0, MCS_ERR_INVARIANT);      /* sum_s */
     expect_value(&kinds[1], len, 14u + 3u, -2.0, MCS_ERR_INVARIANT); /* sum_ss[0][3] */

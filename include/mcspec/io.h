@@ -46,6 +46,13 @@ extern "C" {
  * (the 1/count and na nb / n of every merge) still represents exactly. */
 #define MCS_IO_MAX_COUNT (UINT64_C(1) << 53)
 
+/* Largest magnitude of a payload value: 2^500, about 3.3e150. No run comes
+ * near it (a sum of s_n^2 over 2^53 trials reaches it only for s_n ~ 1e67),
+ * and below it every read-out of a loaded object -- sums of up to 2^40 values
+ * and products of two -- is finite, so a crafted record cannot make one
+ * overflow. */
+#define MCS_IO_MAX_MAGNITUDE 3.273390607896142e+150
+
 /* Object kinds. Numbers are part of the format: never reuse or renumber; a
  * new accumulator takes the next free number and needs no version change. */
 typedef enum {
@@ -101,7 +108,8 @@ mcs_status mcs_io_save_welford(const mcs_welford *acc, size_t cap, void *buf, si
  * needs), MCS_ERR_N_RANGE (N = 0 or above this build's capacity),
  * MCS_ERR_NOT_FINITE (a NaN or infinite value), MCS_ERR_INVARIANT (a count
  * above MCS_IO_MAX_COUNT, data with a zero count, spread with one trial, a
- * negative M2, mean power, sum of weights or of weight products).
+ * negative M2, mean power, sum of weights or of weight products, a value
+ * above MCS_IO_MAX_MAGNITUDE).
  * *acc byte-identical on error. */
 mcs_status mcs_io_load_spectrum(mcs_spectrum *acc, size_t len, const void *buf);
 mcs_status mcs_io_load_moment(mcs_moment *acc, size_t len, const void *buf);
