@@ -189,13 +189,13 @@ static void write_header(const io_layout *lay, uint64_t count, uint8_t *p)
         put_le(p + MCS_IO_HEADER_BYTES + 8u * i, lay->shape[i], 8u);
 }
 
-mcs_status io_save(const io_layout *lay, uint64_t count, const void *obj, io_emit_fn emit,
-                   size_t cap, void *buf, size_t *len)
+mcs_status io_save(const io_layout *lay, const io_source *src, size_t cap, void *buf,
+                   size_t *len)
 {
     const size_t head = head_bytes(lay->shape_len);
     const size_t size = head + 8u * lay->payload_len + MCS_IO_CRC_BYTES;
-    io_sink sink = {lay, count, NULL, 0u, 0u, 0, 0};
-    emit(obj, &sink);
+    io_sink sink = {lay, src->count, NULL, 0u, 0u, 0, 0};
+    src->emit(src->obj, &sink);
     mcs_status st = sink_status(&sink);
     if (st != MCS_OK)
         return st;
@@ -206,39 +206,39 @@ mcs_status io_save(const io_layout *lay, uint64_t count, const void *obj, io_emi
     if (cap < size)
         return MCS_ERR_SPACE;
     uint8_t *p = (uint8_t *)buf;
-    write_header(lay, count, p);
-    io_sink writer = {lay, count, p + head, 0u, 0u, 0, 0};
-    emit(obj, &writer);
+    write_header(lay, src->count, p);
+    io_sink writer = {lay, src->count, p + head, 0u, 0u, 0, 0};
+    src->emit(src->obj, &writer);
     put_le(p + size - MCS_IO_CRC_BYTES, crc32_of(p, size - MCS_IO_CRC_BYTES), MCS_IO_CRC_BYTES);
     *len = size;
     return MCS_OK;
 }
 
-mcs_status io_load_check(uint32_t kind, uint32_t shape_len, io_layout_fn layout, size_t len,
-                         const void *buf, io_layout *lay, const uint8_t **payload,
-                         uint64_t *count)
+mcs_status io_load_check(const io_kind *kind, size_t len, const void *buf, io_record *rec)
 {
     mcs_io_info info;
+    io_layout lay;
     mcs_status st = frame(len, (const uint8_t *)buf, &info);
     if (st != MCS_OK)
         return st;
-    if (info.kind != kind)
+    if (info.kind != kind->kind)
         return MCS_ERR_KIND;
-    if (info.shape_len != shape_len)
+    if (info.shape_len != kind->shape_len)
         return MCS_ERR_FORMAT;
-    st = layout(info.shape, lay);
+    st = kind->layout(info.shape, &lay);
     if (st != MCS_OK)
         return st;
-    if (info.payload_len != (uint64_t)lay->payload_len)
+    if (info.payload_len != (uint64_t)lay.payload_len)
         return MCS_ERR_FORMAT;
-    const uint8_t *pl = (const uint8_t *)buf + head_bytes(shape_len);
-    io_sink sink = {lay, info.count, NULL, 0u, 0u, 0, 0};
-    for (size_t i = 0; i < lay->payload_len; ++i)
+    const uint8_t *pl = (const uint8_t *)buf + head_bytes(kind->shape_len);
+    io_sink sink = {&lay, info.count, NULL, 0u, 0u, 0, 0};
+    for (size_t i = 0; i < lay.payload_len; ++i)
         io_sink_put(&sink, io_get_f64(pl, i));
     st = sink_status(&sink);
     if (st != MCS_OK)
         return st;
-    *payload = pl;
-    *count = info.count;
+    rec->lay = lay;
+    rec->payload = pl;
+    rec->count = info.count;
     return MCS_OK;
 }

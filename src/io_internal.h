@@ -53,15 +53,34 @@ typedef void (*io_emit_fn)(const void *obj, io_sink *sink);
 /* The value at payload index i (little-endian binary64). */
 double io_get_f64(const uint8_t *payload, size_t i);
 
+/* What a kind's save passes: the object, its emit function and its count. */
+typedef struct {
+    const void *obj;
+    io_emit_fn emit;
+    uint64_t count;
+} io_source;
+
 /* Save driver: checks the values emit gives, then (buf != NULL) writes the
  * record. Statuses as the mcs_io_save_* calls, after UNINIT. */
-mcs_status io_save(const io_layout *lay, uint64_t count, const void *obj, io_emit_fn emit,
-                   size_t cap, void *buf, size_t *len);
+mcs_status io_save(const io_layout *lay, const io_source *src, size_t cap, void *buf,
+                   size_t *len);
 
-/* Load checks: framing, kind, shape (through layout), values. On MCS_OK *lay,
- * *payload and *count describe a record the caller may commit. */
-mcs_status io_load_check(uint32_t kind, uint32_t shape_len, io_layout_fn layout, size_t len,
-                         const void *buf, io_layout *lay, const uint8_t **payload,
-                         uint64_t *count);
+/* A kind as its load sees it: number, shape words, layout function. */
+typedef struct {
+    uint32_t kind;
+    uint32_t shape_len;
+    io_layout_fn layout;
+} io_kind;
+
+/* A record that passed every check, ready to commit. */
+typedef struct {
+    io_layout lay;
+    const uint8_t *payload;
+    uint64_t count;
+} io_record;
+
+/* Load checks: framing, kind, shape (through the kind's layout), values.
+ * *rec written only on MCS_OK. */
+mcs_status io_load_check(const io_kind *kind, size_t len, const void *buf, io_record *rec);
 
 #endif /* MCSPEC_IO_INTERNAL_H */

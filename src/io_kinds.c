@@ -80,30 +80,31 @@ mcs_status mcs_io_save_spectrum(const mcs_spectrum *acc, size_t cap, void *buf, 
         return st;
     const uint64_t n = acc->n;
     (void)layout_spectrum(&n, &lay); /* cannot fail: acc->n is in range */
-    return io_save(&lay, count, acc, emit_spectrum, cap, buf, len);
+    const io_source src = {acc, emit_spectrum, count};
+    return io_save(&lay, &src, cap, buf, len);
 }
+
+static const io_kind kind_spectrum = {MCS_IO_KIND_SPECTRUM, 1u, layout_spectrum};
 
 mcs_status mcs_io_load_spectrum(mcs_spectrum *acc, size_t len, const void *buf)
 {
-    io_layout lay;
-    const uint8_t *pl;
-    uint64_t count;
+    io_record rec;
     if (acc == NULL || buf == NULL)
         return MCS_ERR_NULL;
-    mcs_status st = io_load_check(MCS_IO_KIND_SPECTRUM, 1u, layout_spectrum, len, buf, &lay,
-                                  &pl, &count);
+    mcs_status st = io_load_check(&kind_spectrum, len, buf, &rec);
     if (st != MCS_OK)
         return st;
-    st = mcs_spectrum_init(acc, (size_t)lay.shape[0]); /* leaves acc as it was on error */
+    st = mcs_spectrum_init(acc, (size_t)rec.lay.shape[0]); /* leaves acc as it was on error */
     if (st != MCS_OK)
         return st;
-    const size_t h1 = (size_t)lay.shape[0] / 2u + 1u;
+    const uint8_t *pl = rec.payload;
+    const size_t h1 = (size_t)rec.lay.shape[0] / 2u + 1u;
     get_array(acc->mean_re, pl, 0u, h1);
     get_array(acc->mean_im, pl, h1, h1);
     get_array(acc->m2_s, pl, 2u * h1, h1);
     get_array(acc->mean_pow, pl, 3u * h1, h1);
     get_array(acc->m2_pow, pl, 4u * h1, h1);
-    acc->count = count;
+    acc->count = rec.count;
     return MCS_OK;
 }
 
@@ -140,21 +141,22 @@ mcs_status mcs_io_save_moment(const mcs_moment *acc, size_t cap, void *buf, size
         return st;
     const uint64_t n = acc->n;
     (void)layout_moment(&n, &lay);
-    return io_save(&lay, count, acc, emit_moment, cap, buf, len);
+    const io_source src = {acc, emit_moment, count};
+    return io_save(&lay, &src, cap, buf, len);
 }
+
+static const io_kind kind_moment = {MCS_IO_KIND_MOMENT, 1u, layout_moment};
 
 mcs_status mcs_io_load_moment(mcs_moment *acc, size_t len, const void *buf)
 {
-    io_layout lay;
-    const uint8_t *pl;
-    uint64_t count;
+    io_record rec;
     if (acc == NULL || buf == NULL)
         return MCS_ERR_NULL;
-    mcs_status st =
-        io_load_check(MCS_IO_KIND_MOMENT, 1u, layout_moment, len, buf, &lay, &pl, &count);
+    mcs_status st = io_load_check(&kind_moment, len, buf, &rec);
     if (st != MCS_OK)
         return st;
-    const size_t n = (size_t)lay.shape[0];
+    const uint8_t *pl = rec.payload;
+    const size_t n = (size_t)rec.lay.shape[0];
     st = mcs_moment_init(acc, n);
     if (st != MCS_OK)
         return st;
@@ -164,7 +166,7 @@ mcs_status mcs_io_load_moment(mcs_moment *acc, size_t len, const void *buf)
         get_array(acc->sum_ss + m * n + m, pl, at, n - m);
         at += n - m;
     }
-    acc->count = count;
+    acc->count = rec.count;
     return MCS_OK;
 }
 
@@ -198,27 +200,28 @@ mcs_status mcs_io_save_autocorr(const mcs_autocorr *acc, size_t cap, void *buf, 
         return st;
     const uint64_t n = acc->n;
     (void)layout_autocorr(&n, &lay);
-    return io_save(&lay, count, acc, emit_autocorr, cap, buf, len);
+    const io_source src = {acc, emit_autocorr, count};
+    return io_save(&lay, &src, cap, buf, len);
 }
+
+static const io_kind kind_autocorr = {MCS_IO_KIND_AUTOCORR, 1u, layout_autocorr};
 
 mcs_status mcs_io_load_autocorr(mcs_autocorr *acc, size_t len, const void *buf)
 {
-    io_layout lay;
-    const uint8_t *pl;
-    uint64_t count;
+    io_record rec;
     if (acc == NULL || buf == NULL)
         return MCS_ERR_NULL;
-    mcs_status st =
-        io_load_check(MCS_IO_KIND_AUTOCORR, 1u, layout_autocorr, len, buf, &lay, &pl, &count);
+    mcs_status st = io_load_check(&kind_autocorr, len, buf, &rec);
     if (st != MCS_OK)
         return st;
-    const size_t n = (size_t)lay.shape[0];
+    const uint8_t *pl = rec.payload;
+    const size_t n = (size_t)rec.lay.shape[0];
     st = mcs_autocorr_init(acc, n);
     if (st != MCS_OK)
         return st;
     get_array(acc->sum_s, pl, 0u, n);
     get_array(acc->sum_a, pl, n, n / 2u + 1u);
-    acc->count = count;
+    acc->count = rec.count;
     return MCS_OK;
 }
 
@@ -251,21 +254,22 @@ mcs_status mcs_io_save_welford(const mcs_welford *acc, size_t cap, void *buf, si
     if (acc == NULL || len == NULL)
         return MCS_ERR_NULL;
     (void)layout_welford(NULL, &lay);
-    return io_save(&lay, acc->count, acc, emit_welford, cap, buf, len);
+    const io_source src = {acc, emit_welford, acc->count};
+    return io_save(&lay, &src, cap, buf, len);
 }
+
+static const io_kind kind_welford = {MCS_IO_KIND_WELFORD, 0u, layout_welford};
 
 mcs_status mcs_io_load_welford(mcs_welford *acc, size_t len, const void *buf)
 {
-    io_layout lay;
-    const uint8_t *pl;
-    uint64_t count;
+    io_record rec;
     if (acc == NULL || buf == NULL)
         return MCS_ERR_NULL;
-    mcs_status st =
-        io_load_check(MCS_IO_KIND_WELFORD, 0u, layout_welford, len, buf, &lay, &pl, &count);
+    mcs_status st = io_load_check(&kind_welford, len, buf, &rec);
     if (st != MCS_OK)
         return st;
-    acc->count = count;
+    const uint8_t *pl = rec.payload;
+    acc->count = rec.count;
     acc->mean = io_get_f64(pl, 0u);
     acc->m2 = io_get_f64(pl, 1u);
     acc->m3 = io_get_f64(pl, 2u);
