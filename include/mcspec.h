@@ -4,6 +4,7 @@
 #define MCSPEC_H
 
 #include "mcspec/config.h"
+#include "mcspec/version.h"
 #include "mcspec/status.h"
 #include "mcspec/rng.h"
 #include "mcspec/importance.h"

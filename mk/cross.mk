@@ -52,7 +52,7 @@ $(1)/obj/src/vendor/%.o: src/vendor/%.c
 $(1)/obj/src/%.o: src/%.c
 	@mkdir -p $$(@D)
 	@echo "CC $$@"
-	$$(EMB_Q)$(2)gcc $$(WARN) $(3) $$(CPPFLAGS) -isystem src/vendor/kissfft $$(KISS_DEFS) \
+	$$(EMB_Q)$(2)gcc $$(WARN) $(3) $$(MCS_CPPFLAGS) $$(CPPFLAGS) -isystem src/vendor/kissfft $$(KISS_DEFS) \
 	    -MMD -MP -c $$< -o $$@
 
 $(1)/libmcspec.a: $$(LIB_SRC:%.c=$(1)/obj/%.o) $$(KISS_SRC:%.c=$(1)/obj/%.o)
@@ -72,7 +72,7 @@ build/cross-$(1)/fw/obj/examples/firmware/%.o: examples/firmware/%.c
 	@mkdir -p $$(@D)
 	@echo "CC $$@"
 	$$(EMB_Q)$(ARM_PREFIX)gcc $$(WARN) $(2) $(CROSS_COMMON) $(FW_OPT) $(FW_DEFS) -fstack-usage \
-	    -fcallgraph-info=su $$(CPPFLAGS) -MMD -MP -c $$< -o $$@
+	    -fcallgraph-info=su $$(MCS_CPPFLAGS) $$(CPPFLAGS) -MMD -MP -c $$< -o $$@
 
 -include $$(wildcard build/cross-$(1)/fw/obj/examples/firmware/*.d)
 

@@ -1,0 +1,111 @@
+# Install, uninstall and the consumer tests (included by the Makefile; see
+# docs/integrating.md).
+#
+#   make install PREFIX=/usr/local DESTDIR=   headers, libmcspec.a,
+#                  libmcspec.so.X.Y.Z (SONAME libmcspec.so.X, only the API
+#                  exported), mcspec.pc, the CMake package, the licences
+#   make uninstall PREFIX=... DESTDIR=...     removes what install wrote
+#   make check-install   installs into a temporary prefix and builds and runs
+#                  consumers against the installed files only
+#                  (test/consumers/run.sh), plus the CMake build
+#
+# The installed mcspec/config.h, mcspec.pc and mcspecConfig.cmake record the
+# capacities the library was actually built with: they are read back from the
+# capacity tag the archive defines (src/version.c), not from the flags.
+
+.PHONY: install uninstall install-files check-install
+
+PREFIX       ?= /usr/local
+LIBDIR       ?= $(PREFIX)/lib
+INCLUDEDIR   ?= $(PREFIX)/include
+DOCDIR       ?= $(PREFIX)/share/doc/mcspec
+PKGCONFIGDIR ?= $(LIBDIR)/pkgconfig
+CMAKEDIR     ?= $(LIBDIR)/cmake/mcspec
+INSTALL      ?= install
+CMAKE        ?= cmake
+
+GEN_DIR      := $(BUILD)/install
+GEN_CAPS     := $(GEN_DIR)/capacities
+GEN_CONFIG_H := $(GEN_DIR)/mcspec/config.h
+GEN_PC       := $(GEN_DIR)/mcspec.pc
+GEN_CMAKE    := $(GEN_DIR)/mcspecConfig.cmake $(GEN_DIR)/mcspecConfigVersion.cmake
+INSTALL_HEADERS := $(filter-out include/mcspec/config.h,$(wildcard include/mcspec/*.h))
+INSTALL_DOCS := LICENSE CHANGELOG.md docs/integrating.md
+KISS_LICENCES := src/vendor/kissfft/COPYING src/vendor/kissfft/LICENSES/BSD-3-Clause \
+                 src/vendor/kissfft/LICENSES/Unlicense
+
+# "N COV_N" from the archive's tag mcs_config_requires_..._MCS_MAX_N_<N>_MCS_MAX_COV_N_<C>.
+$(GEN_CAPS): $(LIB)
+	@mkdir -p $(@D)
+	@$(EMB_NM) -P -g --defined-only $(LIB) | \
+	    sed -n 's/^mcs_config_requires_libmcspec_built_with_MCS_MAX_N_\([0-9][0-9]*\)_MCS_MAX_COV_N_\([0-9][0-9]*\) .*/\1 \2/p' \
+	    >$@.tmp
+	@test "$$(wc -l <$@.tmp)" -eq 1 || { rm -f $@.tmp; \
+	    echo "install: no capacity tag in $(LIB) (MCS_MAX_N and MCS_MAX_COV_N must be plain decimal numbers)"; \
+	    exit 1; }
+	@mv -f $@.tmp $@
+
+# Substitutes @NAME@ in a template: $(call mcs_subst,template,extra sed args).
+mcs_subst = N=$$(cut -d' ' -f1 $(GEN_CAPS)); C=$$(cut -d' ' -f2 $(GEN_CAPS)); \
+    sed -e "s|@MCS_MAX_N@|$$N|g" -e "s|@MCS_MAX_COV_N@|$$C|g" -e 's|@VERSION@|$(VERSION)|g' \
+        -e 's|@VERSION_MAJOR@|$(VERSION_MAJOR)|g' -e 's|@VERSION_MINOR@|$(VERSION_MINOR)|g' $(2) $(1)
+
+# config.h with the capacities block spliced in after its "mcspec-install:" line.
+$(GEN_CONFIG_H): include/mcspec/config.h cmake/capacities.h.in $(GEN_CAPS)
+	@mkdir -p $(@D)
+	@$(call mcs_subst,cmake/capacities.h.in) >$(GEN_DIR)/capacities.h
+	@grep -q 'mcspec-install:' include/mcspec/config.h || { echo "install: marker missing in config.h"; exit 1; }
+	@sed '/mcspec-install:/r $(GEN_DIR)/capacities.h' include/mcspec/config.h >$@
+
+# The paths are the final ones (without DESTDIR); libdir and includedir
+# relative to ${prefix} when they are under it.
+$(GEN_PC): cmake/mcspec.pc.in $(GEN_CAPS) FORCE
+	@mkdir -p $(@D)
+	@$(call mcs_subst,cmake/mcspec.pc.in,-e 's|@PREFIX@|$(PREFIX)|' \
+	    -e 's|@LIBDIR@|$(patsubst $(PREFIX)/%,$${prefix}/%,$(LIBDIR))|' \
+	    -e 's|@INCLUDEDIR@|$(patsubst $(PREFIX)/%,$${prefix}/%,$(INCLUDEDIR))|') >$@
+
+# The size of a pointer of the target, for the version file.
+SIZEOF_VOID_P = $$($(CC) $(CFLAGS) -dM -E -x c /dev/null | sed -n 's/^\#define __SIZEOF_POINTER__ //p')
+
+$(GEN_DIR)/mcspecConfig.cmake: cmake/mcspecConfig.cmake.in $(GEN_CAPS) FORCE
+	@$(call mcs_subst,$<,-e 's|@CONFIG_PREFIX@|$(PREFIX)|' -e 's|@CONFIG_LIBDIR@|$(LIBDIR)|' \
+	    -e 's|@CONFIG_INCLUDEDIR@|$(INCLUDEDIR)|') >$@
+
+$(GEN_DIR)/mcspecConfigVersion.cmake: cmake/mcspecConfigVersion.cmake.in $(GEN_CAPS) FORCE
+	@$(call mcs_subst,$<,-e "s|@SIZEOF_VOID_P@|$(SIZEOF_VOID_P)|") >$@
+
+install: $(LIB) $(BUILD)/libmcspec.so $(GEN_CONFIG_H) $(GEN_PC) $(GEN_CMAKE)
+	$(INSTALL) -d $(DESTDIR)$(INCLUDEDIR)/mcspec $(DESTDIR)$(LIBDIR) $(DESTDIR)$(PKGCONFIGDIR) \
+	    $(DESTDIR)$(CMAKEDIR) $(DESTDIR)$(DOCDIR)/kissfft
+	$(INSTALL) -m 644 include/mcspec.h $(DESTDIR)$(INCLUDEDIR)/
+	$(INSTALL) -m 644 $(INSTALL_HEADERS) $(GEN_CONFIG_H) $(DESTDIR)$(INCLUDEDIR)/mcspec/
+	$(INSTALL) -m 644 $(LIB) $(DESTDIR)$(LIBDIR)/
+	$(INSTALL) -m 755 $(SHLIB) $(DESTDIR)$(LIBDIR)/
+	ln -sf $(notdir $(SHLIB)) $(DESTDIR)$(LIBDIR)/$(SONAME)
+	ln -sf $(SONAME) $(DESTDIR)$(LIBDIR)/libmcspec.so
+	$(INSTALL) -m 644 $(GEN_PC) $(DESTDIR)$(PKGCONFIGDIR)/
+	$(INSTALL) -m 644 $(GEN_CMAKE) $(DESTDIR)$(CMAKEDIR)/
+	$(INSTALL) -m 644 $(INSTALL_DOCS) $(DESTDIR)$(DOCDIR)/
+	$(INSTALL) -m 644 $(KISS_LICENCES) $(DESTDIR)$(DOCDIR)/kissfft/
+
+# Removes every file install writes; mcspec's own directories (include/mcspec,
+# cmake/mcspec, the doc directory) go whole, shared ones only if left empty.
+uninstall:
+	rm -f $(DESTDIR)$(INCLUDEDIR)/mcspec.h $(DESTDIR)$(INCLUDEDIR)/mcspec/*.h
+	rm -f $(DESTDIR)$(LIBDIR)/libmcspec.a $(DESTDIR)$(LIBDIR)/libmcspec.so \
+	    $(DESTDIR)$(LIBDIR)/libmcspec.so.$(VERSION_MAJOR) $(DESTDIR)$(LIBDIR)/libmcspec.so.$(VERSION)
+	rm -f $(DESTDIR)$(PKGCONFIGDIR)/mcspec.pc
+	rm -f $(DESTDIR)$(CMAKEDIR)/mcspecConfig.cmake $(DESTDIR)$(CMAKEDIR)/mcspecConfigVersion.cmake
+	rm -f $(addprefix $(DESTDIR)$(DOCDIR)/,$(notdir $(INSTALL_DOCS))) \
+	    $(addprefix $(DESTDIR)$(DOCDIR)/kissfft/,$(notdir $(KISS_LICENCES)))
+	-rmdir $(DESTDIR)$(INCLUDEDIR)/mcspec $(DESTDIR)$(CMAKEDIR) $(DESTDIR)$(DOCDIR)/kissfft \
+	    $(DESTDIR)$(DOCDIR) 2>/dev/null
+	-rmdir $(DESTDIR)$(PKGCONFIGDIR) $(DESTDIR)$(LIBDIR)/cmake 2>/dev/null
+	@true
+
+# Consumers of the installed files (test/consumers/run.sh says which). The
+# script installs with this Makefile into a temporary prefix itself.
+check-install: $(LIB) $(BUILD)/libmcspec.so
+	@MAKE='$(MAKE)' CC='$(CC)' CXX='$(CXX)' CMAKE='$(CMAKE)' NM='$(EMB_NM)' WERROR='$(WERROR)' \
+	    sh test/consumers/run.sh

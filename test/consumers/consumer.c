@@ -1,0 +1,18 @@
+/* A C program using mcspec, built by test/consumers/run.sh against the
+ * installed files only (pkg-config, static and shared), through
+ * add_subdirectory and FetchContent, and with mismatched capacities (which
+ * must not build). Exit status 0 when every check of mcspec_checks.h holds.
+ * With EXPECT_MAX_N defined it also checks the capacity it was given. */
+#include "mcspec_checks.h"
+
+int main(void)
+{
+    int bad = mcspec_checks();
+#ifdef EXPECT_MAX_N
+    if (MCS_MAX_N != EXPECT_MAX_N) {
+        printf("FAIL MCS_MAX_N is %d, expected %d\n", (int)MCS_MAX_N, (int)EXPECT_MAX_N);
+        ++bad;
+    }
+#endif
+    return bad == 0 ? 0 : 1;
+}

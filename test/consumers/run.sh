@@ -1,0 +1,252 @@
+#!/bin/sh
+# make check-install: mcspec as its users get it. Run from the repository
+# root; MAKE, CC, CXX, CMAKE, NM may be set. Everything happens in a
+# temporary directory, removed at the end.
+#
+#  1. make install into a DESTDIR stage: every file in place (SONAME,
+#     symlinks, capacities in config.h, mcspec.pc, the CMake package), and
+#     make uninstall leaves no file behind.
+#  2. make install into a temporary prefix; from then on consumers see only
+#     that prefix (no -I or -L into the source tree):
+#     - nm: both libraries export exactly the public API (so only mcs_ names);
+#     - a C consumer through pkg-config, linked shared and static;
+#     - a consumer that links its own float build of KissFFT (the vendored
+#       kiss_fft.c, plain names) beside mcspec, shared and static: both right;
+#     - a C++17 consumer through find_package(mcspec), shared and static.
+#  3. Failures that must happen, with a message that says what to do:
+#     - a consumer with -DMCS_MAX_N=256 against the installed headers does
+#       not compile; against the source tree's headers it does not link
+#       (static, shared, and with --gc-sections);
+#     - the library sources with -ffast-math or -ffinite-math-only, or
+#       without the KissFFT configuration, do not compile.
+#  4. CMake: the library built with CMake (shared at MCS_MAX_N = 256, and
+#     static) and installed exports exactly the API and serves the C++
+#     consumer; a C consumer takes mcspec by add_subdirectory and by
+#     FetchContent.
+# Prints one line per check and "N passed, N failed"; exit 1 on any failure.
+set -u
+
+: "${MAKE:=make}" "${CC:=cc}" "${CXX:=c++}" "${CMAKE:=cmake}" "${NM:=nm}"
+root=$(pwd)
+here=$root/test/consumers
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/mcspec-consumers.XXXXXX")
+trap 'rm -rf "$tmp"' EXIT INT TERM
+passed=0
+failed=0
+step=0
+cflags="-std=c11 -O2 -Wall -Wextra -Wpedantic"
+[ "${WERROR:-}" = 1 ] && cflags="$cflags -Werror"
+
+# check LABEL COMMAND...: passes if COMMAND succeeds; its output is shown on failure.
+check() {
+    label=$1
+    shift
+    step=$((step + 1))
+    log=$tmp/log.$step
+    if "$@" >"$log" 2>&1; then
+        passed=$((passed + 1))
+        echo "ok   $label"
+    else
+        failed=$((failed + 1))
+        echo "FAIL $label"
+        sed 's/^/     | /' "$log" | tail -n 25
+    fi
+}
+
+# must_fail LABEL PATTERN COMMAND...: passes if COMMAND fails and its output
+# contains PATTERN (a fixed string: the message that tells the user what to do).
+must_fail() {
+    label=$1
+    pattern=$2
+    shift 2
+    step=$((step + 1))
+    log=$tmp/log.$step
+    if "$@" >"$log" 2>&1; then
+        failed=$((failed + 1))
+        echo "FAIL $label: it succeeded"
+    elif grep -qF -- "$pattern" "$log"; then
+        passed=$((passed + 1))
+        echo "ok   $label: \"$(grep -F -m1 -- "$pattern" "$log" | sed 's/^[[:space:]]*//' | cut -c1-150)\""
+    else
+        failed=$((failed + 1))
+        echo "FAIL $label: failed without \"$pattern\""
+        sed 's/^/     | /' "$log" | tail -n 25
+    fi
+}
+
+version=$(sed -n 's/^#define MCS_VERSION_STRING "\(.*\)"/\1/p' include/mcspec/version.h)
+major=${version%%.*}
+
+# ------------------------------------------------------------ 1. stage
+stage=$tmp/stage
+staged_files() {
+    p=$stage/opt/mcspec
+    for f in include/mcspec.h include/mcspec/config.h include/mcspec/version.h lib/libmcspec.a \
+             "lib/libmcspec.so.$version" lib/pkgconfig/mcspec.pc lib/cmake/mcspec/mcspecConfig.cmake \
+             lib/cmake/mcspec/mcspecConfigVersion.cmake share/doc/mcspec/LICENSE \
+             share/doc/mcspec/kissfft/COPYING; do
+        [ -f "$p/$f" ] || { echo "missing $f"; return 1; }
+    done
+    for h in "$root"/include/mcspec/*.h; do
+        [ -f "$p/include/mcspec/$(basename "$h")" ] || { echo "missing header $(basename "$h")"; return 1; }
+    done
+    [ "$(readlink "$p/lib/libmcspec.so.$major")" = "libmcspec.so.$version" ] || { echo "bad libmcspec.so.$major"; return 1; }
+    [ "$(readlink "$p/lib/libmcspec.so")" = "libmcspec.so.$major" ] || { echo "bad libmcspec.so link"; return 1; }
+    readelf -d "$p/lib/libmcspec.so.$version" | grep -q "Library soname: \[libmcspec.so.$major\]" ||
+        { echo "SONAME is not libmcspec.so.$major"; return 1; }
+    grep -q '^prefix=/opt/mcspec$' "$p/lib/pkgconfig/mcspec.pc" || { echo "mcspec.pc prefix"; return 1; }
+    grep -q '^Cflags: .*-DMCS_MAX_N=4096 -DMCS_MAX_COV_N=64' "$p/lib/pkgconfig/mcspec.pc" ||
+        { echo "mcspec.pc Cflags lack the capacities"; return 1; }
+    grep -q 'MCS_MAX_N != 4096' "$p/include/mcspec/config.h" || { echo "config.h lacks the capacities"; return 1; }
+    grep -q 'set(PACKAGE_VERSION "'"$version"'")' "$p/lib/cmake/mcspec/mcspecConfigVersion.cmake" ||
+        { echo "version file"; return 1; }
+    echo "all in place"
+}
+no_files_left() {
+    left=$(find "$stage" -type f -o -type l)
+    [ -z "$left" ] || { echo "left behind:"; echo "$left"; return 1; }
+}
+check "make install DESTDIR=... PREFIX=/opt/mcspec" \
+    "$MAKE" --no-print-directory install DESTDIR="$stage" PREFIX=/opt/mcspec
+check "staged files: headers, libmcspec.a, libmcspec.so.$version (SONAME libmcspec.so.$major), mcspec.pc, CMake package" \
+    staged_files
+check "make uninstall DESTDIR=... PREFIX=/opt/mcspec" \
+    "$MAKE" --no-print-directory uninstall DESTDIR="$stage" PREFIX=/opt/mcspec
+check "make uninstall leaves no file" no_files_left
+
+# ------------------------------------------------------------ 2. installed
+prefix=$tmp/prefix
+libdir=$prefix/lib
+check "make install PREFIX=<tmp>" "$MAKE" --no-print-directory install PREFIX="$prefix"
+export PKG_CONFIG_PATH="$libdir/pkgconfig"
+pc_cflags=$(pkg-config --cflags mcspec)
+pc_libs=$(pkg-config --libs mcspec)
+pc_libs_L=$(pkg-config --libs-only-L mcspec)
+echo "     pkg-config --cflags mcspec: $pc_cflags"
+
+only_mcs_exported() {
+    "$NM" -g --defined-only -P "$libdir/libmcspec.a" | awk 'NF >= 2 && $1 !~ /:$/ && $1 !~ /^mcs_/' >"$tmp/foreign.a"
+    "$NM" -D --defined-only -P "$libdir/libmcspec.so" | awk 'NF >= 2 && $1 !~ /^mcs_/' >"$tmp/foreign.so"
+    cat "$tmp/foreign.a" "$tmp/foreign.so"
+    [ ! -s "$tmp/foreign.a" ] && [ ! -s "$tmp/foreign.so" ]
+}
+check "nm: libmcspec.a and libmcspec.so export no symbol without the mcs_ prefix" only_mcs_exported
+check "nm: both export exactly the API of the installed headers" \
+    sh tools/check_api.sh -c "$CC $pc_cflags" -d "$prefix/include" -n "$NM" \
+        -p tools/api_pending.txt "$libdir/libmcspec.a" "$libdir/libmcspec.so"
+
+links_shared() { readelf -d "$1" | grep -q "Shared library: \[libmcspec.so.$major\]"; }
+links_static() { ! readelf -d "$1" | grep -q 'libmcspec'; }
+
+build_c_shared() {
+    # shellcheck disable=SC2086 # flag lists
+    $CC $cflags $pc_cflags "$here/consumer.c" -o "$tmp/c_shared" $pc_libs -Wl,-rpath,"$libdir" -lm &&
+        links_shared "$tmp/c_shared" && "$tmp/c_shared"
+}
+build_c_static() {
+    # shellcheck disable=SC2086
+    $CC $cflags $pc_cflags "$here/consumer.c" -o "$tmp/c_static" $pc_libs_L -Wl,-Bstatic -lmcspec \
+        -Wl,-Bdynamic -lm && links_static "$tmp/c_static" && "$tmp/c_static"
+}
+check "C consumer, pkg-config, shared (NEEDED libmcspec.so.$major)" build_c_shared
+check "C consumer, pkg-config, static" build_c_static
+
+# The renderer's own KissFFT: float, plain names, malloc allowed.
+kiss_float() {
+    $CC -std=c11 -O2 -Dkiss_fft_scalar=float -I"$root/src/vendor/kissfft" \
+        -c "$root/src/vendor/kissfft/kiss_fft.c" -o "$tmp/kiss_fft_float.o"
+}
+build_kiss() {
+    kind=$1
+    if [ "$kind" = shared ]; then libs="$pc_libs -Wl,-rpath,$libdir"; else libs="$pc_libs_L -Wl,-Bstatic -lmcspec -Wl,-Bdynamic"; fi
+    # shellcheck disable=SC2086
+    kiss_float && $CC $cflags $pc_cflags -I"$root/src/vendor/kissfft" -Dkiss_fft_scalar=float \
+        "$here/kissfloat.c" "$tmp/kiss_fft_float.o" -o "$tmp/kiss_$kind" $libs -lm &&
+        "$tmp/kiss_$kind"
+}
+check "consumer with its own float KissFFT, shared: both transforms right" build_kiss shared
+check "consumer with its own float KissFFT, static: both transforms right" build_kiss static
+
+build_cxx() {
+    dir=$1
+    pfx=$2
+    shift 2
+    "$CMAKE" -S "$here/cxx" -B "$dir" -DCMAKE_PREFIX_PATH="$pfx" -DCMAKE_CXX_COMPILER="$CXX" "$@" &&
+        "$CMAKE" --build "$dir" && "$dir/cxx_consumer"
+}
+cxx_shared() { build_cxx "$tmp/cxx_shared" "$prefix" && links_shared "$tmp/cxx_shared/cxx_consumer"; }
+cxx_static() { build_cxx "$tmp/cxx_static" "$prefix" -DMCSPEC_USE_STATIC=ON && links_static "$tmp/cxx_static/cxx_consumer"; }
+check "C++17 consumer, find_package(mcspec 0.2), mcspec::mcspec shared" cxx_shared
+check "C++17 consumer, find_package(mcspec 0.2), mcspec::mcspec static" cxx_static
+
+# ------------------------------------------------------------ 3. must fail
+# shellcheck disable=SC2086
+must_fail "consumer with -DMCS_MAX_N=256 against the installed headers (4096) does not compile" \
+    "built with MCS_MAX_N=4096" \
+    $CC $cflags -DMCS_MAX_N=256 -I"$prefix/include" -c "$here/consumer.c" -o "$tmp/mismatch.o"
+tag256=mcs_config_requires_libmcspec_built_with_MCS_MAX_N_256_MCS_MAX_COV_N_64
+# shellcheck disable=SC2086
+must_fail "consumer with -DMCS_MAX_N=256 (source-tree headers) does not link to the installed libmcspec.a" \
+    "undefined reference to \`$tag256'" \
+    $CC $cflags -DMCS_MAX_N=256 -I"$root/include" "$here/consumer.c" -o "$tmp/mismatch_static" \
+        $pc_libs_L -Wl,-Bstatic -lmcspec -Wl,-Bdynamic -lm
+# shellcheck disable=SC2086
+must_fail "... nor to the installed libmcspec.so" "undefined reference to \`$tag256'" \
+    $CC $cflags -DMCS_MAX_N=256 -I"$root/include" "$here/consumer.c" -o "$tmp/mismatch_shared" \
+        $pc_libs_L -lmcspec -lm
+# shellcheck disable=SC2086
+must_fail "... nor with -ffunction-sections -fdata-sections -Wl,--gc-sections" \
+    "undefined reference to \`$tag256'" \
+    $CC $cflags -ffunction-sections -fdata-sections -DMCS_MAX_N=256 -I"$root/include" \
+        "$here/consumer.c" -o "$tmp/mismatch_gc" -Wl,--gc-sections $pc_libs_L -Wl,-Bstatic -lmcspec \
+        -Wl,-Bdynamic -lm
+must_fail "library sources with -ffast-math do not compile" "do not compile the library with -ffast-math" \
+    "$MAKE" --no-print-directory BUILD="$tmp/fastmath" CFLAGS=-ffast-math "$tmp/fastmath/libmcspec.a"
+must_fail "library sources with -ffinite-math-only do not compile" "do not compile the library with -ffast-math" \
+    "$MAKE" --no-print-directory BUILD="$tmp/finite" CFLAGS=-ffinite-math-only "$tmp/finite/libmcspec.a"
+glob_build() {
+    mkdir -p "$tmp/glob" && cd "$tmp/glob" &&
+        $CC -std=c11 -I"$root/include" -I"$root/src/vendor/kissfft" -c "$root"/src/*.c
+}
+must_fail "library sources compiled as a glob without the KissFFT configuration do not compile" \
+    "compile src/*.c and src/vendor/kissfft/kiss_fft.c with the KissFFT configuration" glob_build
+cd "$root" || exit 1
+
+# ------------------------------------------------------------ 4. CMake
+cmprefix=$tmp/cmprefix
+cmake_lib() {
+    dir=$1
+    shift
+    "$CMAKE" -S "$root" -B "$dir" -DCMAKE_C_COMPILER="$CC" -DCMAKE_INSTALL_PREFIX="$cmprefix" \
+        -DMCSPEC_WERROR="${WERROR:-OFF}" "$@" &&
+        "$CMAKE" --build "$dir" && "$CMAKE" --install "$dir"
+}
+check "CMake: libmcspec shared, MCSPEC_MAX_N=256, built and installed" \
+    cmake_lib "$tmp/cm_shared" -DBUILD_SHARED_LIBS=ON -DMCSPEC_MAX_N=256
+check "CMake: libmcspec static, MCSPEC_MAX_N=256, built and installed" \
+    cmake_lib "$tmp/cm_static" -DBUILD_SHARED_LIBS=OFF -DMCSPEC_MAX_N=256
+cm_so=$cmprefix/lib/libmcspec.so.$version
+check "CMake: libmcspec.so.$version has SONAME libmcspec.so.$major" \
+    sh -c "readelf -d '$cm_so' | grep -q 'Library soname: \[libmcspec.so.$major\]'"
+check "CMake: both libraries export exactly the API of the installed headers" \
+    sh tools/check_api.sh -c "$CC -I$cmprefix/include" -d "$cmprefix/include" -n "$NM" \
+        -p tools/api_pending.txt "$cmprefix/lib/libmcspec.a" "$cm_so"
+check "CMake: installed mcspec.pc carries MCS_MAX_N=256" \
+    sh -c "PKG_CONFIG_PATH='$cmprefix/lib/pkgconfig' pkg-config --cflags mcspec | grep -q -- '-DMCS_MAX_N=256 '"
+cxx_cm() { build_cxx "$tmp/cxx_cm" "$cmprefix" -DEXPECT_MAX_N=256 && links_shared "$tmp/cxx_cm/cxx_consumer"; }
+cxx_cm_static() { build_cxx "$tmp/cxx_cm_static" "$cmprefix" -DEXPECT_MAX_N=256 -DMCSPEC_USE_STATIC=ON; }
+check "C++17 consumer against the CMake install (shared, 256)" cxx_cm
+check "C++17 consumer against the CMake install (static, 256)" cxx_cm_static
+
+subdir() {
+    dir=$1
+    shift
+    "$CMAKE" -S "$here/subdir" -B "$dir" -DCMAKE_C_COMPILER="$CC" -DMCSPEC_SOURCE_DIR="$root" "$@" &&
+        "$CMAKE" --build "$dir" && "$dir/subdir_consumer"
+}
+check "C consumer, add_subdirectory(mcspec)" subdir "$tmp/subdir"
+check "C consumer, FetchContent(mcspec), MCSPEC_MAX_N=256 shared" \
+    subdir "$tmp/fetch" -DUSE_FETCHCONTENT=ON -DMCSPEC_MAX_N=256 -DEXPECT_MAX_N=256 -DBUILD_SHARED_LIBS=ON
+
+echo "check-install: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]
