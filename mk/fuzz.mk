@@ -36,7 +36,7 @@ $(FUZZ_BUILD)/obj/src/vendor/%.o: src/vendor/%.c
 
 $(FUZZ_BUILD)/obj/src/%.o: src/%.c
 	@mkdir -p $(@D)
-	$(FUZZ_CC) $(WARN) $(FUZZ_OPT) $(FUZZ_SAN) -fsanitize=fuzzer-no-link $(CPPFLAGS) \
+	$(FUZZ_CC) $(WARN) $(FUZZ_OPT) $(FUZZ_SAN) -fsanitize=fuzzer-no-link $(MCS_CPPFLAGS) $(CPPFLAGS) \
 	    -isystem src/vendor/kissfft $(KISS_DEFS) -MMD -MP -c $< -o $@
 
 $(FUZZ_LIB): $(FUZZ_LIB_OBJ)
@@ -48,7 +48,7 @@ $(FUZZ_LIB): $(FUZZ_LIB_OBJ)
 # The seed tool is an ordinary program against the ordinary library.
 $(FUZZ_BUILD)/make_corpus: fuzz/make_corpus.c $(LIB)
 	@mkdir -p $(@D)
-	$(CC) $(WARN) $(OPT) $(CPPFLAGS) $< $(LIB) $(LDLIBS) -o $@
+	$(CC) $(WARN) $(OPT) $(MCS_CPPFLAGS) $(CPPFLAGS) $< $(LIB) $(LDLIBS) -o $@
 
 fuzz-corpus: $(FUZZ_BUILD)/make_corpus
 	@mkdir -p fuzz/corpus/load
@@ -65,7 +65,7 @@ FUZZ_TARGETS += $(1)
 
 $(FUZZ_BUILD)/fuzz_$(1): fuzz/fuzz_$(1).c $(FUZZ_LIB) | fuzz-check-cc
 	@mkdir -p $$(@D)
-	$$(FUZZ_CC) $$(WARN) $$(FUZZ_OPT) $$(FUZZ_SAN) -fsanitize=fuzzer $$(CPPFLAGS) $$< $$(FUZZ_LIB) \
+	$$(FUZZ_CC) $$(WARN) $$(FUZZ_OPT) $$(FUZZ_SAN) -fsanitize=fuzzer $$(MCS_CPPFLAGS) $$(CPPFLAGS) $$< $$(FUZZ_LIB) \
 	    $$(LDLIBS) -o $$@
 
 .PHONY: fuzz-$(1) fuzz-ci-$(1)

@@ -43,7 +43,7 @@ static uint64_t get_le(const uint8_t *p, size_t bytes)
     return v;
 }
 
-double io_get_f64(const uint8_t *payload, size_t i)
+double mcs_io_get_f64(const uint8_t *payload, size_t i)
 {
     const uint64_t bits = get_le(payload + 8u * i, 8u);
     double v;
@@ -180,7 +180,7 @@ mcs_status mcs_io_peek(size_t len, const void *buf, mcs_io_info *info)
     return MCS_OK;
 }
 
-void io_sink_put(io_sink *sink, double v)
+void mcs_io_sink_put(io_sink *sink, double v)
 {
     if (sink->out != NULL) {
         uint64_t bits;
@@ -226,7 +226,7 @@ static void write_header(const io_layout *lay, uint64_t count, uint8_t *p)
         put_le(p + MCS_IO_HEADER_BYTES + 8u * i, lay->shape[i], 8u);
 }
 
-mcs_status io_save(const io_layout *lay, const io_source *src, size_t cap, void *buf,
+mcs_status mcs_io_save_record(const io_layout *lay, const io_source *src, size_t cap, void *buf,
                    size_t *len)
 {
     const size_t head = head_bytes(lay->shape_len);
@@ -251,7 +251,7 @@ mcs_status io_save(const io_layout *lay, const io_source *src, size_t cap, void 
     return MCS_OK;
 }
 
-mcs_status io_load_check(const io_kind *kind, size_t len, const void *buf, io_record *rec)
+mcs_status mcs_io_load_check(const io_kind *kind, size_t len, const void *buf, io_record *rec)
 {
     mcs_io_info info;
     io_layout lay;
@@ -270,7 +270,7 @@ mcs_status io_load_check(const io_kind *kind, size_t len, const void *buf, io_re
     const uint8_t *pl = (const uint8_t *)buf + head_bytes(kind->shape_len);
     io_sink sink = {&lay, info.count, NULL, 0u, 0u, 0, 0};
     for (size_t i = 0; i < lay.payload_len; ++i)
-        io_sink_put(&sink, io_get_f64(pl, i));
+        mcs_io_sink_put(&sink, mcs_io_get_f64(pl, i));
     st = sink_status(&sink);
     if (st != MCS_OK)
         return st;

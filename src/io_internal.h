@@ -46,12 +46,12 @@ typedef struct {
     int not_finite, broken;
 } io_sink;
 
-void io_sink_put(io_sink *sink, double v);
+void mcs_io_sink_put(io_sink *sink, double v);
 
 typedef void (*io_emit_fn)(const void *obj, io_sink *sink);
 
 /* The value at payload index i (little-endian binary64). */
-double io_get_f64(const uint8_t *payload, size_t i);
+double mcs_io_get_f64(const uint8_t *payload, size_t i);
 
 /* What a kind's save passes: the object, its emit function and its count. */
 typedef struct {
@@ -62,7 +62,7 @@ typedef struct {
 
 /* Save driver: checks the values emit gives, then (buf != NULL) writes the
  * record. Statuses as the mcs_io_save_* calls, after UNINIT. */
-mcs_status io_save(const io_layout *lay, const io_source *src, size_t cap, void *buf,
+mcs_status mcs_io_save_record(const io_layout *lay, const io_source *src, size_t cap, void *buf,
                    size_t *len);
 
 /* A kind as its load sees it: number, shape words, layout function. */
@@ -81,6 +81,6 @@ typedef struct {
 
 /* Load checks: framing, kind, shape (through the kind's layout), values.
  * *rec written only on MCS_OK. */
-mcs_status io_load_check(const io_kind *kind, size_t len, const void *buf, io_record *rec);
+mcs_status mcs_io_load_check(const io_kind *kind, size_t len, const void *buf, io_record *rec);
 
 #endif /* MCSPEC_IO_INTERNAL_H */

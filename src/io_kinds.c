@@ -49,13 +49,13 @@ static mcs_status layout_spectrum(const uint64_t *shape, io_layout *lay)
 static void put_array(io_sink *sink, const double *a, size_t len)
 {
     for (size_t i = 0; i < len; ++i)
-        io_sink_put(sink, a[i]);
+        mcs_io_sink_put(sink, a[i]);
 }
 
 static void get_array(double *a, const uint8_t *payload, size_t first, size_t len)
 {
     for (size_t i = 0; i < len; ++i)
-        a[i] = io_get_f64(payload, first + i);
+        a[i] = mcs_io_get_f64(payload, first + i);
 }
 
 static void emit_spectrum(const void *obj, io_sink *sink)
@@ -81,7 +81,7 @@ mcs_status mcs_io_save_spectrum(const mcs_spectrum *acc, size_t cap, void *buf, 
     const uint64_t n = acc->n;
     (void)layout_spectrum(&n, &lay); /* cannot fail: acc->n is in range */
     const io_source src = {acc, emit_spectrum, count};
-    return io_save(&lay, &src, cap, buf, len);
+    return mcs_io_save_record(&lay, &src, cap, buf, len);
 }
 
 static const io_kind kind_spectrum = {MCS_IO_KIND_SPECTRUM, 1u, layout_spectrum};
@@ -91,7 +91,7 @@ mcs_status mcs_io_load_spectrum(mcs_spectrum *acc, size_t len, const void *buf)
     io_record rec;
     if (acc == NULL || buf == NULL)
         return MCS_ERR_NULL;
-    mcs_status st = io_load_check(&kind_spectrum, len, buf, &rec);
+    mcs_status st = mcs_io_load_check(&kind_spectrum, len, buf, &rec);
     if (st != MCS_OK)
         return st;
     st = mcs_spectrum_init(acc, (size_t)rec.lay.shape[0]); /* leaves acc as it was on error */
@@ -142,7 +142,7 @@ mcs_status mcs_io_save_moment(const mcs_moment *acc, size_t cap, void *buf, size
     const uint64_t n = acc->n;
     (void)layout_moment(&n, &lay);
     const io_source src = {acc, emit_moment, count};
-    return io_save(&lay, &src, cap, buf, len);
+    return mcs_io_save_record(&lay, &src, cap, buf, len);
 }
 
 static const io_kind kind_moment = {MCS_IO_KIND_MOMENT, 1u, layout_moment};
@@ -152,7 +152,7 @@ mcs_status mcs_io_load_moment(mcs_moment *acc, size_t len, const void *buf)
     io_record rec;
     if (acc == NULL || buf == NULL)
         return MCS_ERR_NULL;
-    mcs_status st = io_load_check(&kind_moment, len, buf, &rec);
+    mcs_status st = mcs_io_load_check(&kind_moment, len, buf, &rec);
     if (st != MCS_OK)
         return st;
     const uint8_t *pl = rec.payload;
@@ -201,7 +201,7 @@ mcs_status mcs_io_save_autocorr(const mcs_autocorr *acc, size_t cap, void *buf, 
     const uint64_t n = acc->n;
     (void)layout_autocorr(&n, &lay);
     const io_source src = {acc, emit_autocorr, count};
-    return io_save(&lay, &src, cap, buf, len);
+    return mcs_io_save_record(&lay, &src, cap, buf, len);
 }
 
 static const io_kind kind_autocorr = {MCS_IO_KIND_AUTOCORR, 1u, layout_autocorr};
@@ -211,7 +211,7 @@ mcs_status mcs_io_load_autocorr(mcs_autocorr *acc, size_t len, const void *buf)
     io_record rec;
     if (acc == NULL || buf == NULL)
         return MCS_ERR_NULL;
-    mcs_status st = io_load_check(&kind_autocorr, len, buf, &rec);
+    mcs_status st = mcs_io_load_check(&kind_autocorr, len, buf, &rec);
     if (st != MCS_OK)
         return st;
     const uint8_t *pl = rec.payload;
@@ -242,10 +242,10 @@ static mcs_status layout_welford(const uint64_t *shape, io_layout *lay)
 static void emit_welford(const void *obj, io_sink *sink)
 {
     const mcs_welford *acc = (const mcs_welford *)obj;
-    io_sink_put(sink, acc->mean);
-    io_sink_put(sink, acc->m2);
-    io_sink_put(sink, acc->m3);
-    io_sink_put(sink, acc->m4);
+    mcs_io_sink_put(sink, acc->mean);
+    mcs_io_sink_put(sink, acc->m2);
+    mcs_io_sink_put(sink, acc->m3);
+    mcs_io_sink_put(sink, acc->m4);
 }
 
 mcs_status mcs_io_save_welford(const mcs_welford *acc, size_t cap, void *buf, size_t *len)
@@ -255,7 +255,7 @@ mcs_status mcs_io_save_welford(const mcs_welford *acc, size_t cap, void *buf, si
         return MCS_ERR_NULL;
     (void)layout_welford(NULL, &lay);
     const io_source src = {acc, emit_welford, acc->count};
-    return io_save(&lay, &src, cap, buf, len);
+    return mcs_io_save_record(&lay, &src, cap, buf, len);
 }
 
 static const io_kind kind_welford = {MCS_IO_KIND_WELFORD, 0u, layout_welford};
@@ -265,14 +265,14 @@ mcs_status mcs_io_load_welford(mcs_welford *acc, size_t len, const void *buf)
     io_record rec;
     if (acc == NULL || buf == NULL)
         return MCS_ERR_NULL;
-    mcs_status st = io_load_check(&kind_welford, len, buf, &rec);
+    mcs_status st = mcs_io_load_check(&kind_welford, len, buf, &rec);
     if (st != MCS_OK)
         return st;
     const uint8_t *pl = rec.payload;
     acc->count = rec.count;
-    acc->mean = io_get_f64(pl, 0u);
-    acc->m2 = io_get_f64(pl, 1u);
-    acc->m3 = io_get_f64(pl, 2u);
-    acc->m4 = io_get_f64(pl, 3u);
+    acc->mean = mcs_io_get_f64(pl, 0u);
+    acc->m2 = mcs_io_get_f64(pl, 1u);
+    acc->m3 = mcs_io_get_f64(pl, 2u);
+    acc->m4 = mcs_io_get_f64(pl, 3u);
     return MCS_OK;
 }
