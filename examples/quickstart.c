@@ -40,7 +40,7 @@ int main(void)
         mcs_spectrum_add_bins(&acc, K, bins, weights);
         /* ... and the renderer's own points, binned into the same (bin, weight) form. */
         my_samples(t, x);
-        mcs_pattern_bin_points(N, NULL, K, x, bins, weights);
+        mcs_pattern_bin_points(N, K, NULL, x, bins, weights);
         mcs_spectrum_add_bins(&mine, K, bins, weights);
     }
 

@@ -6,6 +6,7 @@
  * fixed strata) and a biased one (uniform). */
 #include "mcspec.h"
 #include "measure.h"
+#include "readout.h"
 #include "report.h"
 
 #include <math.h>
@@ -37,30 +38,23 @@ static mcs_theory theories[P_COUNT];
 static mcs_dft plan;
 static double f[MCS_MAX_COV_N], f_re[MCS_MAX_COV_N], f_im[MCS_MAX_COV_N];
 
-static ex_row row_of(const char *quantity, const char *equation, const char *pattern, long k,
-                     double closed, double exact, double measured, double se, double floor_)
-{
-    ex_row r = {"sec2", quantity, equation, pattern, k, EX_NO_FREQ, closed, exact, measured, se,
-                EX_NA, floor_};
-    return r;
-}
+/* What the summary reads from the rows above it. */
+typedef struct {
+    double bias_uniform, bias_z; /* <I> - mean of f for uniform, and its z */
+    double v13[P_COUNT], v14[P_COUNT], vex[P_COUNT], vme[P_COUNT], vse[P_COUNT];
+} sec2_summary;
 
-/* *v if the call that filled it succeeded, else EX_NA (read after the call). */
-static double or_na(mcs_status st, const double *v)
-{
-    return st == MCS_OK ? *v : EX_NA;
-}
-
+/* f at the bin centres and its DFT, then every pattern's run. */
 static int measure_all(const ex_options *opt)
 {
+    ex_integrand_bins(opt->n, f);
+    if (mcs_dft_init(&plan, opt->n) != MCS_OK ||
+        mcs_dft_real(&plan, opt->n, f, f_re, f_im) != MCS_OK)
+        return 0;
     for (int p = 0; p < P_COUNT; ++p) {
         ex_run *run = &runs[p];
-        mcs_status st = ex_run_init(run, kinds[p], opt->n, opt->k, NULL, opt->seed,
-                                    0x200u + (uint64_t)kinds[p]);
-        if (st == MCS_OK)
-            st = mcs_theory_init(&theories[p], &run->pattern);
-        if (st == MCS_OK)
-            st = mcs_spectrum_init(&spectra[p], opt->n);
+        mcs_status st = ex_run_setup(run, &theories[p], &spectra[p], kinds[p], opt->n, opt->k,
+                                     NULL, opt->seed, 0x200u + (uint64_t)kinds[p]);
         if (st == MCS_OK) {
             ex_run_probe(run, 0u);
             ex_run_probe(run, 1u);
@@ -91,7 +85,7 @@ static double eq8_check(const ex_options *opt, mcs_pattern_kind kind, unsigned l
     for (unsigned long t = 0; t < trials; ++t) {
         double primal = 0.0, fourier = 0.0;
         if (mcs_pattern_draw(&pat, &rng, opt->k, bins, w, NULL) != MCS_OK ||
-            mcs_estimate_bins(opt->n, f, opt->k, bins, w, &primal) != MCS_OK ||
+            mcs_estimate_bins(opt->n, opt->k, f, bins, w, &primal) != MCS_OK ||
             mcs_pattern_dense(opt->n, opt->k, bins, w, s) != MCS_OK ||
             mcs_dft_real(&plan, opt->n, s, s_re, s_im) != MCS_OK)
             return EX_NA;
@@ -103,123 +97,126 @@ static double eq8_check(const ex_options *opt, mcs_pattern_kind kind, unsigned l
     return worst;
 }
 
-int main(int argc, char **argv)
+/* Eq. 9 on one pattern's trials: (1/K) sum_n F_n* <S_n> from mcs_spectrum's
+ * means against the mean of I over the same trials; |difference|. */
+static double eq9_gap(const ex_options *opt, int p)
 {
-    ex_options opt = {64u, 8u, 200000ul, 1u, 0};
-    int rc = ex_parse_options(argc, argv, &opt, MCS_MAX_COV_N, EX_MAX_K, help_text);
-    if (rc != EX_PARSE_OK)
-        return rc == EX_PARSE_HELP ? 0 : 2;
-    const size_t n = opt.n, k = opt.k;
-    const double kn = (double)k / (double)n;
-    ex_integrand_bins(n, f);
-    if (mcs_dft_init(&plan, n) != MCS_OK || mcs_dft_real(&plan, n, f, f_re, f_im) != MCS_OK)
-        return 1;
-    if (!measure_all(&opt))
-        return 1;
+    double acc = 0.0, re = 0.0, im = 0.0;
+    for (size_t q = 0; q < opt->n; ++q)
+        if (mcs_spectrum_mean(&spectra[p], q, &re, &im) == MCS_OK)
+            acc += f_re[q] * re + f_im[q] * im;
+    double mean_i = ex_mean(&runs[p].estimate[0], NULL);
+    return fabs(acc / (double)opt->k - mean_i);
+}
 
-    ex_begin(&opt, "Section 2: discrete Fourier analysis of sampling (eq. 7-14)");
+/* ---- eq. 8 and 9: identities on the measured data ---- */
+static void identity_notes(const ex_options *opt)
+{
+    ex_heading(opt, "eq. 8 and 9 are identities: checked on the trials themselves");
+    double worst = 0.0;
+    for (int p = 0; p < P_COUNT; ++p)
+        worst = fmax(worst, eq8_check(opt, kinds[p], 1000ul));
+    ex_notef(opt,
+             "eq. 8: (1/K) sum_n f_n s_n = (1/K) sum_n F_n* S_n on 1000 trials per pattern, "
+             "largest difference %.2g",
+             worst);
+    double worst9 = 0.0;
+    for (int p = 0; p < P_COUNT; ++p)
+        worst9 = fmax(worst9, eq9_gap(opt, p));
+    ex_notef(opt,
+             "eq. 9: (1/K) sum_n F_n* <S_n> from mcs_spectrum's means = the mean of I over "
+             "the same trials, largest difference %.2g",
+             worst9);
+}
 
-    /* ---- eq. 8 and 9: identities on the measured data ---- */
-    ex_heading(&opt, "eq. 8 and 9 are identities: checked on the trials themselves");
-    {
-        double worst = 0.0;
-        for (int p = 0; p < P_COUNT; ++p)
-            worst = fmax(worst, eq8_check(&opt, kinds[p], 1000ul));
-        ex_notef(&opt,
-                 "eq. 8: (1/K) sum_n f_n s_n = (1/K) sum_n F_n* S_n on 1000 trials per pattern, "
-                 "largest difference %.2g",
-                 worst);
-        double worst9 = 0.0;
-        for (int p = 0; p < P_COUNT; ++p) {
-            double acc = 0.0, re = 0.0, im = 0.0;
-            for (size_t q = 0; q < n; ++q)
-                if (mcs_spectrum_mean(&spectra[p], q, &re, &im) == MCS_OK)
-                    acc += f_re[q] * re + f_im[q] * im;
-            double mean_i = ex_mean(&runs[p].estimate[0], NULL);
-            worst9 = fmax(worst9, fabs(acc / (double)k - mean_i));
-        }
-        ex_notef(&opt,
-                 "eq. 9: (1/K) sum_n F_n* <S_n> from mcs_spectrum's means = the mean of I over "
-                 "the same trials, largest difference %.2g",
-                 worst9);
+/* Re <S_freq> of pattern p (eq. 10): closed form, mcs_theory, measured. */
+static void mean_row(const ex_options *opt, int p, const char *quantity, size_t freq,
+                     double closed)
+{
+    double v = 0.0, im = 0.0, se = 0.0;
+    double kn = (double)opt->k / (double)opt->n;
+    int idx = ex_run_probe(&runs[p], freq);
+    double exact = ex_or_na(mcs_theory_mean(&theories[p], freq, &v, &im), &v);
+    double meas = ex_mean(&runs[p].s_re[idx], &se);
+    ex_row r = ex_row_of("sec2", quantity, "eq. 10", mcs_pattern_kind_str(kinds[p]), (long)freq,
+                         EX_NO_FREQ, closed, exact, meas, se, 1e-12 * kn);
+    ex_row_print(opt, &r);
+}
+
+/* Eq. 10 at k = 0, 1 and K, and eq. 11, for pattern p. */
+static void unbiasedness_rows(const ex_options *opt, int p, sec2_summary *s)
+{
+    const size_t n = opt->n, k = opt->k;
+    mean_row(opt, p, "<S_0>", 0u, (double)k / sqrt((double)n));
+    if (ex_run_probe(&runs[p], 1u) >= 0)
+        mean_row(opt, p, "Re <S_k>", 1u, 0.0);
+    if (ex_run_probe(&runs[p], k) >= 0 && k != 1u)
+        mean_row(opt, p, "Re <S_k>", k, 0.0);
+    ex_row r = ex_estimator_mean_row(opt, "sec2", mcs_pattern_kind_str(kinds[p]), &theories[p],
+                                     &runs[p], f);
+    if (p == P_UNIFORM) {
+        s->bias_uniform = r.measured - r.closed_form;
+        s->bias_z = ex_z(r.measured, r.closed_form, r.stderr_, 1e-12);
     }
+}
 
-    /* ---- eq. 10 and 11: unbiasedness ---- */
-    ex_heading(&opt, "unbiasedness: eq. 10 (<S_0> = K/sqrt N, <S_k> = 0 for k > 0) and eq. 11 "
-                     "(<I> = mean of f)");
-    double bias_uniform = EX_NA, bias_z = EX_NA;
-    for (int p = 0; p < P_COUNT; ++p) {
-        ex_run *run = &runs[p];
-        const char *name = mcs_pattern_kind_str(kinds[p]);
-        const size_t probes[2] = {1u, k};
-        double se = 0.0, v = 0.0, im = 0.0, exact = EX_NA;
-        int i0 = ex_run_probe(run, 0u);
-        if (mcs_theory_spectrum_mean(&theories[p], 0u, &v, &im) == MCS_OK)
-            exact = v;
-        double meas = ex_mean(&run->s_re[i0], &se);
-        ex_row r = row_of("<S_0>", "eq. 10", name, 0, (double)k / sqrt((double)n), exact, meas,
-                          se, 1e-12 * kn);
-        ex_row_print(&opt, &r);
-        for (int i = 0; i < 2; ++i) {
-            size_t q = probes[i];
-            int idx = ex_run_probe(run, q);
-            if (idx < 0 || (i == 1 && q == 1u))
-                continue;
-            exact = EX_NA;
-            if (mcs_theory_spectrum_mean(&theories[p], q, &v, &im) == MCS_OK)
-                exact = v;
-            meas = ex_mean(&run->s_re[idx], &se);
-            r = row_of("Re <S_k>", "eq. 10", name, (long)q, 0.0, exact, meas, se, 1e-12 * kn);
-            ex_row_print(&opt, &r);
-        }
-        double closed = or_na(mcs_eq11_unbiased_mean(n, f, &v), &v);
-        exact = or_na(mcs_theory_estimator_mean(&theories[p], n, f, &v), &v);
-        meas = ex_mean(&run->estimate[0], &se);
-        r = row_of("<I>", "eq. 11", name, EX_NO_FREQ, closed, exact, meas, se, 1e-12);
-        ex_row_print(&opt, &r);
-        if (p == P_UNIFORM) {
-            bias_uniform = meas - closed;
-            bias_z = ex_z(meas, closed, se, 1e-12);
-        }
-    }
+/* ---- eq. 10 and 11: unbiasedness ---- */
+static void unbiasedness_section(const ex_options *opt, sec2_summary *s)
+{
+    ex_heading(opt, "unbiasedness: eq. 10 (<S_0> = K/sqrt N, <S_k> = 0 for k > 0) and eq. 11 "
+                    "(<I> = mean of f)");
+    s->bias_uniform = s->bias_z = EX_NA;
+    for (int p = 0; p < P_COUNT; ++p)
+        unbiasedness_rows(opt, p, s);
+}
 
-    /* ---- eq. 13 and 14: variance ---- */
-    ex_heading(&opt, "variance: eq. 13 (all m, n >= 1, with <S_m S_n*>) vs eq. 14 (diagonal "
-                     "m = n only, the power spectrum)");
-    double v13[P_COUNT], v14[P_COUNT], vex[P_COUNT], vme[P_COUNT], vse[P_COUNT];
-    for (int p = 0; p < P_COUNT; ++p) {
-        const char *name = mcs_pattern_kind_str(kinds[p]);
-        double power[MCS_MAX_COV_N] = {0.0}, v = 0.0;
-        int ok = 1;
-        for (size_t q = 1; q < n; ++q)
-            ok = ok && mcs_theory_power(&theories[p], q, &power[q]) == MCS_OK;
-        v13[p] = or_na(mcs_eq13_variance(&theories[p], n, f, &v), &v);
-        v14[p] = ok ? or_na(mcs_eq14_variance(n, k, f, power, &v), &v) : EX_NA;
-        vex[p] = or_na(mcs_theory_variance(&theories[p], n, f, &v), &v);
-        vme[p] = ex_variance(&runs[p].estimate[0], &vse[p]);
-        double fl = 1e-12 * fmax(fabs(v13[p]), 1e-12);
-        ex_row r = row_of("Var[I] full double sum", "eq. 13", name, EX_NO_FREQ, v13[p], vex[p],
-                          vme[p], vse[p], fl);
-        ex_row_print(&opt, &r);
-        r = row_of("Var[I] diagonal (power)", "eq. 14", name, EX_NO_FREQ, v14[p], vex[p], vme[p],
-                   vse[p], fl);
-        ex_row_print(&opt, &r);
-    }
+/* Var[I] of pattern p by eq. 13 and eq. 14, beside the exact and measured. */
+static void variance_rows(const ex_options *opt, int p, sec2_summary *s)
+{
+    const size_t n = opt->n;
+    const char *name = mcs_pattern_kind_str(kinds[p]);
+    double power[MCS_MAX_COV_N] = {0.0}, v = 0.0;
+    int ok = 1;
+    for (size_t q = 1; q < n; ++q)
+        ok = ok && mcs_theory_power(&theories[p], q, &power[q]) == MCS_OK;
+    s->v13[p] = ex_or_na(mcs_eq13_variance(&theories[p], n, opt->k, f, &v), &v);
+    s->v14[p] = ok ? ex_or_na(mcs_eq14_variance(n, opt->k, f, power, &v), &v) : EX_NA;
+    s->vex[p] = ex_or_na(mcs_theory_variance(&theories[p], n, opt->k, f, &v), &v);
+    s->vme[p] = ex_variance(&runs[p].estimate[0], &s->vse[p]);
+    double fl = 1e-12 * fmax(fabs(s->v13[p]), 1e-12);
+    ex_row r = ex_row_of("sec2", "Var[I] full double sum", "eq. 13", name, EX_NO_FREQ, EX_NO_FREQ,
+                         s->v13[p], s->vex[p], s->vme[p], s->vse[p], fl);
+    ex_row_print(opt, &r);
+    r = ex_row_of("sec2", "Var[I] diagonal (power)", "eq. 14", name, EX_NO_FREQ, EX_NO_FREQ,
+                  s->v14[p], s->vex[p], s->vme[p], s->vse[p], fl);
+    ex_row_print(opt, &r);
+}
 
-    ex_heading(&opt, "summary (computed from the rows above)");
-    if (!(vex[P_STRAT] > 0.0) || !(vme[P_STRAT] > 0.0) || !(vme[P_RANDOM] > 0.0)) {
-        ex_note(&opt, "(no summary: the variances vanish for this N and K)");
-        ex_end(&opt);
-        return 0;
+/* ---- eq. 13 and 14: variance ---- */
+static void variance_section(const ex_options *opt, sec2_summary *s)
+{
+    ex_heading(opt, "variance: eq. 13 (all m, n >= 1, with <S_m S_n*>) vs eq. 14 (diagonal "
+                    "m = n only, the power spectrum)");
+    for (int p = 0; p < P_COUNT; ++p)
+        variance_rows(opt, p, s);
+}
+
+static void summary_notes(const ex_options *opt, const sec2_summary *s)
+{
+    ex_heading(opt, "summary (computed from the rows above)");
+    if (!(s->vex[P_STRAT] > 0.0) || !(s->vme[P_STRAT] > 0.0) || !(s->vme[P_RANDOM] > 0.0)) {
+        ex_note(opt, "(no summary: the variances vanish for this N and K)");
+        return;
     }
-    ex_notef(&opt,
+    const double *v13 = s->v13, *v14 = s->v14, *vme = s->vme, *vse = s->vse;
+    ex_notef(opt,
              "stationary patterns: eq. 14 = eq. 13 to %.2g (random) and %.2g (jitter) relative; "
              "both equal the measured variance within %.1f and %.1f stderr",
              ex_rel_gap(v14[P_RANDOM], v13[P_RANDOM], 1e-300),
              ex_rel_gap(v14[P_JITTER], v13[P_JITTER], 1e-300),
              fabs(ex_z(vme[P_RANDOM], v14[P_RANDOM], vse[P_RANDOM], 1e-300)),
              fabs(ex_z(vme[P_JITTER], v14[P_JITTER], vse[P_JITTER], 1e-300)));
-    ex_notef(&opt,
+    ex_notef(opt,
              "stratified (fixed strata): the off-diagonal terms of eq. 13 are %.1f%% of the "
              "variance; eq. 14 misses the measured variance by %.1f%% (z = %.1f), eq. 13 is "
              "within %.1f stderr",
@@ -227,10 +224,27 @@ int main(int argc, char **argv)
              100.0 * (v14[P_STRAT] - vme[P_STRAT]) / vme[P_STRAT],
              ex_z(vme[P_STRAT], v14[P_STRAT], vse[P_STRAT], 1e-300),
              fabs(ex_z(vme[P_STRAT], v13[P_STRAT], vse[P_STRAT], 1e-300)));
-    ex_notef(&opt,
+    ex_notef(opt,
              "uniform: <I> is biased by %.4g (deterministic, z = %.3g); its variance is 0 and "
              "eq. 13 gives (bias)^2 = %.4g instead (%.4g): the mean squared error",
-             bias_uniform, bias_z, bias_uniform * bias_uniform, v13[P_UNIFORM]);
+             s->bias_uniform, s->bias_z, s->bias_uniform * s->bias_uniform, v13[P_UNIFORM]);
+}
+
+int main(int argc, char **argv)
+{
+    ex_options opt = {64u, 8u, 200000ul, 1u, 0};
+    int rc = ex_parse_options(argc, argv, &opt, MCS_MAX_COV_N, EX_MAX_K, help_text);
+    if (rc != EX_PARSE_OK)
+        return rc;
+    if (!measure_all(&opt))
+        return 1;
+
+    sec2_summary summary;
+    ex_begin(&opt, "Section 2: discrete Fourier analysis of sampling (eq. 7-14)");
+    identity_notes(&opt);                  /* eq. 8 and 9 */
+    unbiasedness_section(&opt, &summary);  /* eq. 10 and 11 */
+    variance_section(&opt, &summary);      /* eq. 13 and 14 */
+    summary_notes(&opt, &summary);
     ex_end(&opt);
     return 0;
 }

@@ -7,6 +7,8 @@
  * corrected. */
 #include "mcspec.h"
 #include "measure.h"
+#include "importance.h"
+#include "readout.h"
 #include "report.h"
 
 #include <math.h>
@@ -38,10 +40,6 @@ static const char help_text[] =
     "evaluated at the signed frequency min(k, N - k) wherever a sum over all k\n"
     "is formed.\n";
 
-#define LARGE_N_FACTOR 16u
-
-enum { G_NONE, G_FOLLOW, G_MISMATCH, G_FLAT, G_BALANCED, G_COUNT };
-
 enum { R_RANDOM, R_STRAT, R_RANDOM_G1, R_RANDOM_G2, R_STRAT_G1, R_STRAT_G2, R_STRAT_FLAT,
        R_STRAT_BAL, R_COUNT };
 
@@ -52,87 +50,51 @@ typedef struct {
 } run_spec;
 
 static const run_spec specs[R_COUNT] = {
-    {MCS_PATTERN_RANDOM, G_NONE, "random"},
-    {MCS_PATTERN_STRATIFIED, G_NONE, "stratified"},
-    {MCS_PATTERN_RANDOM, G_FOLLOW, "random+g1"},
-    {MCS_PATTERN_RANDOM, G_MISMATCH, "random+g2"},
-    {MCS_PATTERN_STRATIFIED, G_FOLLOW, "stratified+g1"},
-    {MCS_PATTERN_STRATIFIED, G_MISMATCH, "stratified+g2"},
-    {MCS_PATTERN_STRATIFIED, G_FLAT, "stratified+flat"},
-    {MCS_PATTERN_STRATIFIED, G_BALANCED, "stratified+g1b"},
+    {MCS_PATTERN_RANDOM, EX_G_NONE, "random"},
+    {MCS_PATTERN_STRATIFIED, EX_G_NONE, "stratified"},
+    {MCS_PATTERN_RANDOM, EX_G_FOLLOW, "random+g1"},
+    {MCS_PATTERN_RANDOM, EX_G_MISMATCH, "random+g2"},
+    {MCS_PATTERN_STRATIFIED, EX_G_FOLLOW, "stratified+g1"},
+    {MCS_PATTERN_STRATIFIED, EX_G_MISMATCH, "stratified+g2"},
+    {MCS_PATTERN_STRATIFIED, EX_G_FLAT, "stratified+flat"},
+    {MCS_PATTERN_STRATIFIED, EX_G_BALANCED, "stratified+g1b"},
 };
 
-static mcs_importance imps[G_COUNT];
+static mcs_importance imps[EX_G_COUNT];
 static mcs_importance imp_big; /* a g at a larger N, for limit checks */
 static ex_run runs[R_COUNT];
 static mcs_spectrum spectra[R_COUNT];
 static mcs_theory theories[R_COUNT];
 static double f[MCS_MAX_COV_N], f_const[MCS_MAX_COV_N];
 static size_t n_bins, k_samples;
-
-static const double pi = 3.14159265358979323846;
-
-static double g_weight(int g, double x)
-{
-    switch (g) {
-    case G_FOLLOW:
-    case G_BALANCED:
-        return 0.45 + 0.3 * sin(2.0 * pi * x) + (x >= 0.35 ? 0.3 : 0.0);
-    case G_MISMATCH:
-        return 0.2 + (1.0 - x) * (1.0 - x);
-    default:
-        return 1.0;
-    }
-}
-
-/* Importance function g over m bins. g1b is g1 with every block of m/K bins
- * rescaled to mass 1/K, so each stratum of the warped pattern is m/K whole
- * bins (when K divides m; otherwise it is g1). */
-static mcs_status importance_for(int g, size_t m, mcs_importance *imp)
-{
-    static double w[MCS_MAX_N];
-    for (size_t b = 0; b < m; ++b)
-        w[b] = g_weight(g, ((double)b + 0.5) / (double)m);
-    if (g == G_BALANCED && m % k_samples == 0u) {
-        size_t block = m / k_samples;
-        for (size_t s0 = 0; s0 < m; s0 += block) {
-            double mass = 0.0;
-            for (size_t b = s0; b < s0 + block; ++b)
-                mass += w[b];
-            for (size_t b = s0; b < s0 + block; ++b)
-                w[b] /= mass;
-        }
-    }
-    return mcs_importance_init(imp, m, w);
-}
+static double kn, pfloor; /* K/N, and the rounding scale of a power: 1e-10 K/N K */
 
 static const mcs_importance *imp_of(int r)
 {
-    return specs[r].g == G_NONE ? NULL : &imps[specs[r].g];
+    return specs[r].g == EX_G_NONE ? NULL : &imps[specs[r].g];
 }
 
 static double h_of(int r)
 {
-    return specs[r].g == G_NONE ? 1.0 : imps[specs[r].g].harmonic_mean;
+    return specs[r].g == EX_G_NONE ? 1.0 : imps[specs[r].g].harmonic_mean;
 }
 
-static ex_row row_of(const char *quantity, const char *equation, int r, long k, long l,
-                     double closed, double exact, double measured, double se, double floor_)
+/* Eq. 52 corrected in the primal domain, (1/K)[(1/N) sum f^2/p - fbar^2]: the
+ * Parseval twin of mcs_eq52_variance_corrected, printed as a cross-check. */
+static mcs_status eq52_corrected_primal(const mcs_importance *imp, size_t k, const double *ff,
+                                        double *out)
 {
-    ex_row row = {"sec4", quantity, equation, specs[r].name, k, l, closed, exact, measured, se,
-                  EX_NA, floor_};
-    return row;
-}
-
-/* *v if the call that filled it succeeded, else EX_NA (read after the call). */
-static double or_na(mcs_status st, const double *v)
-{
-    return st == MCS_OK ? *v : EX_NA;
-}
-
-static size_t fold(size_t m, size_t q)
-{
-    return q <= m / 2u ? q : m - q;
+    if (imp == NULL)
+        return MCS_ERR_DOMAIN;
+    double mean = 0.0, m2 = 0.0;
+    for (size_t b = 0; b < imp->n; ++b) {
+        mean += ff[b];
+        m2 += ff[b] * ff[b] / imp->p[b];
+    }
+    mean /= (double)imp->n;
+    m2 /= (double)imp->n;
+    *out = (m2 - mean * mean) / (double)k;
+    return MCS_OK;
 }
 
 /* The chosen frequencies, deduplicated, each in [1, N). */
@@ -142,19 +104,26 @@ static size_t pick_freqs(size_t n, size_t k, size_t *out)
     return ex_pick_freqs(n, cand, 5u, out);
 }
 
-static int setup_and_measure(const ex_options *opt, const size_t *freqs, size_t nfreq)
+/* Importance functions, the runs (each with its pattern's exact moments and
+ * a spectrum accumulator), and the integrands f and f = 1. */
+static int setup_and_measure(const ex_options *opt)
 {
-    for (int g = G_FOLLOW; g < G_COUNT; ++g)
-        if (importance_for(g, opt->n, &imps[g]) != MCS_OK)
+    size_t freqs[5];
+    size_t nfreq = pick_freqs(opt->n, opt->k, freqs);
+    n_bins = opt->n;
+    k_samples = opt->k;
+    kn = (double)opt->k / (double)opt->n;
+    pfloor = 1e-10 * kn * (double)opt->k;
+    ex_integrand_bins(opt->n, f);
+    for (size_t b = 0; b < opt->n; ++b)
+        f_const[b] = 1.0;
+    for (int g = EX_G_FOLLOW; g < EX_G_COUNT; ++g)
+        if (ex_importance_for(g, opt->n, opt->k, &imps[g]) != MCS_OK)
             return 0;
     for (int r = 0; r < R_COUNT; ++r) {
         ex_run *run = &runs[r];
-        mcs_status st = ex_run_init(run, specs[r].kind, opt->n, opt->k, imp_of(r), opt->seed,
-                                    0x400u + (uint64_t)r);
-        if (st == MCS_OK)
-            st = mcs_theory_init(&theories[r], &run->pattern);
-        if (st == MCS_OK)
-            st = mcs_spectrum_init(&spectra[r], opt->n);
+        mcs_status st = ex_run_setup(run, &theories[r], &spectra[r], specs[r].kind, opt->n,
+                                     opt->k, imp_of(r), opt->seed, 0x400u + (uint64_t)r);
         if (st == MCS_OK) {
             ex_run_probe(run, 0u);
             for (size_t i = 0; i < nfreq; ++i)
@@ -174,18 +143,12 @@ static int setup_and_measure(const ex_options *opt, const size_t *freqs, size_t 
     return 1;
 }
 
-static double theory_power(int r, size_t q)
-{
-    double v = 0.0;
-    return or_na(mcs_theory_power(&theories[r], q, &v), &v);
-}
-
 /* Mean over k >= 1 of the exact power. */
 static double theory_mean_power(int r)
 {
     double sum = 0.0;
     for (size_t q = 1; q < n_bins; ++q)
-        sum += theory_power(r, q);
+        sum += ex_theory_power(&theories[r], q);
     return sum / (double)(n_bins - 1u);
 }
 
@@ -193,44 +156,43 @@ static double theory_mean_power(int r)
 static double h_at(int r, size_t m)
 {
     int g = specs[r].g;
-    if (m == n_bins || g == G_NONE || g == G_FLAT)
+    if (m == n_bins || g == EX_G_NONE || g == EX_G_FLAT)
         return h_of(r);
-    if (importance_for(g, m, &imp_big) != MCS_OK)
+    if (ex_importance_for(g, m, k_samples, &imp_big) != MCS_OK)
         return EX_NA;
     return imp_big.harmonic_mean;
 }
 
-/* The note's power for run r at m bins and DFT index q (eq. 23, 33, 45, 50;
- * the sinc^2 forms at the signed frequency min(q, m - q)). */
+/* Run r's g discretised over m bins (NULL without importance), as h_at. */
+static const mcs_importance *imp_at(int r, size_t m)
+{
+    int g = specs[r].g;
+    if (g == EX_G_NONE)
+        return NULL;
+    if (m == n_bins)
+        return &imps[g];
+    if (ex_importance_for(g, m, k_samples, &imp_big) != MCS_OK)
+        return NULL;
+    return &imp_big;
+}
+
+/* The note's power for run r at m bins and DFT index q (eq. 23, 33, 45, 50). */
 static double closed_power_at(int r, size_t m, size_t q)
 {
-    double v = 0.0, h = h_at(r, m);
-    int g = specs[r].g;
-    mcs_status st;
-    if (specs[r].kind == MCS_PATTERN_RANDOM)
-        st = g == G_NONE ? mcs_eq23_random_power(m, k_samples, q, &v)
-                         : mcs_eq45_importance_power(m, k_samples, h, q, &v);
-    else if (g == G_NONE)
-        st = mcs_eq33_stratified_power_limit(m, k_samples, fold(m, q), &v);
-    else
-        st = mcs_eq50_importance_stratified_power(m, k_samples, h, fold(m, q), &v);
-    return or_na(st, &v);
+    return ex_closed_power_at(specs[r].kind, imp_at(r, m), m, k_samples, q);
 }
 
 /* The exact power of a stratified run at m bins where it is known in closed
- * form: strata of m/K whole bins (no g, flat g, g1b) give
- * (K/m)/H + eq. 32 = eq. 33's exact form + (K/m)(1/H - 1) (mcspec's theory
- * tests check this; the notes below check it at N). EX_NA otherwise. */
+ * form: strata of m/K whole bins (no g, flat g, g1b; the notes below check it
+ * at N). EX_NA otherwise. */
 static double exact_power_at(int r, size_t m, size_t q)
 {
     int g = specs[r].g;
-    double v = 0.0, h = h_at(r, m);
+    double h = h_at(r, m);
     if (specs[r].kind != MCS_PATTERN_STRATIFIED ||
-        (g != G_NONE && g != G_FLAT && !(g == G_BALANCED && m % k_samples == 0u)))
+        (g != EX_G_NONE && g != EX_G_FLAT && !(g == EX_G_BALANCED && m % k_samples == 0u)))
         return EX_NA;
-    if (mcs_eq33_stratified_power_exact(m, k_samples, q, &v) != MCS_OK)
-        return EX_NA;
-    return v + (double)k_samples / (double)m * (1.0 / h - 1.0);
+    return ex_whole_bin_power_at(m, k_samples, h, q);
 }
 
 /* Mean over k >= 1 of the closed form (exact = 0) or of exact_power_at (1). */
@@ -242,23 +204,389 @@ static double mean_power_at(int r, size_t m, int exact)
     return sum / (double)(m - 1u);
 }
 
-/* Relative gap of the closed form to the exact value at LARGE_N_FACTOR N,
+/* Relative gap of the closed form to the exact value at EX_LARGE_N_FACTOR N,
  * at index q, or of their means over k >= 1 if q == 0. */
 static double gap_at_large_n(int r, size_t q, double floor_)
 {
-    size_t big = LARGE_N_FACTOR * n_bins;
+    size_t big = EX_LARGE_N_FACTOR * n_bins;
     double c = q == 0u ? mean_power_at(r, big, 0) : closed_power_at(r, big, q);
     double e = q == 0u ? mean_power_at(r, big, 1) : exact_power_at(r, big, q);
     if (isnan(c) || isnan(e))
         return EX_NA;
-    return ex_rel_gap(c, e, floor_ / (double)LARGE_N_FACTOR);
+    return ex_rel_gap(c, e, floor_ / (double)EX_LARGE_N_FACTOR);
 }
 
-static void measured_power(int r, size_t q, double *value, double *se)
+/* A row of run r (its name in the pattern column), no limit check. */
+static ex_row run_row(const char *quantity, const char *equation, int r, long freq, long freq2,
+                      double closed, double exact, double measured, double se, double floor_)
 {
+    return ex_row_of("sec4", quantity, equation, specs[r].name, freq, freq2, closed, exact,
+                     measured, se, floor_);
+}
+
+static void harmonic_mean_note(const ex_options *opt)
+{
+    ex_notef(opt,
+             "harmonic means of p = N g: H(g1) = %.6f, H(g2) = %.6f, H(flat) = %.6f, "
+             "H(g1b) = %.6f",
+             imps[EX_G_FOLLOW].harmonic_mean, imps[EX_G_MISMATCH].harmonic_mean,
+             imps[EX_G_FLAT].harmonic_mean, imps[EX_G_BALANCED].harmonic_mean);
+}
+
+/* ---- unbiasedness ---- */
+static void unbiasedness_section(const ex_options *opt)
+{
+    ex_heading(opt, "unbiasedness under importance sampling: <s_n> = K/N, so <I> = mean of f "
+                    "(eq. 11)");
+    for (int r = R_RANDOM_G1; r < R_COUNT; ++r)
+        ex_estimator_mean_row(opt, "sec4", specs[r].name, &theories[r], &runs[r], f);
+}
+
+/* <|S_q|^2> of run r: eq. 46 (random) or eq. 51 (stratified) at q = 0, where
+ * S_0 is random under importance sampling; eq. 45 or eq. 50 above, with the
+ * limit check of eq. 50 where the strata are whole bins. */
+static void power_row(const ex_options *opt, int r, size_t q)
+{
+    const size_t n = opt->n, k = opt->k;
+    int is_random = specs[r].kind == MCS_PATTERN_RANDOM;
+    double v = 0.0, se;
+    mcs_status st;
+    if (q == 0u) /* eq. 51 is eq. 46, on eq. 51's domain: K dividing N */
+        st = is_random || n % k == 0u ? mcs_eq46_importance_power0(imp_of(r), k, &v)
+                                      : MCS_ERR_DOMAIN;
+    else
+        st = is_random ? mcs_eq45_importance_power(imp_of(r), k, q, &v)
+                       : mcs_eq50_importance_stratified_power(imp_of(r), k, q, &v);
+    double closed = ex_or_na(st, &v);
+    double meas = ex_spectrum_power(&spectra[r], q, &se);
+    const char *eq =
+        q == 0u ? (is_random ? "eq. 46" : "eq. 51") : (is_random ? "eq. 45" : "eq. 50");
+    ex_row row = run_row(q == 0u ? "<|S_0|^2>" : "<|S_k|^2>", eq, r, (long)q, EX_NO_FREQ, closed,
+                         ex_theory_power(&theories[r], q), meas, se, pfloor);
+    if (q > 0u)
+        row.limit_gap = gap_at_large_n(r, q, pfloor);
+    ex_row_print(opt, &row);
+}
+
+/* ---- <|S_0|^2> ---- */
+static void power0_section(const ex_options *opt)
+{
+    ex_heading(opt, "<|S_0|^2>: S_0 is random under importance sampling; eq. 46 (random), "
+                    "eq. 51 (stratified)");
+    for (int r = R_RANDOM_G1; r < R_COUNT; ++r)
+        power_row(opt, r, 0u);
+}
+
+/* Strata of N/K whole bins (none, flat, g1b): mcs_theory's power against
+ * eq. 33's exact form + (K/N)(1/H - 1), largest gap over all k in K/N. */
+static double whole_bin_check(void)
+{
+    const int wr[3] = {R_STRAT, R_STRAT_FLAT, R_STRAT_BAL};
+    double worst = 0.0;
+    for (size_t q = 1; q < n_bins; ++q) {
+        for (int i = 0; i < 3; ++i) {
+            double e = exact_power_at(wr[i], n_bins, q);
+            if (!isnan(e))
+                worst = fmax(worst, fabs(ex_theory_power(&theories[wr[i]], q) - e) / kn);
+        }
+    }
+    return worst;
+}
+
+/* ---- <|S_k|^2>, k >= 1 ---- */
+static void power_section(const ex_options *opt)
+{
+    const int rs[5] = {R_RANDOM_G1, R_RANDOM_G2, R_STRAT_G1, R_STRAT_FLAT, R_STRAT_BAL};
+    size_t freqs[5];
+    size_t nfreq = pick_freqs(opt->n, opt->k, freqs);
+    ex_heading(opt, "<|S_k|^2>, k >= 1: eq. 45 (random, K/(N H)) and eq. 50 (stratified, "
+                    "(K/N)(1/H - sinc^2(pi k/K)))");
+    double check = whole_bin_check();
+    for (int i = 0; i < 5; ++i)
+        for (size_t j = 0; j < nfreq; ++j)
+            power_row(opt, rs[i], freqs[j]);
+    ex_notef(opt,
+             "strata of N/K whole bins (none, flat, g1b): mcspec theory's spectrum equals "
+             "eq. 33's exact finite-N form + (K/N)(1/H - 1) to %.2g K/N over all k; the limit "
+             "checks use that form at %u N",
+             check, EX_LARGE_N_FACTOR);
+}
+
+/* <S_k S_l*> of run r against eq. 43 (random) or eq. 49 (stratified).
+ * Returns the larger |z| of its parts against 0 (random runs; else 0). */
+static double cross_rows(const ex_options *opt, int r, size_t freq_k, size_t freq_l)
+{
+    int is_random = specs[r].kind == MCS_PATTERN_RANDOM;
+    int idx = ex_run_probe_pair(&runs[r], freq_k, freq_l);
+    if (idx < 0)
+        return 0.0;
+    const size_t k = opt->k;
+    double a = 0.0, b = 0.0;
+    mcs_status st =
+        is_random ? mcs_eq43_importance_cross(imp_of(r), k, freq_k, freq_l, &a, &b)
+                  : mcs_eq49_importance_stratified_cross(imp_of(r), k, freq_k, freq_l, &a, &b);
+    ex_complex closed = ex_complex_or_na(st, &a, &b);
+    ex_complex exact =
+        ex_complex_or_na(mcs_theory_cross(&theories[r], freq_k, freq_l, &a, &b), &a, &b);
+    ex_complex se, meas = ex_run_mean_pair(&runs[r], idx, &se);
+    double floor_ = 1e-10 * kn;
+    ex_row_print_complex(opt, "sec4", "<S_k S_l*>", is_random ? "eq. 43" : "eq. 49",
+                         specs[r].name, (long)freq_k, (long)freq_l, closed, exact, meas, se,
+                         floor_);
+    ex_complex zero = {0.0, 0.0};
+    return is_random ? ex_z_complex(meas, zero, se, floor_) : 0.0;
+}
+
+/* ---- cross spectrum Q_{k-l} ---- */
+static void cross_section(const ex_options *opt)
+{
+    const int rs[4] = {R_RANDOM_G1, R_RANDOM_G2, R_STRAT_G1, R_STRAT_BAL};
+    const size_t pk[3] = {1u, 3u, 1u}, pl[3] = {2u, 1u, opt->k + 1u};
+    ex_heading(opt, "<S_k S_l*>, k != l (= Cov(S_k, S_l): <S_k> = 0 for k >= 1): eq. 43 "
+                    "(K/N) N^{-1/2} Q_{k-l} (random), eq. 49 (stratified)");
+    double worst_z = 0.0;
+    for (int i = 0; i < 4; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            if (j == 2 && rs[i] != R_STRAT_BAL)
+                continue; /* k = l (mod K): where eq. 49 can hold */
+            worst_z = fmax(worst_z, cross_rows(opt, rs[i], pk[j], pl[j]));
+        }
+    }
+    ex_notef(opt,
+             "random with importance is not stationary: an off-diagonal <S_k S_l*> lies %.0f "
+             "stderr from 0",
+             worst_z);
+}
+
+/* What the later sections and the summary read from the rows above them. */
+typedef struct {
+    /* mean over k >= 1 of <|S_k|^2>: measured (Parseval), its stderr, exact */
+    double mean_meas[R_COUNT], mean_se[R_COUNT], mean_exact[R_COUNT];
+    int rises_everywhere[R_COUNT]; /* exact power above no-IS at every k >= 1 */
+    size_t worst_q;                /* where stratified+g1 rises least (0: none) */
+    double worst_diff;             /* and by how much */
+    double var_meas[R_COUNT], var_se[R_COUNT], var_exact[R_COUNT]; /* Var[I] of f */
+} sec4_summary;
+
+/* The run without importance that run r is compared with. */
+static int base_of(int r)
+{
+    return specs[r].kind == MCS_PATTERN_RANDOM ? R_RANDOM : R_STRAT;
+}
+
+/* Where the exact rise of stratified+g1 over plain stratified is smallest
+ * (k <= N/2; the rest mirror it), and whether any k falls. */
+static void rise_scan(sec4_summary *s)
+{
+    s->worst_q = 0;
+    s->worst_diff = (double)INFINITY;
+    for (int r = R_RANDOM_G1; r <= R_STRAT_G2; ++r) {
+        int b = base_of(r);
+        s->rises_everywhere[r] = 1;
+        for (size_t q = 1; q < n_bins; ++q) {
+            double d = ex_theory_power(&theories[r], q) - ex_theory_power(&theories[b], q);
+            s->rises_everywhere[r] = s->rises_everywhere[r] && d > 0.0;
+            if (r == R_STRAT_G1 && q <= n_bins / 2u && d < s->worst_diff) {
+                s->worst_diff = d;
+                s->worst_q = q;
+            }
+        }
+    }
+}
+
+/* A row of run a's rise over its base run: eq. 45 - eq. 23 = eq. 50 - eq. 33
+ * claim (K/N)(1/H - 1), against the exact and the measured difference. The
+ * runs are independent, so the standard errors add in quadrature. */
+static void rise_row(const ex_options *opt, const char *quantity, int a, long freq,
+                     double exact_diff, double meas_diff, double se_a, double se_b)
+{
+    int is_random = specs[a].kind == MCS_PATTERN_RANDOM;
+    double claim = kn * (1.0 / h_of(a) - 1.0);
+    ex_row row = run_row(quantity, is_random ? "eq. 45" : "eq. 50", a, freq, EX_NO_FREQ, claim,
+                         exact_diff, meas_diff, sqrt(se_a * se_a + se_b * se_b), pfloor);
+    ex_row_print(opt, &row);
+}
+
+/* Importance minus none, same base pattern: the means over k >= 1, then the
+ * power where stratified+g1 rises least. */
+static void rise_rows(const ex_options *opt, const sec4_summary *s)
+{
+    const int rs[5] = {R_RANDOM_G1, R_RANDOM_G2, R_STRAT_G1, R_STRAT_G2, R_STRAT_BAL};
+    for (int i = 0; i < 5; ++i) {
+        int a = rs[i], b = base_of(a);
+        rise_row(opt, "mean power rise vs no IS", a, EX_NO_FREQ,
+                 s->mean_exact[a] - s->mean_exact[b], s->mean_meas[a] - s->mean_meas[b],
+                 s->mean_se[a], s->mean_se[b]);
+    }
+    if (s->worst_q == 0u)
+        return;
+    const int at[2] = {R_RANDOM_G1, R_STRAT_G1};
+    size_t q = s->worst_q;
+    for (int i = 0; i < 2; ++i) {
+        int a = at[i], b = base_of(a);
+        double sa, ma = ex_spectrum_power(&spectra[a], q, &sa);
+        double sb, mb = ex_spectrum_power(&spectra[b], q, &sb);
+        rise_row(opt, "power rise vs no IS", a, (long)q,
+                 ex_theory_power(&theories[a], q) - ex_theory_power(&theories[b], q), ma - mb, sa,
+                 sb);
+    }
+}
+
+/* ---- the harmonic-mean claim ---- */
+static void mean_power_section(const ex_options *opt, sec4_summary *s)
+{
+    ex_heading(opt, "does importance sampling raise the power spectrum? mean of <|S_k|^2> over "
+                    "k >= 1 (Parseval, per trial)");
+    for (int r = 0; r < R_COUNT; ++r) {
+        double scale = 1.0 / (double)(n_bins - 1u);
+        s->mean_meas[r] = ex_mean(&runs[r].parseval, &s->mean_se[r]) * scale;
+        s->mean_se[r] *= scale;
+        s->mean_exact[r] = theory_mean_power(r);
+        int is_random = specs[r].kind == MCS_PATTERN_RANDOM;
+        const char *eq = is_random ? (specs[r].g == EX_G_NONE ? "eq. 23" : "eq. 45")
+                                   : (specs[r].g == EX_G_NONE ? "eq. 33" : "eq. 50");
+        ex_row row = run_row("mean_k>=1 <|S_k|^2>", eq, r, EX_NO_FREQ, EX_NO_FREQ,
+                             mean_power_at(r, n_bins, 0), s->mean_exact[r], s->mean_meas[r],
+                             s->mean_se[r], pfloor);
+        /* EX_NA unless strata are whole bins */
+        row.limit_gap = gap_at_large_n(r, 0u, pfloor);
+        ex_row_print(opt, &row);
+    }
+    rise_scan(s);
+    rise_rows(opt, s);
+}
+
+/* A Var[I] row of run r for f, beside its exact and measured variance. */
+static void variance_row(const ex_options *opt, const char *quantity, const char *eq, int r,
+                         double closed, const sec4_summary *s, double floor_)
+{
+    ex_row row = run_row(quantity, eq, r, EX_NO_FREQ, EX_NO_FREQ, closed, s->var_exact[r],
+                         s->var_meas[r], s->var_se[r], floor_);
+    ex_row_print(opt, &row);
+}
+
+/* ---- eq. 52 ---- */
+static void eq52_section(const ex_options *opt, sec4_summary *s)
+{
+    const size_t n = opt->n, k = opt->k;
+    ex_heading(opt, "variance of random sampling with importance: eq. 52 as printed (k, l >= 1) "
+                    "and corrected (all k, l minus |F_0|^2/N)");
     double v = 0.0;
-    *value = or_na(mcs_spectrum_power(&spectra[r], q, &v), &v);
-    *se = or_na(mcs_spectrum_power_stderr(&spectra[r], q, &v), &v);
+    for (int r = 0; r < R_COUNT; ++r) {
+        s->var_meas[r] = ex_variance(&runs[r].estimate[0], &s->var_se[r]);
+        s->var_exact[r] = ex_or_na(mcs_theory_variance(&theories[r], n, k, f, &v), &v);
+    }
+    double primal_vs_spectral = 0.0;
+    for (int r = R_RANDOM_G1; r <= R_RANDOM_G2; ++r) {
+        double fl = 1e-12 * fmax(fabs(s->var_exact[r]), 1e-12);
+        double printed = ex_or_na(mcs_eq52_variance_printed(imp_of(r), k, f, &v), &v);
+        double corrected = ex_or_na(mcs_eq52_variance_corrected(imp_of(r), k, f, &v), &v);
+        double primal = ex_or_na(eq52_corrected_primal(imp_of(r), k, f, &v), &v);
+        double conv = ex_or_na(mcs_eq55_variance_convolution(imp_of(r), k, f, &v), &v);
+        primal_vs_spectral = fmax(primal_vs_spectral, ex_rel_gap(primal, corrected, 1e-300));
+        variance_row(opt, "Var[I] as printed", "eq. 52", r, printed, s, fl);
+        variance_row(opt, "Var[I] corrected", "eq. 52c", r, corrected, s, fl);
+        variance_row(opt, "Var[I] convolution form", "eq. 55", r, conv, s, fl);
+    }
+    double v25 = ex_or_na(mcs_eq25_random_variance(n, k, f, &v), &v);
+    variance_row(opt, "Var[I] no importance", "eq. 25", R_RANDOM, v25, s,
+                 1e-12 * fmax(fabs(v25), 1e-12));
+    ex_notef(opt,
+             "eq. 52 corrected, spectral and primal forms ((1/K)[(1/N) sum f^2/p - fbar^2]) "
+             "agree to %.2g",
+             primal_vs_spectral);
+}
+
+/* The two bound rows of run r for integrand `which` (0: f, 1: f = 1), and
+ * how the measurement compares, appended to above. */
+static void eq58_rows(const ex_options *opt, int r, int which, char *above, size_t *used,
+                      size_t size)
+{
+    const size_t n = opt->n, k = opt->k;
+    const double *ff = which == 0 ? f : f_const;
+    double v = 0.0, se = 0.0;
+    double exact = ex_or_na(mcs_theory_variance(&theories[r], n, k, ff, &v), &v);
+    double meas = ex_variance(&runs[r].estimate[which], &se);
+    double printed = ex_or_na(mcs_eq58_bound_printed(imp_of(r), k, ff, &v), &v);
+    double corrected = ex_or_na(mcs_eq58_bound_corrected(imp_of(r), k, ff, &v), &v);
+    double fl = 1e-12 * fmax(fabs(exact), 1e-12);
+    const char *qn = which == 0 ? "Var[I] bound f" : "Var[I] bound f = 1";
+    const char *qc = which == 0 ? "Var[I] bound f corrected" : "Var[I] bound f=1 corrected";
+    ex_row row = run_row(qn, "eq. 58", r, EX_NO_FREQ, EX_NO_FREQ, printed, exact, meas, se, fl);
+    ex_row_print_bound(opt, &row);
+    row = run_row(qc, "eq. 58c", r, EX_NO_FREQ, EX_NO_FREQ, corrected, exact, meas, se, fl);
+    ex_row_print_bound(opt, &row);
+    if (*used < size) {
+        int wrote = snprintf(above + *used, size - *used,
+                             "%s %s: measured %s printed, %s corrected; ", specs[r].name,
+                             which == 0 ? "f" : "f=1", meas <= printed ? "<=" : ">",
+                             meas <= corrected ? "<=" : ">");
+        if (wrote > 0)
+            *used += (size_t)wrote;
+    }
+}
+
+/* ---- eq. 58 ---- */
+static void eq58_section(const ex_options *opt)
+{
+    ex_heading(opt, "upper bound on Var[I], random with importance: eq. 58 as printed and "
+                    "corrected ((1/K) sum_all |F_n|^2 (1/H - 1/N)); bound rows");
+    char above[256] = "";
+    size_t used = 0;
+    for (int r = R_RANDOM_G1; r <= R_RANDOM_G2; ++r)
+        for (int which = 0; which < 2; ++which)
+            eq58_rows(opt, r, which, above, &used, sizeof above);
+    ex_notef(opt, "measured Var[I] against the bounds: %s", above);
+}
+
+/* The power part of the summary: does importance raise it, and by how much. */
+static void power_summary(const ex_options *opt, const sec4_summary *s)
+{
+    const double *mm = s->mean_meas, *ms = s->mean_se;
+    ex_notef(opt,
+             "random: the exact power %s at every k >= 1 with g1 and %s with g2; mean power "
+             "%.4g -> %.4g with g1 (ratio %.4f, 1/H = %.4f), %.4g with g2 (ratio %.4f, 1/H = "
+             "%.4f)",
+             s->rises_everywhere[R_RANDOM_G1] ? "rises" : "does NOT rise",
+             s->rises_everywhere[R_RANDOM_G2] ? "rises" : "does NOT rise", mm[R_RANDOM],
+             mm[R_RANDOM_G1], mm[R_RANDOM_G1] / mm[R_RANDOM], 1.0 / h_of(R_RANDOM_G1),
+             mm[R_RANDOM_G2], mm[R_RANDOM_G2] / mm[R_RANDOM], 1.0 / h_of(R_RANDOM_G2));
+    for (int r = R_STRAT_G1; r <= R_STRAT_G2; ++r)
+        ex_notef(opt,
+                 "%s: the mean power over k >= 1 rises by %.4g +- %.2g (eq. 50's claim %.4g, "
+                 "exact %.4g); the exact power %s at every k >= 1",
+                 specs[r].name, mm[r] - mm[R_STRAT],
+                 sqrt(ms[r] * ms[r] + ms[R_STRAT] * ms[R_STRAT]), kn * (1.0 / h_of(r) - 1.0),
+                 s->mean_exact[r] - s->mean_exact[R_STRAT],
+                 s->rises_everywhere[r] ? "rises" : "does NOT rise");
+    if (s->worst_q > 0u)
+        ex_notef(opt,
+                 "stratified+g1: smallest exact change at k = %zu: %+.4g (eq. 50 claims %+.4g at "
+                 "every k)",
+                 s->worst_q, s->worst_diff, kn * (1.0 / h_of(R_STRAT_G1) - 1.0));
+}
+
+static void summary_notes(const ex_options *opt, const sec4_summary *s)
+{
+    ex_heading(opt, "summary (computed from the rows above)");
+    if (opt->n < 2u || !(s->var_exact[R_RANDOM_G2] > 0.0)) {
+        ex_note(opt, "(no summary: N = 1 has no frequency k >= 1)");
+        return;
+    }
+    power_summary(opt, s);
+    const double *vm = s->var_meas, *vs = s->var_se, *ve = s->var_exact;
+    ex_notef(opt,
+             "yet Var[I] = %.4g with g1 and %.4g with g2 against %.4g without: the gain or loss "
+             "is in the off-diagonal Q_{k-l} terms",
+             vm[R_RANDOM_G1], vm[R_RANDOM_G2], vm[R_RANDOM]);
+    double v = 0.0;
+    double pr = ex_or_na(mcs_eq52_variance_printed(imp_of(R_RANDOM_G2), opt->k, f, &v), &v);
+    ex_notef(opt,
+             "eq. 52 as printed is off by %.1f%% for g2 (z = %.1f against the measurement); "
+             "the corrected form is within %.1f stderr",
+             100.0 * (pr - ve[R_RANDOM_G2]) / ve[R_RANDOM_G2],
+             ex_z(vm[R_RANDOM_G2], pr, vs[R_RANDOM_G2], 1e-300),
+             fabs(ex_z(vm[R_RANDOM_G2], ve[R_RANDOM_G2], vs[R_RANDOM_G2], 1e-300)));
 }
 
 int main(int argc, char **argv)
@@ -266,330 +594,21 @@ int main(int argc, char **argv)
     ex_options opt = {64u, 8u, 200000ul, 1u, 0};
     int rc = ex_parse_options(argc, argv, &opt, MCS_MAX_COV_N, EX_MAX_K, help_text);
     if (rc != EX_PARSE_OK)
-        return rc == EX_PARSE_HELP ? 0 : 2;
-    const size_t n = opt.n, k = opt.k;
-    n_bins = n;
-    k_samples = k;
-    const double kn = (double)k / (double)n;
-    const double pfloor = 1e-10 * kn * (double)k;
-    ex_integrand_bins(n, f);
-    for (size_t b = 0; b < n; ++b)
-        f_const[b] = 1.0;
-    size_t freqs[5];
-    size_t nfreq = pick_freqs(n, k, freqs);
-    if (!setup_and_measure(&opt, freqs, nfreq))
+        return rc;
+    if (!setup_and_measure(&opt))
         return 1;
 
+    sec4_summary summary = {0};
     ex_begin(&opt, "Section 4: importance sampling (eq. 38-58)");
-    ex_notef(&opt,
-             "harmonic means of p = N g: H(g1) = %.6f, H(g2) = %.6f, H(flat) = %.6f, "
-             "H(g1b) = %.6f",
-             imps[G_FOLLOW].harmonic_mean, imps[G_MISMATCH].harmonic_mean,
-             imps[G_FLAT].harmonic_mean, imps[G_BALANCED].harmonic_mean);
-
-    /* ---- unbiasedness ---- */
-    ex_heading(&opt, "unbiasedness under importance sampling: <s_n> = K/N, so <I> = mean of f "
-                     "(eq. 11)");
-    for (int r = R_RANDOM_G1; r < R_COUNT; ++r) {
-        double v = 0.0, se = 0.0;
-        double closed = or_na(mcs_eq11_unbiased_mean(n, f, &v), &v);
-        double exact = or_na(mcs_theory_estimator_mean(&theories[r], n, f, &v), &v);
-        double meas = ex_mean(&runs[r].estimate[0], &se);
-        ex_row row = row_of("<I>", "eq. 11", r, EX_NO_FREQ, EX_NO_FREQ, closed, exact, meas, se,
-                            1e-12);
-        ex_row_print(&opt, &row);
-    }
-
-    /* ---- <|S_0|^2> ---- */
-    ex_heading(&opt, "<|S_0|^2>: S_0 is random under importance sampling; eq. 46 (random), "
-                     "eq. 51 (stratified)");
-    for (int r = R_RANDOM_G1; r < R_COUNT; ++r) {
-        double v = 0.0, meas, se, h = h_of(r);
-        int is_random = specs[r].kind == MCS_PATTERN_RANDOM;
-        double closed = is_random ? or_na(mcs_eq46_importance_power0(n, k, h, &v), &v)
-                                  : or_na(mcs_eq51_importance_stratified_power0(n, k, h, &v), &v);
-        measured_power(r, 0u, &meas, &se);
-        ex_row row = row_of("<|S_0|^2>", is_random ? "eq. 46" : "eq. 51", r, 0, EX_NO_FREQ,
-                            closed, theory_power(r, 0u), meas, se, pfloor);
-        ex_row_print(&opt, &row);
-    }
-
-    /* ---- <|S_k|^2>, k >= 1 ---- */
-    ex_heading(&opt, "<|S_k|^2>, k >= 1: eq. 45 (random, K/(N H)) and eq. 50 (stratified, "
-                     "(K/N)(1/H - sinc^2(pi k/K)))");
-    double whole_bin_check = 0.0;
-    for (size_t q = 1; q < n; ++q) {
-        const int wr[3] = {R_STRAT, R_STRAT_FLAT, R_STRAT_BAL};
-        for (int i = 0; i < 3; ++i) {
-            double e = exact_power_at(wr[i], n, q);
-            if (!isnan(e))
-                whole_bin_check = fmax(whole_bin_check, fabs(theory_power(wr[i], q) - e) / kn);
-        }
-    }
-    {
-        const int rs[5] = {R_RANDOM_G1, R_RANDOM_G2, R_STRAT_G1, R_STRAT_FLAT, R_STRAT_BAL};
-        for (int i = 0; i < 5; ++i) {
-            int r = rs[i];
-            int is_random = specs[r].kind == MCS_PATTERN_RANDOM;
-            for (size_t j = 0; j < nfreq; ++j) {
-                size_t q = freqs[j];
-                double v = 0.0, meas, se, h = h_of(r);
-                double closed = is_random
-                                    ? or_na(mcs_eq45_importance_power(n, k, h, q, &v), &v)
-                                    : or_na(mcs_eq50_importance_stratified_power(n, k, h, q, &v),
-                                            &v);
-                measured_power(r, q, &meas, &se);
-                ex_row row = row_of("<|S_k|^2>", is_random ? "eq. 45" : "eq. 50", r, (long)q,
-                                    EX_NO_FREQ, closed, theory_power(r, q), meas, se, pfloor);
-                row.limit_gap = gap_at_large_n(r, q, pfloor);
-                ex_row_print(&opt, &row);
-            }
-        }
-    }
-    ex_notef(&opt,
-             "strata of N/K whole bins (none, flat, g1b): mcspec theory's spectrum equals "
-             "eq. 33's exact finite-N form + (K/N)(1/H - 1) to %.2g K/N over all k; the limit "
-             "checks use that form at %u N",
-             whole_bin_check, LARGE_N_FACTOR);
-
-    /* ---- cross spectrum Q_{k-l} ---- */
-    ex_heading(&opt, "<S_k S_l*>, k != l (= Cov(S_k, S_l): <S_k> = 0 for k >= 1): eq. 43 "
-                     "(K/N) N^{-1/2} Q_{k-l} (random), eq. 49 (stratified)");
-    double q_worst_z = 0.0;
-    {
-        const int rs[4] = {R_RANDOM_G1, R_RANDOM_G2, R_STRAT_G1, R_STRAT_BAL};
-        const size_t pk[3] = {1u, 3u, 1u}, pl[3] = {2u, 1u, k + 1u};
-        for (int i = 0; i < 4; ++i) {
-            int r = rs[i];
-            int is_random = specs[r].kind == MCS_PATTERN_RANDOM;
-            for (int j = 0; j < 3; ++j) {
-                if (j == 2 && r != R_STRAT_BAL)
-                    continue; /* k = l (mod K): where eq. 49 can hold */
-                int idx = ex_run_probe_pair(&runs[r], pk[j], pl[j]);
-                if (idx < 0)
-                    continue;
-                double a = 0.0, b = 0.0, cre = EX_NA, cim = EX_NA, ere = EX_NA, eim = EX_NA;
-                mcs_status st =
-                    is_random ? mcs_eq43_importance_cross(imp_of(r), k, pk[j], pl[j], &a, &b)
-                              : mcs_eq49_importance_stratified_cross(imp_of(r), k, pk[j], pl[j],
-                                                                     &a, &b);
-                if (st == MCS_OK) {
-                    cre = a;
-                    cim = b;
-                }
-                if (mcs_theory_cross(&theories[r], pk[j], pl[j], &a, &b) == MCS_OK) {
-                    ere = a;
-                    eim = b;
-                }
-                double se_re = 0.0, se_im = 0.0;
-                double mre = ex_mean(&runs[r].x_re[idx], &se_re);
-                double mim = ex_mean(&runs[r].x_im[idx], &se_im);
-                const char *eq = is_random ? "eq. 43" : "eq. 49";
-                ex_row r1 = row_of("Re <S_k S_l*>", eq, r, (long)pk[j], (long)pl[j], cre, ere,
-                                   mre, se_re, 1e-10 * kn);
-                ex_row r2 = row_of("Im <S_k S_l*>", eq, r, (long)pk[j], (long)pl[j], cim, eim,
-                                   mim, se_im, 1e-10 * kn);
-                ex_row_print(&opt, &r1);
-                ex_row_print(&opt, &r2);
-                if (is_random)
-                    q_worst_z = fmax(q_worst_z, fmax(fabs(ex_z(mre, 0.0, se_re, 1e-10 * kn)),
-                                                     fabs(ex_z(mim, 0.0, se_im, 1e-10 * kn))));
-            }
-        }
-    }
-    ex_notef(&opt,
-             "random with importance is not stationary: an off-diagonal <S_k S_l*> lies %.0f "
-             "stderr from 0",
-             q_worst_z);
-
-    /* ---- the harmonic-mean claim ---- */
-    ex_heading(&opt, "does importance sampling raise the power spectrum? mean of <|S_k|^2> over "
-                     "k >= 1 (Parseval, per trial)");
-    double mean_meas[R_COUNT], mean_se[R_COUNT], mean_exact[R_COUNT];
-    for (int r = 0; r < R_COUNT; ++r) {
-        double scale = 1.0 / (double)(n - 1u);
-        mean_meas[r] = ex_mean(&runs[r].parseval, &mean_se[r]) * scale;
-        mean_se[r] *= scale;
-        mean_exact[r] = theory_mean_power(r);
-    }
-    for (int r = 0; r < R_COUNT; ++r) {
-        int is_random = specs[r].kind == MCS_PATTERN_RANDOM;
-        const char *eq = is_random ? (specs[r].g == G_NONE ? "eq. 23" : "eq. 45")
-                                   : (specs[r].g == G_NONE ? "eq. 33" : "eq. 50");
-        ex_row row = row_of("mean_k>=1 <|S_k|^2>", eq, r, EX_NO_FREQ, EX_NO_FREQ,
-                            mean_power_at(r, n, 0), mean_exact[r], mean_meas[r], mean_se[r],
-                            pfloor);
-        row.limit_gap = gap_at_large_n(r, 0u, pfloor); /* EX_NA unless strata are whole bins */
-        ex_row_print(&opt, &row);
-    }
-    /* Importance minus none, same base pattern: independent runs, so the
-     * standard errors add in quadrature. */
-    /* Where the exact rise of stratified+g1 over plain stratified is smallest
-     * (k <= N/2; the rest mirror it), and whether any k falls. */
-    size_t worst_q = 0;
-    double worst_diff = INFINITY;
-    int rises_everywhere[R_COUNT] = {0};
-    for (int r = R_RANDOM_G1; r <= R_STRAT_G2; ++r) {
-        int b = specs[r].kind == MCS_PATTERN_RANDOM ? R_RANDOM : R_STRAT;
-        rises_everywhere[r] = 1;
-        for (size_t q = 1; q < n; ++q) {
-            double d = theory_power(r, q) - theory_power(b, q);
-            rises_everywhere[r] = rises_everywhere[r] && d > 0.0;
-            if (r == R_STRAT_G1 && q <= n / 2u && d < worst_diff) {
-                worst_diff = d;
-                worst_q = q;
-            }
-        }
-    }
-    {
-        const int pairs[5][2] = {{R_RANDOM_G1, R_RANDOM},
-                                 {R_RANDOM_G2, R_RANDOM},
-                                 {R_STRAT_G1, R_STRAT},
-                                 {R_STRAT_G2, R_STRAT},
-                                 {R_STRAT_BAL, R_STRAT}};
-        for (int i = 0; i < 5; ++i) {
-            int a = pairs[i][0], b = pairs[i][1];
-            double claim = kn * (1.0 / h_of(a) - 1.0); /* eq. 45 - eq. 23 = eq. 50 - eq. 33 */
-            double se = sqrt(mean_se[a] * mean_se[a] + mean_se[b] * mean_se[b]);
-            int is_random = specs[a].kind == MCS_PATTERN_RANDOM;
-            ex_row row = row_of("mean power rise vs no IS", is_random ? "eq. 45" : "eq. 50", a,
-                                EX_NO_FREQ, EX_NO_FREQ, claim, mean_exact[a] - mean_exact[b],
-                                mean_meas[a] - mean_meas[b], se, pfloor);
-            ex_row_print(&opt, &row);
-        }
-        if (worst_q > 0u) {
-            const int rs[2] = {R_RANDOM_G1, R_STRAT_G1};
-            for (int i = 0; i < 2; ++i) {
-                int a = rs[i], b = specs[a].kind == MCS_PATTERN_RANDOM ? R_RANDOM : R_STRAT;
-                double ma, sa, mb, sb;
-                measured_power(a, worst_q, &ma, &sa);
-                measured_power(b, worst_q, &mb, &sb);
-                ex_row row = row_of("power rise vs no IS", i == 0 ? "eq. 45" : "eq. 50", a,
-                                    (long)worst_q, EX_NO_FREQ, kn * (1.0 / h_of(a) - 1.0),
-                                    theory_power(a, worst_q) - theory_power(b, worst_q), ma - mb,
-                                    sqrt(sa * sa + sb * sb), pfloor);
-                ex_row_print(&opt, &row);
-            }
-        }
-    }
-
-    /* ---- eq. 52 ---- */
-    ex_heading(&opt, "variance of random sampling with importance: eq. 52 as printed (k, l >= 1) "
-                     "and corrected (all k, l minus |F_0|^2/N)");
-    double var_meas[R_COUNT], var_se[R_COUNT], var_exact[R_COUNT];
-    for (int r = 0; r < R_COUNT; ++r) {
-        double v = 0.0;
-        var_meas[r] = ex_variance(&runs[r].estimate[0], &var_se[r]);
-        var_exact[r] = or_na(mcs_theory_variance(&theories[r], n, f, &v), &v);
-    }
-    double primal_vs_spectral = 0.0;
-    for (int r = R_RANDOM_G1; r <= R_RANDOM_G2; ++r) {
-        double v = 0.0, fl = 1e-12 * fmax(fabs(var_exact[r]), 1e-12);
-        double printed = or_na(mcs_eq52_variance_printed(imp_of(r), k, f, &v), &v);
-        double corrected = or_na(mcs_eq52_variance_corrected(imp_of(r), k, f, &v), &v);
-        double primal = or_na(mcs_eq52_variance_corrected_primal(imp_of(r), k, f, &v), &v);
-        double conv = or_na(mcs_eq55_variance_convolution(imp_of(r), k, f, &v), &v);
-        primal_vs_spectral = fmax(primal_vs_spectral, ex_rel_gap(primal, corrected, 1e-300));
-        ex_row row = row_of("Var[I] as printed", "eq. 52", r, EX_NO_FREQ, EX_NO_FREQ, printed,
-                            var_exact[r], var_meas[r], var_se[r], fl);
-        ex_row_print(&opt, &row);
-        row = row_of("Var[I] corrected", "eq. 52c", r, EX_NO_FREQ, EX_NO_FREQ, corrected,
-                     var_exact[r], var_meas[r], var_se[r], fl);
-        ex_row_print(&opt, &row);
-        row = row_of("Var[I] convolution form", "eq. 55", r, EX_NO_FREQ, EX_NO_FREQ, conv,
-                     var_exact[r], var_meas[r], var_se[r], fl);
-        ex_row_print(&opt, &row);
-    }
-    {
-        double v = 0.0;
-        double v25 = or_na(mcs_eq25_random_variance(n, k, f, &v), &v);
-        ex_row row = row_of("Var[I] no importance", "eq. 25", R_RANDOM, EX_NO_FREQ, EX_NO_FREQ,
-                            v25, var_exact[R_RANDOM], var_meas[R_RANDOM], var_se[R_RANDOM],
-                            1e-12 * fmax(fabs(v25), 1e-12));
-        ex_row_print(&opt, &row);
-    }
-    ex_notef(&opt,
-             "eq. 52 corrected, spectral and primal forms ((1/K)[(1/N) sum f^2/p - fbar^2]) "
-             "agree to %.2g",
-             primal_vs_spectral);
-
-    /* ---- eq. 58 ---- */
-    ex_heading(&opt, "upper bound on Var[I], random with importance: eq. 58 as printed and "
-                     "corrected ((1/K) sum_all |F_n|^2 (1/H - 1/N)); bound rows");
-    char above[256] = "";
-    size_t used = 0;
-    for (int r = R_RANDOM_G1; r <= R_RANDOM_G2; ++r) {
-        for (int which = 0; which < 2; ++which) {
-            const double *ff = which == 0 ? f : f_const;
-            double v = 0.0, se = 0.0, h = h_of(r);
-            double exact = or_na(mcs_theory_variance(&theories[r], n, ff, &v), &v);
-            double meas = ex_variance(&runs[r].estimate[which], &se);
-            double printed = or_na(mcs_eq58_bound_printed(n, k, h, ff, &v), &v);
-            double corrected = or_na(mcs_eq58_bound_corrected(n, k, h, ff, &v), &v);
-            double fl = 1e-12 * fmax(fabs(exact), 1e-12);
-            const char *qn = which == 0 ? "Var[I] bound f" : "Var[I] bound f = 1";
-            const char *qc = which == 0 ? "Var[I] bound f corrected" : "Var[I] bound f=1 corrected";
-            ex_row row = row_of(qn, "eq. 58", r, EX_NO_FREQ, EX_NO_FREQ, printed, exact, meas, se,
-                                fl);
-            ex_row_print_bound(&opt, &row);
-            row = row_of(qc, "eq. 58c", r, EX_NO_FREQ, EX_NO_FREQ, corrected, exact, meas, se, fl);
-            ex_row_print_bound(&opt, &row);
-            if (used < sizeof above) {
-                int wrote = snprintf(above + used, sizeof above - used,
-                                     "%s %s: measured %s printed, %s corrected; ", specs[r].name,
-                                     which == 0 ? "f" : "f=1", meas <= printed ? "<=" : ">",
-                                     meas <= corrected ? "<=" : ">");
-                if (wrote > 0)
-                    used += (size_t)wrote;
-            }
-        }
-    }
-    ex_notef(&opt, "measured Var[I] against the bounds: %s", above);
-
-    /* ---- summary ---- */
-    ex_heading(&opt, "summary (computed from the rows above)");
-    if (n < 2u || !(var_exact[R_RANDOM_G2] > 0.0)) {
-        ex_note(&opt, "(no summary: N = 1 has no frequency k >= 1)");
-        ex_end(&opt);
-        return 0;
-    }
-    ex_notef(&opt,
-             "random: the exact power %s at every k >= 1 with g1 and %s with g2; mean power "
-             "%.4g -> %.4g with g1 (ratio %.4f, 1/H = %.4f), %.4g with g2 (ratio %.4f, 1/H = "
-             "%.4f)",
-             rises_everywhere[R_RANDOM_G1] ? "rises" : "does NOT rise",
-             rises_everywhere[R_RANDOM_G2] ? "rises" : "does NOT rise", mean_meas[R_RANDOM],
-             mean_meas[R_RANDOM_G1], mean_meas[R_RANDOM_G1] / mean_meas[R_RANDOM],
-             1.0 / h_of(R_RANDOM_G1), mean_meas[R_RANDOM_G2],
-             mean_meas[R_RANDOM_G2] / mean_meas[R_RANDOM], 1.0 / h_of(R_RANDOM_G2));
-    for (int r = R_STRAT_G1; r <= R_STRAT_G2; ++r)
-        ex_notef(&opt,
-                 "%s: the mean power over k >= 1 rises by %.4g +- %.2g (eq. 50's claim %.4g, "
-                 "exact %.4g); the exact power %s at every k >= 1",
-                 specs[r].name, mean_meas[r] - mean_meas[R_STRAT],
-                 sqrt(mean_se[r] * mean_se[r] + mean_se[R_STRAT] * mean_se[R_STRAT]),
-                 kn * (1.0 / h_of(r) - 1.0), mean_exact[r] - mean_exact[R_STRAT],
-                 rises_everywhere[r] ? "rises" : "does NOT rise");
-    if (worst_q > 0u)
-        ex_notef(&opt,
-                 "stratified+g1: smallest exact change at k = %zu: %+.4g (eq. 50 claims %+.4g at "
-                 "every k)",
-                 worst_q, worst_diff, kn * (1.0 / h_of(R_STRAT_G1) - 1.0));
-    ex_notef(&opt,
-             "yet Var[I] = %.4g with g1 and %.4g with g2 against %.4g without: the gain or loss "
-             "is in the off-diagonal Q_{k-l} terms",
-             var_meas[R_RANDOM_G1], var_meas[R_RANDOM_G2], var_meas[R_RANDOM]);
-    {
-        double v = 0.0;
-        double pr = or_na(mcs_eq52_variance_printed(imp_of(R_RANDOM_G2), k, f, &v), &v);
-        ex_notef(&opt,
-                 "eq. 52 as printed is off by %.1f%% for g2 (z = %.1f against the measurement); "
-                 "the corrected form is within %.1f stderr",
-                 100.0 * (pr - var_exact[R_RANDOM_G2]) / var_exact[R_RANDOM_G2],
-                 ex_z(var_meas[R_RANDOM_G2], pr, var_se[R_RANDOM_G2], 1e-300),
-                 fabs(ex_z(var_meas[R_RANDOM_G2], var_exact[R_RANDOM_G2], var_se[R_RANDOM_G2],
-                           1e-300)));
-    }
+    harmonic_mean_note(&opt);
+    unbiasedness_section(&opt);              /* eq. 11 */
+    power0_section(&opt);                    /* eq. 46, 51 */
+    power_section(&opt);                     /* eq. 45, 50 */
+    cross_section(&opt);                     /* eq. 43, 49 */
+    mean_power_section(&opt, &summary);      /* eq. 23, 33, 45, 50: the harmonic-mean claim */
+    eq52_section(&opt, &summary);            /* eq. 52, 55, 25 */
+    eq58_section(&opt);                      /* eq. 58 */
+    summary_notes(&opt, &summary);
     ex_end(&opt);
     return 0;
 }

@@ -144,15 +144,15 @@ static void check_moment(const uint8_t *data, size_t size, mcs_status peek_st)
     const size_t n = mom.n;
     for (size_t b = 0; b < n; ++b) {
         double a, c;
-        ok_or_die(mcs_moment_mean_s(&mom, b, &a), "moment", "mean_s");
-        finite_or_die(a, "moment", "mean_s");
-        ok_or_die(mcs_moment_spectrum_mean(&mom, b, &a, &c), "moment", "spectrum mean");
+        ok_or_die(mcs_moment_bin_mean(&mom, b, &a), "moment", "bin mean");
+        finite_or_die(a, "moment", "bin mean");
+        ok_or_die(mcs_moment_mean(&mom, b, &a, &c), "moment", "mean");
         finite_or_die(a, "moment", "spectrum mean re");
         finite_or_die(c, "moment", "spectrum mean im");
         ok_or_die(mcs_moment_power(&mom, b, &a), "moment", "power");
         finite_or_die(a, "moment", "power");
         for (size_t c2 = 0; c2 < n; ++c2) {
-            ok_or_die(mcs_moment_second(&mom, b, c2, &a), "moment", "second");
+            ok_or_die(mcs_moment_bin_second(&mom, b, c2, &a), "moment", "bin second");
             finite_or_die(a, "moment", "second");
         }
     }

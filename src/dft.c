@@ -3,6 +3,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "internal.h"
 #include "kiss_fft.h"
 
 /* Only the factors 2, 3 and 5: KissFFT has butterflies for them (radix 2, 3,
@@ -52,11 +53,7 @@ mcs_status mcs_dft_init(mcs_dft *plan, size_t n)
     plan->n = n;
     plan->fft_len = fft_len;
     plan->path = path;
-    const double two_pi_over_n = 6.283185307179586476925286766559 / (double)n;
-    for (size_t j = 0; j < n; ++j) {
-        plan->cos_table[j] = cos(two_pi_over_n * (double)j);
-        plan->sin_table[j] = sin(two_pi_over_n * (double)j);
-    }
+    mcs_twiddles_(n, plan->cos_table, plan->sin_table);
     if (fft_len > 0u) {
         size_t len = sizeof plan->kiss_state;
         (void)kiss_fft_alloc((int)fft_len, 0, plan->kiss_state, &len);
@@ -75,24 +72,6 @@ static int plan_is_valid(const mcs_dft *plan)
     int nfft;
     memcpy(&nfft, plan->kiss_state, sizeof nfft);
     return plan->fft_len <= (size_t)MCS_MAX_N && nfft == (int)plan->fft_len;
-}
-
-/* Every s_n finite. x * 0 is 0 for finite x and NaN for NaN or infinity, so a
- * branch-free sum of them is 0 exactly when all are finite; four partial sums
- * keep the adds from waiting on each other. */
-static int all_finite(size_t n, const double *s)
-{
-    double z0 = 0.0, z1 = 0.0, z2 = 0.0, z3 = 0.0;
-    size_t j = 0;
-    for (; j + 4u <= n; j += 4u) {
-        z0 += s[j] * 0.0;
-        z1 += s[j + 1u] * 0.0;
-        z2 += s[j + 2u] * 0.0;
-        z3 += s[j + 3u] * 0.0;
-    }
-    for (; j < n; ++j)
-        z0 += s[j] * 0.0;
-    return (z0 + z1) + (z2 + z3) == 0.0;
 }
 
 /* Even N = 2L: z_j = s_{2j} + i s_{2j+1}, Z = FFT_L(z); then with
@@ -218,7 +197,7 @@ static mcs_status check(const mcs_dft *plan, size_t n, const double *s, const do
     mcs_status st = mcs_dft_check(plan, n);
     if (st != MCS_OK)
         return st;
-    if (!all_finite(n, s))
+    if (!mcs_all_finite_(n, s))
         return MCS_ERR_NOT_FINITE;
     return MCS_OK;
 }

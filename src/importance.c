@@ -1,5 +1,6 @@
 #include "mcspec/importance.h"
 #include "importance_internal.h"
+#include "internal.h"
 
 #include <math.h>
 
@@ -49,7 +50,7 @@ mcs_status mcs_importance_init(mcs_importance *imp, size_t n, const double *weig
     return MCS_OK;
 }
 
-double mcs_point_in_bin(size_t n, size_t b, double t)
+double mcs_importance_point_in_bin(size_t n, size_t b, double t)
 {
     double nd = (double)n;
     double x = ((double)b + t) / nd;
@@ -79,14 +80,14 @@ void mcs_importance_warp_unchecked(const mcs_importance *imp, double u, double *
     if (t >= 1.0)
         t = nextafter(1.0, 0.0);
     *bin = lo;
-    *x = mcs_point_in_bin(imp->n, lo, t);
+    *x = mcs_importance_point_in_bin(imp->n, lo, t);
 }
 
 mcs_status mcs_importance_warp(const mcs_importance *imp, double u, double *x, size_t *bin)
 {
     if (imp == NULL)
         return MCS_ERR_NULL;
-    if (imp->n == 0u || imp->n > (size_t)MCS_MAX_N)
+    if (!mcs_importance_is_valid_(imp))
         return MCS_ERR_UNINIT;
     if (!(u >= 0.0 && u < 1.0))
         return MCS_ERR_POINT_RANGE;
@@ -97,5 +98,34 @@ mcs_status mcs_importance_warp(const mcs_importance *imp, double u, double *x, s
         *x = xx;
     if (bin != NULL)
         *bin = bb;
+    return MCS_OK;
+}
+
+/* N^{-1/2} sum_b e^{-2 pi i freq b/N} / p_b; trig per term (N up to MCS_MAX_N,
+ * so no table), with exact index reduction. */
+void mcs_importance_q_unchecked(const mcs_importance *imp, size_t freq, double *re, double *im)
+{
+    size_t n = imp->n;
+    double r = 0.0, i = 0.0;
+    for (size_t b = 0; b < n; ++b) {
+        double a = mcs_twiddle_angle_((freq * b) % n, n);
+        double q = 1.0 / imp->p[b];
+        r += cos(a) * q;
+        i -= sin(a) * q;
+    }
+    double scale = 1.0 / sqrt((double)n);
+    *re = r * scale;
+    *im = i * scale;
+}
+
+mcs_status mcs_importance_q(const mcs_importance *imp, size_t freq, double *re, double *im)
+{
+    if (imp == NULL || re == NULL || im == NULL)
+        return MCS_ERR_NULL;
+    if (!mcs_importance_is_valid_(imp))
+        return MCS_ERR_UNINIT;
+    if (freq >= imp->n)
+        return MCS_ERR_FREQ_RANGE;
+    mcs_importance_q_unchecked(imp, freq, re, im);
     return MCS_OK;
 }

@@ -1,5 +1,6 @@
 #include "mcspec/pattern.h"
 #include "importance_internal.h"
+#include "internal.h"
 #include "rng_inline.h"
 
 #include <math.h>
@@ -16,18 +17,6 @@ const char *mcs_pattern_kind_str(mcs_pattern_kind kind)
     return "unknown";
 }
 
-static int kind_is_valid(mcs_pattern_kind kind)
-{
-    return kind == MCS_PATTERN_RANDOM || kind == MCS_PATTERN_STRATIFIED ||
-           kind == MCS_PATTERN_HOMOGENIZED || kind == MCS_PATTERN_UNIFORM ||
-           kind == MCS_PATTERN_JITTER;
-}
-
-static int importance_is_valid(const mcs_importance *imp)
-{
-    return imp->n >= 1u && imp->n <= (size_t)MCS_MAX_N;
-}
-
 mcs_status mcs_pattern_init(mcs_pattern *pat, mcs_pattern_kind kind, size_t n, size_t k,
                             const mcs_importance *importance)
 {
@@ -37,14 +26,14 @@ mcs_status mcs_pattern_init(mcs_pattern *pat, mcs_pattern_kind kind, size_t n, s
         return MCS_ERR_N_RANGE;
     if (k == 0u)
         return MCS_ERR_K_RANGE;
-    if (!kind_is_valid(kind))
+    if (!mcs_kind_is_valid_(kind))
         return MCS_ERR_KIND;
     if (importance != NULL) {
         /* The homogenizing shift moves samples by whole bins, which under a
          * non-uniform density would no longer follow p: not defined. */
         if (kind == MCS_PATTERN_HOMOGENIZED)
             return MCS_ERR_KIND;
-        if (!importance_is_valid(importance))
+        if (!mcs_importance_is_valid_(importance))
             return MCS_ERR_UNINIT;
         if (importance->n != n)
             return MCS_ERR_MISMATCH;
@@ -84,7 +73,7 @@ static void place(const mcs_pattern *pat, double u, double t, size_t *bin, doubl
         double frac = t - (double)b;
         *x = (size_t)(u * (double)pat->n) == b
                  ? u
-                 : mcs_point_in_bin(pat->n, b, frac < 1.0 ? frac : nextafter(1.0, 0.0));
+                 : mcs_importance_point_in_bin(pat->n, b, frac < 1.0 ? frac : nextafter(1.0, 0.0));
     }
 }
 
@@ -93,9 +82,9 @@ mcs_status mcs_pattern_draw(const mcs_pattern *pat, mcs_rng *rng, size_t k, size
 {
     if (pat == NULL || rng == NULL || bins == NULL || weights == NULL)
         return MCS_ERR_NULL;
-    if (pat->n == 0u || pat->n > (size_t)MCS_MAX_N || pat->k == 0u || !kind_is_valid(pat->kind))
+    if (pat->n == 0u || pat->n > (size_t)MCS_MAX_N || pat->k == 0u || !mcs_kind_is_valid_(pat->kind))
         return MCS_ERR_UNINIT;
-    if (pat->importance != NULL && (!importance_is_valid(pat->importance) ||
+    if (pat->importance != NULL && (!mcs_importance_is_valid_(pat->importance) ||
                                     pat->importance->n != pat->n))
         return MCS_ERR_UNINIT;
     if (k != pat->k)
@@ -139,7 +128,7 @@ mcs_status mcs_pattern_draw(const mcs_pattern *pat, mcs_rng *rng, size_t k, size
             size_t nb = (b + shift) % n;
             if (points != NULL) {
                 double t = points[j] * (double)n - (double)b;
-                points[j] = mcs_point_in_bin(n, nb, t < 1.0 ? t : nextafter(1.0, 0.0));
+                points[j] = mcs_importance_point_in_bin(n, nb, t < 1.0 ? t : nextafter(1.0, 0.0));
             }
             bins[j] = nb;
         }
@@ -147,7 +136,7 @@ mcs_status mcs_pattern_draw(const mcs_pattern *pat, mcs_rng *rng, size_t k, size
     return MCS_OK;
 }
 
-mcs_status mcs_pattern_bin_points(size_t n, const mcs_importance *importance, size_t k,
+mcs_status mcs_pattern_bin_points(size_t n, size_t k, const mcs_importance *importance,
                                   const double *points, size_t *bins, double *weights)
 {
     if (points == NULL || bins == NULL || weights == NULL)
@@ -156,14 +145,13 @@ mcs_status mcs_pattern_bin_points(size_t n, const mcs_importance *importance, si
         return MCS_ERR_N_RANGE;
     if (k == 0u)
         return MCS_ERR_K_RANGE;
-    if (importance != NULL && (!importance_is_valid(importance) || importance->n != n))
+    if (importance != NULL && (!mcs_importance_is_valid_(importance) || importance->n != n))
         return MCS_ERR_MISMATCH;
-    for (size_t j = 0; j < k; ++j)
-        if (!(points[j] >= 0.0 && points[j] < 1.0))
-            return MCS_ERR_POINT_RANGE;
+    mcs_status st = mcs_check_points_(k, points, NULL);
+    if (st != MCS_OK)
+        return st;
     for (size_t j = 0; j < k; ++j) {
-        size_t b = (size_t)(points[j] * (double)n);
-        b = b < n ? b : n - 1u;
+        size_t b = mcs_point_bin_(points[j], n);
         bins[j] = b;
         weights[j] = importance != NULL ? 1.0 / importance->p[b] : 1.0;
     }
@@ -177,16 +165,9 @@ mcs_status mcs_pattern_dense(size_t n, size_t k, const size_t *bins, const doubl
         return MCS_ERR_NULL;
     if (n == 0u || n > (size_t)MCS_MAX_N)
         return MCS_ERR_N_RANGE;
-    if (k == 0u)
-        return MCS_ERR_K_RANGE;
-    for (size_t j = 0; j < k; ++j) {
-        if (bins[j] >= n)
-            return MCS_ERR_BIN_RANGE;
-        if (!isfinite(weights[j]))
-            return MCS_ERR_NOT_FINITE;
-        if (weights[j] < 0.0)
-            return MCS_ERR_NEGATIVE;
-    }
+    mcs_status st = mcs_check_sparse_(n, k, bins, weights);
+    if (st != MCS_OK)
+        return st;
     for (size_t b = 0; b < n; ++b)
         s[b] = 0.0;
     for (size_t j = 0; j < k; ++j)

@@ -1,4 +1,5 @@
 #include "mcspec/spectrum.h"
+#include "internal.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -33,10 +34,15 @@ static size_t sparse_limit(const mcs_dft *plan)
     return fft_cost / (SPARSE_COST_PER_TERM * h1);
 }
 
-static int spectrum_is_valid(const mcs_spectrum *acc)
+/* MCS_ERR_NULL without an accumulator, MCS_ERR_UNINIT before mcs_spectrum_init. */
+static mcs_status spectrum_check(const mcs_spectrum *acc)
 {
-    return acc->n >= 1u && acc->n <= (size_t)MCS_MAX_N && acc->plan.n == acc->n &&
-           (unsigned)acc->path <= (unsigned)MCS_SPECTRUM_PATH_FFT; /* enum may be unsigned */
+    if (acc == NULL)
+        return MCS_ERR_NULL;
+    if (acc->n >= 1u && acc->n <= (size_t)MCS_MAX_N && acc->plan.n == acc->n &&
+        (unsigned)acc->path <= (unsigned)MCS_SPECTRUM_PATH_FFT) /* enum may be unsigned */
+        return MCS_OK;
+    return MCS_ERR_UNINIT;
 }
 
 mcs_status mcs_spectrum_init(mcs_spectrum *acc, size_t n)
@@ -66,24 +72,13 @@ mcs_status mcs_spectrum_init(mcs_spectrum *acc, size_t n)
 
 mcs_status mcs_spectrum_set_path(mcs_spectrum *acc, mcs_spectrum_path path)
 {
-    if (acc == NULL)
-        return MCS_ERR_NULL;
-    if (!spectrum_is_valid(acc))
-        return MCS_ERR_UNINIT;
-    if (path != MCS_SPECTRUM_PATH_AUTO && path != MCS_SPECTRUM_PATH_SPARSE &&
+    mcs_status st = spectrum_check(acc);
+    if (st == MCS_OK && path != MCS_SPECTRUM_PATH_AUTO && path != MCS_SPECTRUM_PATH_SPARSE &&
         path != MCS_SPECTRUM_PATH_FFT)
-        return MCS_ERR_KIND;
-    acc->path = path;
-    return MCS_OK;
-}
-
-static mcs_status check_weight(double w)
-{
-    if (!isfinite(w))
-        return MCS_ERR_NOT_FINITE;
-    if (w < 0.0)
-        return MCS_ERR_NEGATIVE;
-    return MCS_OK;
+        st = MCS_ERR_KIND;
+    if (st == MCS_OK)
+        acc->path = path;
+    return st;
 }
 
 static int use_sparse(const mcs_spectrum *acc, size_t k)
@@ -210,108 +205,70 @@ static double sparse_scale(const mcs_spectrum *acc)
     return 1.0 / sqrt((double)acc->n); /* eq. 7's normalisation */
 }
 
-mcs_status mcs_spectrum_add_bins(mcs_spectrum *acc, size_t k, const size_t *bins,
-                                 const double *weights)
+/* One trial of k samples: bins[j] or, when bins is NULL, the bin of
+ * points[j]; weights[j], or 1 when weights is NULL. All checked. */
+static void add_samples(mcs_spectrum *acc, size_t k, const size_t *bins, const double *points,
+                        const double *weights)
 {
-    if (acc == NULL || bins == NULL || weights == NULL)
-        return MCS_ERR_NULL;
-    if (!spectrum_is_valid(acc))
-        return MCS_ERR_UNINIT;
-    if (k == 0u)
-        return MCS_ERR_K_RANGE;
-    for (size_t j = 0; j < k; ++j) {
-        if (bins[j] >= acc->n)
-            return MCS_ERR_BIN_RANGE;
-        mcs_status st = check_weight(weights[j]);
-        if (st != MCS_OK)
-            return st;
-    }
-    if (use_sparse(acc, k)) {
-        sparse_group g = {{0u}, {0.0}, 0u};
-        clear_half(acc);
-        for (size_t j = 0; j < k; ++j)
-            group_push(acc, &g, bins[j], weights[j]);
-        group_flush(acc, &g);
-        welford_update(acc, sparse_scale(acc));
-    } else {
-        clear_dense(acc);
-        for (size_t j = 0; j < k; ++j)
-            acc->s[bins[j]] += weights[j];
-        finish_fft(acc);
-    }
-    return MCS_OK;
-}
-
-mcs_status mcs_spectrum_add_dense(mcs_spectrum *acc, size_t n, const double *s)
-{
-    if (acc == NULL || s == NULL)
-        return MCS_ERR_NULL;
-    if (!spectrum_is_valid(acc))
-        return MCS_ERR_UNINIT;
-    if (n != acc->n)
-        return MCS_ERR_MISMATCH;
-    for (size_t j = 0; j < n; ++j) {
-        mcs_status st = check_weight(s[j]);
-        if (st != MCS_OK)
-            return st;
-    }
-    memcpy(acc->s, s, n * sizeof s[0]);
-    finish_fft(acc);
-    return MCS_OK;
-}
-
-/* floor(N x) for x in [0,1), kept below N under rounding (as mcs_pattern_bin_points). */
-static size_t point_bin(double x, size_t n)
-{
-    size_t b = (size_t)(x * (double)n);
-    return b < n ? b : n - 1u;
-}
-
-mcs_status mcs_spectrum_add_points(mcs_spectrum *acc, size_t k, const double *points,
-                                   const double *weights)
-{
-    if (acc == NULL || points == NULL)
-        return MCS_ERR_NULL;
-    if (!spectrum_is_valid(acc))
-        return MCS_ERR_UNINIT;
-    if (k == 0u)
-        return MCS_ERR_K_RANGE;
-    for (size_t j = 0; j < k; ++j) {
-        if (!(points[j] >= 0.0 && points[j] < 1.0))
-            return MCS_ERR_POINT_RANGE;
-        if (weights != NULL) {
-            mcs_status st = check_weight(weights[j]);
-            if (st != MCS_OK)
-                return st;
-        }
-    }
     const size_t n = acc->n;
     if (use_sparse(acc, k)) {
         sparse_group g = {{0u}, {0.0}, 0u};
         clear_half(acc);
         for (size_t j = 0; j < k; ++j)
-            group_push(acc, &g, point_bin(points[j], n), weights != NULL ? weights[j] : 1.0);
+            group_push(acc, &g, bins != NULL ? bins[j] : mcs_point_bin_(points[j], n),
+                       weights != NULL ? weights[j] : 1.0);
         group_flush(acc, &g);
         welford_update(acc, sparse_scale(acc));
     } else {
         clear_dense(acc);
         for (size_t j = 0; j < k; ++j)
-            acc->s[point_bin(points[j], n)] += weights != NULL ? weights[j] : 1.0;
+            acc->s[bins != NULL ? bins[j] : mcs_point_bin_(points[j], n)] +=
+                weights != NULL ? weights[j] : 1.0;
         finish_fft(acc);
     }
+}
+
+mcs_status mcs_spectrum_add_bins(mcs_spectrum *acc, size_t k, const size_t *bins,
+                                 const double *weights)
+{
+    mcs_status st = bins == NULL || weights == NULL ? MCS_ERR_NULL : spectrum_check(acc);
+    if (st == MCS_OK)
+        st = mcs_check_sparse_(acc->n, k, bins, weights);
+    if (st == MCS_OK)
+        add_samples(acc, k, bins, NULL, weights);
+    return st;
+}
+
+mcs_status mcs_spectrum_add_dense(mcs_spectrum *acc, size_t n, const double *s)
+{
+    mcs_status st = mcs_check_dense_(spectrum_check(acc), acc != NULL ? acc->n : 0u, n, s);
+    if (st != MCS_OK)
+        return st;
+    memcpy(acc->s, s, n * sizeof s[0]);
+    finish_fft(acc);
     return MCS_OK;
+}
+
+mcs_status mcs_spectrum_add_points(mcs_spectrum *acc, size_t k, const double *points,
+                                   const double *weights)
+{
+    mcs_status st = points == NULL ? MCS_ERR_NULL : spectrum_check(acc);
+    if (st == MCS_OK)
+        st = k == 0u ? MCS_ERR_K_RANGE : mcs_check_points_(k, points, weights);
+    if (st == MCS_OK)
+        add_samples(acc, k, NULL, points, weights);
+    return st;
 }
 
 mcs_status mcs_spectrum_merge(mcs_spectrum *dst, const mcs_spectrum *src)
 {
-    if (dst == NULL || src == NULL)
-        return MCS_ERR_NULL;
-    if (!spectrum_is_valid(dst) || !spectrum_is_valid(src))
-        return MCS_ERR_UNINIT;
-    if (dst->n != src->n)
-        return MCS_ERR_MISMATCH;
-    if (src->count == 0u)
-        return MCS_OK;
+    mcs_status st = src == NULL ? MCS_ERR_NULL : spectrum_check(dst);
+    if (st == MCS_OK)
+        st = spectrum_check(src);
+    if (st == MCS_OK && dst->n != src->n)
+        st = MCS_ERR_MISMATCH;
+    if (st != MCS_OK || src->count == 0u)
+        return st;
     const size_t h1 = dst->n / 2u + 1u;
     if (dst->count == 0u) {
         memcpy(dst->mean_re, src->mean_re, h1 * sizeof dst->mean_re[0]);
@@ -343,78 +300,62 @@ mcs_status mcs_spectrum_merge(mcs_spectrum *dst, const mcs_spectrum *src)
 
 mcs_status mcs_spectrum_count(const mcs_spectrum *acc, uint64_t *count)
 {
-    if (acc == NULL || count == NULL)
-        return MCS_ERR_NULL;
-    if (!spectrum_is_valid(acc))
-        return MCS_ERR_UNINIT;
-    *count = acc->count;
-    return MCS_OK;
+    mcs_status st = count == NULL ? MCS_ERR_NULL : spectrum_check(acc);
+    if (st == MCS_OK)
+        *count = acc->count;
+    return st;
 }
 
-/* Common read-out checks; *stored gets the stored index (k or N - k) and
- * *conj whether the value is the conjugate of the stored one. */
-static mcs_status readout(const mcs_spectrum *acc, size_t freq, const void *out,
-                          uint64_t min_count, size_t *stored, int *conj)
+/* Common read-out checks: outputs given (else NULL), acc initialised, freq in
+ * [0, N), at least min_count trials. */
+static mcs_status readout(int outputs, const mcs_spectrum *acc, size_t freq, uint64_t min_count)
 {
-    if (acc == NULL || out == NULL)
-        return MCS_ERR_NULL;
-    if (!spectrum_is_valid(acc))
-        return MCS_ERR_UNINIT;
-    if (freq >= acc->n)
-        return MCS_ERR_FREQ_RANGE;
-    if (acc->count < min_count)
-        return MCS_ERR_EMPTY;
-    const size_t h = acc->n / 2u;
-    *conj = freq > h;
-    *stored = freq > h ? acc->n - freq : freq;
-    return MCS_OK;
+    mcs_status st = outputs ? spectrum_check(acc) : MCS_ERR_NULL;
+    if (st == MCS_OK && freq >= acc->n)
+        st = MCS_ERR_FREQ_RANGE;
+    if (st == MCS_OK && acc->count < min_count)
+        st = MCS_ERR_EMPTY;
+    return st;
+}
+
+/* Where freq is stored: k or N - k (S_{N-k} = conj(S_k), s being real). */
+static size_t stored(const mcs_spectrum *acc, size_t freq)
+{
+    return freq > acc->n / 2u ? acc->n - freq : freq;
+}
+
+/* Standard error of a mean over the trials from its Welford M2. */
+static double stderr_of(const mcs_spectrum *acc, double m2)
+{
+    const double t = (double)acc->count;
+    return sqrt(m2 / (t - 1.0) / t);
 }
 
 mcs_status mcs_spectrum_mean(const mcs_spectrum *acc, size_t freq, double *re, double *im)
 {
-    size_t k;
-    int conj;
-    if (im == NULL)
-        return MCS_ERR_NULL;
-    mcs_status st = readout(acc, freq, re, 1u, &k, &conj);
+    mcs_status st = readout(re != NULL && im != NULL, acc, freq, 1u);
     if (st != MCS_OK)
         return st;
-    *re = acc->mean_re[k];
-    *im = conj ? -acc->mean_im[k] : acc->mean_im[k];
+    const size_t q = stored(acc, freq);
+    *re = acc->mean_re[q];
+    *im = q != freq ? -acc->mean_im[q] : acc->mean_im[q];
     return MCS_OK;
 }
 
 mcs_status mcs_spectrum_mean_stderr(const mcs_spectrum *acc, size_t freq, double *stderr_out)
 {
-    size_t k;
-    int conj;
-    mcs_status st = readout(acc, freq, stderr_out, 2u, &k, &conj);
-    if (st != MCS_OK)
-        return st;
-    const double t = (double)acc->count;
-    *stderr_out = sqrt(acc->m2_s[k] / (t - 1.0) / t);
-    return MCS_OK;
+    mcs_status st = readout(stderr_out != NULL, acc, freq, 2u);
+    return st == MCS_OK ? mcs_set_(stderr_out, stderr_of(acc, acc->m2_s[stored(acc, freq)])) : st;
 }
 
 mcs_status mcs_spectrum_power(const mcs_spectrum *acc, size_t freq, double *power)
 {
-    size_t k;
-    int conj;
-    mcs_status st = readout(acc, freq, power, 1u, &k, &conj);
-    if (st != MCS_OK)
-        return st;
-    *power = acc->mean_pow[k];
-    return MCS_OK;
+    mcs_status st = readout(power != NULL, acc, freq, 1u);
+    return st == MCS_OK ? mcs_set_(power, acc->mean_pow[stored(acc, freq)]) : st;
 }
 
 mcs_status mcs_spectrum_power_stderr(const mcs_spectrum *acc, size_t freq, double *stderr_out)
 {
-    size_t k;
-    int conj;
-    mcs_status st = readout(acc, freq, stderr_out, 2u, &k, &conj);
-    if (st != MCS_OK)
-        return st;
-    const double t = (double)acc->count;
-    *stderr_out = sqrt(acc->m2_pow[k] / (t - 1.0) / t);
-    return MCS_OK;
+    mcs_status st = readout(stderr_out != NULL, acc, freq, 2u);
+    return st == MCS_OK ? mcs_set_(stderr_out, stderr_of(acc, acc->m2_pow[stored(acc, freq)])) : st;
 }

@@ -253,7 +253,7 @@ static void test_the_estimate_is_the_same_dot_product_in_both_domains(void)
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_init(&pat, MCS_PATTERN_STRATIFIED, n, 32u, &imp));
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_draw(&pat, &rng, 32u, bins, w, NULL));
         double primal;
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_estimate_bins(n, f, 32u, bins, w, &primal));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_estimate_bins(n, 32u, f, bins, w, &primal));
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_dense(n, 32u, bins, w, s));
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_dft_init(&plan, n));
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_dft_real(&plan, n, s, re, im));

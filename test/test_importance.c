@@ -1,4 +1,5 @@
 #include "mcspec.h"
+#include "spectra_ref.h"
 #include "unity.h"
 
 #include <math.h>
@@ -123,6 +124,57 @@ static void test_bad_warp_input_returns_an_error_and_leaves_outputs_untouched(vo
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_warp(&imp, 0.5, &x, NULL));
 }
 
+/* Q_k (eq. 43) is eq. 7 applied to 1/p: against an independent long-double
+ * DFT for N with and without a fast factorisation, up to MCS_MAX_N; and
+ * eq. 44, N^{-1/2} Q_0 = 1/H. */
+static void test_q_is_the_eq7_transform_of_one_over_p_and_q0_gives_one_over_h(void)
+{
+    static const size_t sizes[] = {1u, 2u, 7u, 12u, 97u, 1000u, (size_t)MCS_MAX_N};
+    static double w[MCS_MAX_N], inv_p[MCS_MAX_N], ref_re[MCS_MAX_N], ref_im[MCS_MAX_N];
+    for (size_t i = 0; i < sizeof sizes / sizeof sizes[0]; ++i) {
+        const size_t n = sizes[i];
+        for (size_t b = 0; b < n; ++b)
+            w[b] = 0.25 + (double)((b * 7u) % 11u) + (b == n / 3u ? 5.0 : 0.0);
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_init(&imp, n, w));
+        double scale = 0.0;
+        for (size_t b = 0; b < n; ++b) {
+            inv_p[b] = 1.0 / imp.p[b];
+            scale += inv_p[b] * inv_p[b];
+        }
+        scale = sqrt(scale); /* |Q_k| <= sqrt(sum 1/p^2): rounding is relative to it */
+        spectra_naive_dft(n, inv_p, n, ref_re, ref_im);
+        const size_t step = n > 100u ? n / 37u : 1u;
+        for (size_t k = 0; k < n; k += step) {
+            double re = 0.0, im = 0.0;
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_q(&imp, k, &re, &im));
+            TEST_ASSERT_DOUBLE_WITHIN(1e-12 * scale, ref_re[k], re);
+            TEST_ASSERT_DOUBLE_WITHIN(1e-12 * scale, ref_im[k], im);
+        }
+        double q0r, q0i;
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_q(&imp, 0u, &q0r, &q0i));
+        TEST_ASSERT_DOUBLE_WITHIN(1e-13 / imp.harmonic_mean, 1.0 / imp.harmonic_mean,
+                                  q0r / sqrt((double)n));
+        TEST_ASSERT_EQUAL_DOUBLE(0.0, q0i);
+    }
+}
+
+static void test_bad_q_input_returns_an_error_and_leaves_outputs_untouched(void)
+{
+    static mcs_importance zero; /* never initialised */
+    const double w[4] = {1.0, 2.0, 3.0, 4.0};
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_init(&imp, 4u, w));
+    memcpy(&imp_copy, &imp, sizeof imp);
+    double re = 9.0, im = 9.0;
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_importance_q(NULL, 0u, &re, &im));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_importance_q(&imp, 0u, NULL, &im));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_importance_q(&imp, 0u, &re, NULL));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_UNINIT, mcs_importance_q(&zero, 0u, &re, &im));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_FREQ_RANGE, mcs_importance_q(&imp, 4u, &re, &im));
+    TEST_ASSERT_EQUAL_DOUBLE(9.0, re);
+    TEST_ASSERT_EQUAL_DOUBLE(9.0, im);
+    TEST_ASSERT_EQUAL_MEMORY(&imp_copy, &imp, sizeof imp);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -132,5 +184,7 @@ int main(void)
     RUN_TEST(test_warp_is_monotone_and_keeps_points_in_their_bins);
     RUN_TEST(test_bad_weights_return_an_error_and_leave_the_struct_untouched);
     RUN_TEST(test_bad_warp_input_returns_an_error_and_leaves_outputs_untouched);
+    RUN_TEST(test_q_is_the_eq7_transform_of_one_over_p_and_q0_gives_one_over_h);
+    RUN_TEST(test_bad_q_input_returns_an_error_and_leaves_outputs_untouched);
     return UNITY_END();
 }

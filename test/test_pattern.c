@@ -218,14 +218,14 @@ static void test_bin_points_maps_caller_points_to_bins_and_weights(void)
     lumpy_importance(10u);
     const double pts[4] = {0.0, 0.05, 0.55, nextafter(1.0, 0.0)};
     set_guards(4u);
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_bin_points(10u, NULL, 4u, pts, bins, weights));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_bin_points(10u, 4u, NULL, pts, bins, weights));
     assert_guards(4u);
     const size_t expect[4] = {0u, 0u, 5u, 9u};
     for (int j = 0; j < 4; ++j) {
         TEST_ASSERT_EQUAL_UINT(expect[j], bins[j]);
         TEST_ASSERT_EQUAL_DOUBLE(1.0, weights[j]);
     }
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_bin_points(10u, &imp, 4u, pts, bins, weights));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_bin_points(10u, 4u, &imp, pts, bins, weights));
     for (int j = 0; j < 4; ++j)
         TEST_ASSERT_EQUAL_DOUBLE(1.0 / imp.p[expect[j]], weights[j]);
 }
@@ -305,17 +305,17 @@ static void test_bad_points_or_bins_return_an_error_and_leave_outputs_untouched(
         bins[j] = GUARD_BIN;
         weights[j] = GUARD_W;
     }
-    TEST_ASSERT_EQUAL_INT(MCS_ERR_POINT_RANGE, mcs_pattern_bin_points(8u, NULL, 3u, bad_pts, bins, weights));
-    TEST_ASSERT_EQUAL_INT(MCS_ERR_POINT_RANGE, mcs_pattern_bin_points(8u, NULL, 3u, neg_pts, bins, weights));
-    TEST_ASSERT_EQUAL_INT(MCS_ERR_POINT_RANGE, mcs_pattern_bin_points(8u, NULL, 3u, nan_pts, bins, weights));
-    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_pattern_bin_points(8u, NULL, 3u, NULL, bins, weights));
-    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_pattern_bin_points(8u, NULL, 3u, ok_pts, NULL, weights));
-    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_pattern_bin_points(8u, NULL, 3u, ok_pts, bins, NULL));
-    TEST_ASSERT_EQUAL_INT(MCS_ERR_N_RANGE, mcs_pattern_bin_points(0u, NULL, 3u, ok_pts, bins, weights));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_POINT_RANGE, mcs_pattern_bin_points(8u, 3u, NULL, bad_pts, bins, weights));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_POINT_RANGE, mcs_pattern_bin_points(8u, 3u, NULL, neg_pts, bins, weights));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_POINT_RANGE, mcs_pattern_bin_points(8u, 3u, NULL, nan_pts, bins, weights));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_pattern_bin_points(8u, 3u, NULL, NULL, bins, weights));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_pattern_bin_points(8u, 3u, NULL, ok_pts, NULL, weights));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_pattern_bin_points(8u, 3u, NULL, ok_pts, bins, NULL));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_N_RANGE, mcs_pattern_bin_points(0u, 3u, NULL, ok_pts, bins, weights));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_N_RANGE,
-                          mcs_pattern_bin_points(MCS_MAX_N + 1u, NULL, 3u, ok_pts, bins, weights));
-    TEST_ASSERT_EQUAL_INT(MCS_ERR_K_RANGE, mcs_pattern_bin_points(8u, NULL, 0u, ok_pts, bins, weights));
-    TEST_ASSERT_EQUAL_INT(MCS_ERR_MISMATCH, mcs_pattern_bin_points(9u, &imp, 3u, ok_pts, bins, weights));
+                          mcs_pattern_bin_points(MCS_MAX_N + 1u, 3u, NULL, ok_pts, bins, weights));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_K_RANGE, mcs_pattern_bin_points(8u, 0u, NULL, ok_pts, bins, weights));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_MISMATCH, mcs_pattern_bin_points(9u, 3u, &imp, ok_pts, bins, weights));
     for (int j = 0; j < 4; ++j) {
         TEST_ASSERT_EQUAL_UINT(GUARD_BIN, bins[j]);
         TEST_ASSERT_EQUAL_DOUBLE(GUARD_W, weights[j]);

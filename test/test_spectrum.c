@@ -472,8 +472,19 @@ static void test_bad_input_returns_an_error_and_changes_nothing(void)
     EXPECT_UNCHANGED(MCS_ERR_NULL, mcs_spectrum_merge(&acc, NULL));
     memset(&acc3, 0, sizeof acc3);
     EXPECT_UNCHANGED(MCS_ERR_UNINIT, mcs_spectrum_merge(&acc, &acc3));
+    EXPECT_UNCHANGED(MCS_ERR_NULL, mcs_spectrum_merge(NULL, &acc));
+}
 
-    /* read-outs: errors leave the outputs alone */
+static void test_bad_read_outs_return_an_error_and_leave_the_outputs_alone(void)
+{
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc, 20u));
+    run(&acc, MCS_PATTERN_RANDOM, 20u, 4u, NULL, 1u, 5u);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc2, 21u));
+    size_t b[4] = {1u, 2u, 3u, 19u};
+    double w[4] = {1.0, 1.0, 1.0, 1.0};
+    double x[4] = {0.1, 0.2, 0.3, 0.999};
+    for (size_t j = 0; j < 20u; ++j)
+        dense[j] = 0.5;
     double re = 7.0, im = 7.0, v = 7.0;
     uint64_t c = 7u;
     EXPECT_UNCHANGED(MCS_ERR_FREQ_RANGE, mcs_spectrum_mean(&acc, 20u, &re, &im));
@@ -528,5 +539,6 @@ int main(void)
     RUN_TEST(test_uniform_is_biased_at_multiples_of_k);
     RUN_TEST(test_importance_sampled_random_power_is_k_over_n_h);
     RUN_TEST(test_bad_input_returns_an_error_and_changes_nothing);
+    RUN_TEST(test_bad_read_outs_return_an_error_and_leave_the_outputs_alone);
     return UNITY_END();
 }

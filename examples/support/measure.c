@@ -1,5 +1,5 @@
 #include "measure.h"
-#include "report.h"
+#include "readout.h"
 
 #include <math.h>
 #include <string.h>
@@ -15,7 +15,8 @@ mcs_status ex_run_init(ex_run *run, mcs_pattern_kind kind, size_t n, size_t k,
     mcs_rng_seed(&run->rng, seed, stream);
     run->n = n;
     run->k = k;
-    run->nfreq = run->npair = run->nf = 0u;
+    run->draws = 1u;
+    run->nfreq = run->npair = run->nf = run->ndiff = 0u;
     mcs_welford_init(&run->parseval);
     /* Twiddles by exact index: cos(2 pi t/N) for t < N, so k n_j is reduced mod N
      * in integers and no phase error grows with k n_j. */
@@ -26,6 +27,18 @@ mcs_status ex_run_init(ex_run *run, mcs_pattern_kind kind, size_t n, size_t k,
         run->sin_table[t] = sin(a);
     }
     return MCS_OK;
+}
+
+mcs_status ex_run_setup(ex_run *run, mcs_theory *theory, mcs_spectrum *spectrum,
+                        mcs_pattern_kind kind, size_t n, size_t k,
+                        const mcs_importance *importance, uint64_t seed, uint64_t stream)
+{
+    mcs_status st = ex_run_init(run, kind, n, k, importance, seed, stream);
+    if (st == MCS_OK && theory != NULL)
+        st = mcs_theory_init(theory, &run->pattern);
+    if (st == MCS_OK && spectrum != NULL)
+        st = mcs_spectrum_init(spectrum, n);
+    return st;
 }
 
 int ex_run_probe(ex_run *run, size_t freq)
@@ -61,13 +74,33 @@ int ex_run_probe_pair(ex_run *run, size_t k, size_t l)
     return (int)i;
 }
 
-int ex_run_integrand(ex_run *run, const double *f)
+int ex_run_integrand_on(ex_run *run, const double *f, size_t draw)
 {
-    if (run->nf >= EX_MAX_F)
+    if (run->nf >= EX_MAX_F || draw >= EX_MAX_DRAW)
         return -1;
     size_t i = run->nf++;
     run->f[i] = f;
+    run->f_draw[i] = draw;
+    if (draw >= run->draws)
+        run->draws = draw + 1u;
     mcs_welford_init(&run->estimate[i]);
+    return (int)i;
+}
+
+int ex_run_integrand(ex_run *run, const double *f)
+{
+    return ex_run_integrand_on(run, f, 0u);
+}
+
+int ex_run_difference(ex_run *run, int a, int b)
+{
+    if (run->ndiff >= EX_MAX_DIFF || a < 0 || b < 0 || (size_t)a >= run->nf ||
+        (size_t)b >= run->nf)
+        return -1;
+    size_t i = run->ndiff++;
+    run->diff_a[i] = (size_t)a;
+    run->diff_b[i] = (size_t)b;
+    mcs_welford_init(&run->difference[i]);
     return (int)i;
 }
 
@@ -79,8 +112,9 @@ static size_t probe_index(const ex_run *run, size_t freq)
     return 0u; /* unreachable: pairs probe both frequencies */
 }
 
-/* One trial's statistics beyond the library accumulators. */
-static mcs_status add_trial(ex_run *run, const size_t *bins, const double *weights, double *s)
+/* S at every probed frequency of one draw into re, im, and the accumulators;
+ * then S_k S_l* at every probed pair. */
+static void add_probes(ex_run *run, const size_t *bins, const double *weights)
 {
     double re[EX_MAX_PROBE] = {0.0}, im[EX_MAX_PROBE] = {0.0}; /* defined even for an unprobed index */
     double norm = 1.0 / sqrt((double)run->n);
@@ -103,13 +137,28 @@ static mcs_status add_trial(ex_run *run, const size_t *bins, const double *weigh
         mcs_welford_add(&run->x_re[i], re[a] * re[b] + im[a] * im[b]);
         mcs_welford_add(&run->x_im[i], im[a] * re[b] - re[a] * im[b]);
     }
+}
+
+/* Every integrand's estimate on its draw, then the differences. */
+static mcs_status add_estimates(ex_run *run, size_t bins[][EX_MAX_K],
+                                double weights[][EX_MAX_K])
+{
+    double est[EX_MAX_F] = {0.0};
     for (size_t i = 0; i < run->nf; ++i) {
-        double est = 0.0;
-        mcs_status st = mcs_estimate_bins(run->n, run->f[i], run->k, bins, weights, &est);
+        size_t d = run->f_draw[i];
+        mcs_status st = mcs_estimate_bins(run->n, run->k, run->f[i], bins[d], weights[d], &est[i]);
         if (st != MCS_OK)
             return st;
-        mcs_welford_add(&run->estimate[i], est);
+        mcs_welford_add(&run->estimate[i], est[i]);
     }
+    for (size_t i = 0; i < run->ndiff; ++i)
+        mcs_welford_add(&run->difference[i], est[run->diff_a[i]] - est[run->diff_b[i]]);
+    return MCS_OK;
+}
+
+/* sum_{k>=1} |S_k|^2 of one draw by Parseval, from the dense s (scratch s[N]). */
+static mcs_status add_parseval(ex_run *run, const size_t *bins, const double *weights, double *s)
+{
     mcs_status st = mcs_pattern_dense(run->n, run->k, bins, weights, s);
     if (st != MCS_OK)
         return st;
@@ -124,45 +173,58 @@ static mcs_status add_trial(ex_run *run, const size_t *bins, const double *weigh
 mcs_status ex_run_go(ex_run *run, unsigned long trials, mcs_spectrum *spectrum,
                      mcs_moment *moment)
 {
-    static size_t bins[EX_MAX_K];
-    static double weights[EX_MAX_K];
+    static size_t bins[EX_MAX_DRAW][EX_MAX_K];
+    static double weights[EX_MAX_DRAW][EX_MAX_K];
     static double s[MCS_MAX_N];
     for (unsigned long t = 0; t < trials; ++t) {
-        mcs_status st = mcs_pattern_draw(&run->pattern, &run->rng, run->k, bins, weights, NULL);
+        mcs_status st = MCS_OK;
+        for (size_t d = 0; d < run->draws && st == MCS_OK; ++d)
+            st = mcs_pattern_draw(&run->pattern, &run->rng, run->k, bins[d], weights[d], NULL);
         if (st == MCS_OK && spectrum != NULL)
-            st = mcs_spectrum_add_bins(spectrum, run->k, bins, weights);
+            st = mcs_spectrum_add_bins(spectrum, run->k, bins[0], weights[0]);
         if (st == MCS_OK && moment != NULL)
-            st = mcs_moment_add_bins(moment, run->k, bins, weights);
+            st = mcs_moment_add_bins(moment, run->k, bins[0], weights[0]);
+        if (st == MCS_OK) {
+            add_probes(run, bins[0], weights[0]);
+            st = add_estimates(run, bins, weights);
+        }
         if (st == MCS_OK)
-            st = add_trial(run, bins, weights, s);
+            st = add_parseval(run, bins[0], weights[0], s);
         if (st != MCS_OK)
             return st;
     }
     return MCS_OK;
 }
 
-double ex_mean(const mcs_welford *w, double *stderr_out)
+/* Mean of the parts re and im, with their standard errors (se may be NULL). */
+static ex_complex mean_parts(const mcs_welford *re, const mcs_welford *im, ex_complex *se)
 {
-    double m = EX_NA, se = EX_NA;
-    if (mcs_welford_mean(w, &m) != MCS_OK)
-        m = EX_NA;
-    if (mcs_welford_stderr(w, &se) != MCS_OK)
-        se = EX_NA;
-    if (stderr_out != NULL)
-        *stderr_out = se;
+    ex_complex m = {ex_mean(re, se != NULL ? &se->re : NULL),
+                    ex_mean(im, se != NULL ? &se->im : NULL)};
     return m;
 }
 
-double ex_variance(const mcs_welford *w, double *stderr_out)
+ex_complex ex_run_mean(const ex_run *run, int idx, ex_complex *stderr_out)
 {
-    double v = EX_NA, se = EX_NA;
-    if (mcs_welford_variance(w, &v) != MCS_OK)
-        v = EX_NA;
-    if (mcs_welford_variance_stderr(w, &se) != MCS_OK)
-        se = EX_NA;
-    if (stderr_out != NULL)
-        *stderr_out = se;
-    return v;
+    return mean_parts(&run->s_re[idx], &run->s_im[idx], stderr_out);
+}
+
+ex_complex ex_run_mean_pair(const ex_run *run, int idx, ex_complex *stderr_out)
+{
+    return mean_parts(&run->x_re[idx], &run->x_im[idx], stderr_out);
+}
+
+ex_row ex_estimator_mean_row(const ex_options *opt, const char *section, const char *pattern,
+                             const mcs_theory *th, const ex_run *run, const double *f)
+{
+    double v = 0.0, se = 0.0;
+    double closed = ex_or_na(mcs_eq11_unbiased_mean(run->n, f, &v), &v);
+    double exact = ex_or_na(mcs_theory_estimator_mean(th, run->n, run->k, f, &v), &v);
+    double meas = ex_mean(&run->estimate[0], &se);
+    ex_row r = ex_row_of(section, "<I>", "eq. 11", pattern, EX_NO_FREQ, EX_NO_FREQ, closed, exact,
+                         meas, se, 1e-12);
+    ex_row_print(opt, &r);
+    return r;
 }
 
 size_t ex_pick_freqs(size_t n, const size_t *cand, size_t ncand, size_t *out)

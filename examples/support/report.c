@@ -58,6 +58,75 @@ static void usage_error(const char *prog, const char *what, const char *arg)
             arg ? arg : "", prog, ex_common_usage);
 }
 
+/* Which of --n, --k, --trials, --seed argv[*i] names (-1 if none), and its
+ * value: after '=' in the same word, else the next word (NULL if missing). */
+static int option_of(int argc, char **argv, int *i, const char **val)
+{
+    static const char *const names[4] = {"--n", "--k", "--trials", "--seed"};
+    const char *a = argv[*i];
+    for (int w = 0; w < 4; ++w) {
+        size_t len = strlen(names[w]);
+        if (strcmp(a, names[w]) == 0) {
+            *val = (*i + 1 < argc) ? argv[++*i] : NULL;
+            return w;
+        }
+        if (strncmp(a, names[w], len) == 0 && a[len] == '=') {
+            *val = a + len + 1;
+            return w;
+        }
+    }
+    return -1;
+}
+
+/* v in 1..max for --n or --k (name); else says so and returns 0. */
+static int size_in_range(const char *prog, const char *name, uint64_t v, size_t max,
+                         const char *val)
+{
+    if (v >= 1u && v <= max)
+        return 1;
+    char what[32];
+    fprintf(stderr, "%s: %s must be in 1..%zu\n", prog, name, max);
+    snprintf(what, sizeof what, "bad value for %s", name);
+    usage_error(prog, what, val);
+    return 0;
+}
+
+/* Stores option `which` = v in *opt; returns 0 (after the usage) if out of range. */
+static int set_option(const char *prog, int which, uint64_t v, const char *val, ex_options *opt,
+                      size_t max_n, size_t max_k)
+{
+    switch (which) {
+    case 0:
+        if (!size_in_range(prog, "--n", v, max_n, val))
+            return 0;
+        opt->n = (size_t)v;
+        return 1;
+    case 1:
+        if (!size_in_range(prog, "--k", v, max_k, val))
+            return 0;
+        opt->k = (size_t)v;
+        return 1;
+    case 2:
+        if (v < 4u || v > 100000000u) {
+            usage_error(prog, "--trials must be in 4..100000000", val);
+            return 0;
+        }
+        opt->trials = (unsigned long)v;
+        return 1;
+    default:
+        opt->seed = v;
+        return 1;
+    }
+}
+
+static void print_help(const char *prog, const ex_options *opt, size_t max_n, const char *help)
+{
+    printf("usage: %s [options]\n\n%s\n%sdefaults: --n %zu (at most %zu) --k %zu "
+           "--trials %lu --seed %" PRIu64 "\n\n%s",
+           prog, help, ex_common_usage, opt->n, max_n, opt->k, opt->trials, opt->seed,
+           ex_verdict_rules);
+}
+
 int ex_parse_options(int argc, char **argv, ex_options *opt, size_t max_n, size_t max_k,
                      const char *help)
 {
@@ -65,29 +134,15 @@ int ex_parse_options(int argc, char **argv, ex_options *opt, size_t max_n, size_
     for (int i = 1; i < argc; ++i) {
         const char *a = argv[i];
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            printf("usage: %s [options]\n\n%s\n%sdefaults: --n %zu (at most %zu) --k %zu "
-                   "--trials %lu --seed %" PRIu64 "\n\n%s",
-                   prog, help, ex_common_usage, opt->n, max_n, opt->k, opt->trials, opt->seed,
-                   ex_verdict_rules);
+            print_help(prog, opt, max_n, help);
             return EX_PARSE_HELP;
         }
         if (strcmp(a, "--csv") == 0) {
             opt->csv = 1;
             continue;
         }
-        const char *names[4] = {"--n", "--k", "--trials", "--seed"};
-        int which = -1;
         const char *val = NULL;
-        for (int w = 0; w < 4 && which < 0; ++w) {
-            size_t len = strlen(names[w]);
-            if (strcmp(a, names[w]) == 0) {
-                which = w;
-                val = (i + 1 < argc) ? argv[++i] : NULL;
-            } else if (strncmp(a, names[w], len) == 0 && a[len] == '=') {
-                which = w;
-                val = a + len + 1;
-            }
-        }
+        int which = option_of(argc, argv, &i, &val);
         if (which < 0) {
             usage_error(prog, "unknown option", a);
             return EX_PARSE_ERROR;
@@ -97,34 +152,8 @@ int ex_parse_options(int argc, char **argv, ex_options *opt, size_t max_n, size_
             usage_error(prog, "not a non-negative integer", val ? val : "(missing)");
             return EX_PARSE_ERROR;
         }
-        switch (which) {
-        case 0:
-            if (v < 1u || v > max_n) {
-                fprintf(stderr, "%s: --n must be in 1..%zu\n", prog, max_n);
-                usage_error(prog, "bad value for --n", val);
-                return EX_PARSE_ERROR;
-            }
-            opt->n = (size_t)v;
-            break;
-        case 1:
-            if (v < 1u || v > max_k) {
-                fprintf(stderr, "%s: --k must be in 1..%zu\n", prog, max_k);
-                usage_error(prog, "bad value for --k", val);
-                return EX_PARSE_ERROR;
-            }
-            opt->k = (size_t)v;
-            break;
-        case 2:
-            if (v < 4u || v > 100000000u) {
-                usage_error(prog, "--trials must be in 4..100000000", val);
-                return EX_PARSE_ERROR;
-            }
-            opt->trials = (unsigned long)v;
-            break;
-        default:
-            opt->seed = v;
-            break;
-        }
+        if (!set_option(prog, which, v, val, opt, max_n, max_k))
+            return EX_PARSE_ERROR;
     }
     return EX_PARSE_OK;
 }
@@ -140,6 +169,13 @@ double ex_z(double measured, double predicted, double stderr_, double abs_floor)
         return EX_NA;
     double scale = fmax(stderr_, floor_or_tiny(abs_floor));
     return (measured - predicted) / scale;
+}
+
+double ex_z_complex(ex_complex measured, ex_complex predicted, ex_complex stderr_,
+                    double abs_floor)
+{
+    return fmax(fabs(ex_z(measured.re, predicted.re, stderr_.re, abs_floor)),
+                fabs(ex_z(measured.im, predicted.im, stderr_.im, abs_floor)));
 }
 
 double ex_rel_gap(double closed_form, double exact, double abs_floor)
@@ -275,6 +311,15 @@ static const char *row_print(const ex_options *opt, const ex_row *row, int bound
     return verdict;
 }
 
+ex_row ex_row_of(const char *section, const char *quantity, const char *equation,
+                 const char *pattern, long freq, long freq2, double closed_form, double exact,
+                 double measured, double stderr_, double abs_floor)
+{
+    ex_row r = {section, quantity, equation, pattern, freq, freq2, closed_form, exact,
+                measured, stderr_, EX_NA, abs_floor};
+    return r;
+}
+
 const char *ex_row_print(const ex_options *opt, const ex_row *row)
 {
     return row_print(opt, row, 0);
@@ -283,6 +328,22 @@ const char *ex_row_print(const ex_options *opt, const ex_row *row)
 const char *ex_row_print_bound(const ex_options *opt, const ex_row *row)
 {
     return row_print(opt, row, 1);
+}
+
+void ex_row_print_complex(const ex_options *opt, const char *section, const char *quantity,
+                          const char *equation, const char *pattern, long freq, long freq2,
+                          ex_complex closed_form, ex_complex exact, ex_complex measured,
+                          ex_complex stderr_, double abs_floor)
+{
+    char re[96], im[96];
+    snprintf(re, sizeof re, "Re %s", quantity);
+    snprintf(im, sizeof im, "Im %s", quantity);
+    ex_row r = ex_row_of(section, re, equation, pattern, freq, freq2, closed_form.re, exact.re,
+                         measured.re, stderr_.re, abs_floor);
+    ex_row_print(opt, &r);
+    r = ex_row_of(section, im, equation, pattern, freq, freq2, closed_form.im, exact.im,
+                  measured.im, stderr_.im, abs_floor);
+    ex_row_print(opt, &r);
 }
 
 void ex_heading(const ex_options *opt, const char *text)

@@ -15,12 +15,15 @@ typedef struct {
     int csv;               /* print CSV instead of a table */
 } ex_options;
 
-enum { EX_PARSE_OK = 0, EX_PARSE_HELP = 1, EX_PARSE_ERROR = 2 };
+/* What ex_parse_options returns: go on, or the exit status for main. */
+enum { EX_PARSE_OK = -1, EX_PARSE_HELP = 0, EX_PARSE_ERROR = 2 };
 
 /* Parses --n N, --k K, --trials T, --seed S, --csv, --help (also --opt=V).
  * *opt holds the defaults on entry. max_n bounds --n, max_k bounds --k. On
  * --help prints `help` to stdout and returns EX_PARSE_HELP; on a bad option
- * prints the problem and the usage to stderr and returns EX_PARSE_ERROR. */
+ * prints the problem and the usage to stderr and returns EX_PARSE_ERROR.
+ * Both are the status main returns, so main reads
+ *     if (rc != EX_PARSE_OK) return rc; */
 int ex_parse_options(int argc, char **argv, ex_options *opt, size_t max_n, size_t max_k,
                      const char *help);
 
@@ -38,6 +41,15 @@ extern const char ex_common_usage[];
 #define EX_NA ((double)NAN)
 #define EX_NO_FREQ (-1L)
 
+/* The larger N, as a multiple of N, at which an N -> infinity form's limit
+ * check compares it with the exact value (ex_row.limit_gap). */
+#define EX_LARGE_N_FACTOR 16u
+
+/* A complex value by its parts (EX_NA where unknown). */
+typedef struct {
+    double re, im;
+} ex_complex;
+
 typedef struct {
     const char *section;  /* "sec1" ... */
     const char *quantity; /* short name, no commas */
@@ -54,6 +66,11 @@ typedef struct {
                              0 means 1e-300 */
 } ex_row;
 
+/* A row from its fields in ex_row's order, with no limit check (limit_gap EX_NA). */
+ex_row ex_row_of(const char *section, const char *quantity, const char *equation,
+                 const char *pattern, long freq, long freq2, double closed_form, double exact,
+                 double measured, double stderr_, double abs_floor);
+
 /* Relative gap below which a closed form counts as equal to the exact value. */
 #define EX_EXACT_RTOL 1e-9
 /* |z| above which a measurement refutes a prediction. */
@@ -63,6 +80,10 @@ typedef struct {
  * (stderr 0) that agrees to rounding gets z = 0, not 0/0. EX_NA if any input
  * is missing. abs_floor <= 0 means 1e-300. */
 double ex_z(double measured, double predicted, double stderr_, double abs_floor);
+
+/* The larger |z| (ex_z) of the real and the imaginary part. */
+double ex_z_complex(ex_complex measured, ex_complex predicted, ex_complex stderr_,
+                    double abs_floor);
 
 /* Relative gap |closed - exact| / max(|closed|, |exact|, abs_floor); 0 when
  * |closed - exact| <= abs_floor (below the rounding scale). */
@@ -101,6 +122,13 @@ const char *ex_row_print(const ex_options *opt, const ex_row *row);
  * (the note's inequalities): the verdict is ex_verdict_bound's, and table
  * mode marks it "bound". */
 const char *ex_row_print_bound(const ex_options *opt, const ex_row *row);
+/* The two rows of a complex quantity, "Re <quantity>" then "Im <quantity>",
+ * each printed by ex_row_print from the matching parts of closed_form, exact,
+ * measured and stderr_ (the other fields as in ex_row_of). */
+void ex_row_print_complex(const ex_options *opt, const char *section, const char *quantity,
+                          const char *equation, const char *pattern, long freq, long freq2,
+                          ex_complex closed_form, ex_complex exact, ex_complex measured,
+                          ex_complex stderr_, double abs_floor);
 /* A sub-heading in table mode (ignored in CSV mode). */
 void ex_heading(const ex_options *opt, const char *text);
 /* A free-text line in table mode (ignored in CSV mode). */

@@ -25,7 +25,8 @@
 #include "status.h"
 #include "spectrum.h"
 #include "moment.h"
-#include "estimate.h"
+#include "autocorr.h"
+#include "welford.h"
 
 #ifdef __cplusplus
 extern "C" {

@@ -58,11 +58,11 @@ mcs_status mcs_pattern_draw(const mcs_pattern *pat, mcs_rng *rng, size_t k, size
  * points[k] in [0,1); bins[k], weights[k] written.
  * MCS_ERR_NULL, MCS_ERR_N_RANGE, MCS_ERR_K_RANGE (k = 0), MCS_ERR_MISMATCH
  * (importance->n != n), MCS_ERR_POINT_RANGE. Outputs untouched on error. */
-mcs_status mcs_pattern_bin_points(size_t n, const mcs_importance *importance, size_t k,
+mcs_status mcs_pattern_bin_points(size_t n, size_t k, const mcs_importance *importance,
                                   const double *points, size_t *bins, double *weights);
 
 /* Dense s_n = r_n / p_n (eq. 38) from a trial's k (bin, weight) pairs:
- * s[n] is the sum of the weights of the samples in bin n.
+ * s[bin] is the sum of the weights of the samples in that bin.
  * bins[k] in [0,n), weights[k] finite and >= 0, s[n] written.
  * MCS_ERR_NULL, MCS_ERR_N_RANGE, MCS_ERR_K_RANGE (k = 0), MCS_ERR_BIN_RANGE,
  * MCS_ERR_NOT_FINITE, MCS_ERR_NEGATIVE. s untouched on error. */

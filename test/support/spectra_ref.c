@@ -2,6 +2,8 @@
 #include "unity.h"
 
 #include <math.h>
+#include <stdio.h>
+#include <string.h>
 
 #define SPECTRA_REF_MAX 4096
 
@@ -62,4 +64,44 @@ void spectra_stream_draw(spectra_stream *st, size_t *bins, double *weights, doub
 {
     TEST_ASSERT_EQUAL_INT(MCS_OK,
                           mcs_pattern_draw(&st->pat, &st->rng, st->k, bins, weights, points));
+}
+
+void spectra_assert_close(double expected, double actual, double tol, double scale,
+                          const char *what, size_t a, size_t b)
+{
+    if (!(fabs(actual - expected) <= tol * (fabs(expected) + scale))) {
+        char msg[160];
+        (void)snprintf(msg, sizeof msg, "%s (%zu, %zu): expected %.17g, got %.17g", what, a, b,
+                       expected, actual);
+        TEST_FAIL_MESSAGE(msg);
+    }
+}
+
+double spectra_mean_power(const mcs_spectrum *acc)
+{
+    double sum = 0.0;
+    for (size_t f = 0; f < acc->n; ++f) {
+        double p;
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_power(acc, f, &p));
+        sum += p;
+    }
+    return sum / (double)acc->n;
+}
+
+/* A value no read-out computes: a huge negative with a ragged mantissa. */
+static const double guard_word = -7.0312500000000011e300;
+
+void spectra_guard_set(double *buf, size_t len)
+{
+    buf[len] = guard_word;
+}
+
+void spectra_guard_check(const double *buf, size_t len, const char *what)
+{
+    if (memcmp(&buf[len], &guard_word, sizeof guard_word) != 0) {
+        char msg[160];
+        (void)snprintf(msg, sizeof msg, "%s wrote past its %zu outputs (guard word now %.17g)",
+                       what, len, buf[len]);
+        TEST_FAIL_MESSAGE(msg);
+    }
 }

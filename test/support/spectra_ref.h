@@ -31,4 +31,20 @@ void spectra_stream_init(spectra_stream *st, mcs_pattern_kind kind, size_t n, si
 /* Draws one trial into bins[k], weights[k] and, if not NULL, points[k]. */
 void spectra_stream_draw(spectra_stream *st, size_t *bins, double *weights, double *points);
 
+/* Fails the test unless |actual - expected| <= tol * (|expected| + scale);
+ * the message names what and the indices a, b. */
+void spectra_assert_close(double expected, double actual, double tol, double scale,
+                          const char *what, size_t a, size_t b);
+
+/* (1/N) sum_k <|S_k|^2> of a spectrum accumulator: the natural scale of a
+ * pattern's power (rounding is relative to it, not to one frequency). */
+double spectra_mean_power(const mcs_spectrum *acc);
+
+/* Guard words after an output array: a caller buffer one element longer
+ * than the output, its last element a sentinel that a correct call never
+ * writes. guard_set writes it at buf[len]; guard_check fails the test unless
+ * it is still there. */
+void spectra_guard_set(double *buf, size_t len);
+void spectra_guard_check(const double *buf, size_t len, const char *what);
+
 #endif /* SPECTRA_REF_H */

@@ -230,8 +230,8 @@ static int moment_readout(void *ctx, size_t index, double *value, double *stderr
 {
     const moment_ctx *c = ctx;
     const size_t n = c->pool->n;
-    mcs_status st = index < n * n ? mcs_moment_second(&c->acc, index / n, index % n, value)
-                                  : mcs_moment_mean_s(&c->acc, index - n * n, value);
+    mcs_status st = index < n * n ? mcs_moment_bin_second(&c->acc, index / n, index % n, value)
+                                  : mcs_moment_bin_mean(&c->acc, index - n * n, value);
     *stderr_out = 0.0;
     return st == MCS_OK ? BENCH_OK : BENCH_FAILED;
 }

@@ -1,0 +1,41 @@
+/* Shared by the section examples: the importance functions they sample
+ * with, and the note's power spectra under importance sampling evaluated at
+ * any number of bins m (at N for the tables, at a larger N for the limit
+ * checks of section 4). */
+#ifndef MCSPEC_EXAMPLE_IMPORTANCE_H
+#define MCSPEC_EXAMPLE_IMPORTANCE_H
+
+#include <stddef.h>
+
+#include "mcspec.h"
+
+/* The importance functions (weights at the bin centres, normalised):
+ *   EX_G_FOLLOW   g1 = 0.45 + 0.3 sin(2 pi x) + 0.3 [x >= 0.35], roughly
+ *                 following ex_integrand;
+ *   EX_G_MISMATCH g2 = 0.2 + (1 - x)^2, high where ex_integrand is low;
+ *   EX_G_FLAT     the uniform g (p_n = 1);
+ *   EX_G_BALANCED g1 with every block of m/K bins rescaled to mass 1/K, so
+ *                 each stratum of the warped pattern is m/K whole bins (when
+ *                 K divides m; otherwise it is g1).
+ * EX_G_NONE stands for sampling without importance. */
+enum { EX_G_NONE, EX_G_FOLLOW, EX_G_MISMATCH, EX_G_FLAT, EX_G_BALANCED, EX_G_COUNT };
+
+/* Importance function g over m bins for K = k samples into imp
+ * (mcs_importance_init's status). */
+mcs_status ex_importance_for(int g, size_t m, size_t k, mcs_importance *imp);
+
+/* The note's power <|S_q|^2> at m bins and DFT index q for k samples of
+ * random sampling (eq. 23, or eq. 45 with importance) or stratified sampling
+ * (eq. 33's sinc^2 form, or eq. 50 with importance; these at the signed
+ * frequency min(q, m - q), see ex_fold), through the importance function imp
+ * over m bins (NULL without importance). EX_NA where undefined. */
+double ex_closed_power_at(mcs_pattern_kind kind, const mcs_importance *imp, size_t m, size_t k,
+                          size_t q);
+
+/* The exact power of stratified sampling whose strata are m/k whole bins,
+ * through an importance function of harmonic mean h (1 without):
+ * (k/m)/h + eq. 32 = eq. 33's exact form + (k/m)(1/h - 1) (mcspec's theory
+ * tests check this). EX_NA where eq. 33's exact form is undefined. */
+double ex_whole_bin_power_at(size_t m, size_t k, double h, size_t q);
+
+#endif /* MCSPEC_EXAMPLE_IMPORTANCE_H */

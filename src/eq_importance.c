@@ -1,0 +1,222 @@
+/* The note's closed forms of section 4: importance sampling. Every form reads
+ * N, p_n and the harmonic mean H from the caller's importance function. */
+#include "mcspec/eq.h"
+#include "eq_internal.h"
+#include "importance_internal.h"
+#include "internal.h"
+
+#include <math.h>
+
+/* imp NULL is "no importance function": the importance formulas are not
+ * defined there (the note reduces them to section 3 by p = 1 instead).
+ * Outputs given (else NULL), imp initialised, k >= 1. */
+static mcs_status check_imp(int outputs, const mcs_importance *imp, size_t k)
+{
+    if (!outputs)
+        return MCS_ERR_NULL;
+    if (imp == NULL)
+        return MCS_ERR_DOMAIN;
+    if (!mcs_importance_is_valid_(imp))
+        return MCS_ERR_UNINIT;
+    if (k == 0u)
+        return MCS_ERR_K_RANGE;
+    return MCS_OK;
+}
+
+/* check_imp, then freq < N (FREQ_RANGE) and, as asked, freq >= 1 and K
+ * dividing N (DOMAIN). */
+static mcs_status check_imp_freq(int outputs, const mcs_importance *imp, size_t k, size_t freq,
+                                 int positive_freq, int need_divides)
+{
+    mcs_status st = check_imp(outputs, imp, k);
+    if (st != MCS_OK)
+        return st;
+    if (freq >= imp->n)
+        return MCS_ERR_FREQ_RANGE;
+    if ((positive_freq && freq == 0u) || (need_divides && !mcs_eq_k_divides_n(imp->n, k)))
+        return MCS_ERR_DOMAIN;
+    return MCS_OK;
+}
+
+/* check_imp for the forms of f[imp->n] (finite), imp->n <= cap (N_RANGE). */
+static mcs_status check_imp_f(const mcs_importance *imp, size_t k, const double *f,
+                              const double *out, size_t cap)
+{
+    mcs_status st = check_imp(f != NULL && out != NULL, imp, k);
+    if (st == MCS_OK && imp->n > cap)
+        st = MCS_ERR_N_RANGE;
+    if (st == MCS_OK && !mcs_all_finite_(imp->n, f))
+        st = MCS_ERR_NOT_FINITE;
+    return st;
+}
+
+mcs_status mcs_eq41_importance_second(const mcs_importance *imp, size_t k, size_t bin_m,
+                                      size_t bin_n, double *out)
+{
+    mcs_status st = check_imp(out != NULL, imp, k);
+    if (st == MCS_OK && (bin_m >= imp->n || bin_n >= imp->n))
+        st = MCS_ERR_BIN_RANGE;
+    if (st != MCS_OK)
+        return st;
+    double kd = (double)k, nd = (double)imp->n;
+    double v = (kd * kd - kd) / (nd * nd);
+    if (bin_m == bin_n)
+        v += kd / nd / imp->p[bin_n];
+    *out = v;
+    return MCS_OK;
+}
+
+/* (K/N) N^{-1/2} Q_{k-l}, the importance-sampled random cross spectrum. */
+static void q_term(const mcs_importance *imp, size_t k, size_t freq_k, size_t freq_l,
+                   double *re, double *im)
+{
+    size_t n = imp->n;
+    double qr, qi;
+    mcs_importance_q_unchecked(imp, (freq_k + n - freq_l) % n, &qr, &qi);
+    double c = (double)k / (double)n / sqrt((double)n);
+    *re = c * qr;
+    *im = c * qi;
+}
+
+mcs_status mcs_eq43_importance_cross(const mcs_importance *imp, size_t k, size_t freq_k,
+                                     size_t freq_l, double *re, double *im)
+{
+    mcs_status st = check_imp_freq(re != NULL && im != NULL, imp, k, freq_k, 0, 0);
+    if (st == MCS_OK && freq_l >= imp->n)
+        st = MCS_ERR_FREQ_RANGE;
+    if (st == MCS_OK && freq_k == 0u && freq_l == 0u) /* the constant (K^2 - K)/N^2 adds there */
+        st = MCS_ERR_DOMAIN;
+    if (st == MCS_OK)
+        q_term(imp, k, freq_k, freq_l, re, im);
+    return st;
+}
+
+mcs_status mcs_eq45_importance_power(const mcs_importance *imp, size_t k, size_t freq,
+                                     double *out)
+{
+    mcs_status st = check_imp_freq(out != NULL, imp, k, freq, 1, 0);
+    return st == MCS_OK ? mcs_set_(out, (double)k / (double)imp->n / imp->harmonic_mean) : st;
+}
+
+mcs_status mcs_eq46_importance_power0(const mcs_importance *imp, size_t k, double *out)
+{
+    mcs_status st = check_imp(out != NULL, imp, k);
+    if (st != MCS_OK)
+        return st;
+    double kn = (double)k / (double)imp->n;
+    *out = (double)k * kn + kn * (1.0 / imp->harmonic_mean - 1.0);
+    return MCS_OK;
+}
+
+mcs_status mcs_eq49_importance_stratified_cross(const mcs_importance *imp, size_t k,
+                                                size_t freq_k, size_t freq_l, double *re,
+                                                double *im)
+{
+    mcs_status st = check_imp(re != NULL && im != NULL, imp, k);
+    if (st == MCS_OK)
+        st = mcs_eq_check_pair(1, imp->n, k, freq_k, freq_l);
+    if (st == MCS_OK && (freq_k == 0u || freq_l == 0u))
+        st = MCS_ERR_DOMAIN;
+    if (st != MCS_OK)
+        return st;
+    double qr, qi, dr, di;
+    q_term(imp, k, freq_k, freq_l, &qr, &qi);
+    mcs_eq_delta_printed(imp->n, k, freq_k, freq_l, &dr, &di);
+    *re = qr + dr;
+    *im = qi + di;
+    return MCS_OK;
+}
+
+mcs_status mcs_eq50_importance_stratified_power(const mcs_importance *imp, size_t k, size_t freq,
+                                                double *out)
+{
+    mcs_status st = check_imp_freq(out != NULL, imp, k, freq, 1, 1);
+    if (st != MCS_OK)
+        return st;
+    double kn = (double)k / (double)imp->n;
+    *out = kn * (1.0 / imp->harmonic_mean - mcs_eq_sinc2(imp->n, k, freq));
+    return MCS_OK;
+}
+
+/* (1/K) N^{-3/2} Re sum_{k >= k0, l >= l0} F_k* F_l Q_{k-l}: F of f, Q of 1/p,
+ * both eq. 7, each coefficient computed where it is used (O(N^3) trig, no
+ * work arrays). */
+static double fq_variance(const mcs_importance *imp, size_t k, const double *f, size_t k0,
+                          size_t l0)
+{
+    size_t n = imp->n;
+    double sum = 0.0;
+    for (size_t a = k0; a < n; ++a) {
+        double far, fai;
+        mcs_eq_dft_at(n, f, a, &far, &fai);
+        for (size_t b = l0; b < n; ++b) {
+            double fbr, fbi, qr, qi;
+            mcs_eq_dft_at(n, f, b, &fbr, &fbi);
+            mcs_importance_q_unchecked(imp, (a + n - b) % n, &qr, &qi);
+            double ar = far * fbr + fai * fbi; /* F_a* F_b */
+            double ai = far * fbi - fai * fbr;
+            sum += ar * qr - ai * qi;
+        }
+    }
+    double nd = (double)n;
+    return sum / ((double)k * nd * sqrt(nd));
+}
+
+/* The double sums of eq. 52 as printed and eq. 55, checked: (1/K) N^{-3/2}
+ * sum_{k >= k0, l >= l0} F_k* F_l Q_{k-l}. */
+static mcs_status fq_form(const mcs_importance *imp, size_t k, const double *f, size_t k0,
+                          size_t l0, double *out)
+{
+    mcs_status st = check_imp_f(imp, k, f, out, (size_t)MCS_MAX_COV_N);
+    return st == MCS_OK ? mcs_set_(out, fq_variance(imp, k, f, k0, l0)) : st;
+}
+
+mcs_status mcs_eq52_variance_printed(const mcs_importance *imp, size_t k, const double *f,
+                                     double *out)
+{
+    return fq_form(imp, k, f, 1u, 1u, out); /* k, l >= 1 only, as printed */
+}
+
+mcs_status mcs_eq55_variance_convolution(const mcs_importance *imp, size_t k, const double *f,
+                                         double *out)
+{
+    return fq_form(imp, k, f, 1u, 0u, out); /* (F (x) Q)_k: the convolution over every l */
+}
+
+mcs_status mcs_eq52_variance_corrected(const mcs_importance *imp, size_t k, const double *f,
+                                       double *out)
+{
+    mcs_status st = check_imp_f(imp, k, f, out, (size_t)MCS_MAX_COV_N);
+    if (st != MCS_OK)
+        return st;
+    double nd = (double)imp->n;
+    double sum = 0.0;
+    for (size_t b = 0; b < imp->n; ++b)
+        sum += f[b];
+    double f0_sq = sum * sum / nd; /* |F_0|^2 */
+    *out = (fq_variance(imp, 1u, f, 0u, 0u) - f0_sq / nd) / (double)k;
+    return MCS_OK;
+}
+
+mcs_status mcs_eq58_bound_printed(const mcs_importance *imp, size_t k, const double *f,
+                                  double *out)
+{
+    mcs_status st = check_imp_f(imp, k, f, out, (size_t)MCS_MAX_COV_N);
+    if (st != MCS_OK) /* sum_{k >= 1} |F_k|^2 needs the DFT of f */
+        return st;
+    *out = mcs_eq_ac_energy(imp->n, f) / imp->harmonic_mean / (double)k;
+    return MCS_OK;
+}
+
+mcs_status mcs_eq58_bound_corrected(const mcs_importance *imp, size_t k, const double *f,
+                                    double *out)
+{
+    mcs_status st = check_imp_f(imp, k, f, out, (size_t)MCS_MAX_N);
+    if (st != MCS_OK)
+        return st;
+    double energy = 0.0; /* sum_{all n} |F_n|^2 = sum f_n^2 (Parseval, eq. 7 is unitary) */
+    for (size_t b = 0; b < imp->n; ++b)
+        energy += f[b] * f[b];
+    *out = energy * (1.0 / imp->harmonic_mean - 1.0 / (double)imp->n) / (double)k;
+    return MCS_OK;
+}

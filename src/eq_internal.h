@@ -1,0 +1,38 @@
+/* Private: checks and transforms shared by the closed forms of sections 1-3
+ * (src/eq.c) and section 4 (src/eq_importance.c); defined in src/eq.c. */
+#ifndef MCSPEC_EQ_INTERNAL_H
+#define MCSPEC_EQ_INTERNAL_H
+
+#include <stddef.h>
+#include "mcspec/status.h"
+
+#define MCS_PI 3.14159265358979323846
+
+/* n in [1, cap] (else N_RANGE), k >= 1 (else K_RANGE). */
+mcs_status mcs_eq_check_n_k(size_t n, size_t cap, size_t k);
+
+/* The stratified forms of the note put N/K whole bins in each stratum. */
+int mcs_eq_k_divides_n(size_t n, size_t k);
+
+/* A pair of frequencies for a stratified form: outputs given (else NULL),
+ * check_n_k at MCS_MAX_N, both frequencies < n (FREQ_RANGE), K dividing N
+ * (DOMAIN). */
+mcs_status mcs_eq_check_pair(int outputs, size_t n, size_t k, size_t freq_k, size_t freq_l);
+
+/* Eq. 7 at one frequency with the twiddle computed per term from the reduced
+ * index (freq t mod N): no table, so any N. */
+void mcs_eq_dft_at(size_t n, const double *x, size_t freq, double *re, double *im);
+
+/* sum_{k >= 1} |F_k|^2 by direct DFTs, O(N^2) trig. */
+double mcs_eq_ac_energy(size_t n, const double *f);
+
+/* Delta_kl of eq. 30 as printed, unchecked: K dividing N, freq_k and freq_l
+ * in [1, N) (the caller checks). */
+void mcs_eq_delta_printed(size_t n, size_t k, size_t freq_k, size_t freq_l, double *re,
+                          double *im);
+
+/* sinc^2(pi freq / K) at the signed frequency min(freq, N - freq), freq in
+ * [1, N), K dividing N. */
+double mcs_eq_sinc2(size_t n, size_t k, size_t freq);
+
+#endif /* MCSPEC_EQ_INTERNAL_H */

@@ -1,0 +1,160 @@
+/* Private helpers shared by several modules: the twiddle table and the input
+ * checks every accumulator and closed form applies before it writes anything.
+ * Static inline, so each module gets its own copy and nothing is exported. */
+#ifndef MCSPEC_INTERNAL_H
+#define MCSPEC_INTERNAL_H
+
+#include <math.h>
+#include <stddef.h>
+
+#include "mcspec/pattern.h"
+#include "mcspec/status.h"
+
+#define MCS_TWO_PI 6.283185307179586476925286766559
+
+/* cos and sin of 2 pi idx / n, idx in [0, n). The caller reduces the index
+ * exactly (k t mod N), so every twiddle is within an ulp whatever k t is. */
+static inline double mcs_twiddle_angle_(size_t idx, size_t n)
+{
+    return MCS_TWO_PI / (double)n * (double)idx;
+}
+
+/* The twiddle table of N points: c[j] = cos(2 pi j/N), s[j] = sin(2 pi j/N),
+ * j < n. Shared by the DFT plan, the moment accumulator and the exact moments
+ * so that measured and exact read-outs use the same roots to the last bit. */
+static inline void mcs_twiddles_(size_t n, double *c, double *s)
+{
+    for (size_t j = 0; j < n; ++j) {
+        const double a = mcs_twiddle_angle_(j, n);
+        c[j] = cos(a);
+        s[j] = sin(a);
+    }
+}
+
+/* Set up by mcs_importance_init (n in range; the rest follows from n). */
+static inline int mcs_importance_is_valid_(const mcs_importance *imp)
+{
+    return imp->n >= 1u && imp->n <= (size_t)MCS_MAX_N;
+}
+
+static inline int mcs_kind_is_valid_(mcs_pattern_kind kind)
+{
+    return kind == MCS_PATTERN_RANDOM || kind == MCS_PATTERN_STRATIFIED ||
+           kind == MCS_PATTERN_HOMOGENIZED || kind == MCS_PATTERN_UNIFORM ||
+           kind == MCS_PATTERN_JITTER;
+}
+
+/* A sample weight (or a dense s_n): finite and >= 0. */
+static inline mcs_status mcs_check_weight_(double w)
+{
+    if (!isfinite(w))
+        return MCS_ERR_NOT_FINITE;
+    if (w < 0.0)
+        return MCS_ERR_NEGATIVE;
+    return MCS_OK;
+}
+
+/* One trial in sparse form: k >= 1, bins[k] < n, weights[k] as
+ * mcs_check_weight_. K_RANGE, BIN_RANGE, NOT_FINITE, NEGATIVE. */
+static inline mcs_status mcs_check_sparse_(size_t n, size_t k, const size_t *bins,
+                                           const double *weights)
+{
+    if (k == 0u)
+        return MCS_ERR_K_RANGE;
+    for (size_t j = 0; j < k; ++j) {
+        if (bins[j] >= n)
+            return MCS_ERR_BIN_RANGE;
+        mcs_status st = mcs_check_weight_(weights[j]);
+        if (st != MCS_OK)
+            return st;
+    }
+    return MCS_OK;
+}
+
+/* The checks of an init call: MCS_ERR_NULL without the object, MCS_ERR_N_RANGE
+ * unless n is in [1, cap]. */
+static inline mcs_status mcs_check_init_(const void *obj, size_t n, size_t cap)
+{
+    if (obj == NULL)
+        return MCS_ERR_NULL;
+    return n >= 1u && n <= cap ? MCS_OK : MCS_ERR_N_RANGE;
+}
+
+/* The first check of every other call on an object: MCS_ERR_NULL without it,
+ * MCS_ERR_UNINIT unless its n (0 before init) is in [1, cap]. */
+static inline mcs_status mcs_check_object_(const void *obj, size_t n, size_t cap)
+{
+    if (obj == NULL)
+        return MCS_ERR_NULL;
+    return n >= 1u && n <= cap ? MCS_OK : MCS_ERR_UNINIT;
+}
+
+/* A dense trial s[n] for an object of N = obj_n bins whose own check gave
+ * obj_status: MCS_ERR_NULL without s, then obj_status, MCS_ERR_MISMATCH
+ * unless n == obj_n, then every s_n as mcs_check_weight_. */
+static inline mcs_status mcs_check_dense_(mcs_status obj_status, size_t obj_n, size_t n,
+                                          const double *s)
+{
+    if (s == NULL)
+        return MCS_ERR_NULL;
+    if (obj_status != MCS_OK)
+        return obj_status;
+    if (n != obj_n)
+        return MCS_ERR_MISMATCH;
+    for (size_t j = 0; j < n; ++j) {
+        mcs_status st = mcs_check_weight_(s[j]);
+        if (st != MCS_OK)
+            return st;
+    }
+    return MCS_OK;
+}
+
+/* Every x[n] finite. x * 0 is 0 for finite x and NaN for NaN or infinity, so a
+ * branch-free sum of them is 0 exactly when all are finite; four partial sums
+ * keep the adds from waiting on each other. */
+static inline int mcs_all_finite_(size_t n, const double *x)
+{
+    double z0 = 0.0, z1 = 0.0, z2 = 0.0, z3 = 0.0;
+    size_t j = 0;
+    for (; j + 4u <= n; j += 4u) {
+        z0 += x[j] * 0.0;
+        z1 += x[j + 1u] * 0.0;
+        z2 += x[j + 2u] * 0.0;
+        z3 += x[j + 3u] * 0.0;
+    }
+    for (; j < n; ++j)
+        z0 += x[j] * 0.0;
+    return (z0 + z1) + (z2 + z3) == 0.0;
+}
+
+/* Caller points of one trial: points[k] in [0, 1) (NaN is not), and
+ * weights[k] as mcs_check_weight_ unless weights is NULL (all 1).
+ * POINT_RANGE, NOT_FINITE, NEGATIVE. */
+static inline mcs_status mcs_check_points_(size_t k, const double *points, const double *weights)
+{
+    for (size_t j = 0; j < k; ++j) {
+        if (!(points[j] >= 0.0 && points[j] < 1.0))
+            return MCS_ERR_POINT_RANGE;
+        mcs_status st = weights != NULL ? mcs_check_weight_(weights[j]) : MCS_OK;
+        if (st != MCS_OK)
+            return st;
+    }
+    return MCS_OK;
+}
+
+/* Writes a checked result: *out = value, MCS_OK. Lets a closed form read
+ * "checked ? mcs_set_(out, formula) : status". */
+static inline mcs_status mcs_set_(double *out, double value)
+{
+    *out = value;
+    return MCS_OK;
+}
+
+/* floor(N x) for x in [0,1), kept below N where x N rounds up to N. */
+static inline size_t mcs_point_bin_(double x, size_t n)
+{
+    size_t b = (size_t)(x * (double)n);
+    return b < n ? b : n - 1u;
+}
+
+#endif /* MCSPEC_INTERNAL_H */
