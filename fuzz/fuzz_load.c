@@ -26,8 +26,11 @@ static mcs_spectrum spec, spec_pristine;
 static mcs_moment mom, mom_pristine;
 static mcs_autocorr ac, ac_pristine;
 static mcs_welford wf, wf_pristine;
+static mcs_pointset ps, ps_pristine;
+static mcs_pointset2d ps2, ps2_pristine;
+static mcs_spectrum2d sp2, sp2_pristine;
 static mcs_dft plan;
-static uint8_t saved[64u + 40u * (MCS_MAX_N / 2u + 1u) + 8u * MCS_MAX_COV_N * MCS_MAX_COV_N];
+static uint8_t saved[1u << 18]; /* above any record of the default capacities (85 KB) */
 static double re[MCS_MAX_N], im[MCS_MAX_N];
 static double mat_re[MCS_MAX_COV_N * MCS_MAX_COV_N], mat_im[MCS_MAX_COV_N * MCS_MAX_COV_N];
 
@@ -68,6 +71,13 @@ static void setup_once(void)
     ok_or_die(mcs_autocorr_add_bins(&ac_pristine, 3u, bins, w), "setup", "autocorr add");
     ok_or_die(mcs_welford_init(&wf_pristine), "setup", "welford init");
     ok_or_die(mcs_welford_add(&wf_pristine, 3.5), "setup", "welford add");
+    const double pts[4] = {0.125, 0.5, 0.75, 0.375};
+    ok_or_die(mcs_pointset_init(&ps_pristine, 5u), "setup", "pointset init");
+    ok_or_die(mcs_pointset_add(&ps_pristine, 4u, pts), "setup", "pointset add");
+    ok_or_die(mcs_pointset2d_init(&ps2_pristine, 3u), "setup", "pointset2d init");
+    ok_or_die(mcs_pointset2d_add(&ps2_pristine, 2u, pts), "setup", "pointset2d add");
+    ok_or_die(mcs_spectrum2d_init(&sp2_pristine, 3u, 4u), "setup", "spectrum2d init");
+    ok_or_die(mcs_spectrum2d_add_points(&sp2_pristine, 2u, pts, NULL), "setup", "spectrum2d add");
     ready = 1;
 }
 
@@ -75,7 +85,8 @@ static int is_record_status(mcs_status st)
 {
     return st == MCS_ERR_MAGIC || st == MCS_ERR_TRUNCATED || st == MCS_ERR_VERSION ||
            st == MCS_ERR_FORMAT || st == MCS_ERR_CHECKSUM || st == MCS_ERR_KIND ||
-           st == MCS_ERR_N_RANGE || st == MCS_ERR_NOT_FINITE || st == MCS_ERR_INVARIANT;
+           st == MCS_ERR_N_RANGE || st == MCS_ERR_FREQ_RANGE || st == MCS_ERR_NOT_FINITE ||
+           st == MCS_ERR_INVARIANT;
 }
 
 /* The common half of every kind's check: the status, the untouched
@@ -217,6 +228,77 @@ static void check_welford(const uint8_t *data, size_t size, mcs_status peek_st)
     }
 }
 
+/* A read-out that succeeds must be finite (one that refuses is fine). */
+static void finite_if_ok(mcs_status st, double v, const char *kind, const char *what)
+{
+    if (st == MCS_OK)
+        finite_or_die(v, kind, what);
+}
+
+static void check_pointset(const uint8_t *data, size_t size, mcs_status peek_st)
+{
+    size_t len = 0u;
+    memcpy(&ps, &ps_pristine, sizeof ps);
+    mcs_status st = mcs_io_load_pointset(&ps, size, data);
+    if (!loaded("pointset", st, peek_st, &ps, &ps_pristine, sizeof ps))
+        return;
+    ok_or_die(mcs_io_save_pointset(&ps, sizeof saved, saved, &len), "pointset", "save");
+    same_bytes("pointset", len, data, size);
+    for (long f = -(long)ps.freq_max; f <= (long)ps.freq_max; ++f) {
+        double v = 0.0;
+        finite_if_ok(mcs_pointset_power(&ps, f, &v), v, "pointset", "power");
+        finite_if_ok(mcs_pointset_power_stderr(&ps, f, &v), v, "pointset", "power stderr");
+    }
+}
+
+static void check_pointset2d(const uint8_t *data, size_t size, mcs_status peek_st)
+{
+    size_t len = 0u;
+    memcpy(&ps2, &ps2_pristine, sizeof ps2);
+    mcs_status st = mcs_io_load_pointset2d(&ps2, size, data);
+    if (!loaded("pointset2d", st, peek_st, &ps2, &ps2_pristine, sizeof ps2))
+        return;
+    ok_or_die(mcs_io_save_pointset2d(&ps2, sizeof saved, saved, &len), "pointset2d", "save");
+    same_bytes("pointset2d", len, data, size);
+    const long f = (long)ps2.freq_max;
+    for (long fy = -f; fy <= f; ++fy)
+        for (long fx = -f; fx <= f; ++fx) {
+            double v = 0.0;
+            finite_if_ok(mcs_pointset2d_power(&ps2, fx, fy, &v), v, "pointset2d", "power");
+            finite_if_ok(mcs_pointset2d_power_stderr(&ps2, fx, fy, &v), v, "pointset2d",
+                         "power stderr");
+        }
+    for (size_t r = 0; r <= ps2.freq_max; ++r) {
+        double v = 0.0;
+        finite_if_ok(mcs_pointset2d_radial(&ps2, r, &v), v, "pointset2d", "radial");
+        finite_if_ok(mcs_pointset2d_radial_stderr(&ps2, r, &v), v, "pointset2d", "radial stderr");
+        finite_if_ok(mcs_pointset2d_anisotropy(&ps2, r, &v), v, "pointset2d", "anisotropy");
+    }
+}
+
+static void check_spectrum2d(const uint8_t *data, size_t size, mcs_status peek_st)
+{
+    size_t len = 0u;
+    memcpy(&sp2, &sp2_pristine, sizeof sp2);
+    mcs_status st = mcs_io_load_spectrum2d(&sp2, size, data);
+    if (!loaded("spectrum2d", st, peek_st, &sp2, &sp2_pristine, sizeof sp2))
+        return;
+    ok_or_die(mcs_io_save_spectrum2d(&sp2, sizeof saved, saved, &len), "spectrum2d", "save");
+    same_bytes("spectrum2d", len, data, size);
+    for (size_t k2 = 0; k2 < sp2.n_y; ++k2)
+        for (size_t k1 = 0; k1 < sp2.n_x; ++k1) {
+            double a = 0.0, b = 0.0;
+            st = mcs_spectrum2d_mean(&sp2, k1, k2, &a, &b);
+            finite_if_ok(st, a, "spectrum2d", "mean re");
+            finite_if_ok(st, b, "spectrum2d", "mean im");
+            finite_if_ok(mcs_spectrum2d_power(&sp2, k1, k2, &a), a, "spectrum2d", "power");
+            finite_if_ok(mcs_spectrum2d_power_stderr(&sp2, k1, k2, &a), a, "spectrum2d",
+                         "power stderr");
+            finite_if_ok(mcs_spectrum2d_mean_stderr(&sp2, k1, k2, &a), a, "spectrum2d",
+                         "mean stderr");
+        }
+}
+
 static void check_all(const uint8_t *data, size_t size)
 {
     mcs_io_info info;
@@ -227,6 +309,9 @@ static void check_all(const uint8_t *data, size_t size)
     check_moment(data, size, peek_st);
     check_autocorr(data, size, peek_st);
     check_welford(data, size, peek_st);
+    check_pointset(data, size, peek_st);
+    check_pointset2d(data, size, peek_st);
+    check_spectrum2d(data, size, peek_st);
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)

@@ -20,10 +20,10 @@ FUZZ_BUILD   := build/fuzz
 FUZZ_SECONDS ?= 60
 FUZZ_SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 FUZZ_OPT     := -O1 -g
-# Per input: a timeout well above any honest run, a small maximum length
-# (records of N up to a few hundred), and libFuzzer's own leak check off
-# (nothing here allocates).
-FUZZ_RUN_FLAGS ?= -timeout=10 -max_len=4096 -detect_leaks=0 -print_final_stats=1
+# Per input: a timeout well above any honest run, a maximum length above the
+# largest seed (records of N up to a few hundred, 2D cutoffs up to 16), and
+# libFuzzer's own leak check off (nothing here allocates).
+FUZZ_RUN_FLAGS ?= -timeout=10 -max_len=12288 -detect_leaks=0 -print_final_stats=1
 FUZZ_TARGETS :=
 
 FUZZ_LIB_OBJ := $(LIB_SRC:%.c=$(FUZZ_BUILD)/obj/%.o) $(KISS_SRC:%.c=$(FUZZ_BUILD)/obj/%.o)

@@ -122,6 +122,9 @@ const char *mcs_io_kind_str(uint32_t kind)
     case MCS_IO_KIND_MOMENT: return "moment";
     case MCS_IO_KIND_AUTOCORR: return "autocorr";
     case MCS_IO_KIND_WELFORD: return "welford";
+    case MCS_IO_KIND_POINTSET: return "pointset";
+    case MCS_IO_KIND_POINTSET2D: return "pointset2d";
+    case MCS_IO_KIND_SPECTRUM2D: return "spectrum2d";
     default: return "unknown";
     }
 }
@@ -178,6 +181,37 @@ mcs_status mcs_io_peek(size_t len, const void *buf, mcs_io_info *info)
         return st;
     *info = tmp;
     return MCS_OK;
+}
+
+void mcs_io_layout_start(io_layout *lay, uint32_t kind, uint32_t shape_len,
+                         const uint64_t *shape)
+{
+    memset(lay, 0, sizeof *lay);
+    lay->kind = kind;
+    lay->shape_len = shape_len;
+    for (size_t i = 0; i < shape_len; ++i)
+        lay->shape[i] = shape[i];
+}
+
+void mcs_io_add_range(io_layout *lay, size_t len, unsigned rules)
+{
+    io_range *r = &lay->ranges[lay->nranges++];
+    r->first = lay->payload_len;
+    r->len = len;
+    r->rules = rules;
+    lay->payload_len += len;
+}
+
+void mcs_io_put_array(io_sink *sink, const double *a, size_t len)
+{
+    for (size_t i = 0; i < len; ++i)
+        mcs_io_sink_put(sink, a[i]);
+}
+
+void mcs_io_get_array(double *a, const uint8_t *payload, size_t first, size_t len)
+{
+    for (size_t i = 0; i < len; ++i)
+        a[i] = mcs_io_get_f64(payload, first + i);
 }
 
 void mcs_io_sink_put(io_sink *sink, double v)

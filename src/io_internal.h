@@ -33,6 +33,14 @@ typedef struct {
     io_range ranges[IO_MAX_RANGES];    /* contiguous, covering the payload */
 } io_layout;
 
+/* Empties *lay for a kind with shape_len shape words (shape may be NULL when
+ * there are none); ranges then follow with mcs_io_add_range. */
+void mcs_io_layout_start(io_layout *lay, uint32_t kind, uint32_t shape_len,
+                         const uint64_t *shape);
+
+/* Appends a range of len values obeying rules to the payload. */
+void mcs_io_add_range(io_layout *lay, size_t len, unsigned rules);
+
 /* Fills *lay for a shape (shape_len words already checked); MCS_ERR_N_RANGE
  * when the shape is beyond this build's capacities. */
 typedef mcs_status (*io_layout_fn)(const uint64_t *shape, io_layout *lay);
@@ -52,6 +60,10 @@ typedef void (*io_emit_fn)(const void *obj, io_sink *sink);
 
 /* The value at payload index i (little-endian binary64). */
 double mcs_io_get_f64(const uint8_t *payload, size_t i);
+
+/* a[0 .. len) to the sink, in order; and back from payload[first ..). */
+void mcs_io_put_array(io_sink *sink, const double *a, size_t len);
+void mcs_io_get_array(double *a, const uint8_t *payload, size_t first, size_t len);
 
 /* What a kind's save passes: the object, its emit function and its count. */
 typedef struct {

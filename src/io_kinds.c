@@ -1,11 +1,12 @@
-/* The four accumulator kinds of the record format (docs/format.md): for each,
- * its layout (payload length and value rules for a shape), the emit function
- * that lists its values in payload order, and the load that decodes them in
- * the same order into a freshly initialised object.
+/* The binned 1D accumulator kinds of the record format (docs/format.md):
+ * spectrum, moment, autocorr and welford (the point-set and 2D ones are in
+ * io_points.c). For each, its layout (payload length and value rules for a
+ * shape), the emit function that lists its values in payload order, and the
+ * load that decodes them in the same order into a freshly initialised object.
  *
- * Adding a kind (e.g. a 2D point-set accumulator): a new mcs_io_kind number,
- * a layout, an emit, a commit and the two public wrappers below; the framing,
- * checksum and value checks of io.c need no change, nor does the version. */
+ * Adding a kind: a new mcs_io_kind number, a layout, an emit, a load and the
+ * two public wrappers, as below; the framing, checksum and value checks of
+ * io.c need no change, nor does the version. */
 #include "io_internal.h"
 
 #include <string.h>
@@ -15,20 +16,8 @@ static mcs_status layout_n(uint32_t kind, uint64_t n, uint64_t max_n, io_layout 
 {
     if (n == 0u || n > max_n)
         return MCS_ERR_N_RANGE;
-    memset(lay, 0, sizeof *lay);
-    lay->kind = kind;
-    lay->shape_len = 1u;
-    lay->shape[0] = n;
+    mcs_io_layout_start(lay, kind, 1u, &n);
     return MCS_OK;
-}
-
-static void add_range(io_layout *lay, size_t len, unsigned rules)
-{
-    io_range *r = &lay->ranges[lay->nranges++];
-    r->first = lay->payload_len;
-    r->len = len;
-    r->rules = rules;
-    lay->payload_len += len;
 }
 
 /* ---- spectrum: five half spectra k = 0..N/2 ---- */
@@ -39,34 +28,22 @@ static mcs_status layout_spectrum(const uint64_t *shape, io_layout *lay)
     if (st != MCS_OK)
         return st;
     const size_t h1 = (size_t)shape[0] / 2u + 1u;
-    add_range(lay, 2u * h1, 0u);                          /* mean_re, mean_im */
-    add_range(lay, h1, IO_RULE_NONNEG | IO_RULE_SPREAD);  /* m2_s */
-    add_range(lay, h1, IO_RULE_NONNEG);                   /* mean_pow */
-    add_range(lay, h1, IO_RULE_NONNEG | IO_RULE_SPREAD);  /* m2_pow */
+    mcs_io_add_range(lay, 2u * h1, 0u);                          /* mean_re, mean_im */
+    mcs_io_add_range(lay, h1, IO_RULE_NONNEG | IO_RULE_SPREAD);  /* m2_s */
+    mcs_io_add_range(lay, h1, IO_RULE_NONNEG);                   /* mean_pow */
+    mcs_io_add_range(lay, h1, IO_RULE_NONNEG | IO_RULE_SPREAD);  /* m2_pow */
     return MCS_OK;
-}
-
-static void put_array(io_sink *sink, const double *a, size_t len)
-{
-    for (size_t i = 0; i < len; ++i)
-        mcs_io_sink_put(sink, a[i]);
-}
-
-static void get_array(double *a, const uint8_t *payload, size_t first, size_t len)
-{
-    for (size_t i = 0; i < len; ++i)
-        a[i] = mcs_io_get_f64(payload, first + i);
 }
 
 static void emit_spectrum(const void *obj, io_sink *sink)
 {
     const mcs_spectrum *acc = (const mcs_spectrum *)obj;
     const size_t h1 = acc->n / 2u + 1u;
-    put_array(sink, acc->mean_re, h1);
-    put_array(sink, acc->mean_im, h1);
-    put_array(sink, acc->m2_s, h1);
-    put_array(sink, acc->mean_pow, h1);
-    put_array(sink, acc->m2_pow, h1);
+    mcs_io_put_array(sink, acc->mean_re, h1);
+    mcs_io_put_array(sink, acc->mean_im, h1);
+    mcs_io_put_array(sink, acc->m2_s, h1);
+    mcs_io_put_array(sink, acc->mean_pow, h1);
+    mcs_io_put_array(sink, acc->m2_pow, h1);
 }
 
 mcs_status mcs_io_save_spectrum(const mcs_spectrum *acc, size_t cap, void *buf, size_t *len)
@@ -99,11 +76,11 @@ mcs_status mcs_io_load_spectrum(mcs_spectrum *acc, size_t len, const void *buf)
         return st;
     const uint8_t *pl = rec.payload;
     const size_t h1 = (size_t)rec.lay.shape[0] / 2u + 1u;
-    get_array(acc->mean_re, pl, 0u, h1);
-    get_array(acc->mean_im, pl, h1, h1);
-    get_array(acc->m2_s, pl, 2u * h1, h1);
-    get_array(acc->mean_pow, pl, 3u * h1, h1);
-    get_array(acc->m2_pow, pl, 4u * h1, h1);
+    mcs_io_get_array(acc->mean_re, pl, 0u, h1);
+    mcs_io_get_array(acc->mean_im, pl, h1, h1);
+    mcs_io_get_array(acc->m2_s, pl, 2u * h1, h1);
+    mcs_io_get_array(acc->mean_pow, pl, 3u * h1, h1);
+    mcs_io_get_array(acc->m2_pow, pl, 4u * h1, h1);
     acc->count = rec.count;
     return MCS_OK;
 }
@@ -117,7 +94,7 @@ static mcs_status layout_moment(const uint64_t *shape, io_layout *lay)
         return st;
     const size_t n = (size_t)shape[0];
     /* Weights are >= 0, so every sum of weights or of their products is too. */
-    add_range(lay, n + n * (n + 1u) / 2u, IO_RULE_NONNEG);
+    mcs_io_add_range(lay, n + n * (n + 1u) / 2u, IO_RULE_NONNEG);
     return MCS_OK;
 }
 
@@ -125,9 +102,9 @@ static void emit_moment(const void *obj, io_sink *sink)
 {
     const mcs_moment *acc = (const mcs_moment *)obj;
     const size_t n = acc->n;
-    put_array(sink, acc->sum_s, n);
+    mcs_io_put_array(sink, acc->sum_s, n);
     for (size_t m = 0; m < n; ++m)
-        put_array(sink, acc->sum_ss + m * n + m, n - m);
+        mcs_io_put_array(sink, acc->sum_ss + m * n + m, n - m);
 }
 
 mcs_status mcs_io_save_moment(const mcs_moment *acc, size_t cap, void *buf, size_t *len)
@@ -160,10 +137,10 @@ mcs_status mcs_io_load_moment(mcs_moment *acc, size_t len, const void *buf)
     st = mcs_moment_init(acc, n);
     if (st != MCS_OK)
         return st;
-    get_array(acc->sum_s, pl, 0u, n);
+    mcs_io_get_array(acc->sum_s, pl, 0u, n);
     size_t at = n;
     for (size_t m = 0; m < n; ++m) {
-        get_array(acc->sum_ss + m * n + m, pl, at, n - m);
+        mcs_io_get_array(acc->sum_ss + m * n + m, pl, at, n - m);
         at += n - m;
     }
     acc->count = rec.count;
@@ -178,15 +155,15 @@ static mcs_status layout_autocorr(const uint64_t *shape, io_layout *lay)
     if (st != MCS_OK)
         return st;
     const size_t n = (size_t)shape[0];
-    add_range(lay, n + n / 2u + 1u, IO_RULE_NONNEG);
+    mcs_io_add_range(lay, n + n / 2u + 1u, IO_RULE_NONNEG);
     return MCS_OK;
 }
 
 static void emit_autocorr(const void *obj, io_sink *sink)
 {
     const mcs_autocorr *acc = (const mcs_autocorr *)obj;
-    put_array(sink, acc->sum_s, acc->n);
-    put_array(sink, acc->sum_a, acc->n / 2u + 1u);
+    mcs_io_put_array(sink, acc->sum_s, acc->n);
+    mcs_io_put_array(sink, acc->sum_a, acc->n / 2u + 1u);
 }
 
 mcs_status mcs_io_save_autocorr(const mcs_autocorr *acc, size_t cap, void *buf, size_t *len)
@@ -219,8 +196,8 @@ mcs_status mcs_io_load_autocorr(mcs_autocorr *acc, size_t len, const void *buf)
     st = mcs_autocorr_init(acc, n);
     if (st != MCS_OK)
         return st;
-    get_array(acc->sum_s, pl, 0u, n);
-    get_array(acc->sum_a, pl, n, n / 2u + 1u);
+    mcs_io_get_array(acc->sum_s, pl, 0u, n);
+    mcs_io_get_array(acc->sum_a, pl, n, n / 2u + 1u);
     acc->count = rec.count;
     return MCS_OK;
 }
@@ -229,13 +206,11 @@ mcs_status mcs_io_load_autocorr(mcs_autocorr *acc, size_t len, const void *buf)
 
 static mcs_status layout_welford(const uint64_t *shape, io_layout *lay)
 {
-    (void)shape;
-    memset(lay, 0, sizeof *lay);
-    lay->kind = MCS_IO_KIND_WELFORD;
-    add_range(lay, 1u, 0u);                               /* mean */
-    add_range(lay, 1u, IO_RULE_NONNEG | IO_RULE_SPREAD);  /* m2 */
-    add_range(lay, 1u, IO_RULE_SPREAD);                   /* m3 */
-    add_range(lay, 1u, IO_RULE_NONNEG | IO_RULE_SPREAD);  /* m4 */
+    mcs_io_layout_start(lay, MCS_IO_KIND_WELFORD, 0u, shape);
+    mcs_io_add_range(lay, 1u, 0u);                               /* mean */
+    mcs_io_add_range(lay, 1u, IO_RULE_NONNEG | IO_RULE_SPREAD);  /* m2 */
+    mcs_io_add_range(lay, 1u, IO_RULE_SPREAD);                   /* m3 */
+    mcs_io_add_range(lay, 1u, IO_RULE_NONNEG | IO_RULE_SPREAD);  /* m4 */
     return MCS_OK;
 }
 

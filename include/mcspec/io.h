@@ -27,6 +27,9 @@
 #include "moment.h"
 #include "autocorr.h"
 #include "welford.h"
+#include "pointset.h"
+#include "pointset2d.h"
+#include "spectrum2d.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -60,7 +63,10 @@ typedef enum {
     MCS_IO_KIND_SPECTRUM = 1, /* mcs_spectrum, shape [N] */
     MCS_IO_KIND_MOMENT = 2,   /* mcs_moment, shape [N] */
     MCS_IO_KIND_AUTOCORR = 3, /* mcs_autocorr, shape [N] */
-    MCS_IO_KIND_WELFORD = 4   /* mcs_welford, shape [] */
+    MCS_IO_KIND_WELFORD = 4,   /* mcs_welford, shape [] */
+    MCS_IO_KIND_POINTSET = 5,  /* mcs_pointset, shape [F] */
+    MCS_IO_KIND_POINTSET2D = 6, /* mcs_pointset2d, shape [F] */
+    MCS_IO_KIND_SPECTRUM2D = 7 /* mcs_spectrum2d, shape [N1, N2] */
 } mcs_io_kind;
 
 /* What mcs_io_peek reads from a header. */
@@ -82,7 +88,8 @@ typedef struct {
  * after the record), MCS_ERR_CHECKSUM. *info untouched on error. */
 mcs_status mcs_io_peek(size_t len, const void *buf, mcs_io_info *info);
 
-/* Name of a kind ("spectrum", "moment", "autocorr", "welford"), or "unknown". */
+/* Name of a kind ("spectrum", "moment", "autocorr", "welford", "pointset",
+ * "pointset2d", "spectrum2d"), or "unknown". */
 const char *mcs_io_kind_str(uint32_t kind);
 
 /* CRC-32 (IEEE 802.3, reflected, as zlib's crc32) of data[len]; data may be
@@ -99,6 +106,9 @@ mcs_status mcs_io_save_spectrum(const mcs_spectrum *acc, size_t cap, void *buf, 
 mcs_status mcs_io_save_moment(const mcs_moment *acc, size_t cap, void *buf, size_t *len);
 mcs_status mcs_io_save_autocorr(const mcs_autocorr *acc, size_t cap, void *buf, size_t *len);
 mcs_status mcs_io_save_welford(const mcs_welford *acc, size_t cap, void *buf, size_t *len);
+mcs_status mcs_io_save_pointset(const mcs_pointset *acc, size_t cap, void *buf, size_t *len);
+mcs_status mcs_io_save_pointset2d(const mcs_pointset2d *acc, size_t cap, void *buf, size_t *len);
+mcs_status mcs_io_save_spectrum2d(const mcs_spectrum2d *acc, size_t cap, void *buf, size_t *len);
 
 /* Loading, one call per kind: buf[len] must hold exactly one record of that
  * kind. On success *acc is as its init for the record's N left it (a spectrum
@@ -106,7 +116,8 @@ mcs_status mcs_io_save_welford(const mcs_welford *acc, size_t cap, void *buf, si
  * like the object that was saved. Statuses, in the order they are checked:
  * MCS_ERR_NULL, the framing errors of mcs_io_peek, MCS_ERR_KIND (another or
  * an unknown kind), MCS_ERR_FORMAT (shape or payload length not what the kind
- * needs), MCS_ERR_N_RANGE (N = 0 or above this build's capacity),
+ * needs), MCS_ERR_N_RANGE (N, N1 or N2 = 0 or above this build's capacity),
+ * MCS_ERR_FREQ_RANGE (a point-set cutoff F = 0 or above this build's),
  * MCS_ERR_NOT_FINITE (a NaN or infinite value), MCS_ERR_INVARIANT (a count
  * above MCS_IO_MAX_COUNT, data with a zero count, spread with one trial, a
  * negative M2, mean power, sum of weights or of weight products, a value
@@ -116,6 +127,9 @@ mcs_status mcs_io_load_spectrum(mcs_spectrum *acc, size_t len, const void *buf);
 mcs_status mcs_io_load_moment(mcs_moment *acc, size_t len, const void *buf);
 mcs_status mcs_io_load_autocorr(mcs_autocorr *acc, size_t len, const void *buf);
 mcs_status mcs_io_load_welford(mcs_welford *acc, size_t len, const void *buf);
+mcs_status mcs_io_load_pointset(mcs_pointset *acc, size_t len, const void *buf);
+mcs_status mcs_io_load_pointset2d(mcs_pointset2d *acc, size_t len, const void *buf);
+mcs_status mcs_io_load_spectrum2d(mcs_spectrum2d *acc, size_t len, const void *buf);
 
 #ifdef __cplusplus
 }
