@@ -228,11 +228,13 @@ static void check_welford(const uint8_t *data, size_t size, mcs_status peek_st)
     }
 }
 
-/* A read-out that succeeds must be finite (one that refuses is fine). */
-static void finite_if_ok(mcs_status st, double v, const char *kind, const char *what)
+/* A read-out that succeeds must be finite (one that refuses is fine). v is a
+ * pointer: the read-out writing it is another argument of the same call,
+ * and C leaves the order in which arguments are evaluated open. */
+static void finite_if_ok(mcs_status st, const double *v, const char *kind, const char *what)
 {
     if (st == MCS_OK)
-        finite_or_die(v, kind, what);
+        finite_or_die(*v, kind, what);
 }
 
 static void check_pointset(const uint8_t *data, size_t size, mcs_status peek_st)
@@ -246,8 +248,8 @@ static void check_pointset(const uint8_t *data, size_t size, mcs_status peek_st)
     same_bytes("pointset", len, data, size);
     for (long f = -(long)ps.freq_max; f <= (long)ps.freq_max; ++f) {
         double v = 0.0;
-        finite_if_ok(mcs_pointset_power(&ps, f, &v), v, "pointset", "power");
-        finite_if_ok(mcs_pointset_power_stderr(&ps, f, &v), v, "pointset", "power stderr");
+        finite_if_ok(mcs_pointset_power(&ps, f, &v), &v, "pointset", "power");
+        finite_if_ok(mcs_pointset_power_stderr(&ps, f, &v), &v, "pointset", "power stderr");
     }
 }
 
@@ -264,15 +266,15 @@ static void check_pointset2d(const uint8_t *data, size_t size, mcs_status peek_s
     for (long fy = -f; fy <= f; ++fy)
         for (long fx = -f; fx <= f; ++fx) {
             double v = 0.0;
-            finite_if_ok(mcs_pointset2d_power(&ps2, fx, fy, &v), v, "pointset2d", "power");
-            finite_if_ok(mcs_pointset2d_power_stderr(&ps2, fx, fy, &v), v, "pointset2d",
+            finite_if_ok(mcs_pointset2d_power(&ps2, fx, fy, &v), &v, "pointset2d", "power");
+            finite_if_ok(mcs_pointset2d_power_stderr(&ps2, fx, fy, &v), &v, "pointset2d",
                          "power stderr");
         }
     for (size_t r = 0; r <= ps2.freq_max; ++r) {
         double v = 0.0;
-        finite_if_ok(mcs_pointset2d_radial(&ps2, r, &v), v, "pointset2d", "radial");
-        finite_if_ok(mcs_pointset2d_radial_stderr(&ps2, r, &v), v, "pointset2d", "radial stderr");
-        finite_if_ok(mcs_pointset2d_anisotropy(&ps2, r, &v), v, "pointset2d", "anisotropy");
+        finite_if_ok(mcs_pointset2d_radial(&ps2, r, &v), &v, "pointset2d", "radial");
+        finite_if_ok(mcs_pointset2d_radial_stderr(&ps2, r, &v), &v, "pointset2d", "radial stderr");
+        finite_if_ok(mcs_pointset2d_anisotropy(&ps2, r, &v), &v, "pointset2d", "anisotropy");
     }
 }
 
@@ -289,12 +291,12 @@ static void check_spectrum2d(const uint8_t *data, size_t size, mcs_status peek_s
         for (size_t k1 = 0; k1 < sp2.n_x; ++k1) {
             double a = 0.0, b = 0.0;
             st = mcs_spectrum2d_mean(&sp2, k1, k2, &a, &b);
-            finite_if_ok(st, a, "spectrum2d", "mean re");
-            finite_if_ok(st, b, "spectrum2d", "mean im");
-            finite_if_ok(mcs_spectrum2d_power(&sp2, k1, k2, &a), a, "spectrum2d", "power");
-            finite_if_ok(mcs_spectrum2d_power_stderr(&sp2, k1, k2, &a), a, "spectrum2d",
+            finite_if_ok(st, &a, "spectrum2d", "mean re");
+            finite_if_ok(st, &b, "spectrum2d", "mean im");
+            finite_if_ok(mcs_spectrum2d_power(&sp2, k1, k2, &a), &a, "spectrum2d", "power");
+            finite_if_ok(mcs_spectrum2d_power_stderr(&sp2, k1, k2, &a), &a, "spectrum2d",
                          "power stderr");
-            finite_if_ok(mcs_spectrum2d_mean_stderr(&sp2, k1, k2, &a), a, "spectrum2d",
+            finite_if_ok(mcs_spectrum2d_mean_stderr(&sp2, k1, k2, &a), &a, "spectrum2d",
                          "mean stderr");
         }
 }
