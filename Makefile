@@ -227,7 +227,7 @@ run: all
 # examples (test/examples_check.sh prints a Unity-style summary too).
 test: $(TEST_BIN) $(SECTION_BIN)
 	@EXAMPLES="$(SECTION_BIN)" MCSPEC="$(CLI_BIN)" sh test/run_tests.sh $(TEST_BIN) \
-	    test/examples_check.sh test/cli_check.sh
+	    test/examples_check.sh test/cli_check.sh test/record_check.sh
 
 clean:
 	rm -rf build

@@ -1,10 +1,13 @@
 /* mcspec pattern: the measured spectrum of a named pattern beside theory. */
+#include "atomic.h"
 #include "cli.h"
 #include "input.h"
 #include "output.h"
 #include "plot.h"
 #include "predict.h"
 #include "progress.h"
+#include "record.h"
+#include "streams.h"
 #include "trials.h"
 
 #include "mcspec.h"
@@ -20,7 +23,8 @@
 
 static const char help[] =
     "usage: mcspec pattern KIND --n N --k K [--trials T] [--seed S]\n"
-    "                      [--importance FILE] [--csv] [--plot FILE]\n"
+    "                      [--streams P [--stream I]] [--importance FILE]\n"
+    "                      [--csv] [--plot FILE] [--save FILE]\n"
     "\n"
     "Draws T trials of K samples over N bins from the pattern KIND and prints\n"
     "its full spectrum, k = 0..N/2, measured beside theory: <S_k> (real and\n"
@@ -50,8 +54,19 @@ static const char help[] =
     "  --n N              bins N, 1.." CLI_STR(MCS_MAX_N) " (required)\n"
     "  --k K              samples per trial K, 1.." CLI_STR(CLI_MAX_K) " (required; need not divide N)\n"
     "  --trials T         trials, at least 2 (default 10000)\n"
-    "  --seed S           PCG32 seed (initstate; default 1); the run is stream 0,\n"
-    "                     the generator seeded (S, 0): the same S gives the same output\n"
+    "  --seed S           PCG32 seed (initstate; default 1); the same S (and P)\n"
+    "                     gives the same output\n"
+    "  --streams P        split the run over P streams, 1.." CLI_STR(CLI_MAX_STREAMS) " (default 1):\n"
+    "                     stream i draws from PCG32 seeded (initstate S, initseq i),\n"
+    "                     i = 0..P-1, and takes floor(T/P) trials, one more for the\n"
+    "                     first T mod P streams; the P accumulators are merged\n"
+    "                     pairwise in a fixed tree order, (0+1), (2+3), ((0+1)+(2+3)),\n"
+    "                     ... P = 1 is the plain run: stream 0, seeded (S, 0).\n"
+    "                     mpirun -np P mcspec-mpi pattern ... runs stream i on rank i\n"
+    "                     and gives the same bytes (docs/scaling.md)\n"
+    "  --stream I         run stream I of the P alone, I = 0..P-1; `mcspec merge` of\n"
+    "                     the P files that --stream 0 .. P-1 --save (in that order)\n"
+    "                     equals --streams P --save: a run split over batch jobs\n"
     "  --importance FILE  warp the samples through the importance function whose N\n"
     "                     weights (> 0, any scale; one per line, '#' lines skipped)\n"
     "                     are in FILE\n"
@@ -63,6 +78,10 @@ static const char help[] =
     "  --plot FILE        also draw the power spectrum (k >= 1) with its standard-\n"
     "                     error band, the exact prediction and the closed form to\n"
     "                     FILE, .svg or .png (needs gnuplot)\n"
+    "  --save FILE        also save the measured spectrum accumulator to FILE\n"
+    "                     (docs/format.md; read by mcspec show and mcspec merge),\n"
+    "                     written atomically: a temporary file beside FILE, flushed,\n"
+    "                     then renamed, so FILE is never left half-written\n"
     "  --help             this text\n"
     "\n"
     "Progress goes to stderr when it is a terminal and the run is long (never\n"
@@ -75,6 +94,8 @@ typedef struct {
     uint64_t trials, seed;
     const char *importance, *plot;
     int csv;
+    const char *save;
+    uint64_t streams, stream; /* stream == streams: every stream */
 } pattern_opts;
 
 /* The library's kind whose name is text; -1 if none. */
@@ -96,6 +117,9 @@ static int parse(int argc, char **argv, pattern_opts *o)
         {"importance", CLI_OPT_STRING, &o->importance, 0, 0, 0},
         {"csv", CLI_OPT_FLAG, &o->csv, 0, 0, 0},
         {"plot", CLI_OPT_STRING, &o->plot, 0, 0, 0},
+        {"save", CLI_OPT_STRING, &o->save, 0, 0, 0},
+        {"streams", CLI_OPT_U64, &o->streams, 1, CLI_MAX_STREAMS, 0},
+        {"stream", CLI_OPT_U64, &o->stream, 0, CLI_MAX_STREAMS - 1u, 0},
     };
     const char *args[1] = {NULL};
     cli_parser p = {CMD, help, opts, sizeof opts / sizeof opts[0], args, 1, 0};
@@ -112,6 +136,17 @@ static int parse(int argc, char **argv, pattern_opts *o)
     if (!opts[0].given || !opts[1].given)
         return cli_fail(CMD, "%s is required (see %s --help)", !opts[0].given ? "--n N" : "--k K",
                         CMD);
+    if (!opts[9].given)
+        o->stream = o->streams;
+    else if (o->stream >= o->streams)
+        return cli_fail(CMD, "--stream %llu is not one of the %llu streams (0..%llu; give "
+                        "--streams P)", (unsigned long long)o->stream,
+                        (unsigned long long)o->streams, (unsigned long long)o->streams - 1u);
+    if (o->trials < o->streams)
+        return cli_fail(CMD, "--trials %llu is fewer than --streams %llu: every stream needs a "
+                        "trial", (unsigned long long)o->trials, (unsigned long long)o->streams);
+    if (o->save != NULL && cli_write_check(CMD, o->save) != 0)
+        return CLI_EXIT_USAGE;
     if (o->plot != NULL)
         return cli_plot_check(CMD, o->plot);
     return 0;
@@ -177,9 +212,20 @@ static int plot(const pattern_opts *o, const mcs_pattern *pat, const cli_predict
 
 static void print_notes(const pattern_opts *o, const mcs_pattern *pat, const cli_prediction *pred)
 {
-    cli_note(o->csv, "%s %s: N = %zu bins, K = %zu samples, %llu trials, seed %llu (stream 0)",
-             CMD, o->kind_name, o->n, o->k, (unsigned long long)o->trials,
-             (unsigned long long)o->seed);
+    uint64_t first = 0u, count = o->trials;
+    if (o->stream < o->streams) {
+        cli_stream_share(o->trials, o->streams, o->stream, &first, &count);
+        cli_note(o->csv, "%s %s: N = %zu bins, K = %zu samples, seed %llu, stream %llu of %llu: "
+                 "trials %llu..%llu of %llu", CMD, o->kind_name, o->n, o->k,
+                 (unsigned long long)o->seed, (unsigned long long)o->stream,
+                 (unsigned long long)o->streams, (unsigned long long)first,
+                 (unsigned long long)(first + count - 1u), (unsigned long long)o->trials);
+    } else {
+        cli_note(o->csv, "%s %s: N = %zu bins, K = %zu samples, %llu trials, seed %llu (%llu "
+                 "stream%s)", CMD, o->kind_name, o->n, o->k, (unsigned long long)o->trials,
+                 (unsigned long long)o->seed, (unsigned long long)o->streams,
+                 o->streams == 1u ? "" : "s");
+    }
     if (pat->importance != NULL)
         cli_note(o->csv, "importance function: %s, harmonic mean H = %.6g",
                  cli_input_name(o->importance), pat->importance->harmonic_mean);
@@ -199,8 +245,7 @@ static int measure_and_report(const pattern_opts *o, const mcs_pattern *pat,
     snprintf(label, sizeof label, "%s %s", CMD, o->kind_name);
     cli_progress progress;
     cli_progress_init(&progress, !o->csv, label, "trials", o->trials);
-    cli_sinks sinks = {acc, NULL, NULL};
-    int rc = cli_run_trials(CMD, pat, o->seed, 0u, 0u, o->trials, &sinks, &progress);
+    int rc = cli_run_streams(CMD, pat, o->seed, o->trials, o->streams, o->stream, acc, &progress);
     cli_progress_end(&progress);
     size_t nrows = 0;
     if (rc == 0)
@@ -211,12 +256,16 @@ static int measure_and_report(const pattern_opts *o, const mcs_pattern *pat,
         print_notes(o, pat, pred);
         cli_print_spectrum(o->csv, 1, rows, nrows);
     }
+    if (rc == 0 && o->save != NULL) {
+        cli_acc saved = {MCS_IO_KIND_SPECTRUM, acc};
+        rc = cli_acc_write(CMD, o->save, &saved);
+    }
     return rc;
 }
 
 int cli_cmd_pattern(int argc, char **argv)
 {
-    pattern_opts o = {NULL, 0, 0, DEFAULT_TRIALS, DEFAULT_SEED, NULL, NULL, 0};
+    pattern_opts o = {NULL, 0, 0, DEFAULT_TRIALS, DEFAULT_SEED, NULL, NULL, 0, NULL, 1u, 1u};
     int rc = parse(argc, argv, &o);
     if (rc != 0)
         return rc < 0 ? CLI_EXIT_OK : rc;

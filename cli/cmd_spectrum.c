@@ -1,9 +1,11 @@
 /* mcspec spectrum: the spectrum of point sets read from a file. */
+#include "atomic.h"
 #include "cli.h"
 #include "input.h"
 #include "output.h"
 #include "plot.h"
 #include "progress.h"
+#include "record.h"
 
 #include "mcspec.h"
 
@@ -16,7 +18,8 @@
 #define DEFAULT_N 256
 
 static const char help[] =
-    "usage: mcspec spectrum [--n N] [--weights] [--wrap] [--csv] [--plot FILE] [FILE|-]\n"
+    "usage: mcspec spectrum [--n N] [--weights] [--wrap] [--csv] [--plot FILE]\n"
+    "                       [--save FILE] [FILE|-]\n"
     "\n"
     "The Fourier spectrum of point sets read from FILE (or standard input, given\n"
     "as '-' or by giving no FILE): each set is one trial. Each point x in [0,1)\n"
@@ -45,6 +48,10 @@ static const char help[] =
     "               and one row per frequency (an empty field: no value)\n"
     "  --plot FILE  also draw the power spectrum (k >= 1) with its standard-error\n"
     "               band to FILE, .svg or .png (needs gnuplot)\n"
+    "  --save FILE  also save the spectrum accumulator to FILE (docs/format.md;\n"
+    "               read by mcspec show, merged with other files by mcspec merge),\n"
+    "               written atomically: a temporary file beside FILE, flushed,\n"
+    "               then renamed, so FILE is never left half-written\n"
     "  --help       this text\n"
     "\n"
     "Exit status: 0 on success, 2 on bad usage or input (one line on stderr).\n";
@@ -54,6 +61,7 @@ typedef struct {
     int weights, wrap, csv;
     const char *plot;
     const char *path;
+    const char *save;
 } spectrum_opts;
 
 static int parse(int argc, char **argv, spectrum_opts *o)
@@ -64,6 +72,7 @@ static int parse(int argc, char **argv, spectrum_opts *o)
         {"wrap", CLI_OPT_FLAG, &o->wrap, 0, 0, 0},
         {"csv", CLI_OPT_FLAG, &o->csv, 0, 0, 0},
         {"plot", CLI_OPT_STRING, &o->plot, 0, 0, 0},
+        {"save", CLI_OPT_STRING, &o->save, 0, 0, 0},
     };
     const char *args[1] = {NULL};
     cli_parser p = {CMD, help, opts, sizeof opts / sizeof opts[0], args, 1, 0};
@@ -73,6 +82,8 @@ static int parse(int argc, char **argv, spectrum_opts *o)
     o->path = p.nargs > 0u ? args[0] : NULL;
     if (o->path == NULL && isatty(STDIN_FILENO))
         return cli_fail(CMD, "no input: give a point file, or '-' to read standard input");
+    if (o->save != NULL && cli_write_check(CMD, o->save) != 0)
+        return CLI_EXIT_USAGE;
     if (o->plot != NULL)
         return cli_plot_check(CMD, o->plot);
     return 0;
@@ -122,7 +133,7 @@ static int report(const spectrum_opts *o, const mcs_spectrum *acc,
 
 int cli_cmd_spectrum(int argc, char **argv)
 {
-    spectrum_opts o = {DEFAULT_N, 0, 0, 0, NULL, NULL};
+    spectrum_opts o = {DEFAULT_N, 0, 0, 0, NULL, NULL, NULL};
     int rc = parse(argc, argv, &o);
     if (rc != 0)
         return rc < 0 ? CLI_EXIT_OK : rc;
@@ -142,6 +153,10 @@ int cli_cmd_spectrum(int argc, char **argv)
     cli_progress_end(&progress);
     if (rc == 0)
         rc = report(&o, acc, &stats);
+    if (rc == 0 && o.save != NULL) {
+        cli_acc saved = {MCS_IO_KIND_SPECTRUM, acc};
+        rc = cli_acc_write(CMD, o.save, &saved);
+    }
     free(acc);
     return rc;
 }

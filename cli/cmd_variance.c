@@ -1,9 +1,11 @@
 /* mcspec variance: Var[I] of a caller's integrand, measured beside exact,
  * per pattern kind. */
+#include "atomic.h"
 #include "cli.h"
 #include "input.h"
 #include "predict.h"
 #include "progress.h"
+#include "record.h"
 #include "trials.h"
 
 #include "mcspec.h"
@@ -21,7 +23,7 @@
 
 static const char help[] =
     "usage: mcspec variance --k K [--trials T] [--seed S] [--kind KIND]\n"
-    "                       [--importance FILE] [--csv] [FILE|-]\n"
+    "                       [--importance FILE] [--csv] [--save FILE] [FILE|-]\n"
     "\n"
     "The variance of the Monte Carlo estimator I = (1/K) sum_n f_n s_n (eq. 8)\n"
     "of an integrand f given as N values, one per line, in FILE (or standard\n"
@@ -49,6 +51,9 @@ static const char help[] =
     "  --csv              print CSV only: the header\n"
     "                     " CSV_HEADER "\n"
     "                     and one row per kind; an empty field has no value\n"
+    "  --save FILE        also save the estimator's accumulator (mean, M2, M3, M4\n"
+    "                     of I; a welford record, docs/format.md) to FILE, written\n"
+    "                     atomically; needs --kind (one record per file)\n"
     "  --help             this text\n"
     "\n"
     "Exit status: 0 on success, 2 on bad usage or input (one line on stderr).\n";
@@ -58,11 +63,13 @@ typedef struct {
     uint64_t trials, seed;
     const char *kind, *importance, *path;
     int csv;
+    const char *save;
 } variance_opts;
 
 typedef struct {
     double mean, mean_se, var, var_se, exact, z;
     const char *source;
+    mcs_welford acc; /* the estimator's statistics, for --save */
 } variance_row;
 
 static int kind_of(const char *text)
@@ -82,6 +89,7 @@ static int parse(int argc, char **argv, variance_opts *o)
         {"kind", CLI_OPT_STRING, &o->kind, 0, 0, 0},
         {"importance", CLI_OPT_STRING, &o->importance, 0, 0, 0},
         {"csv", CLI_OPT_FLAG, &o->csv, 0, 0, 0},
+        {"save", CLI_OPT_STRING, &o->save, 0, 0, 0},
     };
     const char *args[1] = {NULL};
     cli_parser p = {CMD, help, opts, sizeof opts / sizeof opts[0], args, 1, 0};
@@ -103,6 +111,10 @@ static int parse(int argc, char **argv, variance_opts *o)
         return cli_fail(CMD, "the integrand and --importance cannot both be read from '-'");
     if (o->path == NULL && isatty(STDIN_FILENO))
         return cli_fail(CMD, "no integrand: give a FILE of N values, or '-' to read standard input");
+    if (o->save != NULL && o->kind == NULL)
+        return cli_fail(CMD, "--save writes one record: choose its pattern with --kind KIND");
+    if (o->save != NULL && cli_write_check(CMD, o->save) != 0)
+        return CLI_EXIT_USAGE;
     return 0;
 }
 
@@ -162,6 +174,7 @@ static int measure_kind(const variance_opts *o, mcs_pattern_kind kind, size_t n,
     row->var = welford_or_nan(mcs_welford_variance, &w);
     row->var_se = welford_or_nan(mcs_welford_variance_stderr, &w);
     /* Rounding scale of a variance of values of size sqrt(mean f^2). */
+    row->acc = w;
     row->z = cli_z(row->var, row->exact, row->var_se, 1e-12 * fmax(f2_mean, fabs(row->exact)));
     return 0;
 }
@@ -233,12 +246,16 @@ static int run_kinds(const variance_opts *o, const double *f, size_t n, const mc
     for (int i = 0; i < MCS_PATTERN_KIND_COUNT; ++i)
         if (done[i])
             print_row(o, mcs_pattern_kind_str((mcs_pattern_kind)i), n, &rows[i]);
+    if (o->save != NULL) {
+        cli_acc saved = {MCS_IO_KIND_WELFORD, &rows[kind_of(o->kind)].acc};
+        return cli_acc_write(CMD, o->save, &saved);
+    }
     return 0;
 }
 
 int cli_cmd_variance(int argc, char **argv)
 {
-    variance_opts o = {0, DEFAULT_TRIALS, DEFAULT_SEED, NULL, NULL, NULL, 0};
+    variance_opts o = {0, DEFAULT_TRIALS, DEFAULT_SEED, NULL, NULL, NULL, 0, NULL};
     int rc = parse(argc, argv, &o);
     if (rc != 0)
         return rc < 0 ? CLI_EXIT_OK : rc;

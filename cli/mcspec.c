@@ -14,6 +14,8 @@ static const cli_command commands[] = {
      cli_cmd_pattern},
     {"variance", "Var[I] of an integrand given as N values, measured beside exact, per kind",
      cli_cmd_variance},
+    {"merge", "merge accumulators saved by --save into one file", cli_cmd_merge},
+    {"show", "print a saved accumulator as a table, CSV or plot", cli_cmd_show},
 };
 
 #define COMMAND_COUNT (sizeof commands / sizeof commands[0])

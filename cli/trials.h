@@ -7,8 +7,8 @@
  * that generator, seeded afresh when the call starts, so the trials a call
  * draws are a function of (S, s, last - first) alone; `first` and `last`
  * place them in a larger run (progress counts them as trials first..last-1
- * of it). Splitting T trials over P streams is one call per stream, stream
- * i taking [i T / P, (i + 1) T / P), and the accumulators merge exactly. */
+ * of it). Splitting T trials over P streams is one call per stream, with
+ * the shares and the merge order of streams.h. */
 #ifndef MCSPEC_CLI_TRIALS_H
 #define MCSPEC_CLI_TRIALS_H
 

@@ -6,8 +6,9 @@
 #                                default test/golden)
 #
 #   --help on the command and on every subcommand;
-#   bad usage (unknown command or option, missing or out-of-range values,
-#   reserved --save): exit 2, one line on stderr, nothing on stdout;
+#   bad usage (unknown command or option, missing or out-of-range values):
+#   exit 2, one line on stderr, nothing on stdout (--save, merge and show are
+#   test/record_check.sh's);
 #   the golden point files: test/golden/hand_n4_weights.txt against the
 #   spectrum worked out by hand in its header, and
 #   test/golden/comb_k8_n64.txt (equally spaced points under a random
@@ -120,7 +121,6 @@ usage_error "spectrum --n (no value)" '--n needs a value' "$MCSPEC" spectrum --n
 usage_error "spectrum --bogus" "unknown option '--bogus'" "$MCSPEC" spectrum --bogus -
 usage_error "spectrum -x" "unknown option '-x'" "$MCSPEC" spectrum -x -
 usage_error "spectrum two files" "unexpected argument" "$MCSPEC" spectrum a b
-usage_error "spectrum --save (issue 14)" "unknown option '--save'" "$MCSPEC" spectrum --save x.acc -
 usage_error "spectrum --n twice" 'given twice' "$MCSPEC" spectrum --n 4 --n 8 -
 usage_error "spectrum --csv=1" 'takes no value' "$MCSPEC" spectrum --csv=1 -
 usage_error "pattern without KIND" 'which pattern' "$MCSPEC" pattern --n 16 --k 4
@@ -131,7 +131,6 @@ usage_error "pattern --k 0" '--k expects' "$MCSPEC" pattern random --n 16 --k 0
 usage_error "pattern --trials 1" '--trials expects a whole number from 2' "$MCSPEC" pattern random --n 16 --k 4 --trials 1
 usage_error "pattern --seed -1" "--seed expects.*not '-1'" "$MCSPEC" pattern random --n 16 --k 4 --seed -1
 usage_error "pattern --trials=12junk" "not '12junk'" "$MCSPEC" pattern random --n 16 --k 4 --trials=12junk
-usage_error "pattern --save (issue 14)" "unknown option '--save'" "$MCSPEC" pattern random --n 16 --k 4 --save x
 usage_error "variance without --k" '--k K is required' "$MCSPEC" variance -
 usage_error "variance --trials 3" '--trials expects a whole number from 4' "$MCSPEC" variance --k 2 --trials 3 -
 usage_error "variance --kind bogus" "unknown pattern 'bogus'" "$MCSPEC" variance --k 2 --kind bogus -
