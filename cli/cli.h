@@ -82,6 +82,7 @@ typedef struct {
     const char **args; /* positional arguments, caller array of max_args */
     size_t max_args;
     size_t nargs;      /* set by the parser */
+    const char *help_more; /* printed after help, or NULL (C11 caps one literal at 4095) */
 } cli_parser;
 
 enum { CLI_PARSED = 0, CLI_HELP = 1, CLI_BAD = 2 };

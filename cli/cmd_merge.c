@@ -88,7 +88,7 @@ int cli_cmd_merge(int argc, char **argv)
     if (files == NULL)
         return CLI_EXIT_FAIL;
     alias_short_output(argc, argv);
-    cli_parser p = {CMD, help, opts, 1, files, MAX_INPUTS, 0};
+    cli_parser p = {CMD, help, opts, 1, files, MAX_INPUTS, 0, NULL};
     int rc = cli_parse(&p, argc, argv);
     if (rc != CLI_PARSED) {
         free(files);

@@ -1,5 +1,4 @@
 /* mcspec pattern: the measured spectrum of a named pattern beside theory. */
-#include "atomic.h"
 #include "cli.h"
 #include "input.h"
 #include "output.h"
@@ -7,6 +6,7 @@
 #include "predict.h"
 #include "progress.h"
 #include "record.h"
+#include "source2d.h"
 #include "streams.h"
 #include "trials.h"
 
@@ -25,6 +25,9 @@ static const char help[] =
     "usage: mcspec pattern KIND --n N --k K [--trials T] [--seed S]\n"
     "                      [--streams P [--stream I]] [--importance FILE]\n"
     "                      [--csv] [--plot FILE] [--save FILE]\n"
+    "       mcspec pattern KIND2 --dim 2 --k K --freq F [--radial] [--trials T]\n"
+    "                      [--seed S] [--streams P [--stream I]] [--csv]\n"
+    "                      [--plot FILE] [--save FILE]\n"
     "\n"
     "Draws T trials of K samples over N bins from the pattern KIND and prints\n"
     "its full spectrum, k = 0..N/2, measured beside theory: <S_k> (real and\n"
@@ -49,6 +52,24 @@ static const char help[] =
     "with importance), and an empty column elsewhere. Closed: the note's form\n"
     "as printed: eq. 23, 33 (its N -> infinity sinc form), 37, 45-46 or 50-51;\n"
     "S_0 = K / sqrt(N) (eq. 17) at k = 0 without importance.\n"
+    "\n";
+
+/* The rest of --help (--dim 2, the options), printed after help. */
+static const char help_2d[] =
+    "--dim 2: T trials of K points in the unit square from the 2D pattern or\n"
+    "sampler KIND2, and their point-set spectrum without binning, as mcspec\n"
+    "spectrum --dim 2 --freq F prints it: per wave vector |kx|, |ky| <= F (or per\n"
+    "annulus with --radial) the mean periodogram <P(k)>, its standard error\n"
+    "(--radial: and psa's anisotropy in dB), the exact <P(k)> where exact theory\n"
+    "exists and the z-score against it (empty fields elsewhere).\n"
+    "KIND2: random, jittered, grid, shifted-grid, n-rooks, multi-jittered, cmj\n"
+    "       (m x n strata, the most nearly square with m n = K), and the samplers\n"
+    "       halton, hammersley (Cranley-Patterson rotated), sobol-owen (Owen\n"
+    "       scrambled), kronecker (R2 lattice, randomly shifted)\n"
+    "Exact: the closed forms of mcs_pointset2d_exact_power (random, jittered,\n"
+    "grid, shifted-grid, n-rooks); for halton, hammersley and kronecker the\n"
+    "periodogram of the unrandomised set, which a rotation or shift changes by a\n"
+    "phase only, so every trial has it; none for multi-jittered, cmj, sobol-owen.\n"
     "\n"
     "Options:\n"
     "  --n N              bins N, 1.." CLI_STR(MCS_MAX_N) " (required)\n"
@@ -70,15 +91,21 @@ static const char help[] =
     "  --importance FILE  warp the samples through the importance function whose N\n"
     "                     weights (> 0, any scale; one per line, '#' lines skipped)\n"
     "                     are in FILE\n"
+    "  --dim D            1 (default: N bins, the KIND above) or 2 (KIND2, no bins)\n"
+    "  --freq F           --dim 2: the cutoff, |kx|, |ky| <= F, 1.." CLI_STR(MCS_MAX_FREQ) " (required)\n"
+    "  --radial           --dim 2: one row per annulus r <= |k| < r + 1 instead\n"
     "  --csv              print CSV only: the header\n"
     "                     freq,mean_re,mean_im,mean_stderr,power,power_stderr,\n"
     "                     exact,closed,z_exact,z_closed\n"
-    "                     (one line) and one row per frequency; an empty field has\n"
-    "                     no value\n"
+    "                     (--dim 2: kx,ky,power,power_stderr,exact,z_exact, or\n"
+    "                     radius,power,power_stderr,anisotropy_db,exact,z_exact)\n"
+    "                     and one row per frequency; an empty field has no value\n"
     "  --plot FILE        also draw the power spectrum (k >= 1) with its standard-\n"
     "                     error band, the exact prediction and the closed form to\n"
-    "                     FILE, .svg or .png (needs gnuplot)\n"
-    "  --save FILE        also save the measured spectrum accumulator to FILE\n"
+    "                     FILE, .svg or .png (needs gnuplot); --dim 2: the image of\n"
+    "                     <P(k)> beside its radial profile and the exact one\n"
+    "  --save FILE        also save the measured accumulator (spectrum, or\n"
+    "                     pointset2d with --dim 2) to FILE\n"
     "                     (docs/format.md; read by mcspec show and mcspec merge),\n"
     "                     written atomically: a temporary file beside FILE, flushed,\n"
     "                     then renamed, so FILE is never left half-written\n"
@@ -96,6 +123,8 @@ typedef struct {
     int csv;
     const char *save;
     uint64_t streams, stream; /* stream == streams: every stream */
+    size_t dim, freq;
+    int radial;
 } pattern_opts;
 
 /* The library's kind whose name is text; -1 if none. */
@@ -105,6 +134,34 @@ static int kind_of(const char *text)
         if (strcmp(text, mcs_pattern_kind_str((mcs_pattern_kind)i)) == 0)
             return i;
     return -1;
+}
+
+/* KIND and the options of a 1D run (--n bins). */
+static int check_1d(const pattern_opts *o, const cli_opt *opts)
+{
+    if (kind_of(o->kind_name) < 0)
+        return cli_fail(CMD, "unknown pattern '%s' (random, stratified, homogenized, uniform, "
+                        "jitter; the 2D ones need --dim 2)", o->kind_name);
+    if (!opts[0].given || !opts[1].given)
+        return cli_fail(CMD, "%s is required (see %s --help)", !opts[0].given ? "--n N" : "--k K",
+                        CMD);
+    if (o->freq != 0u || o->radial)
+        return cli_fail(CMD, "--freq and --radial are for --dim 2");
+    return 0;
+}
+
+/* KIND2 and the options of a 2D run (--freq, no bins). */
+static int check_2d(const pattern_opts *o, const cli_opt *opts)
+{
+    if (!cli_source2d_known(o->kind_name))
+        return cli_fail(CMD, "unknown 2D pattern '%s' (%s)", o->kind_name, CLI_SOURCE2D_NAMES);
+    if (!opts[1].given || o->freq == 0u)
+        return cli_fail(CMD, "%s is required with --dim 2 (see %s --help)",
+                        !opts[1].given ? "--k K" : "--freq F", CMD);
+    if (opts[0].given || o->importance != NULL)
+        return cli_fail(CMD, "--dim 2 takes no %s: its spectrum is not binned",
+                        opts[0].given ? "--n" : "--importance");
+    return 0;
 }
 
 static int parse(int argc, char **argv, pattern_opts *o)
@@ -120,22 +177,22 @@ static int parse(int argc, char **argv, pattern_opts *o)
         {"save", CLI_OPT_STRING, &o->save, 0, 0, 0},
         {"streams", CLI_OPT_U64, &o->streams, 1, CLI_MAX_STREAMS, 0},
         {"stream", CLI_OPT_U64, &o->stream, 0, CLI_MAX_STREAMS - 1u, 0},
+        {"dim", CLI_OPT_SIZE, &o->dim, 1, 2, 0},
+        {"freq", CLI_OPT_SIZE, &o->freq, 1, MCS_MAX_FREQ, 0},
+        {"radial", CLI_OPT_FLAG, &o->radial, 0, 0, 0},
     };
     const char *args[1] = {NULL};
-    cli_parser p = {CMD, help, opts, sizeof opts / sizeof opts[0], args, 1, 0};
+    cli_parser p = {CMD, help, opts, sizeof opts / sizeof opts[0], args, 1, 0, help_2d};
     int rc = cli_parse(&p, argc, argv);
     if (rc != CLI_PARSED)
         return rc == CLI_HELP ? -1 : CLI_EXIT_USAGE;
     if (p.nargs == 0u)
         return cli_fail(CMD, "which pattern? give KIND: random, stratified, homogenized, "
-                        "uniform or jitter");
+                        "uniform or jitter (with --dim 2: %s)", CLI_SOURCE2D_NAMES);
     o->kind_name = args[0];
-    if (kind_of(o->kind_name) < 0)
-        return cli_fail(CMD, "unknown pattern '%s' (random, stratified, homogenized, uniform, "
-                        "jitter)", o->kind_name);
-    if (!opts[0].given || !opts[1].given)
-        return cli_fail(CMD, "%s is required (see %s --help)", !opts[0].given ? "--n N" : "--k K",
-                        CMD);
+    rc = o->dim == 2u ? check_2d(o, opts) : check_1d(o, opts);
+    if (rc != 0)
+        return rc;
     if (!opts[9].given)
         o->stream = o->streams;
     else if (o->stream >= o->streams)
@@ -145,11 +202,7 @@ static int parse(int argc, char **argv, pattern_opts *o)
     if (o->trials < o->streams)
         return cli_fail(CMD, "--trials %llu is fewer than --streams %llu: every stream needs a "
                         "trial", (unsigned long long)o->trials, (unsigned long long)o->streams);
-    if (o->save != NULL && cli_write_check(CMD, o->save) != 0)
-        return CLI_EXIT_USAGE;
-    if (o->plot != NULL)
-        return cli_plot_check(CMD, o->plot);
-    return 0;
+    return cli_check_outputs(CMD, o->save, o->plot);
 }
 
 /* The importance function of FILE for n bins into imp. */
@@ -206,26 +259,35 @@ static int plot(const pattern_opts *o, const mcs_pattern *pat, const cli_predict
     snprintf(exact, sizeof exact, "exact: %s", pred->exact_source);
     snprintf(closed, sizeof closed, "closed form: %s", pred->closed_source);
     cli_plot_info info = {title, sub, pred->exact_source[0] != '\0' ? exact : NULL,
-                          pred->closed_source[0] != '\0' ? closed : NULL};
+                          pred->closed_source[0] != '\0' ? closed : NULL, NULL};
     return cli_plot_spectrum(CMD, o->plot, &info, rows, nrows);
 }
 
-static void print_notes(const pattern_opts *o, const mcs_pattern *pat, const cli_prediction *pred)
+/* The first note: the kind, its shape ("N = 16 bins, K = 4 samples"), and
+ * the trials, seed and streams of the run. */
+static void run_line(const pattern_opts *o, const char *shape, char *buf, size_t size)
 {
     uint64_t first = 0u, count = o->trials;
     if (o->stream < o->streams) {
         cli_stream_share(o->trials, o->streams, o->stream, &first, &count);
-        cli_note(o->csv, "%s %s: N = %zu bins, K = %zu samples, seed %llu, stream %llu of %llu: "
-                 "trials %llu..%llu of %llu", CMD, o->kind_name, o->n, o->k,
-                 (unsigned long long)o->seed, (unsigned long long)o->stream,
-                 (unsigned long long)o->streams, (unsigned long long)first,
-                 (unsigned long long)(first + count - 1u), (unsigned long long)o->trials);
+        snprintf(buf, size, "%s %s: %s, seed %llu, stream %llu of %llu: trials %llu..%llu of %llu",
+                 CMD, o->kind_name, shape, (unsigned long long)o->seed,
+                 (unsigned long long)o->stream, (unsigned long long)o->streams,
+                 (unsigned long long)first, (unsigned long long)(first + count - 1u),
+                 (unsigned long long)o->trials);
     } else {
-        cli_note(o->csv, "%s %s: N = %zu bins, K = %zu samples, %llu trials, seed %llu (%llu "
-                 "stream%s)", CMD, o->kind_name, o->n, o->k, (unsigned long long)o->trials,
-                 (unsigned long long)o->seed, (unsigned long long)o->streams,
-                 o->streams == 1u ? "" : "s");
+        snprintf(buf, size, "%s %s: %s, %llu trials, seed %llu (%llu stream%s)", CMD,
+                 o->kind_name, shape, (unsigned long long)o->trials, (unsigned long long)o->seed,
+                 (unsigned long long)o->streams, o->streams == 1u ? "" : "s");
     }
+}
+
+static void print_notes(const pattern_opts *o, const mcs_pattern *pat, const cli_prediction *pred)
+{
+    char shape[96], line[512];
+    snprintf(shape, sizeof shape, "N = %zu bins, K = %zu samples", o->n, o->k);
+    run_line(o, shape, line, sizeof line);
+    cli_note(o->csv, "%s", line);
     if (pat->importance != NULL)
         cli_note(o->csv, "importance function: %s, harmonic mean H = %.6g",
                  cli_input_name(o->importance), pat->importance->harmonic_mean);
@@ -263,12 +325,78 @@ static int measure_and_report(const pattern_opts *o, const mcs_pattern *pat,
     return rc;
 }
 
+/* "jittered (2D, 8 x 8 strata), K = 64 points, F = 16" and the like. */
+static void shape_2d(const pattern_opts *o, const cli_source2d *src, char *buf, size_t size)
+{
+    if (cli_source2d_uses_strata(src))
+        snprintf(buf, size, "2D, %zu x %zu strata, K = %zu points, F = %zu",
+                 src->pattern.strata_x, src->pattern.strata_y, o->k, o->freq);
+    else
+        snprintf(buf, size, "2D%s, K = %zu points, F = %zu", src->is_sampler ? " sampler" : "",
+                 o->k, o->freq);
+}
+
+/* Notes, figure and rows of a 2D run in acc. */
+static int report_2d(const pattern_opts *o, const cli_source2d *src, const mcs_pointset2d *acc)
+{
+    char shape[128], line[512], exact[160], title[512], sub[256], label[192];
+    const char *source = cli_source2d_exact_source(src);
+    shape_2d(o, src, shape, sizeof shape);
+    run_line(o, shape, line, sizeof line);
+    snprintf(exact, sizeof exact, "exact: %s; z = (power - exact) / power_stderr",
+             source[0] != '\0' ? source
+                                : "none for this kind (no closed form; not a rotated set)");
+    const char *const notes[] = {line, exact, "", NULL};
+    snprintf(title, sizeof title, "%s: 2D point-set spectrum, K = %zu points, %llu trials "
+             "(seed %llu)", o->kind_name, o->k, (unsigned long long)acc->count,
+             (unsigned long long)o->seed);
+    if (cli_source2d_uses_strata(src))
+        snprintf(sub, sizeof sub, "%zu x %zu strata; |kx|, |ky| <= F = %zu",
+                 src->pattern.strata_x, src->pattern.strata_y, o->freq);
+    else
+        snprintf(sub, sizeof sub, "|kx|, |ky| <= F = %zu", o->freq);
+    snprintf(label, sizeof label, "exact: %s", source);
+    cli_exact2d ex;
+    cli_source2d_exact(src, &ex);
+    const cli_ps_report rep = {o->csv, o->radial, o->plot, title, sub, label, &ex, notes};
+    return cli_report_pointset2d(CMD, &rep, acc);
+}
+
+/* --dim 2: the trials of a 2D pattern or sampler into a point-set spectrum. */
+static int run_2d(const pattern_opts *o)
+{
+    cli_source2d src;
+    int rc = cli_source2d_init(CMD, o->kind_name, o->k, o->freq, &src);
+    const cli_stream_job job = {MCS_IO_KIND_POINTSET2D, {o->freq, 0u}, cli_source2d_run, &src};
+    cli_acc acc = {MCS_IO_KIND_POINTSET2D, NULL};
+    if (rc == 0)
+        rc = cli_acc_new(CMD, job.kind, job.shape, &acc);
+    if (rc == 0) {
+        char label[128];
+        snprintf(label, sizeof label, "%s %s", CMD, o->kind_name);
+        cli_progress progress;
+        cli_progress_init(&progress, !o->csv, label, "trials", o->trials);
+        rc = cli_run_job(CMD, &job, o->seed, o->trials, o->streams, o->stream, acc.obj, &progress);
+        cli_progress_end(&progress);
+    }
+    if (rc == 0)
+        rc = report_2d(o, &src, acc.obj);
+    if (rc == 0 && o->save != NULL)
+        rc = cli_acc_write(CMD, o->save, &acc);
+    cli_acc_free(&acc);
+    cli_source2d_free(&src);
+    return rc;
+}
+
 int cli_cmd_pattern(int argc, char **argv)
 {
-    pattern_opts o = {NULL, 0, 0, DEFAULT_TRIALS, DEFAULT_SEED, NULL, NULL, 0, NULL, 1u, 1u};
+    pattern_opts o = {NULL, 0, 0, DEFAULT_TRIALS, DEFAULT_SEED, NULL, NULL, 0, NULL, 1u, 1u,
+                      1u, 0u, 0};
     int rc = parse(argc, argv, &o);
     if (rc != 0)
         return rc < 0 ? CLI_EXIT_OK : rc;
+    if (o.dim == 2u)
+        return run_2d(&o);
     mcs_importance *imp = cli_alloc(CMD, 1, sizeof *imp);
     mcs_spectrum *acc = cli_alloc(CMD, 1, sizeof *acc);
     cli_prediction *pred = cli_alloc(CMD, 1, sizeof *pred);

@@ -45,8 +45,9 @@ static const char help[] =
     "               k1,k2,mean_re,mean_im,mean_stderr,power,power_stderr\n"
     "               and one row per frequency (an empty field: no value)\n"
     "  --plot FILE  also draw the power spectrum (k >= 1) with its standard-error\n"
-    "               band to FILE, .svg or .png (needs gnuplot; 1D spectra and point\n"
-    "               sets only)\n"
+    "               band to FILE, .svg or .png (needs gnuplot); for pointset2d the\n"
+    "               image of <P(k)> beside its radial profile (not for welford and\n"
+    "               spectrum2d)\n"
     "  --radial     pointset2d: the radial profile instead of every wave vector\n"
     "  --help       this text\n"
     "\n"
@@ -65,7 +66,7 @@ static int parse(int argc, char **argv, show_opts *o)
         {"radial", CLI_OPT_FLAG, &o->radial, 0, 0, 0},
     };
     const char *args[1] = {NULL};
-    cli_parser p = {CMD, help, opts, sizeof opts / sizeof opts[0], args, 1, 0};
+    cli_parser p = {CMD, help, opts, sizeof opts / sizeof opts[0], args, 1, 0, NULL};
     int rc = cli_parse(&p, argc, argv);
     if (rc != CLI_PARSED)
         return rc == CLI_HELP ? -1 : CLI_EXIT_USAGE;
@@ -126,80 +127,18 @@ static int autocorr_rows(const mcs_autocorr *a, cli_spectrum_row *rows, size_t *
     return rc;
 }
 
-/* Values of one line: CSV fields or table columns (NaN: empty or "-"). */
-static void print_values(int csv, const double *v, size_t nv)
+/* A point-set record: pointset (f = 0..F) or pointset2d (every wave vector
+ * or, with --radial, the annuli); --plot draws the spectrum, or the image
+ * and the radial profile. */
+static int show_pointset(const show_opts *o, const cli_acc *acc, const char *title)
 {
-    for (size_t i = 0; i < nv; ++i) {
-        char buf[40];
-        if (csv)
-            cli_csv_double(buf, sizeof buf, v[i]);
-        else
-            cli_table_double(buf, sizeof buf, 13, v[i]);
-        printf(csv ? ",%s" : " %s", buf);
-    }
-    putchar('\n');
-}
-
-/* The mean periodogram of a 1D point set as spectrum rows (power only). */
-static int pointset_rows(const mcs_pointset *p, cli_spectrum_row *rows, size_t *nrows)
-{
-    *nrows = p->freq_max + 1u;
-    for (size_t f = 0; f < *nrows; ++f) {
-        double se = 0.0;
-        blank_row(&rows[f], f);
-        rows[f].mean_re = rows[f].mean_im = (double)NAN;
-        mcs_status st = mcs_pointset_power(p, (long)f, &rows[f].power);
-        if (st != MCS_OK)
-            return cli_internal(CMD, "reading the point set failed: %s", mcs_status_str(st));
-        rows[f].power_stderr = mcs_pointset_power_stderr(p, (long)f, &se) == MCS_OK ? se : (double)NAN;
-    }
-    return 0;
-}
-
-static void print_pointset(int csv, const cli_spectrum_row *rows, size_t nrows)
-{
-    printf(csv ? "freq,power,power_stderr\n" : "%5s %13s %13s\n", "freq", "power",
-           "power_stderr");
-    for (size_t i = 0; i < nrows; ++i) {
-        printf(csv ? "%zu" : "%5zu", rows[i].freq);
-        const double v[2] = {rows[i].power, rows[i].power_stderr};
-        print_values(csv, v, 2u);
-    }
-}
-
-/* *v if st says it was written, else NaN. A pointer, not a value: the call
- * that writes *v is another argument, and C leaves their order open. */
-static double read_or_nan(mcs_status st, const double *v)
-{
-    return st == MCS_OK ? *v : (double)NAN;
-}
-
-static void show_pointset2d(const show_opts *o, const mcs_pointset2d *p)
-{
-    const long f = (long)p->freq_max;
-    if (o->radial) {
-        printf(o->csv ? "radius,power,power_stderr,anisotropy_db\n" : "%6s %13s %13s %13s\n",
-               "radius", "power", "power_stderr", "anisotropy_db");
-        for (long r = 0; r <= f; ++r) {
-            double v[3] = {0.0, 0.0, 0.0};
-            v[0] = read_or_nan(mcs_pointset2d_radial(p, (size_t)r, &v[0]), &v[0]);
-            v[1] = read_or_nan(mcs_pointset2d_radial_stderr(p, (size_t)r, &v[1]), &v[1]);
-            v[2] = read_or_nan(mcs_pointset2d_anisotropy(p, (size_t)r, &v[2]), &v[2]);
-            printf(o->csv ? "%ld" : "%6ld", r);
-            print_values(o->csv, v, 3u);
-        }
-        return;
-    }
-    printf(o->csv ? "kx,ky,power,power_stderr\n" : "%5s %5s %13s %13s\n", "kx", "ky", "power",
-           "power_stderr");
-    for (long fy = -f; fy <= f; ++fy)
-        for (long fx = -f; fx <= f; ++fx) {
-            double v[2] = {0.0, 0.0};
-            v[0] = read_or_nan(mcs_pointset2d_power(p, fx, fy, &v[0]), &v[0]);
-            v[1] = read_or_nan(mcs_pointset2d_power_stderr(p, fx, fy, &v[1]), &v[1]);
-            printf(o->csv ? "%ld,%ld" : "%5ld %5ld", fx, fy);
-            print_values(o->csv, v, 2u);
-        }
+    const char *const notes[] = {title, "", NULL};
+    const cli_ps_report rep = {o->csv, o->radial, o->plot, title,
+                               acc->kind == MCS_IO_KIND_POINTSET ? "f = 0 not drawn" : NULL,
+                               NULL, NULL, notes};
+    if (acc->kind == MCS_IO_KIND_POINTSET)
+        return cli_report_pointset(CMD, &rep, acc->obj);
+    return cli_report_pointset2d(CMD, &rep, acc->obj);
 }
 
 static void show_spectrum2d(const show_opts *o, const mcs_spectrum2d *s)
@@ -211,17 +150,17 @@ static void show_spectrum2d(const show_opts *o, const mcs_spectrum2d *s)
         for (size_t k1 = 0; k1 < s->n_x; ++k1) {
             double v[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
             mcs_status st = mcs_spectrum2d_mean(s, k1, k2, &v[0], &v[1]);
-            v[0] = read_or_nan(st, &v[0]);
-            v[1] = read_or_nan(st, &v[1]);
-            v[2] = read_or_nan(mcs_spectrum2d_mean_stderr(s, k1, k2, &v[2]), &v[2]);
-            v[3] = read_or_nan(mcs_spectrum2d_power(s, k1, k2, &v[3]), &v[3]);
-            v[4] = read_or_nan(mcs_spectrum2d_power_stderr(s, k1, k2, &v[4]), &v[4]);
+            v[0] = cli_or_nan(st, &v[0]);
+            v[1] = cli_or_nan(st, &v[1]);
+            v[2] = cli_or_nan(mcs_spectrum2d_mean_stderr(s, k1, k2, &v[2]), &v[2]);
+            v[3] = cli_or_nan(mcs_spectrum2d_power(s, k1, k2, &v[3]), &v[3]);
+            v[4] = cli_or_nan(mcs_spectrum2d_power_stderr(s, k1, k2, &v[4]), &v[4]);
             printf(o->csv ? "%zu,%zu" : "%5zu %5zu", k1, k2);
-            print_values(o->csv, v, 5u);
+            cli_print_values(o->csv, v, 5u);
         }
 }
 
-static int show_spectrum(const show_opts *o, const cli_acc *acc)
+static int show_spectrum(const show_opts *o, const cli_acc *acc, const char *title)
 {
     cli_spectrum_row *rows = cli_alloc(CMD, CLI_HALF_MAX, sizeof *rows);
     if (rows == NULL)
@@ -232,24 +171,16 @@ static int show_spectrum(const show_opts *o, const cli_acc *acc)
         rc = cli_spectrum_rows(CMD, acc->obj, NULL, 1.0, rows, &nrows);
     else if (acc->kind == MCS_IO_KIND_MOMENT)
         rc = moment_rows(acc->obj, rows, &nrows);
-    else if (acc->kind == MCS_IO_KIND_AUTOCORR)
-        rc = autocorr_rows(acc->obj, rows, &nrows);
     else
-        rc = pointset_rows(acc->obj, rows, &nrows);
-    char title[512], what[96];
-    snprintf(title, sizeof title, "%s: %s, %llu trials", o->path,
-             cli_acc_describe(acc, what, sizeof what), (unsigned long long)cli_acc_count(acc));
+        rc = autocorr_rows(acc->obj, rows, &nrows);
     if (rc == 0 && o->plot != NULL) {
-        cli_plot_info info = {title, "k = 0 not drawn", NULL, NULL};
+        cli_plot_info info = {title, "k = 0 not drawn", NULL, NULL, NULL};
         rc = cli_plot_spectrum(CMD, o->plot, &info, rows, nrows);
     }
     if (rc == 0) {
         cli_note(o->csv, "%s", title);
         cli_note(o->csv, "%s", "");
-        if (acc->kind == MCS_IO_KIND_POINTSET)
-            print_pointset(o->csv, rows, nrows);
-        else
-            cli_print_spectrum(o->csv, 0, rows, nrows);
+        cli_print_spectrum(o->csv, 0, rows, nrows);
     }
     free(rows);
     return rc;
@@ -258,10 +189,10 @@ static int show_spectrum(const show_opts *o, const cli_acc *acc)
 static int show_welford(const show_opts *o, const mcs_welford *w)
 {
     double v[4] = {0.0, 0.0, 0.0, 0.0};
-    v[0] = read_or_nan(mcs_welford_mean(w, &v[0]), &v[0]);
-    v[1] = read_or_nan(mcs_welford_stderr(w, &v[1]), &v[1]);
-    v[2] = read_or_nan(mcs_welford_variance(w, &v[2]), &v[2]);
-    v[3] = read_or_nan(mcs_welford_variance_stderr(w, &v[3]), &v[3]);
+    v[0] = cli_or_nan(mcs_welford_mean(w, &v[0]), &v[0]);
+    v[1] = cli_or_nan(mcs_welford_stderr(w, &v[1]), &v[1]);
+    v[2] = cli_or_nan(mcs_welford_variance(w, &v[2]), &v[2]);
+    v[3] = cli_or_nan(mcs_welford_variance_stderr(w, &v[3]), &v[3]);
     char buf[4][40];
     if (o->csv) {
         for (int i = 0; i < 4; ++i)
@@ -290,11 +221,11 @@ int cli_cmd_show(int argc, char **argv)
     rc = cli_acc_read(CMD, o.path, &acc);
     if (rc != 0)
         return rc;
-    char what[96];
-    const int plottable = acc.kind == MCS_IO_KIND_SPECTRUM || acc.kind == MCS_IO_KIND_MOMENT ||
-                          acc.kind == MCS_IO_KIND_AUTOCORR || acc.kind == MCS_IO_KIND_POINTSET;
+    char what[96], title[512];
     cli_acc_describe(&acc, what, sizeof what);
-    if (o.plot != NULL && !plottable)
+    snprintf(title, sizeof title, "%s: %s, %llu trials", o.path, what,
+             (unsigned long long)cli_acc_count(&acc));
+    if (o.plot != NULL && (acc.kind == MCS_IO_KIND_WELFORD || acc.kind == MCS_IO_KIND_SPECTRUM2D))
         rc = cli_fail(CMD, "%s holds %s: no plot for it (drop --plot)", o.path, what);
     else if (o.radial && acc.kind != MCS_IO_KIND_POINTSET2D)
         rc = cli_fail(CMD, "%s holds %s: --radial is for pointset2d records", o.path, what);
@@ -302,15 +233,13 @@ int cli_cmd_show(int argc, char **argv)
         rc = cli_fail(CMD, "%s holds %s with no trials: nothing to show", o.path, what);
     else if (acc.kind == MCS_IO_KIND_WELFORD)
         rc = show_welford(&o, acc.obj);
-    else if (acc.kind == MCS_IO_KIND_POINTSET2D || acc.kind == MCS_IO_KIND_SPECTRUM2D) {
-        cli_note(o.csv, "%s: %s, %llu trials\n", o.path, what,
-                 (unsigned long long)cli_acc_count(&acc));
-        if (acc.kind == MCS_IO_KIND_POINTSET2D)
-            show_pointset2d(&o, acc.obj);
-        else
-            show_spectrum2d(&o, acc.obj);
+    else if (acc.kind == MCS_IO_KIND_POINTSET || acc.kind == MCS_IO_KIND_POINTSET2D)
+        rc = show_pointset(&o, &acc, title);
+    else if (acc.kind == MCS_IO_KIND_SPECTRUM2D) {
+        cli_note(o.csv, "%s\n", title);
+        show_spectrum2d(&o, acc.obj);
     } else
-        rc = show_spectrum(&o, &acc);
+        rc = show_spectrum(&o, &acc, title);
     cli_acc_free(&acc);
     return rc;
 }

@@ -153,6 +153,8 @@ int cli_parse(cli_parser *p, int argc, char **argv)
         const char *a = argv[i];
         if (!options_done && (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0)) {
             fputs(p->help, stdout);
+            if (p->help_more != NULL)
+                fputs(p->help_more, stdout);
             return CLI_HELP;
         }
         if (!options_done && strcmp(a, "--") == 0) {

@@ -1,5 +1,6 @@
 /* gnuplot figures of the mcspec command (see plot.h). */
 #include "plot.h"
+#include "atomic.h"
 #include "cli.h"
 
 #include <errno.h>
@@ -18,7 +19,8 @@ extern char **environ;
 #define PATH_LEN 4096
 
 /* The files a rendering leaves in its temporary directory. */
-static const char *const tmp_files[] = {"data.txt", "plot.gp", "gnuplot.log", "figure"};
+static const char *const tmp_files[] = {"data.txt", "data2.txt", "plot.gp", "gnuplot.log",
+                                         "figure"};
 
 static const char *extension(const char *path)
 {
@@ -84,9 +86,16 @@ int cli_plot_check(const char *cmd, const char *path)
     return 0;
 }
 
+int cli_check_outputs(const char *cmd, const char *save, const char *plot)
+{
+    if (save != NULL && cli_write_check(cmd, save) != 0)
+        return CLI_EXIT_USAGE;
+    return plot != NULL ? cli_plot_check(cmd, plot) : 0;
+}
+
 /* ---- Writing the data and the script ----------------------------------------- */
 
-static void put_value(FILE *fp, double x)
+void cli_plot_value(FILE *fp, double x)
 {
     /* gnuplot reads NaN as an undefined point and breaks the line there. */
     if (isnan(x))
@@ -95,31 +104,7 @@ static void put_value(FILE *fp, double x)
         fprintf(fp, " %.17g", x);
 }
 
-static int write_data(const char *file, const cli_spectrum_row *rows, size_t nrows)
-{
-    FILE *fp = fopen(file, "w");
-    if (fp == NULL)
-        return -1;
-    fputs("# k power power-stderr power+stderr exact closed\n", fp);
-    for (size_t i = 0; i < nrows; ++i) {
-        const cli_spectrum_row *r = &rows[i];
-        if (r->freq == 0u)
-            continue;
-        double se = isnan(r->power_stderr) ? 0.0 : r->power_stderr;
-        fprintf(fp, "%zu", r->freq);
-        put_value(fp, r->power);
-        put_value(fp, r->power - se);
-        put_value(fp, r->power + se);
-        put_value(fp, r->exact);
-        put_value(fp, r->closed);
-        fputc('\n', fp);
-    }
-    return fclose(fp) == 0 ? 0 : -1;
-}
-
-/* A gnuplot double-quoted string: backslash and quote escaped, control
- * characters dropped. */
-static void put_string(FILE *fp, const char *s)
+void cli_plot_string(FILE *fp, const char *s)
 {
     fputc('"', fp);
     for (; *s != '\0'; ++s) {
@@ -129,6 +114,77 @@ static void put_string(FILE *fp, const char *s)
             fputc(*s, fp);
     }
     fputc('"', fp);
+}
+
+void cli_plot_title(FILE *fp, const cli_plot_info *info)
+{
+    char title[1024];
+    snprintf(title, sizeof title, "%s%s%s", info->title, info->subtitle != NULL ? "\n" : "",
+             info->subtitle != NULL ? info->subtitle : "");
+    /* The newline between the two title lines must reach gnuplot as \n. */
+    fputc('"', fp);
+    for (const char *s = title; *s != '\0'; ++s) {
+        if (*s == '\n')
+            fputs("\\n", fp);
+        else if (*s == '\\' || *s == '"')
+            fprintf(fp, "\\%c", *s);
+        else if ((unsigned char)*s >= 0x20u)
+            fputc(*s, fp);
+    }
+    fputs("\" noenhanced", fp);
+}
+
+FILE *cli_plot_data(const char *tmp, const char *name)
+{
+    char file[PATH_LEN + 16];
+    snprintf(file, sizeof file, "%s/%s", tmp, name);
+    return fopen(file, "w");
+}
+
+void cli_plot_data_ref(FILE *fp, const char *tmp, const char *name)
+{
+    char file[PATH_LEN + 16];
+    snprintf(file, sizeof file, "%s/%s", tmp, name);
+    cli_plot_string(fp, file);
+}
+
+void cli_plot_profile_row(FILE *fp, long x, double power, double stderr_, double exact,
+                          double closed)
+{
+    double se = isnan(stderr_) ? 0.0 : stderr_;
+    fprintf(fp, "%ld", x);
+    cli_plot_value(fp, power);
+    cli_plot_value(fp, power - se);
+    cli_plot_value(fp, power + se);
+    cli_plot_value(fp, exact);
+    cli_plot_value(fp, closed);
+    fputc('\n', fp);
+}
+
+double cli_plot_raise_top(double top, double power, double stderr_, double exact, double closed)
+{
+    double se = isnan(stderr_) ? 0.0 : stderr_;
+    double v[3] = {power + se, exact, closed};
+    for (int j = 0; j < 3; ++j)
+        if (!isnan(v[j]) && v[j] > top)
+            top = v[j];
+    return top;
+}
+
+/* The measured power (k >= 1) with its band and the predictions. */
+static int write_data(const char *tmp, const cli_spectrum_row *rows, size_t nrows)
+{
+    FILE *fp = cli_plot_data(tmp, "data.txt");
+    if (fp == NULL)
+        return -1;
+    fputs("# k power power-stderr power+stderr exact closed\n", fp);
+    for (size_t i = 0; i < nrows; ++i) {
+        const cli_spectrum_row *r = &rows[i];
+        if (r->freq != 0u)
+            cli_plot_profile_row(fp, (long)r->freq, r->power, r->power_stderr, r->exact,
+                                 r->closed);
+    }
+    return fclose(fp) == 0 ? 0 : -1;
 }
 
 static int series_present(const cli_spectrum_row *rows, size_t nrows, int exact)
@@ -144,84 +200,69 @@ static int series_present(const cli_spectrum_row *rows, size_t nrows, int exact)
 static double top_value(const cli_spectrum_row *rows, size_t nrows)
 {
     double top = 0.0;
-    for (size_t i = 1; i < nrows; ++i) {
-        double se = isnan(rows[i].power_stderr) ? 0.0 : rows[i].power_stderr;
-        double v[3] = {rows[i].power + se, rows[i].exact, rows[i].closed};
-        for (int j = 0; j < 3; ++j)
-            if (!isnan(v[j]) && v[j] > top)
-                top = v[j];
-    }
+    for (size_t i = 1; i < nrows; ++i)
+        top = cli_plot_raise_top(top, rows[i].power, rows[i].power_stderr, rows[i].exact,
+                                 rows[i].closed);
     return top > 0.0 ? top : 1.0;
 }
 
-static void write_header(FILE *fp, const char *tmp, const char *ext, const cli_plot_info *info,
-                         const cli_spectrum_row *rows, size_t nrows)
+void cli_plot_style(FILE *fp)
 {
-    if (strcmp(ext, "svg") == 0)
-        fprintf(fp, "set terminal svg size %d,%d fixed enhanced font 'Sans,13' "
-                    "background rgb 'white'\n", CLI_PLOT_WIDTH, CLI_PLOT_HEIGHT);
-    else
-        fprintf(fp, "set terminal pngcairo size %d,%d enhanced font 'Sans,12' "
-                    "background rgb 'white'\n", CLI_PLOT_WIDTH, CLI_PLOT_HEIGHT);
-    fputs("set encoding utf8\nset output ", fp);
-    char out[PATH_LEN + 16];
-    snprintf(out, sizeof out, "%s/figure", tmp);
-    put_string(fp, out);
-    fputs("\nset title ", fp);
-    char title[1024];
-    snprintf(title, sizeof title, "%s%s%s", info->title, info->subtitle != NULL ? "\n" : "",
-             info->subtitle != NULL ? info->subtitle : "");
-    /* The newline between the two title lines must reach gnuplot as \n. */
-    fputc('"', fp);
-    for (const char *s = title; *s != '\0'; ++s) {
-        if (*s == '\n')
-            fputs("\\n", fp);
-        else if (*s == '\\' || *s == '"')
-            fprintf(fp, "\\%c", *s);
-        else if ((unsigned char)*s >= 0x20u)
-            fputc(*s, fp);
-    }
-    fputs("\" noenhanced\n", fp);
-    fputs("set xlabel \"frequency k\"\n"
-          "set ylabel \"⟨|S_k|^2⟩   (power spectrum, mean over trials)\"\n"
-          "set key top right box opaque samplen 3 spacing 1.15\n"
+    fputs("set key top right box opaque samplen 3 spacing 1.15\n"
           "set grid lc rgb '#dddddd'\n"
           "set border lw 1.2\n", fp);
-    /* Head room above the highest value for the key, so it never hides data. */
-    fprintf(fp, "set yrange [0:%.17g]\n", 1.45 * top_value(rows, nrows));
-    /* A little room right of k = N/2 so a comb tooth there is not cut by the border. */
-    size_t last = nrows > 1u ? nrows - 1u : 1u;
-    fprintf(fp, "set xrange [0:%.17g]\n", (double)last * 1.02 + 0.5);
 }
 
-static int write_script(const char *file, const char *tmp, const char *ext,
-                        const cli_plot_info *info, const cli_spectrum_row *rows, size_t nrows)
+void cli_plot_profile(FILE *fp, const cli_plot_series *s)
 {
-    FILE *fp = fopen(file, "w");
-    if (fp == NULL)
-        return -1;
-    write_header(fp, tmp, ext, info, rows, nrows);
-    char data[PATH_LEN + 16];
-    snprintf(data, sizeof data, "%s/data.txt", tmp);
     fputs("plot ", fp);
-    put_string(fp, data);
+    cli_plot_data_ref(fp, s->tmp, s->data);
     /* Band first, then the predictions, then the measured points on top. */
-    fputs(" using 1:3:4 with filledcurves fc rgb '#9ecae1' fs solid 0.5 noborder "
-          "title \"measured ± 1 standard error\" noenhanced", fp);
-    if (info->exact_label != NULL && series_present(rows, nrows, 1)) {
+    fprintf(fp, " using 1:3:4 with filledcurves fc rgb '#9ecae1' fs solid 0.5 noborder "
+                "title \"%s ± 1 standard error\" noenhanced", s->measured);
+    if (s->exact_label != NULL) {
         fputs(", \\\n     '' using 1:5 with lines lw 3 lc rgb '#e6550d' title ", fp);
-        put_string(fp, info->exact_label);
+        cli_plot_string(fp, s->exact_label);
         fputs(" noenhanced", fp);
     }
-    if (info->closed_label != NULL && series_present(rows, nrows, 0)) {
+    if (s->closed_label != NULL) {
         fputs(", \\\n     '' using 1:6 with lines lw 2 dt (6,4) lc rgb '#252525' title ", fp);
-        put_string(fp, info->closed_label);
+        cli_plot_string(fp, s->closed_label);
         fputs(" noenhanced", fp);
     }
-    fputs(", \\\n     '' using 1:2 with points pt 7 ps 0.55 lc rgb '#08519c' "
-          "title \"measured (mean over trials)\" noenhanced", fp);
+    fprintf(fp, ", \\\n     '' using 1:2 with points pt 7 ps 0.55 lc rgb '#08519c' "
+                "title \"%s (mean over trials)\" noenhanced\n", s->measured);
+}
+
+typedef struct {
+    const cli_plot_info *info;
+    const cli_spectrum_row *rows;
+    size_t nrows;
+} spectrum_figure;
+
+static int write_spectrum(FILE *fp, const char *tmp, const void *ctx)
+{
+    const spectrum_figure *fig = ctx;
+    if (write_data(tmp, fig->rows, fig->nrows) != 0)
+        return -1;
+    fputs("set title ", fp);
+    cli_plot_title(fp, fig->info);
+    fputs("\nset xlabel \"frequency k\"\nset ylabel ", fp);
+    cli_plot_string(fp, fig->info->ylabel != NULL ? fig->info->ylabel
+                                                  : "⟨|S_k|^2⟩   (power spectrum, mean over trials)");
     fputc('\n', fp);
-    return fclose(fp) == 0 ? 0 : -1;
+    cli_plot_style(fp);
+    /* Head room above the highest value for the key, so it never hides data. */
+    fprintf(fp, "set yrange [0:%.17g]\n", 1.45 * top_value(fig->rows, fig->nrows));
+    /* A little room right of k = N/2 so a comb tooth there is not cut by the border. */
+    size_t last = fig->nrows > 1u ? fig->nrows - 1u : 1u;
+    fprintf(fp, "set xrange [0:%.17g]\n", (double)last * 1.02 + 0.5);
+    const int exact = fig->info->exact_label != NULL && series_present(fig->rows, fig->nrows, 1);
+    const int closed = fig->info->closed_label != NULL && series_present(fig->rows, fig->nrows, 0);
+    const cli_plot_series s = {tmp, "data.txt", "measured", exact ? fig->info->exact_label : NULL,
+                               closed ? fig->info->closed_label : NULL};
+    cli_plot_profile(fp, &s);
+    return 0;
 }
 
 /* ---- Running gnuplot and moving the figure into place ------------------------ */
@@ -333,20 +374,38 @@ static void remove_tmp(const char *tmp)
     rmdir(tmp);
 }
 
-int cli_plot_spectrum(const char *cmd, const char *path, const cli_plot_info *info,
-                      const cli_spectrum_row *rows, size_t nrows)
+/* The terminal of the figure's format and its output in tmp, then the
+ * figure's own script from write. */
+static int write_script(const char *tmp, const char *ext, cli_plot_writer write, const void *ctx)
+{
+    char file[PATH_LEN + 16];
+    snprintf(file, sizeof file, "%s/plot.gp", tmp);
+    FILE *fp = fopen(file, "w");
+    if (fp == NULL)
+        return -1;
+    if (strcmp(ext, "svg") == 0)
+        fprintf(fp, "set terminal svg size %d,%d fixed enhanced font 'Sans,13' "
+                    "background rgb 'white'\n", CLI_PLOT_WIDTH, CLI_PLOT_HEIGHT);
+    else
+        fprintf(fp, "set terminal pngcairo size %d,%d enhanced font 'Sans,12' "
+                    "background rgb 'white'\n", CLI_PLOT_WIDTH, CLI_PLOT_HEIGHT);
+    fputs("set encoding utf8\nset output ", fp);
+    cli_plot_data_ref(fp, tmp, "figure");
+    fputc('\n', fp);
+    int rc = write(fp, tmp, ctx);
+    return fclose(fp) == 0 ? rc : -1;
+}
+
+int cli_plot_render(const char *cmd, const char *path, cli_plot_writer write, const void *ctx)
 {
     const char *base = getenv("TMPDIR");
-    char tmp[PATH_LEN], data[PATH_LEN + 16], script[PATH_LEN + 16];
+    char tmp[PATH_LEN];
     snprintf(tmp, sizeof tmp, "%s/mcspec-plot.XXXXXX", base != NULL && *base != '\0' ? base : "/tmp");
     if (mkdtemp(tmp) == NULL)
         return cli_fail(cmd, "cannot make a temporary directory in %s: %s",
                         base != NULL && *base != '\0' ? base : "/tmp", strerror(errno));
-    snprintf(data, sizeof data, "%s/data.txt", tmp);
-    snprintf(script, sizeof script, "%s/plot.gp", tmp);
     int rc = 0;
-    if (write_data(data, rows, nrows) != 0 ||
-        write_script(script, tmp, extension(path), info, rows, nrows) != 0)
+    if (write_script(tmp, extension(path), write, ctx) != 0)
         rc = cli_fail(cmd, "cannot write the plot data in %s: %s", tmp, strerror(errno));
     if (rc == 0)
         rc = run_gnuplot(cmd, tmp);
@@ -354,4 +413,11 @@ int cli_plot_spectrum(const char *cmd, const char *path, const cli_plot_info *in
         rc = install_figure(cmd, tmp, path);
     remove_tmp(tmp);
     return rc;
+}
+
+int cli_plot_spectrum(const char *cmd, const char *path, const cli_plot_info *info,
+                      const cli_spectrum_row *rows, size_t nrows)
+{
+    const spectrum_figure fig = {info, rows, nrows};
+    return cli_plot_render(cmd, path, write_spectrum, &fig);
 }

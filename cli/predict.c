@@ -1,6 +1,7 @@
 /* Theory look-up of the mcspec command (see predict.h). */
 #include "predict.h"
 #include "cli.h"
+#include "output.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -12,22 +13,15 @@ static int divides(size_t k, size_t n)
     return k != 0u && n % k == 0u;
 }
 
-/* A closed form's value, or NaN outside its domain (MCS_ERR_DOMAIN and the
- * like are expected here: the note defines each form on part of the space).
- * v is read through a pointer so that the call writing it has happened:
- * f(g(&v), v) would read v in an unspecified order. */
-static double value_or_nan(mcs_status st, const double *v)
-{
-    return st == MCS_OK ? *v : (double)NAN;
-}
-
 /* K^2/N: S_0 = K / sqrt(N) for every trial without importance (eq. 17). */
 static double power0_plain(const mcs_pattern *pat)
 {
     return (double)pat->k * (double)pat->k / (double)pat->n;
 }
 
-/* The note's closed form as printed, at freq in [0, N/2]. */
+/* The note's closed form as printed, at freq in [0, N/2]; NaN outside its
+ * domain (MCS_ERR_DOMAIN and the like are expected here: the note defines
+ * each form on part of the space). */
 static double closed_form(const mcs_pattern *pat, size_t freq)
 {
     size_t n = pat->n, k = pat->k;
@@ -37,24 +31,24 @@ static double closed_form(const mcs_pattern *pat, size_t freq)
             return power0_plain(pat);
         switch (pat->kind) {
         case MCS_PATTERN_RANDOM:
-            return value_or_nan(mcs_eq23_random_power(n, k, freq, &v), &v);
+            return cli_or_nan(mcs_eq23_random_power(n, k, freq, &v), &v);
         case MCS_PATTERN_STRATIFIED:
         case MCS_PATTERN_HOMOGENIZED: /* a cyclic shift leaves |S_k| as it is */
-            return value_or_nan(mcs_eq33_stratified_power_limit(n, k, freq, &v), &v);
+            return cli_or_nan(mcs_eq33_stratified_power_limit(n, k, freq, &v), &v);
         case MCS_PATTERN_UNIFORM:
         case MCS_PATTERN_JITTER:
-            return value_or_nan(mcs_eq37_jitter_power(n, k, freq, &v), &v);
+            return cli_or_nan(mcs_eq37_jitter_power(n, k, freq, &v), &v);
         }
         return (double)NAN;
     }
     const mcs_importance *imp = pat->importance;
     if (pat->kind == MCS_PATTERN_RANDOM)
-        return freq == 0u ? value_or_nan(mcs_eq46_importance_power0(imp, k, &v), &v)
-                          : value_or_nan(mcs_eq45_importance_power(imp, k, freq, &v), &v);
+        return freq == 0u ? cli_or_nan(mcs_eq46_importance_power0(imp, k, &v), &v)
+                          : cli_or_nan(mcs_eq45_importance_power(imp, k, freq, &v), &v);
     /* Eq. 51 is eq. 46 (eq.h); the note states it for K dividing N, as eq. 50. */
     if (pat->kind == MCS_PATTERN_STRATIFIED && divides(k, n))
-        return freq == 0u ? value_or_nan(mcs_eq46_importance_power0(imp, k, &v), &v)
-                          : value_or_nan(mcs_eq50_importance_stratified_power(imp, k, freq, &v), &v);
+        return freq == 0u ? cli_or_nan(mcs_eq46_importance_power0(imp, k, &v), &v)
+                          : cli_or_nan(mcs_eq50_importance_stratified_power(imp, k, freq, &v), &v);
     return (double)NAN;
 }
 
@@ -96,7 +90,7 @@ static double exact_form(const mcs_pattern *pat, size_t freq)
         return closed_form(pat, freq);
     case MCS_PATTERN_STRATIFIED:
     case MCS_PATTERN_HOMOGENIZED:
-        return value_or_nan(mcs_eq33_stratified_power_exact(n, k, freq, &v), &v);
+        return cli_or_nan(mcs_eq33_stratified_power_exact(n, k, freq, &v), &v);
     case MCS_PATTERN_UNIFORM:
     case MCS_PATTERN_JITTER:
         return closed_form(pat, freq);

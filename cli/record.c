@@ -15,6 +15,7 @@
 typedef struct {
     mcs_io_kind kind;
     size_t size;
+    mcs_status (*init)(void *obj, const size_t *shape); /* NULL: not made here */
     mcs_status (*load)(void *obj, size_t len, const void *buf);
     mcs_status (*save)(const void *obj, size_t cap, void *buf, size_t *len);
     mcs_status (*merge)(void *dst, const void *src);
@@ -41,17 +42,24 @@ static mcs_status save_spectrum2d(const void *o, size_t c, void *b, size_t *l) {
 static mcs_status merge_pointset(void *d, const void *s) { return mcs_pointset_merge(d, s); }
 static mcs_status merge_pointset2d(void *d, const void *s) { return mcs_pointset2d_merge(d, s); }
 static mcs_status merge_spectrum2d(void *d, const void *s) { return mcs_spectrum2d_merge(d, s); }
+static mcs_status init_spectrum(void *o, const size_t *s) { return mcs_spectrum_init(o, s[0]); }
+static mcs_status init_pointset(void *o, const size_t *s) { return mcs_pointset_init(o, s[0]); }
+static mcs_status init_pointset2d(void *o, const size_t *s) { return mcs_pointset2d_init(o, s[0]); }
+static mcs_status init_spectrum2d(void *o, const size_t *s) { return mcs_spectrum2d_init(o, s[0], s[1]); }
 
 static const kind_ops kinds[] = {
-    {MCS_IO_KIND_SPECTRUM, sizeof(mcs_spectrum), load_spectrum, save_spectrum, merge_spectrum},
-    {MCS_IO_KIND_MOMENT, sizeof(mcs_moment), load_moment, save_moment, merge_moment},
-    {MCS_IO_KIND_AUTOCORR, sizeof(mcs_autocorr), load_autocorr, save_autocorr, merge_autocorr},
-    {MCS_IO_KIND_WELFORD, sizeof(mcs_welford), load_welford, save_welford, merge_welford},
-    {MCS_IO_KIND_POINTSET, sizeof(mcs_pointset), load_pointset, save_pointset, merge_pointset},
-    {MCS_IO_KIND_POINTSET2D, sizeof(mcs_pointset2d), load_pointset2d, save_pointset2d,
-     merge_pointset2d},
-    {MCS_IO_KIND_SPECTRUM2D, sizeof(mcs_spectrum2d), load_spectrum2d, save_spectrum2d,
-     merge_spectrum2d},
+    {MCS_IO_KIND_SPECTRUM, sizeof(mcs_spectrum), init_spectrum, load_spectrum, save_spectrum,
+     merge_spectrum},
+    {MCS_IO_KIND_MOMENT, sizeof(mcs_moment), NULL, load_moment, save_moment, merge_moment},
+    {MCS_IO_KIND_AUTOCORR, sizeof(mcs_autocorr), NULL, load_autocorr, save_autocorr,
+     merge_autocorr},
+    {MCS_IO_KIND_WELFORD, sizeof(mcs_welford), NULL, load_welford, save_welford, merge_welford},
+    {MCS_IO_KIND_POINTSET, sizeof(mcs_pointset), init_pointset, load_pointset, save_pointset,
+     merge_pointset},
+    {MCS_IO_KIND_POINTSET2D, sizeof(mcs_pointset2d), init_pointset2d, load_pointset2d,
+     save_pointset2d, merge_pointset2d},
+    {MCS_IO_KIND_SPECTRUM2D, sizeof(mcs_spectrum2d), init_spectrum2d, load_spectrum2d,
+     save_spectrum2d, merge_spectrum2d},
 };
 
 static const kind_ops *ops_of(uint32_t kind)
@@ -62,19 +70,34 @@ static const kind_ops *ops_of(uint32_t kind)
     return NULL;
 }
 
+int cli_acc_new(const char *cmd, mcs_io_kind kind, const size_t shape[2], cli_acc *acc)
+{
+    const kind_ops *ops = ops_of(kind);
+    if (ops == NULL || ops->init == NULL)
+        return cli_internal(cmd, "cannot make a %s accumulator", mcs_io_kind_str(kind));
+    void *obj = cli_alloc(cmd, 1, ops->size);
+    if (obj == NULL)
+        return CLI_EXIT_FAIL;
+    mcs_status st = ops->init(obj, shape);
+    if (st != MCS_OK) {
+        free(obj);
+        return cli_internal(cmd, "setting up a %s accumulator: %s", mcs_io_kind_str(kind),
+                            mcs_status_str(st));
+    }
+    acc->kind = kind;
+    acc->obj = obj;
+    return 0;
+}
+
 int cli_acc_new_spectrum(const char *cmd, size_t n, cli_acc *acc)
 {
-    mcs_spectrum *s = cli_alloc(cmd, 1, sizeof *s);
-    if (s == NULL)
-        return CLI_EXIT_FAIL;
-    mcs_status st = mcs_spectrum_init(s, n);
-    if (st != MCS_OK) {
-        free(s);
-        return cli_internal(cmd, "mcs_spectrum_init: %s", mcs_status_str(st));
-    }
-    acc->kind = MCS_IO_KIND_SPECTRUM;
-    acc->obj = s;
-    return 0;
+    const size_t shape[2] = {n, 0u};
+    return cli_acc_new(cmd, MCS_IO_KIND_SPECTRUM, shape, acc);
+}
+
+void cli_acc_copy_to(const cli_acc *acc, void *obj)
+{
+    memcpy(obj, acc->obj, ops_of(acc->kind)->size);
 }
 
 void cli_acc_free(cli_acc *acc)

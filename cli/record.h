@@ -24,8 +24,15 @@ typedef struct {
     void *obj; /* the object of that kind: mcs_spectrum, ..., mcs_spectrum2d */
 } cli_acc;
 
+/* A new, empty accumulator of kind (spectrum, pointset, pointset2d or
+ * spectrum2d) and shape (N; F; F; N1, N2). Returns 0 or an exit status. */
+int cli_acc_new(const char *cmd, mcs_io_kind kind, const size_t shape[2], cli_acc *acc);
+
 /* A new spectrum accumulator for n bins. Returns 0 or an exit status. */
 int cli_acc_new_spectrum(const char *cmd, size_t n, cli_acc *acc);
+
+/* Copies the object of acc over obj, an object of the same kind. */
+void cli_acc_copy_to(const cli_acc *acc, void *obj);
 
 /* Frees acc->obj (NULL is fine) and clears acc. */
 void cli_acc_free(cli_acc *acc);

@@ -100,7 +100,7 @@ static int parse(int argc, char **argv, int nranks, run_params *prm, const char 
         {"timing", CLI_OPT_FLAG, &timing, 0, 0, 0},
     };
     const char *args[2] = {NULL, NULL};
-    cli_parser p = {CMD, help, opts, sizeof opts / sizeof opts[0], args, 2, 0};
+    cli_parser p = {CMD, help, opts, sizeof opts / sizeof opts[0], args, 2, 0, NULL};
     int rc = cli_parse(&p, argc, argv);
     if (rc != CLI_PARSED)
         return rc == CLI_HELP ? -1 : CLI_EXIT_USAGE;

@@ -313,6 +313,148 @@ run "$MCSPEC" variance --k 4 --trials 300 --seed 9 --csv "$tmp/f16.txt"; cp "$tm
 cmp -s "$tmp/v1" "$tmp/v2" && ok || bad "variance: the same seed gives different output"
 cmp -s "$tmp/v1" "$tmp/v3" && bad "variance: the seed has no effect" || ok
 
+# ------------------------------------------------- point sets, 2D and 1D
+"$MCSPEC" spectrum --help | grep -q 'kx,ky,power,power_stderr' &&
+    "$MCSPEC" spectrum --help | grep -q 'radius,power,power_stderr,anisotropy_db' && ok ||
+    bad "spectrum --help does not give the point-set CSV headers"
+"$MCSPEC" pattern --help | grep -q 'kx,ky,power,power_stderr,exact,z_exact' && ok ||
+    bad "pattern --help does not give the 2D CSV columns"
+usage_error "spectrum --dim 2 without --freq" '--dim 2 needs --freq' "$MCSPEC" spectrum --dim 2 -
+usage_error "spectrum --dim 3" '--dim expects a whole number from 1 to 2' "$MCSPEC" spectrum --dim 3 --freq 4 -
+usage_error "spectrum --freq with --n" 'exclude each other' "$MCSPEC" spectrum --freq 4 --n 8 -
+usage_error "spectrum --freq with --weights" 'needs binning' "$MCSPEC" spectrum --freq 4 --weights -
+usage_error "spectrum --radial in 1D" '--radial needs --dim 2' "$MCSPEC" spectrum --freq 4 --radial -
+usage_error "spectrum --radial binned" '--radial needs --dim 2 --freq' "$MCSPEC" spectrum --radial -
+usage_error "spectrum --dim 2 --freq too big" 'above this build' "$MCSPEC" spectrum --dim 2 --freq 99999 -
+usage_error "pattern 2D KIND without --dim 2" "unknown pattern 'jittered'.*--dim 2" "$MCSPEC" pattern jittered --n 16 --k 4
+usage_error "pattern --dim 2 without --freq" '--freq F is required' "$MCSPEC" pattern jittered --dim 2 --k 16
+usage_error "pattern --dim 2 without --k" '--k K is required' "$MCSPEC" pattern jittered --dim 2 --freq 4
+usage_error "pattern --dim 2 bogus KIND" "unknown 2D pattern 'bogus'" "$MCSPEC" pattern bogus --dim 2 --k 16 --freq 4
+usage_error "pattern --dim 2 --n" 'takes no --n' "$MCSPEC" pattern random --dim 2 --k 16 --freq 4 --n 8
+usage_error "pattern --freq in 1D" '--freq and --radial are for --dim 2' "$MCSPEC" pattern random --n 16 --k 4 --freq 4
+# Malformed 2D input: the line and what was wrong.
+input '0.1 0.2\n0.3\n'
+usage_error "2D: one column" 'line 2: expected 2 columns, found 1' "$MCSPEC" spectrum --dim 2 --freq 2 -
+input '0.1 0.2\n#\n0.3 0.4 0.5\n'
+usage_error "2D: three columns" 'line 3: expected 2 columns, found 3' "$MCSPEC" spectrum --dim 2 --freq 2 -
+input '0.1 0.2\n0.3 1.5\n'
+usage_error "2D: y outside [0,1)" 'line 2: coordinate 1.5 is outside' "$MCSPEC" spectrum --dim 2 --freq 2 -
+input '0.1 0.2\n0.3 x\n'
+usage_error "2D: bad number" "line 2: coordinate 'x' is not a number" "$MCSPEC" spectrum --dim 2 --freq 2 -
+input '0.5 0.5\n#\n#\n0.2 0.2\n'
+usage_error "2D: empty set" 'line 3: empty point set' "$MCSPEC" spectrum --dim 2 --freq 2 -
+awk 'BEGIN { for (s = 0; s < 100; ++s) { print "0.25 0.5"; print "0.5 0.75"; print "#" } print "0.5" }' >"$tmp/in"
+usage_error "2D: error after 100 good sets" 'line 301: expected 2 columns, found 1' "$MCSPEC" spectrum --dim 2 --freq 2 -
+: >"$tmp/in"
+
+# The hand-worked file: every wave vector, and the annuli recomputed from
+# the two sets' periodograms as its header gives them.
+hand2=$GOLDEN/hand2d_two_sets.txt
+if succeeds "spectrum --dim 2 of $hand2" "$MCSPEC" spectrum --dim 2 --freq 3 --csv "$hand2"; then
+    csv_shape "spectrum --dim 2 --csv" "$tmp/out" 'kx,ky,power,power_stderr' 49 4
+    problems=$(tail -n +2 "$tmp/out" | awk -F, '{
+        odd = ($1 % 2 != 0); yodd = ($2 % 2 != 0)
+        m = odd ? 1 : (yodd ? 0 : 2); se = odd ? 1 : 0
+        d = $3 - m; e = $4 - se; if (d < 0) d = -d; if (e < 0) e = -e
+        if (d > 1e-12 || e > 1e-12) printf "k=(%s,%s): %s +- %s, by hand %s +- %s; ", $1, $2, $3, $4, m, se }')
+    if [ -z "$problems" ]; then ok; else bad "$hand2: $problems"; fi
+fi
+if succeeds "spectrum --radial of $hand2" "$MCSPEC" spectrum --dim 2 --freq 3 --radial --csv "$hand2"; then
+    csv_shape "spectrum --radial --csv" "$tmp/out" 'radius,power,power_stderr,anisotropy_db' 4 4
+    problems=$(tail -n +2 "$tmp/out" | awk -F, 'BEGIN {
+        for (ky = -3; ky <= 3; ++ky) for (kx = -3; kx <= 3; ++kx) {
+            r = int(sqrt(kx * kx + ky * ky) + 1e-9); if (r > 3) continue
+            a = ((kx + ky) % 2 == 0) ? 2 : 0; b = (ky % 2 == 0) ? 2 : 0
+            sa[r] += a; sb[r] += b; n[r]++; v[r, n[r]] = (a + b) / 2 }
+        for (r = 0; r <= 3; ++r) {
+            A = sa[r] / n[r]; B = sb[r] / n[r]; mean[r] = (A + B) / 2; se[r] = (A > B ? A - B : B - A) / 2
+            ss = 0; for (i = 1; i <= n[r]; ++i) ss += (v[r, i] - mean[r]) ^ 2
+            db[r] = (n[r] > 1 && ss > 0) ? 10 * log(ss / (n[r] - 1) / mean[r] ^ 2) / log(10) : "" } }
+        { d = $2 - mean[$1]; e = $3 - se[$1]; if (d < 0) d = -d; if (e < 0) e = -e
+          f = ($4 == "" || db[$1] == "") ? ($4 != db[$1]) : ($4 - db[$1]) ^ 2 > 1e-18
+          if (d > 1e-12 || e > 1e-12 || f) printf "r=%s: %s +- %s, %s dB; by hand %s +- %s, %s dB; ", $1, $2, $3, $4, mean[$1], se[$1], db[$1] }')
+    if [ -z "$problems" ]; then ok; else bad "$hand2 --radial: $problems"; fi
+fi
+
+# The shifted-grid comb, measured from the file and predicted by pattern.
+comb2=$GOLDEN/comb2d_k16.txt
+if succeeds "spectrum --dim 2 of $comb2" "$MCSPEC" spectrum --dim 2 --freq 8 --csv "$comb2"; then
+    cp "$tmp/out" "$tmp/comb2.csv"
+    problems=$(tail -n +2 "$tmp/comb2.csv" | awk -F, '{
+        want = ($1 % 4 == 0 && $2 % 4 == 0) ? 16 : 0; d = $3 - want; if (d < 0) d = -d
+        if (d > 1e-12 * 16 || $4 > 1e-12 * 16) printf "k=(%s,%s): %s +- %s, comb %d; ", $1, $2, $3, $4, want }')
+    if [ -z "$problems" ]; then ok; else bad "$comb2 against the comb: $problems"; fi
+    if succeeds "pattern shifted-grid --dim 2" "$MCSPEC" pattern shifted-grid --dim 2 --k 16 --freq 8 --trials 2 --csv; then
+        tail -n +2 "$tmp/comb2.csv" >"$tmp/comb2.rows"
+        problems=$(tail -n +2 "$tmp/out" | cut -d, -f5 | paste -d, "$tmp/comb2.rows" - |
+            awk -F, '{ d = $3 - $5; if (d < 0) d = -d; if ($5 == "" || d > 1e-12 * 16) printf "k=(%s,%s): %s vs exact %s; ", $1, $2, $3, $5 }')
+        if [ -z "$problems" ]; then ok; else bad "$comb2 against pattern shifted-grid's exact column: $problems"; fi
+    fi
+fi
+# 1D without binning: the rotated 8-point comb of the 1D golden file.
+if succeeds "spectrum --freq 20 of $comb" "$MCSPEC" spectrum --freq 20 --csv "$comb"; then
+    csv_shape "spectrum --freq --csv" "$tmp/out" 'freq,power,power_stderr' 21 3
+    problems=$(tail -n +2 "$tmp/out" | awk -F, '{
+        want = ($1 % 8 == 0) ? 8 : 0; d = $2 - want; if (d < 0) d = -d
+        if (d > 1e-12 * 8 || $3 > 1e-12 * 8) printf "f=%s: %s +- %s, comb %d; ", $1, $2, $3, want }')
+    if [ -z "$problems" ]; then ok; else bad "$comb --freq 20 against the comb: $problems"; fi
+fi
+
+# Every 2D kind: the CSV shapes, exact values where theory exists, and the
+# measurement within 5 standard errors of them (fixed seed).
+h2d='kx,ky,power,power_stderr,exact,z_exact'
+hrad='radius,power,power_stderr,anisotropy_db,exact,z_exact'
+for kind in random jittered grid shifted-grid n-rooks multi-jittered cmj halton hammersley sobol-owen kronecker; do
+    case $kind in multi-jittered | cmj | sobol-owen) theory=0 ;; *) theory=1 ;; esac
+    if succeeds "pattern $kind --dim 2 --csv" "$MCSPEC" pattern "$kind" --dim 2 --k 16 --freq 5 --trials 2000 --seed 4 --csv; then
+        csv_shape "pattern $kind --dim 2 --csv" "$tmp/out" "$h2d" 121 6
+        filled=$(tail -n +2 "$tmp/out" | awk -F, '$5 != "" { n++ } END { print n + 0 }')
+        worst=$(tail -n +2 "$tmp/out" | awk -F, '$6 != "" { z = $6 < 0 ? -$6 : $6; if (z > m) m = z } END { print m + 0 }')
+        if [ "$theory" -eq 1 ] && [ "$filled" -eq 121 ] && awk -v z="$worst" 'BEGIN { exit !(z < 5) }'; then ok
+        elif [ "$theory" -eq 0 ] && [ "$filled" -eq 0 ]; then ok
+        else bad "pattern $kind --dim 2: $filled exact values, |z_exact| up to $worst"; fi
+    fi
+    if succeeds "pattern $kind --dim 2 --radial --csv" "$MCSPEC" pattern "$kind" --dim 2 --k 16 --freq 5 --trials 2000 --seed 4 --radial --csv; then
+        csv_shape "pattern $kind --radial --csv" "$tmp/out" "$hrad" 6 6
+        worst=$(tail -n +2 "$tmp/out" | awk -F, '$6 != "" { z = $6 < 0 ? -$6 : $6; if (z > m) m = z } END { print m + 0 }')
+        awk -v z="$worst" 'BEGIN { exit !(z < 5) }' && ok || bad "pattern $kind --radial: |z_exact| up to $worst"
+    fi
+done
+if succeeds "pattern --dim 2 table" "$MCSPEC" pattern jittered --dim 2 --k 16 --freq 3 --trials 100 --radial; then
+    if head -n 1 "$tmp/out" | grep -q '^mcspec pattern jittered: 2D, 4 x 4 strata, K = 16 points, F = 3, 100 trials, seed 1' &&
+       grep -Eq '^ *radius +power +power_stderr +anisotropy_db +exact +z_exact$' "$tmp/out" &&
+       [ "$(grep -Ec '^ *[0-9]+ ' "$tmp/out")" -eq 4 ]; then ok
+    else bad "pattern --dim 2 table: title, header or 4 rows missing"; fi
+fi
+
+# --save: the record shows the same numbers; streams merge like 1D runs.
+if succeeds "spectrum --dim 2 --save" "$MCSPEC" spectrum --dim 2 --freq 3 --csv --save "$tmp/h2.rec" "$hand2"; then
+    cp "$tmp/out" "$tmp/h2.csv"
+    succeeds "show the 2D spectrum record" "$MCSPEC" show "$tmp/h2.rec" --csv &&
+        { cmp -s "$tmp/out" "$tmp/h2.csv" && ok || bad "show of the saved 2D spectrum differs from spectrum --csv"; }
+fi
+if succeeds "spectrum --freq --save" "$MCSPEC" spectrum --freq 20 --csv --save "$tmp/c1.rec" "$comb"; then
+    cp "$tmp/out" "$tmp/c1.csv"
+    succeeds "show the 1D point-set record" "$MCSPEC" show "$tmp/c1.rec" --csv &&
+        { cmp -s "$tmp/out" "$tmp/c1.csv" && ok || bad "show of the saved 1D point-set spectrum differs"; }
+fi
+run "$MCSPEC" pattern n-rooks --dim 2 --k 9 --freq 4 --trials 301 --seed 6 --radial --csv --save "$tmp/p2.rec"
+cut -d, -f1-4 "$tmp/out" >"$tmp/p2.csv"
+succeeds "show --radial of a pattern --dim 2 record" "$MCSPEC" show "$tmp/p2.rec" --radial --csv &&
+    { cmp -s "$tmp/out" "$tmp/p2.csv" && ok || bad "show --radial differs from pattern --dim 2 --radial"; }
+run "$MCSPEC" pattern n-rooks --dim 2 --k 9 --freq 4 --trials 301 --seed 6 --radial --csv; cp "$tmp/out" "$tmp/q1"
+run "$MCSPEC" pattern n-rooks --dim 2 --k 9 --freq 4 --trials 301 --seed 7 --radial --csv; cp "$tmp/out" "$tmp/q2"
+cut -d, -f1-4 "$tmp/q1" | cmp -s - "$tmp/p2.csv" && ok ||
+    bad "pattern --dim 2: the same seed gives different output"
+cmp -s "$tmp/q1" "$tmp/q2" && bad "pattern --dim 2: the seed has no effect" || ok
+run "$MCSPEC" pattern cmj --dim 2 --k 12 --freq 3 --trials 101 --seed 2 --streams 3 --save "$tmp/s3.rec"
+for i in 0 1 2; do
+    run "$MCSPEC" pattern cmj --dim 2 --k 12 --freq 3 --trials 101 --seed 2 --streams 3 --stream "$i" --save "$tmp/s3_$i.rec"
+done
+if succeeds "merge of the --stream files" "$MCSPEC" merge "$tmp/s3_0.rec" "$tmp/s3_1.rec" "$tmp/s3_2.rec" -o "$tmp/s3m.rec"; then
+    cmp -s "$tmp/s3.rec" "$tmp/s3m.rec" && ok || bad "pattern --dim 2 --streams 3 differs from the merge of its streams"
+fi
+
 # ----------------------------------------------------------------- plots
 usage_error "--plot x.pdf" 'must end in .svg or .png' "$MCSPEC" pattern random --n 16 --k 4 --plot "$tmp/x.pdf"
 usage_error "--plot in a missing directory" 'cannot write in directory' \
@@ -337,6 +479,16 @@ if command -v gnuplot >/dev/null 2>&1; then
     [ "$sig" = "89504e470d0a1a0a0000000d49484452000003c000000258" ] && ok ||
         bad "--plot PNG: not a 960 x 600 PNG ($sig)"
     [ -z "$(ls -A "$tmp/gptmp")" ] && ok || bad "--plot left temporary files: $(ls -A "$tmp/gptmp")"
+    succeeds "pattern --dim 2 --plot x.svg" \
+        env TMPDIR="$tmp/gptmp" "$MCSPEC" pattern jittered --dim 2 --k 16 --freq 6 --trials 200 --plot "$tmp/p2d.svg"
+    grep -q "<image .*data:image/png;base64," "$tmp/p2d.svg" && ok || bad "--dim 2 --plot SVG has no image"
+    for s in 'measured ± 1 standard error' 'measured (mean over trials)' 'exact: closed form'; do
+        grep -qF "<text>$s" "$tmp/p2d.svg" && ok || bad "--dim 2 --plot SVG has no legend entry '$s'"
+    done
+    succeeds "show --plot of a pointset2d record" env TMPDIR="$tmp/gptmp" "$MCSPEC" show "$tmp/p2.rec" --plot "$tmp/s2d.png"
+    sig=$(od -An -tx1 -N24 "$tmp/s2d.png" | tr -d ' \n')
+    [ "$sig" = "89504e470d0a1a0a0000000d49484452000003c000000258" ] && ok ||
+        bad "show --plot of a pointset2d record: not a 960 x 600 PNG ($sig)"
     # A gnuplot that fails: exit 2 with its message, no figure, nothing on stdout.
     mkdir -p "$tmp/fakebin"
     printf '#!/bin/sh\necho "fake gnuplot: cannot draw" >&2\nexit 1\n' >"$tmp/fakebin/gnuplot"

@@ -16,6 +16,8 @@
 #   the SVG: root <svg> element with that width and height; every legend
 #            entry the list names, each with its data drawn (see svg_series),
 #            which is what the PNG twin, from the same command, shows too;
+#            the entry '<image>' stands for an image panel instead (an
+#            embedded PNG, as gnuplot's `with image` writes it);
 # and docs/plots/NAME.png, the copy README shows, must exist and pass the
 # PNG checks too. Ends with a Unity-style summary ("N Tests F Failures 0
 # Ignored", then OK or FAIL); exit status non-zero on failure.
@@ -118,7 +120,11 @@ while IFS='|' read -r name series args; do
         for s in $series; do
             IFS=$old_ifs
             s=$(trim "$s")
-            if svg_series "$out/$name.svg" "$s"; then ok; else bad "$name.svg: no drawn series '$s'"; fi
+            if [ "$s" = "<image>" ]; then
+                # An image panel (gnuplot's `with image`): an embedded PNG.
+                if grep -q "<image .*data:image/png;base64," "$out/$name.svg"; then ok
+                else bad "$name.svg: no embedded image"; fi
+            elif svg_series "$out/$name.svg" "$s"; then ok; else bad "$name.svg: no drawn series '$s'"; fi
         done
         IFS=$old_ifs
     done
