@@ -11,8 +11,9 @@
 #                   headers the sources include), and the allow-list on it
 #
 # The libraries are built at the default capacities; the firmware links its
-# own copy built with FW_DEFS (-DMCS_MAX_N=256) so that its static
-# mcs_spectrum fits a small part's RAM.
+# own copy built with FW_DEFS so that its static accumulators fit a small
+# part's RAM: MCS_MAX_N=256 for the mcs_spectrum, and a 2D point-set cutoff
+# of 8, a 1D one of 32 and 8 x 8 bins for the 2D binned spectrum.
 
 .PHONY: cross cross-m4 cross-m7 cross-rv sizes cross-m4-lib cross-m7-lib
 
@@ -20,7 +21,9 @@ ARM_PREFIX ?= arm-none-eabi-
 RV_PREFIX  ?= riscv64-unknown-elf-
 CROSS_OPT  ?= -O2 -g
 FW_OPT     ?= -Os -g
-FW_DEFS    ?= -DMCS_MAX_N=256
+FW_DEFS    ?= -DMCS_MAX_N=256 -DMCS_MAX_FREQ=8 -DMCS_MAX_FREQ_1D=32 -DMCS_MAX_SIDE=8
+# The smallest configuration the size table shows.
+SMALL_DEFS ?= -DMCS_MAX_N=64 -DMCS_MAX_COV_N=16 -DMCS_MAX_FREQ=4 -DMCS_MAX_FREQ_1D=16 -DMCS_MAX_SIDE=4
 CROSS_COMMON := -ffreestanding -ffunction-sections -fdata-sections
 M4_ARCH := -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16
 M7_ARCH := -mcpu=cortex-m7 -mthumb -mfloat-abi=hard -mfpu=fpv5-d16
@@ -118,8 +121,8 @@ cross-rv: build/rv/libmcspec.a
 # sizeof each public struct: on the host, on Cortex-M (32-bit size_t) at the
 # default capacities, at the firmware's, and at a small configuration.
 sizes:
-	@echo "sizeof, bytes (tools/sizes.sh):"
+	@echo "sizeof, bytes (tools/sizes.sh); firmware: $(FW_DEFS); small: $(SMALL_DEFS)"
 	@sh tools/sizes.sh build/sizes "x86-64|$(CC)|$(EMB_NM)|" \
 	    "Cortex-M|$(ARM_PREFIX)gcc|$(ARM_PREFIX)nm|$(M4_ARCH)" \
-	    "Cortex-M -DMCS_MAX_N=256|$(ARM_PREFIX)gcc|$(ARM_PREFIX)nm|$(M4_ARCH) -DMCS_MAX_N=256" \
-	    "Cortex-M -DMCS_MAX_N=64 -DMCS_MAX_COV_N=16|$(ARM_PREFIX)gcc|$(ARM_PREFIX)nm|$(M4_ARCH) -DMCS_MAX_N=64 -DMCS_MAX_COV_N=16"
+	    "Cortex-M firmware|$(ARM_PREFIX)gcc|$(ARM_PREFIX)nm|$(M4_ARCH) $(FW_DEFS)" \
+	    "Cortex-M small|$(ARM_PREFIX)gcc|$(ARM_PREFIX)nm|$(M4_ARCH) $(SMALL_DEFS)"

@@ -109,3 +109,7 @@ uninstall:
 check-install: $(LIB) $(BUILD)/libmcspec.so
 	@MAKE='$(MAKE)' CC='$(CC)' CXX='$(CXX)' CMAKE='$(CMAKE)' NM='$(EMB_NM)' WERROR='$(WERROR)' \
 	    sh test/consumers/run.sh
+
+# The mcspec command installs with the library (mk/cli.mk).
+install: install-cli
+uninstall: uninstall-cli

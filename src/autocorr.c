@@ -4,12 +4,11 @@
 #include <math.h>
 #include <string.h>
 
-/* Read-outs refuse stored values beyond anything trials produce (sums of s
- * below 2^274, lag sums and sum_dc below 2^496; see MCS_AUTOCORR_MAX_TRIAL),
- * so no read-out of an overwritten object can overflow, and the transform of
- * values below 2^501 cannot fail. */
-#define FIRST_LIMIT 2.037035976334486e+90  /* 2^300 */
-#define SECOND_LIMIT 3.273390607896142e+150 /* 2^500 */
+/* Read-outs refuse a stored value above 2^500 in magnitude, the bound of the
+ * record format too (io.h): trials never get there (the sums stay below
+ * 2^496, see the header's trial limit), and below it every read-out, squares
+ * of transforms of N values included, stays finite on any object. */
+#define LIMIT 3.273390607896142e+150 /* 2^500 */
 
 mcs_status mcs_autocorr_init(mcs_autocorr *acc, size_t n)
 {
@@ -24,7 +23,7 @@ mcs_status mcs_autocorr_init(mcs_autocorr *acc, size_t n)
 static mcs_status autocorr_check(const mcs_autocorr *acc)
 {
     mcs_status st = mcs_check_object_(acc, acc != NULL ? acc->n : 0u, (size_t)MCS_MAX_N);
-    return st == MCS_OK && acc->count > (uint64_t)MCS_MAX_COUNT ? MCS_ERR_UNINIT : st;
+    return st == MCS_OK && acc->count > (uint64_t)MCS_MAX_COUNT ? MCS_ERR_INVARIANT : st;
 }
 
 /* Folded lag of an ordered pair of bins: e = min(d, N - d), d = c - b mod N. */
@@ -162,8 +161,9 @@ static int all_within(size_t len, const double *x, double lim)
 }
 
 /* The checks of a read-out writing the n-entry arrays out and out2 (out2
- * NULL for one array), in this order: NULL, UNINIT (acc, or a stored value
- * beyond anything trials produce), MISMATCH, the plan (UNINIT or MISMATCH),
+ * NULL for one array), in this order: NULL, UNINIT (acc), INVARIANT (a
+ * stored value beyond anything trials produce), MISMATCH, the plan (UNINIT
+ * or MISMATCH),
  * EMPTY, ALIAS (outputs overlapping each other, the accumulator or the plan:
  * the plan's scratch holds the data mid-transform). */
 static mcs_status autocorr_readout(const mcs_autocorr *acc, const mcs_dft *plan, size_t n,
@@ -177,10 +177,10 @@ static mcs_status autocorr_readout(const mcs_autocorr *acc, const mcs_dft *plan,
     if (st == MCS_OK && acc->count == 0u)
         st = MCS_ERR_EMPTY;
     if (st == MCS_OK &&
-        (!all_within(n, acc->sum_s, FIRST_LIMIT) ||
-         !all_within(n / 2u + 1u, acc->sum_lag, SECOND_LIMIT) || !(acc->sum_dc >= 0.0) ||
-         !(acc->sum_dc <= SECOND_LIMIT)))
-        st = MCS_ERR_UNINIT;
+        (!all_within(n, acc->sum_s, LIMIT) ||
+         !all_within(n / 2u + 1u, acc->sum_lag, LIMIT) || !(acc->sum_dc >= 0.0) ||
+         !(acc->sum_dc <= LIMIT)))
+        st = MCS_ERR_INVARIANT;
     const size_t bytes = n * sizeof(double);
     const size_t out2_bytes = out2 != NULL ? bytes : 0u;
     if (st == MCS_OK &&

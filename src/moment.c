@@ -4,11 +4,11 @@
 
 #include <string.h>
 
-/* Read-outs refuse stored values beyond anything trials produce (see
- * MCS_MOMENT_MAX_TRIAL: shifts below 2^220, sums of d below 2^274, sums of
- * d d below 2^496), so none of them can overflow on an overwritten object. */
-#define FIRST_LIMIT 2.037035976334486e+90  /* 2^300 */
-#define SECOND_LIMIT 3.273390607896142e+150 /* 2^500 */
+/* Read-outs refuse a stored value above 2^500 in magnitude, the bound of the
+ * record format too (io.h): trials never get there (the sums stay below
+ * 2^496, see the header's trial limit), and below it every read-out, squares
+ * of transforms of N values included, stays finite on any object. */
+#define LIMIT 3.273390607896142e+150 /* 2^500 */
 
 mcs_status mcs_moment_init(mcs_moment *acc, size_t n)
 {
@@ -24,7 +24,7 @@ mcs_status mcs_moment_init(mcs_moment *acc, size_t n)
 static mcs_status moment_check(const mcs_moment *acc)
 {
     mcs_status st = mcs_check_object_(acc, acc != NULL ? acc->n : 0u, (size_t)MCS_MAX_COV_N);
-    return st == MCS_OK && acc->count > (uint64_t)MCS_MAX_COUNT ? MCS_ERR_UNINIT : st;
+    return st == MCS_OK && acc->count > (uint64_t)MCS_MAX_COUNT ? MCS_ERR_INVARIANT : st;
 }
 
 /* The checks every add shares once the trial itself is valid: its total
@@ -202,9 +202,9 @@ mcs_status mcs_readout_open_moment(const void *obj, mcs_readout *view)
     if (acc->count == 0u)
         return MCS_ERR_EMPTY;
     const size_t n = acc->n;
-    if (!all_within(n, acc->shift, FIRST_LIMIT) || !all_within(n, acc->sum_d, FIRST_LIMIT) ||
-        !all_within(n * n, acc->sum_dd, SECOND_LIMIT))
-        return MCS_ERR_UNINIT;
+    if (!all_within(n, acc->shift, LIMIT) || !all_within(n, acc->sum_d, LIMIT) ||
+        !all_within(n * n, acc->sum_dd, LIMIT))
+        return MCS_ERR_INVARIANT;
     /* k = 0: the accumulator does not know K, the caller names it */
     *view = (mcs_readout){n,           0u,           1.0 / (double)acc->count, acc->sum_d,
                           acc->sum_dd, acc->cos_table, acc->sin_table,         acc->shift};

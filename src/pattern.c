@@ -43,12 +43,13 @@ mcs_status mcs_pattern_init(mcs_pattern *pat, mcs_pattern_kind kind, size_t n, s
             return MCS_ERR_UNINIT;
         if (importance->n != n)
             return MCS_ERR_MISMATCH;
+        /* The homogenizing shift moves samples by whole bins, which under a
+         * non-uniform density would no longer follow p: not defined (for a
+         * flat one either, to keep the rule simple). */
+        if (kind == MCS_PATTERN_HOMOGENIZED)
+            return MCS_ERR_KIND;
         if (is_flat(importance))
             importance = NULL;
-        /* The homogenizing shift moves samples by whole bins, which under a
-         * non-uniform density would no longer follow p: not defined. */
-        else if (kind == MCS_PATTERN_HOMOGENIZED)
-            return MCS_ERR_KIND;
     }
     pat->kind = kind;
     pat->n = n;

@@ -149,7 +149,7 @@ static mcs_status clamp_variance(double tol, double *v)
     if (*v >= 0.0)
         return MCS_OK;
     if (!(*v >= -tol)) /* beyond rounding (or NaN) */
-        return MCS_ERR_UNINIT;
+        return MCS_ERR_INVARIANT;
     *v = 0.0;
     return MCS_OK;
 }

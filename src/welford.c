@@ -17,7 +17,7 @@ mcs_status mcs_welford_init(mcs_welford *acc)
 }
 
 /* A state some sequence of adds and merges produces: MCS_ERR_NULL without
- * acc, MCS_ERR_UNINIT if overwritten (so no read-out is NaN or stale). */
+ * acc, MCS_ERR_INVARIANT if overwritten (so no read-out is NaN or stale). */
 static mcs_status welford_check(const mcs_welford *acc)
 {
     if (acc == NULL)
@@ -25,7 +25,7 @@ static mcs_status welford_check(const mcs_welford *acc)
     const double f[4] = {acc->mean, acc->m2, acc->m3, acc->m4};
     if (acc->count > (uint64_t)MCS_MAX_COUNT || !mcs_all_finite_(4u, f) || acc->m2 < 0.0 ||
         acc->m4 < 0.0)
-        return MCS_ERR_UNINIT;
+        return MCS_ERR_INVARIANT;
     return MCS_OK;
 }
 

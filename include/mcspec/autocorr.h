@@ -57,9 +57,9 @@ typedef struct {
 } mcs_autocorr;
 
 /* Every call below returns MCS_ERR_UNINIT for an object not set up by
- * mcs_autocorr_init or overwritten since (n out of range, a count above
- * MCS_MAX_COUNT, or, at read-out, a stored value NaN, infinite or beyond
- * anything trials produce), changing nothing. */
+ * mcs_autocorr_init (n out of range), and MCS_ERR_INVARIANT for one
+ * overwritten since (a count above MCS_MAX_COUNT or, at read-out, a stored
+ * value NaN, infinite or beyond anything trials produce), changing nothing. */
 
 /* Empties the accumulator for n bins. MCS_ERR_NULL, MCS_ERR_N_RANGE
  * (n = 0 or n > MCS_MAX_N). *acc untouched on error. */
@@ -91,7 +91,8 @@ mcs_status mcs_autocorr_count(const mcs_autocorr *acc, uint64_t *count);
  * equal the accumulator's; its scratch is overwritten). re[n], im[n] written
  * (exactly n entries each); they must overlap neither each other, the
  * accumulator nor the plan. MCS_ERR_NULL, MCS_ERR_UNINIT (acc or plan),
- * MCS_ERR_MISMATCH (n or plan N), MCS_ERR_EMPTY, MCS_ERR_ALIAS. Every check,
+ * MCS_ERR_INVARIANT, MCS_ERR_MISMATCH (n or plan N), MCS_ERR_EMPTY,
+ * MCS_ERR_ALIAS. Every check,
  * including one that the transform's input and output are finite (the
  * stored sums are bounded, see MCS_AUTOCORR_MAX_TRIAL), is made before
  * anything is written, and the transform's status is returned: never

@@ -58,9 +58,9 @@ typedef struct {
 } mcs_moment;
 
 /* Every call below returns MCS_ERR_UNINIT for an object not set up by
- * mcs_moment_init or overwritten since (n out of range, a count above
- * MCS_MAX_COUNT, or, at read-out, a stored value NaN, infinite or beyond
- * anything trials produce), changing nothing. */
+ * mcs_moment_init (n out of range), and MCS_ERR_INVARIANT for one
+ * overwritten since (a count above MCS_MAX_COUNT or, at read-out, a stored
+ * value NaN, infinite or beyond anything trials produce), changing nothing. */
 
 /* Empties the accumulator for n bins. MCS_ERR_NULL, MCS_ERR_N_RANGE
  * (n = 0 or n > MCS_MAX_COV_N). *acc untouched on error. */
@@ -117,7 +117,8 @@ mcs_status mcs_moment_cross(const mcs_moment *acc, size_t freq_k, size_t freq_l,
  * On the diagonal (k = l, a variance) it is never negative: a value below 0
  * by no more than the read-out's rounding bound, 4 (N + 2) eps times
  * ((1/N) sum |Cov(d)_mn| + (sum |<d_n>|)^2 / N), is returned as 0; one below
- * that is not rounding, and the object is refused (MCS_ERR_UNINIT). */
+ * that is not rounding, and the object is refused (MCS_ERR_INVARIANT): its
+ * sums are those of no data (overwritten, or a crafted record). */
 mcs_status mcs_moment_covariance(const mcs_moment *acc, size_t freq_k, size_t freq_l,
                                  double *re, double *im);
 

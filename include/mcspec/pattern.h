@@ -54,8 +54,8 @@ const char *mcs_pattern_kind_str(mcs_pattern_kind kind);
  * without one (the rounded CDF of 1/N steps could not put a point that lies
  * exactly on a bin edge, such as the uniform pattern's, in the same bin).
  * MCS_ERR_NULL, MCS_ERR_N_RANGE, MCS_ERR_K_RANGE (k = 0 or k > MCS_MAX_K),
- * MCS_ERR_KIND (unknown kind, or homogenized with a non-flat importance
- * function), MCS_ERR_MISMATCH, MCS_ERR_UNINIT (importance not initialised).
+ * MCS_ERR_KIND (unknown kind, or homogenized with an importance function,
+ * flat or not), MCS_ERR_MISMATCH, MCS_ERR_UNINIT (importance not initialised).
  * *pat untouched on error. */
 mcs_status mcs_pattern_init(mcs_pattern *pat, mcs_pattern_kind kind, size_t n, size_t k,
                             const mcs_importance *importance);

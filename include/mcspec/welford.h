@@ -27,33 +27,33 @@ typedef struct {
     double m4;      /* sum of 4th powers of deviations */
 } mcs_welford;
 
-/* Every call below except init returns MCS_ERR_UNINIT for an accumulator
+/* Every call below except init returns MCS_ERR_INVARIANT for an accumulator
  * that no sequence of calls produces (count above MCS_MAX_COUNT, a field
  * NaN or infinite, m2 or m4 negative: overwritten), changing nothing. */
 
 /* Empties the accumulator. MCS_ERR_NULL. */
 mcs_status mcs_welford_init(mcs_welford *acc);
 
-/* Adds one value. MCS_ERR_NULL, MCS_ERR_UNINIT, MCS_ERR_NOT_FINITE,
+/* Adds one value. MCS_ERR_NULL, MCS_ERR_INVARIANT, MCS_ERR_NOT_FINITE,
  * MCS_ERR_MAGNITUDE (|x| > MCS_WELFORD_MAX_ABS), MCS_ERR_COUNT (count at
  * MCS_MAX_COUNT). acc untouched on error. */
 mcs_status mcs_welford_add(mcs_welford *acc, double x);
 
 /* dst <- dst union src (Chan et al.; Pebay for m3, m4); src unchanged;
  * dst == src allowed (doubles every count and sum). MCS_ERR_NULL,
- * MCS_ERR_UNINIT, MCS_ERR_COUNT (the counts add up past MCS_MAX_COUNT).
+ * MCS_ERR_INVARIANT, MCS_ERR_COUNT (the counts add up past MCS_MAX_COUNT).
  * dst untouched on error. */
 mcs_status mcs_welford_merge(mcs_welford *dst, const mcs_welford *src);
 
-/* Mean of the values added. MCS_ERR_NULL, MCS_ERR_UNINIT, MCS_ERR_EMPTY (no values). */
+/* Mean of the values added. MCS_ERR_NULL, MCS_ERR_INVARIANT, MCS_ERR_EMPTY (no values). */
 mcs_status mcs_welford_mean(const mcs_welford *acc, double *mean);
 
-/* Unbiased sample variance m2 / (count - 1). MCS_ERR_NULL, MCS_ERR_UNINIT,
+/* Unbiased sample variance m2 / (count - 1). MCS_ERR_NULL, MCS_ERR_INVARIANT,
  * MCS_ERR_EMPTY (< 2 values). */
 mcs_status mcs_welford_variance(const mcs_welford *acc, double *variance);
 
 /* Standard error of the mean sqrt(variance / count). MCS_ERR_NULL,
- * MCS_ERR_UNINIT, MCS_ERR_EMPTY (< 2). */
+ * MCS_ERR_INVARIANT, MCS_ERR_EMPTY (< 2). */
 mcs_status mcs_welford_stderr(const mcs_welford *acc, double *stderr_out);
 
 /* Standard error of the unbiased variance s^2, sqrt(V) with
@@ -64,7 +64,7 @@ mcs_status mcs_welford_stderr(const mcs_welford *acc, double *stderr_out);
  * into the large-sample form instead made it collapse for two equally likely
  * values (mu4 = sigma^4), a chi-square(1) that was often far below the true
  * sqrt(2 / (c (c - 1))) sigma^2. It is never 0 unless every value is equal.
- * MCS_ERR_NULL, MCS_ERR_UNINIT, MCS_ERR_EMPTY (< 4 values). */
+ * MCS_ERR_NULL, MCS_ERR_INVARIANT, MCS_ERR_EMPTY (< 4 values). */
 mcs_status mcs_welford_variance_stderr(const mcs_welford *acc, double *stderr_out);
 
 #ifdef __cplusplus
