@@ -65,14 +65,26 @@ double mcs_eq_ac_energy(size_t n, const double *f)
 /* ---- Section 1: the exact moments' read-out of two integrands ------------ */
 
 /* Var[I_f] + Var[I_g], less 2 Cov(I_f, I_g) when f and g are estimated from
- * one shared trial (eq. 4); independent trials have no covariance (eq. 2). */
+ * one shared trial (eq. 4); independent trials have no covariance (eq. 2).
+ * Variances: never negative, rounding clamped as mcs_theory_variance. */
 static double gradient_variance(const mcs_readout *view, size_t k, const double *f,
                                 const double *g, int shared)
 {
+    double vf = mcs_readout_form(view, k, f, f), vg = mcs_readout_form(view, k, g, g);
+    if (!shared) {
+        if (vf < 0.0)
+            vf = mcs_readout_nonnegative(view, vf, mcs_readout_form_bound(view, k, f, f));
+        if (vg < 0.0)
+            vg = mcs_readout_nonnegative(view, vg, mcs_readout_form_bound(view, k, g, g));
+        return vf + vg;
+    }
     /* (f - g)^T Cov (f - g), expanded so no difference array is needed */
-    double var = mcs_readout_form(view, k, f, f) + mcs_readout_form(view, k, g, g);
-    if (shared)
-        var -= 2.0 * mcs_readout_form(view, k, f, g);
+    double var = vf + vg - 2.0 * mcs_readout_form(view, k, f, g);
+    if (var < 0.0)
+        var = mcs_readout_nonnegative(view, var,
+                                      mcs_readout_form_bound(view, k, f, f) +
+                                          mcs_readout_form_bound(view, k, g, g) +
+                                          2.0 * mcs_readout_form_bound(view, k, f, g));
     return var;
 }
 
