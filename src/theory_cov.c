@@ -197,6 +197,19 @@ static double frac_part(double t)
     return f < 1.0 ? f : 0.0;
 }
 
+/* The beta at which a sample crosses edge b: frac(edge[b]). Without
+ * importance edge b is b K / N, and its fractional part (b K mod N) / N is
+ * taken in integers, so edges that coincide in exact arithmetic coincide here
+ * (rounded, 46 * 10 / 50 and 6 * 10 / 50 differ in their last bits and would
+ * leave a sliver of beta where one sample has moved and its twin has not). */
+static double breakpoint_of(const mcs_theory_spectrum *ts, size_t b)
+{
+    if (ts->has_importance)
+        return frac_part(ts->edge[b]);
+    const uint64_t n = ts->n, r = ((uint64_t)b * ((uint64_t)ts->k % n)) % n;
+    return (double)r / (double)n;
+}
+
 /* X just above beta = 0, where bin b holds ceil(edge[b+1]) - ceil(edge[b])
  * samples (those j with j + beta in the bin). */
 static cval jitter_start(const mcs_theory_spectrum *ts, const mcs_theory_weight *x)
@@ -238,7 +251,7 @@ static void jitter_cov(const mcs_theory_spectrum *ts, const mcs_theory_weight *x
     double at = 0.0;
     for (size_t i = 0; i + 1u < ts->n; ++i) {
         const size_t b = ts->order[i];
-        const double next = frac_part(ts->edge[b]);
+        const double next = breakpoint_of(ts, b);
         if (!(next > 0.0))
             continue; /* an edge on a whole t moves its sample at beta = 0: in the start */
         add(&m, next - at, vx, x == y ? vx : vy);
@@ -251,11 +264,10 @@ static void jitter_cov(const mcs_theory_spectrum *ts, const mcs_theory_weight *x
     add_result(&m, 1.0, out);
 }
 
-/* Heap sort of order[0 .. count-1] by the fractional part of edge[b]: in
- * place, no recursion. */
+/* Heap sort of order[0 .. count-1] by breakpoint: in place, no recursion. */
 static double breakpoint(const mcs_theory_spectrum *ts, size_t i)
 {
-    return frac_part(ts->edge[ts->order[i]]);
+    return breakpoint_of(ts, ts->order[i]);
 }
 
 static void sift_down(mcs_theory_spectrum *ts, size_t root, size_t count)

@@ -148,7 +148,7 @@ mcs_status mcs_theory_estimator_covariance(const mcs_theory *th, size_t n, size_
  * array), then read what you need; every N from 1 to MCS_MAX_N, every kind,
  * with and without importance, any K:
  *
- *     static mcs_theory_spectrum ts;          (about 256 KiB: not on a small stack)
+ *     static mcs_theory_spectrum ts;          (about 224 KiB: not on a small stack)
  *     mcs_pattern_init(&pat, MCS_PATTERN_JITTER, n, k, &imp);
  *     mcs_theory_spectrum_init(&ts, &pat);    (O(N log N))
  *     mcs_theory_power_spectrum(&ts, n, power);     power[n]: <|S_k|^2>, every k, O(N^2)
@@ -180,7 +180,7 @@ mcs_status mcs_theory_estimator_covariance(const mcs_theory *th, size_t n, size_
  * covariances are formed from, for N up to MCS_MAX_N. Caller-owned; filled by
  * mcs_theory_spectrum_init, which copies everything it needs (the pattern's
  * importance function need not outlive it). sizeof at the default
- * MCS_MAX_N = 4096 is 262,192 bytes on LP64 (8 arrays of N). */
+ * MCS_MAX_N = 4096 is 229,416 bytes on LP64 (7 arrays of N). */
 typedef struct {
     mcs_pattern_kind kind;        /* pattern kind */
     size_t n;                     /* bins N, 1..MCS_MAX_N (0: not set up) */
