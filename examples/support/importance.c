@@ -1,4 +1,5 @@
 #include "importance.h"
+#include "exact.h"
 #include "readout.h"
 
 #include <math.h>
@@ -56,4 +57,76 @@ double ex_whole_bin_power_at(size_t m, size_t k, double h, size_t q)
     if (mcs_eq33_stratified_power_exact(m, k, q, &v) != MCS_OK)
         return EX_NA;
     return v + (double)k / (double)m * (1.0 / h - 1.0);
+}
+
+/* Importance functions over m bins, one kept for the tables' N and one for
+ * the larger N, each rebuilt only when (g, m, K) changes: the limit checks
+ * ask for them once per frequency. */
+typedef struct {
+    int g;
+    size_t m, k;
+    mcs_importance imp;
+} imp_slot;
+
+static imp_slot slots[2]; /* m = 0: empty */
+
+/* Run r's g over m bins; NULL without importance or on failure. */
+static const mcs_importance *importance_at(const ex_imp_run *r, size_t m)
+{
+    if (r->g == EX_G_NONE)
+        return NULL;
+    imp_slot *s = &slots[m == r->n ? 0 : 1];
+    if (s->g != r->g || s->m != m || s->k != r->k) {
+        s->m = 0u;
+        if (ex_importance_for(r->g, m, r->k, &s->imp) != MCS_OK)
+            return NULL;
+        s->g = r->g;
+        s->m = m;
+        s->k = r->k;
+    }
+    return &s->imp;
+}
+
+/* H of run r's g over m bins (1 without importance; the flat g's at N). */
+static double h_at(const ex_imp_run *r, size_t m)
+{
+    if (r->g == EX_G_NONE)
+        return 1.0;
+    const mcs_importance *imp = importance_at(r, r->g == EX_G_FLAT ? r->n : m);
+    return imp != NULL ? imp->harmonic_mean : EX_NA;
+}
+
+double ex_imp_closed_power(const ex_imp_run *r, size_t m, size_t q)
+{
+    return ex_closed_power_at(r->kind, importance_at(r, m), m, r->k, q);
+}
+
+double ex_imp_exact_power(const ex_imp_run *r, size_t m, size_t q)
+{
+    const int g = r->g;
+    const double h = h_at(r, m);
+    if (r->kind != MCS_PATTERN_STRATIFIED ||
+        (g != EX_G_NONE && g != EX_G_FLAT && !(g == EX_G_BALANCED && m % r->k == 0u)))
+        return EX_NA;
+    return ex_whole_bin_power_at(m, r->k, h, q);
+}
+
+double ex_imp_mean_power(const ex_imp_run *r, size_t m, int exact)
+{
+    double sum = 0.0;
+    for (size_t q = 1; q < m; ++q)
+        sum += exact ? ex_imp_exact_power(r, m, q) : ex_imp_closed_power(r, m, q);
+    return sum / (double)(m - 1u);
+}
+
+double ex_imp_limit_gap(const ex_imp_run *r, size_t q, double floor_)
+{
+    const size_t big = ex_large_n(r->n);
+    if (big == 0u)
+        return EX_NA;
+    double c = q == 0u ? ex_imp_mean_power(r, big, 0) : ex_imp_closed_power(r, big, q);
+    double e = q == 0u ? ex_imp_mean_power(r, big, 1) : ex_imp_exact_power(r, big, q);
+    if (isnan(c) || isnan(e))
+        return EX_NA;
+    return ex_rel_gap(c, e, floor_ / (double)(big / r->n));
 }

@@ -32,6 +32,35 @@ mcs_status ex_importance_for(int g, size_t m, size_t k, mcs_importance *imp);
 double ex_closed_power_at(mcs_pattern_kind kind, const mcs_importance *imp, size_t m, size_t k,
                           size_t q);
 
+/* A pattern of the section 4 tables for the limit checks: kind, importance
+ * function g (EX_G_*), the tables' N and K. */
+typedef struct {
+    mcs_pattern_kind kind;
+    int g;
+    size_t n, k;
+} ex_imp_run;
+
+/* The note's power of run r at m bins and DFT index q: ex_closed_power_at
+ * with g discretised over m bins. */
+double ex_imp_closed_power(const ex_imp_run *r, size_t m, size_t q);
+
+/* The exact power of run r at m bins where it is known in closed form,
+ * stratified sampling whose strata are m/K whole bins (no g, flat g, g1b
+ * with K dividing m): ex_whole_bin_power_at with the harmonic mean of g
+ * (over N bins for the flat g, whose H is 1 but for rounding). EX_NA
+ * otherwise. */
+double ex_imp_exact_power(const ex_imp_run *r, size_t m, size_t q);
+
+/* Mean over q in [1, m) of ex_imp_closed_power (exact = 0) or of
+ * ex_imp_exact_power (exact = 1). */
+double ex_imp_mean_power(const ex_imp_run *r, size_t m, int exact);
+
+/* Relative gap of the closed form to the exact value at the larger N of the
+ * limit checks (ex_large_n(N)), at index q, or of their means over k >= 1 if
+ * q == 0; floor_ is the rounding scale at N (it shrinks with 1/N). EX_NA
+ * where either is undefined or no larger N fits in MCS_MAX_N. */
+double ex_imp_limit_gap(const ex_imp_run *r, size_t q, double floor_);
+
 /* The exact power of stratified sampling whose strata are m/k whole bins,
  * through an importance function of harmonic mean h (1 without):
  * (k/m)/h + eq. 32 = eq. 33's exact form + (k/m)(1/h - 1) (mcspec's theory
