@@ -182,11 +182,7 @@ static void unbiasedness_section(const ex_options *opt, sec2_summary *s)
  * that eq. 13 or 14 rounds to 1e-19 reads 0, not a disagreement. */
 static double variance_floor(const ex_options *opt, double v13, double vex)
 {
-    double f2 = 0.0;
-    for (size_t b = 0; b < opt->n; ++b)
-        f2 += f[b] * f[b] / (double)opt->n;
-    double size = isnan(v13) ? fabs(vex) : fabs(v13);
-    return fmax(1e-12 * fmax(size, 1e-12), 1e-15 * f2 / (double)opt->k);
+    return ex_variance_floor(opt->n, opt->k, f, isnan(v13) ? vex : v13);
 }
 
 /* Var[I] of pattern p by eq. 13 and eq. 14, beside the exact and measured. */

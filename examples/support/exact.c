@@ -1,11 +1,11 @@
 #include "exact.h"
 #include "readout.h"
 
-mcs_status ex_exact_init(ex_exact *ex, const mcs_pattern *pat)
+static mcs_status exact_init(ex_exact *ex, const mcs_pattern *pat, int full)
 {
     ex->n = pat->n;
     ex->k = pat->k;
-    ex->full = pat->n <= (size_t)MCS_MAX_COV_N;
+    ex->full = full;
     mcs_status st = ex->full ? mcs_theory_init(&ex->theory, pat)
                              : mcs_theory_spectrum_init(&ex->spectrum, pat);
     if (st != MCS_OK)
@@ -17,6 +17,16 @@ mcs_status ex_exact_init(ex_exact *ex, const mcs_pattern *pat)
         ex->power[q] = ex_or_na(mcs_theory_power(&ex->theory, q, &v), &v);
     }
     return MCS_OK;
+}
+
+mcs_status ex_exact_init(ex_exact *ex, const mcs_pattern *pat)
+{
+    return exact_init(ex, pat, pat->n <= (size_t)MCS_MAX_COV_N);
+}
+
+mcs_status ex_exact_init_spectrum(ex_exact *ex, const mcs_pattern *pat)
+{
+    return exact_init(ex, pat, 0);
 }
 
 const mcs_theory *ex_exact_theory(const ex_exact *ex)
@@ -43,6 +53,23 @@ ex_complex ex_exact_cross(const ex_exact *ex, size_t freq_k, size_t freq_l)
     mcs_status st = ex->full ? mcs_theory_cross(&ex->theory, freq_k, freq_l, &a, &b)
                              : mcs_theory_spectrum_cross(&ex->spectrum, freq_k, freq_l, &a, &b);
     return ex_complex_or_na(st, &a, &b);
+}
+
+ex_complex ex_exact_covariance(const ex_exact *ex, size_t freq_k, size_t freq_l)
+{
+    double a = 0.0, b = 0.0;
+    mcs_status st =
+        ex->full ? mcs_theory_covariance(&ex->theory, freq_k, freq_l, &a, &b)
+                 : mcs_theory_spectrum_covariance(&ex->spectrum, freq_k, freq_l, &a, &b);
+    return ex_complex_or_na(st, &a, &b);
+}
+
+double ex_exact_mean_power(const ex_exact *ex)
+{
+    double sum = 0.0;
+    for (size_t q = 1; q < ex->n; ++q)
+        sum += ex_exact_power(ex, q);
+    return ex->n > 1u ? sum / (double)(ex->n - 1u) : EX_NA;
 }
 
 double ex_exact_estimator_mean(const ex_exact *ex, const double *f)

@@ -25,6 +25,11 @@ typedef struct {
  * status). */
 mcs_status ex_exact_init(ex_exact *ex, const mcs_pattern *pat);
 
+/* The same from mcs_theory_spectrum at every N (ex_exact_theory is NULL):
+ * variances formed without cancellation, for tables that have no earlier
+ * output to keep. */
+mcs_status ex_exact_init_spectrum(ex_exact *ex, const mcs_pattern *pat);
+
 /* The N x N moments, or NULL above MCS_MAX_COV_N. */
 const mcs_theory *ex_exact_theory(const ex_exact *ex);
 
@@ -32,6 +37,11 @@ const mcs_theory *ex_exact_theory(const ex_exact *ex);
 double ex_exact_power(const ex_exact *ex, size_t freq);
 ex_complex ex_exact_mean(const ex_exact *ex, size_t freq);
 ex_complex ex_exact_cross(const ex_exact *ex, size_t freq_k, size_t freq_l);
+/* Cov(S_k, S_l) = <S_k S_l*> - <S_k><S_l>*. */
+ex_complex ex_exact_covariance(const ex_exact *ex, size_t freq_k, size_t freq_l);
+
+/* Mean over k >= 1 of <|S_k|^2> (EX_NA for N = 1). */
+double ex_exact_mean_power(const ex_exact *ex);
 
 /* <I>, Var[I] and Cov(I_f, I_g) of integrands f[N], g[N] (K of the pattern). */
 double ex_exact_estimator_mean(const ex_exact *ex, const double *f);

@@ -4,6 +4,10 @@
 
 #include <math.h>
 
+/* The parameters the weights and ex_g_inverse_integral share. */
+static const double mismatch_c = 0.2;               /* g2 = c + (1 - x)^2 */
+static const double smooth_a = 0.45, smooth_b = 0.3; /* a + b sin(2 pi x) */
+
 static double g_weight(int g, double x)
 {
     const double pi = 3.14159265358979323846;
@@ -12,10 +16,28 @@ static double g_weight(int g, double x)
     case EX_G_BALANCED:
         return 0.45 + 0.3 * sin(2.0 * pi * x) + (x >= 0.35 ? 0.3 : 0.0);
     case EX_G_MISMATCH:
-        return 0.2 + (1.0 - x) * (1.0 - x);
+        return mismatch_c + (1.0 - x) * (1.0 - x);
+    case EX_G_UNRELATED:
+        return 1.0 + 0.6 * sin(10.0 * pi * x + 1.0);
+    case EX_G_PROPORTIONAL:
+        return ex_integrand(x);
+    case EX_G_SMOOTH:
+        return smooth_a + smooth_b * sin(2.0 * pi * x);
     default:
         return 1.0;
     }
+}
+
+double ex_g_inverse_integral(int g)
+{
+    if (g == EX_G_MISMATCH) {
+        /* mean of g: c + 1/3; integral of 1/(c + u^2) over [0, 1): atan(1/sqrt c)/sqrt c */
+        const double r = sqrt(mismatch_c);
+        return (mismatch_c + 1.0 / 3.0) * atan(1.0 / r) / r;
+    }
+    if (g == EX_G_SMOOTH) /* mean a; integral of 1/(a + b sin) over a period: 1/sqrt(a^2 - b^2) */
+        return smooth_a / sqrt(smooth_a * smooth_a - smooth_b * smooth_b);
+    return EX_NA;
 }
 
 mcs_status ex_importance_for(int g, size_t m, size_t k, mcs_importance *imp)
@@ -57,6 +79,19 @@ double ex_whole_bin_power_at(size_t m, size_t k, double h, size_t q)
     if (mcs_eq33_stratified_power_exact(m, k, q, &v) != MCS_OK)
         return EX_NA;
     return v + (double)k / (double)m * (1.0 / h - 1.0);
+}
+
+double ex_strata_misalignment(const mcs_importance *imp, size_t k)
+{
+    double sum = 0.0;
+    for (size_t j = 1; j < k; ++j) {
+        const double u = (double)j / (double)k;
+        size_t b = 0;
+        (void)mcs_importance_warp(imp, u, NULL, &b);
+        const double lo = u - imp->cdf[b], hi = imp->cdf[b + 1u] - u;
+        sum += fmin(lo, hi) / (imp->cdf[b + 1u] - imp->cdf[b]);
+    }
+    return k > 1u ? sum / (double)(k - 1u) : 0.0;
 }
 
 /* Importance functions over m bins, one kept for the tables' N and one for

@@ -12,13 +12,34 @@
 /* The importance functions (weights at the bin centres, normalised):
  *   EX_G_FOLLOW   g1 = 0.45 + 0.3 sin(2 pi x) + 0.3 [x >= 0.35], roughly
  *                 following ex_integrand;
- *   EX_G_MISMATCH g2 = 0.2 + (1 - x)^2, high where ex_integrand is low;
+ *   EX_G_MISMATCH g2 = 0.2 + (1 - x)^2, high where ex_integrand is low
+ *                 (smooth, not periodic);
  *   EX_G_FLAT     the uniform g (p_n = 1);
  *   EX_G_BALANCED g1 with every block of m/K bins rescaled to mass 1/K, so
  *                 each stratum of the warped pattern is m/K whole bins (when
- *                 K divides m; otherwise it is g1).
+ *                 K divides m; otherwise it is g1);
+ *   EX_G_UNRELATED 1 + 0.6 sin(10 pi x + 1), five bumps that ignore f;
+ *   EX_G_PROPORTIONAL ex_integrand itself: f / p is the same in every bin
+ *                 (the note's "perfect importance sampling");
+ *   EX_G_SMOOTH   0.45 + 0.3 sin(2 pi x), smooth and periodic.
  * EX_G_NONE stands for sampling without importance. */
-enum { EX_G_NONE, EX_G_FOLLOW, EX_G_MISMATCH, EX_G_FLAT, EX_G_BALANCED, EX_G_COUNT };
+enum {
+    EX_G_NONE,
+    EX_G_FOLLOW,
+    EX_G_MISMATCH,
+    EX_G_FLAT,
+    EX_G_BALANCED,
+    EX_G_UNRELATED,
+    EX_G_PROPORTIONAL,
+    EX_G_SMOOTH,
+    EX_G_COUNT
+};
+
+/* The continuous limit of 1/H = (1/N) sum_n 1/p_n: the integral over [0, 1)
+ * of 1/p(x), p = g / (integral of g), in closed form for EX_G_MISMATCH
+ * (0.2 + 1/3) atan(1/sqrt 0.2) / sqrt 0.2 and EX_G_SMOOTH a / sqrt(a^2 - b^2)
+ * (a = 0.45, b = 0.3); EX_NA for the others. */
+double ex_g_inverse_integral(int g);
 
 /* Importance function g over m bins for K = k samples into imp
  * (mcs_importance_init's status). */
@@ -31,6 +52,11 @@ mcs_status ex_importance_for(int g, size_t m, size_t k, mcs_importance *imp);
  * over m bins (NULL without importance). EX_NA where undefined. */
 double ex_closed_power_at(mcs_pattern_kind kind, const mcs_importance *imp, size_t m, size_t k,
                           size_t q);
+
+/* Mean over the K - 1 inner stratum edges of a stratified pattern warped
+ * through imp (the CDF levels j/K) of the distance to the nearest bin edge,
+ * in bins: 0 when every stratum is whole bins, 0.5 at most. */
+double ex_strata_misalignment(const mcs_importance *imp, size_t k);
 
 /* A pattern of the section 4 tables for the limit checks: kind, importance
  * function g (EX_G_*), the tables' N and K. */

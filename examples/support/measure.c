@@ -214,6 +214,14 @@ ex_complex ex_run_mean_pair(const ex_run *run, int idx, ex_complex *stderr_out)
     return mean_parts(&run->x_re[idx], &run->x_im[idx], stderr_out);
 }
 
+double ex_run_mean_power(const ex_run *run, double *stderr_out)
+{
+    const double scale = run->n > 1u ? 1.0 / (double)(run->n - 1u) : EX_NA;
+    double m = ex_mean(&run->parseval, stderr_out) * scale;
+    *stderr_out *= scale;
+    return m;
+}
+
 ex_row ex_estimator_mean_row(const ex_options *opt, const char *section, const char *pattern,
                              const ex_exact *ex, const ex_run *run, const double *f)
 {

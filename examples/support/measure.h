@@ -101,6 +101,10 @@ ex_complex ex_run_mean(const ex_run *run, int idx, ex_complex *stderr_out);
  * (stderr_out may be NULL). */
 ex_complex ex_run_mean_pair(const ex_run *run, int idx, ex_complex *stderr_out);
 
+/* Measured mean over k >= 1 of <|S_k|^2>: the run's Parseval sum over N - 1,
+ * and its standard error into *stderr_out (EX_NA for N = 1). */
+double ex_run_mean_power(const ex_run *run, double *stderr_out);
+
 /* Prints eq. 11's row "<I>" of a run: the closed form is the mean of f
  * (mcs_eq11_unbiased_mean), the exact value the estimator mean of exact,
  * the measurement the mean of the run's first integrand (which must be f) with
