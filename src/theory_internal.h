@@ -88,9 +88,10 @@ typedef struct {
 
 /* E[(X - <X>)(Y - <Y>)*] for X, Y of weights x, y over one trial of the
  * pattern of ts, into *re, *im; x == y (the same pointer) for a variance.
- * Formed by a weighted Welford pass, one sum of w W_old/W (x - mean)(y -
- * mean)* per kind over what is independent in the pattern, so a variance is
- * a sum of non-negative terms and no mean is subtracted after squaring:
+ * Formed per kind over what is independent in the pattern as weighted sums
+ * of (x - mean)(y - mean)* (two passes, or a weighted Welford update over the
+ * jitter pieces), so a variance is a sum of non-negative terms and no mean
+ * is subtracted after squaring:
  * random O(N), stratified O(N), jitter O(N) (its breakpoints are sorted at
  * init), homogenized O(N^2), uniform 0. */
 void mcs_theory_cov_(const mcs_theory_spectrum *ts, const mcs_theory_weight *x,

@@ -146,15 +146,19 @@ mcs_status mcs_theory_estimator_covariance(const mcs_theory *th, size_t n, size_
  *
  * Usage. Set up the pattern, then the object once (O(N) memory, no N x N
  * array), then read what you need; every N from 1 to MCS_MAX_N, every kind,
- * with and without importance, any K:
+ * with and without importance, any K. The object copies what it needs, so
+ * the pattern and its importance function may go away after the init:
  *
- *     static mcs_theory_spectrum ts;          (about 224 KiB: not on a small stack)
+ *     static mcs_theory_spectrum ts;         (about 224 KiB: not on a small stack)
  *     mcs_pattern_init(&pat, MCS_PATTERN_JITTER, n, k, &imp);
- *     mcs_theory_spectrum_init(&ts, &pat);    (O(N log N))
- *     mcs_theory_power_spectrum(&ts, n, power);     power[n]: <|S_k|^2>, every k, O(N^2)
- *     mcs_theory_spectrum_power(&ts, freq, &p);     one k, O(N)
- *     mcs_theory_spectrum_mean(&ts, freq, &re, &im);        <S_k>, O(N)
- *     mcs_theory_spectrum_variance(&ts, n, k, f, &var);     Var[I] of f[n], O(N)
+ *     mcs_theory_spectrum_init(&ts, &pat);              O(N log N)
+ *     mcs_theory_power_spectrum(&ts, n, power);         power[n] = <|S_k|^2>, all k, O(N^2)
+ *     mcs_theory_spectrum_power(&ts, freq, &p);         one k, O(N)
+ *     mcs_theory_spectrum_mean(&ts, freq, &re, &im);    <S_k>, O(N)
+ *     mcs_theory_spectrum_variance(&ts, n, k, f, &v);   Var[I] of f[n], O(N)
+ *
+ * The all-k power spectrum takes about 0.1 s (random, stratified) to 0.5 s
+ * (jitter with importance) at N = 4096 on a desktop core.
  *
  * How. Every quantity is E[(X - <X>)(Y - <Y>)*] + <X><Y>* for two linear
  * functionals X = sum_n x_n s_n of one trial (x_n = e^{-2 pi i k n/N}/sqrt N
@@ -165,7 +169,8 @@ mcs_status mcs_theory_estimator_covariance(const mcs_theory *th, size_t n, size_
  * sorted fractional bin edges (jitter), and the average over the N whole-bin
  * shifts (homogenized; |S_k|^2 does not see a shift, so its power is the
  * stratified one). Each is a weighted sum of squared deviations from the
- * mean, so variances and powers are never negative, and nothing cancels
+ * mean (two passes, or a weighted Welford update for the jitter pieces), so
+ * variances and powers are never negative, and nothing cancels
  * against <X><X>*: a variance far below (mean I)^2 keeps its relative
  * accuracy. The bins, edges and weights are those of mcs_theory (the same
  * arithmetic), so where N <= MCS_MAX_COV_N the two objects agree to 1e-12 of
@@ -173,8 +178,8 @@ mcs_status mcs_theory_estimator_covariance(const mcs_theory *th, size_t n, size_
  * importance, K dividing N or not, K > N).
  *
  * Every read-out validates all inputs first and writes nothing on error:
- * MCS_ERR_NULL, MCS_ERR_UNINIT (ts not set up), and as stated. Nothing allocates; the
- * stack use of every call is a few hundred bytes. ============================ */
+ * MCS_ERR_NULL, MCS_ERR_UNINIT (ts not set up), and as stated. Nothing
+ * allocates; every call uses a few hundred bytes of stack. ================== */
 
 /* Exact first moments of one pattern and the per-bin numbers its
  * covariances are formed from, for N up to MCS_MAX_N. Caller-owned; filled by
