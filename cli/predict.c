@@ -75,51 +75,6 @@ static const char *closed_source(const mcs_pattern *pat)
     return "";
 }
 
-/* Closed forms that are exact at finite N (DESIGN.md), for N above the
- * exact-moment capacity; NaN where none is. */
-static double exact_form(const mcs_pattern *pat, size_t freq)
-{
-    size_t n = pat->n, k = pat->k;
-    double v = 0.0;
-    if (pat->importance != NULL)
-        return pat->kind == MCS_PATTERN_RANDOM ? closed_form(pat, freq) : (double)NAN;
-    if (freq == 0u)
-        return power0_plain(pat);
-    switch (pat->kind) {
-    case MCS_PATTERN_RANDOM:
-        return closed_form(pat, freq);
-    case MCS_PATTERN_STRATIFIED:
-    case MCS_PATTERN_HOMOGENIZED:
-        return cli_or_nan(mcs_eq33_stratified_power_exact(n, k, freq, &v), &v);
-    case MCS_PATTERN_UNIFORM:
-    case MCS_PATTERN_JITTER:
-        return closed_form(pat, freq);
-    }
-    return (double)NAN;
-}
-
-static const char *exact_source(const mcs_pattern *pat)
-{
-    int whole = divides(pat->k, pat->n);
-    if (pat->importance != NULL)
-        return pat->kind == MCS_PATTERN_RANDOM ? "eq. 45, exact at finite N (k = 0: eq. 46)" : "";
-    switch (pat->kind) {
-    case MCS_PATTERN_RANDOM:
-        return "eq. 23, exact at finite N (k = 0: eq. 17)";
-    case MCS_PATTERN_STRATIFIED:
-    case MCS_PATTERN_HOMOGENIZED:
-        if (whole)
-            return "eq. 33's exact finite-N form (k = 0: eq. 17)";
-        break;
-    case MCS_PATTERN_UNIFORM:
-    case MCS_PATTERN_JITTER:
-        if (whole)
-            return "eq. 37, exact for K dividing N";
-        break;
-    }
-    return "eq. 17 at k = 0 only";
-}
-
 static int theory_power(const char *cmd, const mcs_pattern *pat, cli_prediction *pred)
 {
     mcs_theory *th = cli_alloc(cmd, 1, sizeof *th);
@@ -135,6 +90,31 @@ static int theory_power(const char *cmd, const mcs_pattern *pat, cli_prediction 
     return 0;
 }
 
+/* Above MCS_MAX_COV_N: the O(N)-memory exact spectrum, every kind, with or
+ * without importance (it copies what it needs from pat). */
+static int theory_spectrum_power(const char *cmd, const mcs_pattern *pat, cli_prediction *pred)
+{
+    mcs_theory_spectrum *ts = cli_alloc(cmd, 1, sizeof *ts);
+    double *power = cli_alloc(cmd, pat->n, sizeof *power);
+    mcs_status st = MCS_ERR_NULL;
+    if (ts != NULL && power != NULL) {
+        st = mcs_theory_spectrum_init(ts, pat);
+        if (st == MCS_OK)
+            st = mcs_theory_power_spectrum(ts, pat->n, power);
+        for (size_t f = 0; st == MCS_OK && f < pred->nfreq; ++f)
+            pred->exact[f] = power[f];
+    }
+    free(ts);
+    free(power);
+    if (ts == NULL || power == NULL)
+        return CLI_EXIT_FAIL;
+    if (st != MCS_OK)
+        return cli_internal(cmd, "exact theory failed: %s", mcs_status_str(st));
+    snprintf(pred->exact_source, sizeof pred->exact_source, "%s",
+             "mcs_theory_spectrum (exact, any N)");
+    return 0;
+}
+
 int cli_predict_power(const char *cmd, const mcs_pattern *pat, cli_prediction *pred)
 {
     pred->nfreq = pat->n / 2u + 1u;
@@ -146,10 +126,7 @@ int cli_predict_power(const char *cmd, const mcs_pattern *pat, cli_prediction *p
     }
     if (pat->n <= (size_t)MCS_MAX_COV_N)
         return theory_power(cmd, pat, pred);
-    for (size_t f = 0; f < pred->nfreq; ++f)
-        pred->exact[f] = exact_form(pat, f);
-    snprintf(pred->exact_source, sizeof pred->exact_source, "%s", exact_source(pat));
-    return 0;
+    return theory_spectrum_power(cmd, pat, pred);
 }
 
 int cli_predict_variance(const char *cmd, const mcs_pattern *pat, const double *f, double *out,
@@ -167,9 +144,15 @@ int cli_predict_variance(const char *cmd, const mcs_pattern *pat, const double *
             st = mcs_theory_variance(th, pat->n, pat->k, f, out);
         free(th);
         *source = "mcs_theory (exact moments)";
-    } else if (pat->kind == MCS_PATTERN_RANDOM && pat->importance == NULL) {
-        st = mcs_eq25_random_variance(pat->n, pat->k, f, out);
-        *source = "eq. 25 (exact)";
+    } else {
+        mcs_theory_spectrum *ts = cli_alloc(cmd, 1, sizeof *ts);
+        if (ts == NULL)
+            return CLI_EXIT_FAIL;
+        st = mcs_theory_spectrum_init(ts, pat);
+        if (st == MCS_OK)
+            st = mcs_theory_spectrum_variance(ts, pat->n, pat->k, f, out);
+        free(ts);
+        *source = "mcs_theory_spectrum (exact, any N)";
     }
     if (st != MCS_OK)
         return cli_internal(cmd, "exact variance failed: %s", mcs_status_str(st));

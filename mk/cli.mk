@@ -52,8 +52,21 @@ install-cli: $(CLI_BIN)
 uninstall-cli:
 	rm -f $(DESTDIR)$(BINDIR)/mcspec
 
-plots: $(CLI_BIN)
-	@sh tools/check_plots.sh -b $(CLI_BIN) -r -o docs/plots
+SEC5_BIN := $(BUILD)/examples/sec5_open_questions
 
-check-plots: $(CLI_BIN)
+plots: $(CLI_BIN) $(SEC5_BIN)
+	@sh tools/check_plots.sh -b $(CLI_BIN) -r -o docs/plots
+	@sh tools/plot_convergence.sh $(SEC5_BIN) docs/plots/sec5_convergence.png
+
+# The question-6 convergence figure (tools/plot_convergence.sh) is checked
+# here: an SVG with a legend entry per pattern and its data drawn.
+check-plots: $(CLI_BIN) $(SEC5_BIN)
 	@sh tools/check_plots.sh -b $(CLI_BIN) -o $(BUILD)/plots-check
+	@sh tools/plot_convergence.sh $(SEC5_BIN) $(BUILD)/plots-check/sec5_convergence.svg && \
+	    for p in random stratified jitter homogenized; do \
+	        grep -q "<title>$$p exact</title>" $(BUILD)/plots-check/sec5_convergence.svg || \
+	            { echo "check-plots: sec5_convergence.svg lacks the $$p series"; exit 1; }; \
+	    done && \
+	    test "$$(grep -c '<path' $(BUILD)/plots-check/sec5_convergence.svg)" -ge 16 && \
+	    echo "check-plots: sec5_convergence.svg has its four series" || \
+	    { echo "check-plots: sec5_convergence.svg failed"; exit 1; }
