@@ -146,6 +146,8 @@ mcs_status mcs_importance_warp(const mcs_importance *imp, double u, double *x, s
         return MCS_ERR_UNINIT;
     if (!(u >= 0.0 && u < 1.0))
         return MCS_ERR_POINT_RANGE;
+    if (x != NULL && bin != NULL && mcs_overlap_(x, sizeof *x, bin, sizeof *bin))
+        return MCS_ERR_ALIAS;
     double xx;
     size_t bb;
     mcs_importance_warp_unchecked(imp, u, &xx, &bb);
@@ -181,6 +183,8 @@ mcs_status mcs_importance_q(const mcs_importance *imp, size_t freq, double *re, 
         return MCS_ERR_UNINIT;
     if (freq >= imp->n)
         return MCS_ERR_FREQ_RANGE;
+    if (mcs_overlap_(re, sizeof *re, im, sizeof *im))
+        return MCS_ERR_ALIAS;
     mcs_importance_q_unchecked(imp, freq, re, im);
     return MCS_OK;
 }

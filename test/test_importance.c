@@ -210,6 +210,18 @@ static void test_any_scale_is_accepted_and_a_negligible_weight_is_refused(void)
     TEST_ASSERT_EQUAL_INT(MCS_ERR_ZERO_WEIGHT, mcs_importance_init(&imp, 2u, below));
 }
 
+/* Issue 10 item 10: one double for both outputs of a call is refused. */
+static void test_one_storage_for_two_outputs_is_refused(void)
+{
+    const double w[3] = {1.0, 2.0, 3.0};
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_init(&imp, 3u, w));
+    double both = 7.0;
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_importance_q(&imp, 1u, &both, &both));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS,
+                          mcs_importance_warp(&imp, 0.5, &both, (size_t *)(void *)&both));
+    TEST_ASSERT_EQUAL_DOUBLE(7.0, both);
+}
+
 /* Grid points k / 2^53 (the generator's u) in [a, b), a and b in [0, 1]. */
 static double grid_count(double a, double b)
 {
@@ -256,5 +268,6 @@ int main(void)
     RUN_TEST(test_bad_q_input_returns_an_error_and_leaves_outputs_untouched);
     RUN_TEST(test_any_scale_is_accepted_and_a_negligible_weight_is_refused);
     RUN_TEST(test_bin_probabilities_are_the_stored_g_so_the_estimator_is_unbiased);
+    RUN_TEST(test_one_storage_for_two_outputs_is_refused);
     return UNITY_END();
 }

@@ -141,6 +141,19 @@ static void test_any_odd_increment_is_a_working_stream(void)
     TEST_ASSERT_EQUAL_HEX32(0x7Fu, seen); /* every value drawn */
 }
 
+/* Issue 10 item 10: an output inside the generator is refused (the state
+ * steps before the output is written, which would overwrite it). */
+static void test_an_output_inside_the_generator_is_refused(void)
+{
+    mcs_rng rng, copy;
+    mcs_rng_seed(&rng, 5u, 6u);
+    copy = rng;
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_rng_u32(&rng, (uint32_t *)(void *)&rng.state));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_rng_bounded(&rng, 7u, (uint32_t *)(void *)&rng.inc));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_rng_double(&rng, (double *)(void *)&rng.state));
+    TEST_ASSERT_EQUAL_MEMORY(&copy, &rng, sizeof rng);
+}
+
 static void test_status_strings_name_every_code(void)
 {
     TEST_ASSERT_EQUAL_STRING("MCS_OK", mcs_status_str(MCS_OK));
@@ -164,6 +177,7 @@ int main(void)
     RUN_TEST(test_bad_input_returns_an_error_and_changes_nothing);
     RUN_TEST(test_a_never_seeded_generator_is_refused_by_every_draw_instead_of_hanging);
     RUN_TEST(test_any_odd_increment_is_a_working_stream);
+    RUN_TEST(test_an_output_inside_the_generator_is_refused);
     RUN_TEST(test_status_strings_name_every_code);
     return UNITY_END();
 }

@@ -53,15 +53,16 @@ mcs_status mcs_importance_init(mcs_importance *imp, size_t n, const double *weig
 
 /* Inverse-CDF warp: u in [0,1) lands in the bin b whose interval I_b holds it,
  * and goes to x = (b + (u - cdf[b]) / g_b) / N, with floor(N x) = b exactly.
- * x or bin may be NULL if not wanted. MCS_ERR_NULL (imp), MCS_ERR_UNINIT,
- * MCS_ERR_POINT_RANGE (u outside [0,1) or NaN); outputs untouched on error. */
+ * x or bin may be NULL if not wanted (not one storage for both:
+ * MCS_ERR_ALIAS). MCS_ERR_NULL (imp), MCS_ERR_UNINIT, MCS_ERR_POINT_RANGE
+ * (u outside [0,1) or NaN); outputs untouched on error. */
 mcs_status mcs_importance_warp(const mcs_importance *imp, double u, double *x, size_t *bin);
 
 /* Q_freq = N^{-1/2} sum_n e^{-2 pi i freq n / N} / p_n: the eq. 7 transform of
  * 1/p (eq. 43), which carries every importance-sampled cross spectrum (eq. 43,
  * 49, 52); N^{-1/2} Q_0 = 1/H (eq. 44). O(N) with trig per term.
- * MCS_ERR_NULL, MCS_ERR_UNINIT, MCS_ERR_FREQ_RANGE (freq >= imp->n).
- * Outputs untouched on error. */
+ * MCS_ERR_NULL, MCS_ERR_UNINIT, MCS_ERR_FREQ_RANGE (freq >= imp->n),
+ * MCS_ERR_ALIAS (re and im one double). Outputs untouched on error. */
 mcs_status mcs_importance_q(const mcs_importance *imp, size_t freq, double *re, double *im);
 
 #ifdef __cplusplus
