@@ -45,23 +45,34 @@ endif
 # A library build in directory $(1) with compiler prefix $(2) and flags $(3).
 # Vendored code keeps its own warnings, but an undeclared function is an error
 # there too (with tools/freestanding that is how a stray malloc shows up).
+# Like the host build's flags stamp (Makefile), $(1)/flags.txt changes only
+# when the flags do, and every object depends on it: `make cross
+# FW_DEFS=...` or `CPPFLAGS=-DMCS_MAX_SIDE=...` rebuilds instead of linking
+# objects of two capacities together.
 define MCS_CROSS_LIB
-$(1)/obj/src/vendor/%.o: src/vendor/%.c
+$(1)/flags.txt: MCS_CROSS_FLAGS_TEXT = $(2)gcc | $(2)ar | $$(WARN) | $$(VENDOR_WARN) | $(3) | \
+    $$(MCS_CPPFLAGS) | $$(CPPFLAGS) | $$(KISS_DEFS)
+$(1)/flags.txt: FORCE
+	@mkdir -p $$(@D)
+	@printf '%s\n' '$$(subst ','\'',$$(MCS_CROSS_FLAGS_TEXT))' >$$@.new
+	@if cmp -s $$@.new $$@; then rm -f $$@.new; else mv -f $$@.new $$@; fi
+
+$(1)/obj/src/vendor/%.o: src/vendor/%.c $(1)/flags.txt
 	@mkdir -p $$(@D)
 	@echo "CC $$@"
 	$$(EMB_Q)$(2)gcc $$(VENDOR_WARN) -Werror=implicit-function-declaration $(3) $$(KISS_DEFS) \
 	    -MMD -MP -c $$< -o $$@
 
-$(1)/obj/src/%.o: src/%.c
+$(1)/obj/src/%.o: src/%.c $(1)/flags.txt
 	@mkdir -p $$(@D)
 	@echo "CC $$@"
 	$$(EMB_Q)$(2)gcc $$(WARN) $(3) $$(MCS_CPPFLAGS) $$(CPPFLAGS) -isystem src/vendor/kissfft $$(KISS_DEFS) \
 	    -MMD -MP -c $$< -o $$@
 
-$(1)/libmcspec.a: $$(LIB_SRC:%.c=$(1)/obj/%.o) $$(KISS_SRC:%.c=$(1)/obj/%.o)
+$(1)/libmcspec.a: $$(LIB_SRC:%.c=$(1)/obj/%.o) $$(KISS_SRC:%.c=$(1)/obj/%.o) $(1)/flags.txt
 	@rm -f $$@
 	@echo "AR $$@"
-	$$(EMB_Q)$(2)ar rcs $$@ $$^
+	$$(EMB_Q)$(2)ar rcs $$@ $$(filter %.o,$$^)
 
 -include $$(wildcard $(1)/obj/src/*.d $(1)/obj/src/vendor/kissfft/*.d)
 endef
@@ -71,7 +82,8 @@ define MCS_CORTEX_M
 $(call MCS_CROSS_LIB,build/cross-$(1),$(ARM_PREFIX),$(2) $(CROSS_COMMON) $(CROSS_OPT))
 $(call MCS_CROSS_LIB,build/cross-$(1)/fw,$(ARM_PREFIX),$(2) $(CROSS_COMMON) $(FW_OPT) $(FW_DEFS) -fstack-usage -fcallgraph-info=su)
 
-build/cross-$(1)/fw/obj/examples/firmware/%.o: examples/firmware/%.c
+# The firmware's own objects share the stamp of its library (same flags).
+build/cross-$(1)/fw/obj/examples/firmware/%.o: examples/firmware/%.c build/cross-$(1)/fw/flags.txt
 	@mkdir -p $$(@D)
 	@echo "CC $$@"
 	$$(EMB_Q)$(ARM_PREFIX)gcc $$(WARN) $(2) $(CROSS_COMMON) $(FW_OPT) $(FW_DEFS) -fstack-usage \

@@ -1,8 +1,10 @@
 #!/bin/sh
-# Command-line and output-format checks for the section examples (issue 4).
+# Command-line and output-format checks for the section examples (issue 4)
+# and the renderer example (issue 9), which shares their options and rows.
 #
 # usage: sh test/examples_check.sh [example binary ...]
-#        (default: the binaries in $EXAMPLES, else build/examples/sec*;
+#        (default: the binaries in $EXAMPLES, else build/examples/sec* and
+#        build/examples/renderer_sampler;
 #        TRIALS sets the trial count)
 #
 # For each binary:
@@ -29,7 +31,7 @@ HEADER='section,quantity,equation,pattern,n,k,freq,freq2,closed_form,exact,measu
 
 if [ "$#" -eq 0 ]; then
     # shellcheck disable=SC2086 # a list of paths
-    set -- ${EXAMPLES:-build/examples/sec*}
+    set -- ${EXAMPLES:-build/examples/sec* build/examples/renderer_sampler}
 fi
 
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/examples_check.XXXXXX") || exit 1
