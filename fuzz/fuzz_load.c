@@ -167,10 +167,17 @@ static void check_moment(const uint8_t *data, size_t size, mcs_status peek_st)
             finite_or_die(a, "moment", "second");
         }
     }
-    ok_or_die(mcs_moment_covariance_matrix(&mom, n, mat_re, mat_im), "moment", "covariance");
-    for (size_t j = 0; j < n * n; ++j) {
-        finite_or_die(mat_re[j], "moment", "covariance re");
-        finite_or_die(mat_im[j], "moment", "covariance im");
+    /* A record's sums may be those of no data (their covariance not positive
+     * semi-definite): a variance below 0 beyond rounding is then refused with
+     * MCS_ERR_INVARIANT (moment.h), which load cannot see without an N x N
+     * scratch. Any other outcome must be MCS_OK with finite values. */
+    const mcs_status cov = mcs_moment_covariance_matrix(&mom, n, mat_re, mat_im);
+    if (cov != MCS_ERR_INVARIANT) {
+        ok_or_die(cov, "moment", "covariance");
+        for (size_t j = 0; j < n * n; ++j) {
+            finite_or_die(mat_re[j], "moment", "covariance re");
+            finite_or_die(mat_im[j], "moment", "covariance im");
+        }
     }
     ok_or_die(mcs_moment_cross_matrix(&mom, n, mat_re, mat_im), "moment", "cross");
     for (size_t j = 0; j < n * n; ++j) {

@@ -4,6 +4,12 @@
 #include <math.h>
 #include <string.h>
 
+/* Read-outs refuse a stored value above 2^500 in magnitude, the bound of the
+ * record format too (io.h): trials never get there (the sums stay below
+ * 2^496, see the header's trial limit), and below it every read-out, squares
+ * of transforms of N values included, stays finite on any object. */
+#define LIMIT 3.273390607896142e+150 /* 2^500 */
+
 mcs_status mcs_autocorr_init(mcs_autocorr *acc, size_t n)
 {
     mcs_status st = mcs_check_init_(acc, n, (size_t)MCS_MAX_N);
@@ -16,7 +22,65 @@ mcs_status mcs_autocorr_init(mcs_autocorr *acc, size_t n)
 
 static mcs_status autocorr_check(const mcs_autocorr *acc)
 {
-    return mcs_check_object_(acc, acc != NULL ? acc->n : 0u, (size_t)MCS_MAX_N);
+    mcs_status st = mcs_check_object_(acc, acc != NULL ? acc->n : 0u, (size_t)MCS_MAX_N);
+    return st == MCS_OK && acc->count > (uint64_t)MCS_MAX_COUNT ? MCS_ERR_INVARIANT : st;
+}
+
+/* Folded lag of an ordered pair of bins: e = min(d, N - d), d = c - b mod N. */
+static size_t folded_lag(size_t b, size_t c, size_t n)
+{
+    const size_t d = c >= b ? c - b : c + n - b;
+    return d <= n - d ? d : n - d;
+}
+
+/* K < N: every unordered pair {j, j'} at folded lag e adds w w' to sum_lag[e];
+ * a sample with itself adds w^2 / 2 to sum_lag[0]. Then A(e) = sum_lag[e]
+ * for 0 < e < N/2, and A(0) = 2 sum_lag[0], A(N/2) = 2 sum_lag[N/2]
+ * (read-out), because there both orders of a pair land on the same lag. */
+static void add_pairs(mcs_autocorr *acc, size_t k, const size_t *bins, const double *weights)
+{
+    const size_t n = acc->n;
+    double *a = acc->sum_lag, *lo = acc->lo_lag;
+    for (size_t j = 0; j < k; ++j) {
+        const size_t b = bins[j];
+        const double w = weights[j];
+        mcs_kahan_add_(&acc->sum_s[b], &acc->lo_s[b], w);
+        mcs_kahan_add_(&a[0], &lo[0], 0.5 * w * w);
+        for (size_t jj = j + 1u; jj < k; ++jj) {
+            const size_t e = folded_lag(b, bins[jj], n);
+            mcs_kahan_add_(&a[e], &lo[e], w * weights[jj]);
+        }
+    }
+}
+
+/* K >= N: the trial's s, centred on its mean c = S/N, gives A_c(e) =
+ * sum_n y_n y_{n+e}, y = s - c, folded as add_pairs folds A (halved at e = 0
+ * and e = N/2, where d and N - d are one lag); S^2/N goes to sum_dc. */
+static void add_dense(mcs_autocorr *acc, size_t k, const size_t *bins, const double *weights)
+{
+    const size_t n = acc->n, h = n / 2u;
+    double *y = acc->work;
+    memset(y, 0, n * sizeof y[0]);
+    for (size_t j = 0; j < k; ++j)
+        y[bins[j]] += weights[j];
+    double total = 0.0, tlo = 0.0;
+    for (size_t b = 0; b < n; ++b) {
+        mcs_kahan_add_(&acc->sum_s[b], &acc->lo_s[b], y[b]);
+        mcs_kahan_add_(&total, &tlo, y[b]);
+    }
+    const double c = total / (double)n;
+    for (size_t b = 0; b < n; ++b)
+        y[b] -= c;
+    for (size_t e = 0; e <= h; ++e) {
+        double lag = 0.0;
+        for (size_t b = 0; b + e < n; ++b)
+            lag += y[b] * y[b + e];
+        for (size_t b = n - e; b < n; ++b)
+            lag += y[b] * y[b + e - n];
+        const double half = (e == 0u || 2u * e == n) ? 0.5 : 1.0;
+        mcs_kahan_add_(&acc->sum_lag[e], &acc->lo_lag[e], half * lag);
+    }
+    mcs_kahan_add_(&acc->sum_dc, &acc->lo_dc, total * c);
 }
 
 mcs_status mcs_autocorr_add_bins(mcs_autocorr *acc, size_t k, const size_t *bins,
@@ -27,27 +91,35 @@ mcs_status mcs_autocorr_add_bins(mcs_autocorr *acc, size_t k, const size_t *bins
         st = mcs_check_sparse_(acc->n, k, bins, weights);
     if (st != MCS_OK)
         return st;
-    /* Folded storage: an unordered pair {j, j'} at circular distance
-     * e = min(d, N - d) adds w w' to sum_a[e]; a sample with itself adds
-     * w^2 / 2 to sum_a[0]. Then A(e) = sum_a[e] for 0 < e < N/2, and
-     * A(0) = 2 sum_a[0], A(N/2) = 2 sum_a[N/2] (read-out), because there both
-     * orders of a pair land on the same lag. */
-    const size_t n = acc->n;
-    double *a = acc->sum_a;
-    for (size_t j = 0; j < k; ++j) {
-        const size_t b = bins[j];
-        const double w = weights[j];
-        acc->sum_s[b] += w;
-        a[0] += 0.5 * w * w;
-        for (size_t jj = j + 1u; jj < k; ++jj) {
-            const size_t c = bins[jj];
-            const size_t d = c >= b ? c - b : c + n - b;
-            const size_t e = d <= n - d ? d : n - d;
-            a[e] += w * weights[jj];
-        }
-    }
+    double total = 0.0;
+    for (size_t j = 0; j < k; ++j)
+        total += weights[j];
+    if (!(total <= MCS_AUTOCORR_MAX_TRIAL))
+        return MCS_ERR_MAGNITUDE;
+    st = mcs_check_count_(acc->count, 1u);
+    if (st != MCS_OK)
+        return st;
+    if (mcs_overlap_(bins, mcs_bytes_(k, sizeof *bins), acc, sizeof *acc) ||
+        mcs_overlap_(weights, mcs_bytes_(k, sizeof *weights), acc, sizeof *acc))
+        return MCS_ERR_ALIAS;
+    if (k >= acc->n)
+        add_dense(acc, k, bins, weights);
+    else
+        add_pairs(acc, k, bins, weights);
     acc->count += 1u;
     return MCS_OK;
+}
+
+/* dst's (sum, lo) pairs += src's; each src value read before dst's is
+ * written, so dst == src doubles them. */
+static void merge_kahan(size_t len, double *sum, double *lo, const double *src_sum,
+                        const double *src_lo)
+{
+    for (size_t j = 0; j < len; ++j) {
+        const double hi = src_sum[j], l = src_lo[j];
+        mcs_kahan_add_(&sum[j], &lo[j], hi);
+        mcs_kahan_add_(&sum[j], &lo[j], -l);
+    }
 }
 
 mcs_status mcs_autocorr_merge(mcs_autocorr *dst, const mcs_autocorr *src)
@@ -57,13 +129,16 @@ mcs_status mcs_autocorr_merge(mcs_autocorr *dst, const mcs_autocorr *src)
         st = autocorr_check(src);
     if (st == MCS_OK && dst->n != src->n)
         st = MCS_ERR_MISMATCH;
+    if (st == MCS_OK)
+        st = mcs_check_count_(dst->count, src->count);
+    if (st == MCS_OK && dst != src && mcs_overlap_(dst, sizeof *dst, src, sizeof *src))
+        st = MCS_ERR_ALIAS;
     if (st != MCS_OK)
         return st;
-    const size_t n = dst->n, h = n / 2u;
-    for (size_t j = 0; j < n; ++j)
-        dst->sum_s[j] += src->sum_s[j];
-    for (size_t j = 0; j <= h; ++j)
-        dst->sum_a[j] += src->sum_a[j];
+    const size_t n = dst->n;
+    merge_kahan(n, dst->sum_s, dst->lo_s, src->sum_s, src->lo_s);
+    merge_kahan(n / 2u + 1u, dst->sum_lag, dst->lo_lag, src->sum_lag, src->lo_lag);
+    merge_kahan(1u, &dst->sum_dc, &dst->lo_dc, &src->sum_dc, &src->lo_dc);
     dst->count += src->count;
     return MCS_OK;
 }
@@ -76,8 +151,23 @@ mcs_status mcs_autocorr_count(const mcs_autocorr *acc, uint64_t *count)
     return st;
 }
 
+/* Every x[len] finite and at most lim in magnitude (NaN fails the compare). */
+static int all_within(size_t len, const double *x, double lim)
+{
+    int ok = 1;
+    for (size_t j = 0; j < len; ++j)
+        ok &= fabs(x[j]) <= lim;
+    return ok;
+}
+
+/* The checks of a read-out writing the n-entry arrays out and out2 (out2
+ * NULL for one array), in this order: NULL, UNINIT (acc), INVARIANT (a
+ * stored value beyond anything trials produce), MISMATCH, the plan (UNINIT
+ * or MISMATCH),
+ * EMPTY, ALIAS (outputs overlapping each other, the accumulator or the plan:
+ * the plan's scratch holds the data mid-transform). */
 static mcs_status autocorr_readout(const mcs_autocorr *acc, const mcs_dft *plan, size_t n,
-                                   const double *out)
+                                   const double *out, const double *out2)
 {
     mcs_status st = plan == NULL || out == NULL ? MCS_ERR_NULL : autocorr_check(acc);
     if (st == MCS_OK && n != acc->n)
@@ -86,7 +176,31 @@ static mcs_status autocorr_readout(const mcs_autocorr *acc, const mcs_dft *plan,
         st = mcs_dft_check(plan, n); /* UNINIT or MISMATCH */
     if (st == MCS_OK && acc->count == 0u)
         st = MCS_ERR_EMPTY;
+    if (st == MCS_OK &&
+        (!all_within(n, acc->sum_s, LIMIT) ||
+         !all_within(n / 2u + 1u, acc->sum_lag, LIMIT) || !(acc->sum_dc >= 0.0) ||
+         !(acc->sum_dc <= LIMIT)))
+        st = MCS_ERR_INVARIANT;
+    const size_t bytes = n * sizeof(double);
+    const size_t out2_bytes = out2 != NULL ? bytes : 0u;
+    if (st == MCS_OK &&
+        (mcs_overlap_(out, bytes, out2, out2_bytes) ||
+         mcs_overlap_(out, bytes, acc, sizeof *acc) || mcs_overlap_(out, bytes, plan, sizeof *plan) ||
+         mcs_overlap_(out2, out2_bytes, acc, sizeof *acc) ||
+         mcs_overlap_(out2, out2_bytes, plan, sizeof *plan)))
+        st = MCS_ERR_ALIAS;
     return st;
+}
+
+/* The transform's status, then every output finite: a read-out never returns
+ * MCS_OK with an untransformed or non-finite result. With the stored values
+ * bounded (autocorr_readout) neither can fail; the checks stay as the rule. */
+static mcs_status transformed(mcs_status dft_status, size_t n, const double *a, const double *b)
+{
+    if (dft_status != MCS_OK)
+        return dft_status;
+    return mcs_all_finite_(n, a) && (b == NULL || mcs_all_finite_(n, b)) ? MCS_OK
+                                                                         : MCS_ERR_NOT_FINITE;
 }
 
 mcs_status mcs_autocorr_mean(const mcs_autocorr *acc, mcs_dft *plan, size_t n, double *re,
@@ -94,37 +208,39 @@ mcs_status mcs_autocorr_mean(const mcs_autocorr *acc, mcs_dft *plan, size_t n, d
 {
     if (im == NULL)
         return MCS_ERR_NULL;
-    mcs_status st = autocorr_readout(acc, plan, n, re);
+    mcs_status st = autocorr_readout(acc, plan, n, re, im);
     if (st != MCS_OK)
         return st;
-    if (!mcs_all_finite_(n, acc->sum_s)) /* an overflowed sum: refuse before writing */
-        return MCS_ERR_NOT_FINITE;
     const double inv = 1.0 / (double)acc->count;
     for (size_t j = 0; j < n; ++j)
         re[j] = acc->sum_s[j] * inv;
-    return mcs_dft_real(plan, n, re, re, im); /* eq. 15 */
+    return transformed(mcs_dft_real(plan, n, re, re, im), n, re, im); /* eq. 15 */
 }
 
 mcs_status mcs_autocorr_power(const mcs_autocorr *acc, mcs_dft *plan, size_t n, double *power)
 {
-    mcs_status st = autocorr_readout(acc, plan, n, power);
+    mcs_status st = autocorr_readout(acc, plan, n, power, NULL);
     if (st != MCS_OK)
         return st;
-    if (!mcs_all_finite_(n / 2u + 1u, acc->sum_a))
-        return MCS_ERR_NOT_FINITE;
-    /* <A(d)> for every lag, unfolded (see mcs_autocorr_add_bins), then
-     * Wiener-Khinchin: <|S_k|^2> = (1/N) sum_d e^{-2 pi i k d/N} <A(d)>, i.e.
-     * N^{-1/2} times eq. 7 applied to <A>. A is even, so the result is real. */
+    /* <A(d)> for every lag, unfolded (see mcs_autocorr_add_bins), less the
+     * constant S^2/N of the centred trials; then Wiener-Khinchin:
+     * <|S_k|^2> = (1/N) sum_d e^{-2 pi i k d/N} <A(d)>, i.e. N^{-1/2} times
+     * eq. 7 applied to <A>. A is even, so the result is real. The constant
+     * <S^2/N> on every lag gives exactly itself at k = 0 and 0 elsewhere, so
+     * it is added there after the transform instead of cancelling in it. */
     const double inv = 1.0 / (double)acc->count;
-    power[0] = 2.0 * acc->sum_a[0] * inv;
+    power[0] = 2.0 * acc->sum_lag[0] * inv;
     for (size_t d = 1; d < n; ++d) {
         const size_t e = d <= n - d ? d : n - d;
         const double twice = (2u * e == n) ? 2.0 : 1.0;
-        power[d] = twice * acc->sum_a[e] * inv;
+        power[d] = twice * acc->sum_lag[e] * inv;
     }
-    (void)mcs_dft_real(plan, n, power, power, NULL);
+    st = transformed(mcs_dft_real(plan, n, power, power, NULL), n, power, NULL);
+    if (st != MCS_OK)
+        return st;
     const double scale = 1.0 / sqrt((double)n);
     for (size_t k = 0; k < n; ++k)
         power[k] *= scale;
+    power[0] += acc->sum_dc * inv;
     return MCS_OK;
 }

@@ -3,6 +3,20 @@
 
 #include <math.h>
 
+/* One sample's term f w of eq. 8, f finite: MCS_ERR_NOT_FINITE for a
+ * non-finite f, MCS_ERR_MAGNITUDE above MCS_ESTIMATE_MAX_ABS (an overflowed
+ * product included, whose magnitude is infinite). */
+static mcs_status add_term(double fv, double w, double *sum)
+{
+    if (!isfinite(fv))
+        return MCS_ERR_NOT_FINITE;
+    const double t = fv * w;
+    if (!(fabs(t) <= MCS_ESTIMATE_MAX_ABS))
+        return MCS_ERR_MAGNITUDE;
+    *sum += t; /* at most K 2^110: no overflow */
+    return MCS_OK;
+}
+
 mcs_status mcs_estimate_bins(size_t n, size_t k, const double *f, const size_t *bins,
                              const double *weights, double *out)
 {
@@ -14,12 +28,10 @@ mcs_status mcs_estimate_bins(size_t n, size_t k, const double *f, const size_t *
     if (st != MCS_OK)
         return st;
     double sum = 0.0;
-    for (size_t j = 0; j < k; ++j) {
-        double fv = f[bins[j]];
-        if (!isfinite(fv))
-            return MCS_ERR_NOT_FINITE;
-        sum += fv * weights[j];
-    }
+    for (size_t j = 0; j < k && st == MCS_OK; ++j)
+        st = add_term(f[bins[j]], weights[j], &sum);
+    if (st != MCS_OK)
+        return st;
     *out = sum / (double)k; /* eq. 8: I = (1/K) sum_n f_n s_n */
     return MCS_OK;
 }
@@ -35,12 +47,10 @@ mcs_status mcs_estimate_points(size_t k, mcs_estimate_integrand f, void *ctx,
     if (st != MCS_OK)
         return st;
     double sum = 0.0;
-    for (size_t j = 0; j < k; ++j) {
-        double fv = f(points[j], ctx);
-        if (!isfinite(fv))
-            return MCS_ERR_NOT_FINITE;
-        sum += weights != NULL ? fv * weights[j] : fv;
-    }
+    for (size_t j = 0; j < k && st == MCS_OK; ++j)
+        st = add_term(f(points[j], ctx), weights != NULL ? weights[j] : 1.0, &sum);
+    if (st != MCS_OK)
+        return st;
     *out = sum / (double)k;
     return MCS_OK;
 }

@@ -4,52 +4,107 @@
 
 #include <math.h>
 
-mcs_status mcs_importance_init(mcs_importance *imp, size_t n, const double *weights)
-{
-    if (imp == NULL || weights == NULL)
-        return MCS_ERR_NULL;
-    if (n == 0u || n > (size_t)MCS_MAX_N)
-        return MCS_ERR_N_RANGE;
+/* The grid of the generator's u (mcs_rng_double: k / 2^53). */
+#define GRID 9007199254740992.0 /* 2^53 */
 
-    /* Validate everything before writing, so a failed call changes nothing.
-     * Kahan summation: the normalisation should not depend on bin order. */
-    double sum = 0.0, comp = 0.0;
+/* Neumaier's compensated sum: *sum + *lo is the total to about an ulp for
+ * any order and sign of the terms (N up to MCS_MAX_N), so the normalisation
+ * and the CDF do not depend on how many bins came before. */
+static void neumaier_add(double *sum, double *lo, double x)
+{
+    const double t = *sum + x;
+    *lo += fabs(*sum) >= fabs(x) ? (*sum - t) + x : (x - t) + *sum;
+    *sum = t;
+}
+
+/* Checks the weights and finds the power of two that scales the largest into
+ * [0.5, 1): every weight is then summed without overflow whatever its scale
+ * (all equal at DBL_MAX, or at 5e-324). *flat: all weights equal. */
+static mcs_status check_weights(size_t n, const double *weights, int *scale_exp, int *flat)
+{
+    double max = 0.0;
+    *flat = 1;
     for (size_t b = 0; b < n; ++b) {
-        double w = weights[b];
+        const double w = weights[b];
         if (!isfinite(w))
             return MCS_ERR_NOT_FINITE;
         if (w < 0.0)
             return MCS_ERR_NEGATIVE;
         if (w == 0.0)
             return MCS_ERR_ZERO_WEIGHT;
-        double y = w - comp;
-        double t = sum + y;
-        comp = (t - sum) - y;
-        sum = t;
+        max = w > max ? w : max;
+        *flat &= w == weights[0];
     }
-    if (!isfinite(sum))
-        return MCS_ERR_NOT_FINITE;
-    /* A weight so small next to the sum that g_n underflows would make 1/p_n infinite. */
-    for (size_t b = 0; b < n; ++b)
-        if (!(weights[b] / sum > 0.0) || !isfinite(sum / (weights[b] * (double)n)))
-            return MCS_ERR_ZERO_WEIGHT;
-
-    double inv_sum_p = 0.0;
-    imp->n = n;
-    imp->cdf[0] = 0.0;
-    for (size_t b = 0; b < n; ++b) {
-        double g = weights[b] / sum;
-        imp->g[b] = g;
-        imp->p[b] = (double)n * g;
-        inv_sum_p += 1.0 / imp->p[b];
-        double c = imp->cdf[b] + g;
-        imp->cdf[b + 1] = c < 1.0 ? c : 1.0; /* keep monotone under rounding */
-    }
-    imp->cdf[n] = 1.0; /* exact, so every u in [0,1) has a bin */
-    imp->harmonic_mean = (double)n / inv_sum_p;
+    (void)frexp(max, scale_exp);
     return MCS_OK;
 }
 
+/* The scaled total, then every weight at least MCS_IMPORTANCE_MIN_G of it
+ * (a weight scaled below the smallest normal is far below that). */
+static mcs_status scaled_total(size_t n, const double *weights, int scale_exp, double *total)
+{
+    double sum = 0.0, lo = 0.0;
+    for (size_t b = 0; b < n; ++b)
+        neumaier_add(&sum, &lo, ldexp(weights[b], -scale_exp));
+    *total = sum + lo;
+    for (size_t b = 0; b < n; ++b)
+        if (!(ldexp(weights[b], -scale_exp) >= (double)MCS_IMPORTANCE_MIN_G * *total))
+            return MCS_ERR_ZERO_WEIGHT;
+    return MCS_OK;
+}
+
+/* cdf[b] for b = 1 .. n-1: the running total over the scaled total, rounded
+ * to the 2^-53 grid; cdf[0] = 0 and cdf[n] = 1 exactly. Each g_b is at least
+ * 2^-32 - 2^-52, so the rounded entries stay strictly increasing. */
+static void fill_cdf(mcs_importance *imp, size_t n, const double *weights, int scale_exp,
+                     double total, int flat)
+{
+    double sum = 0.0, lo = 0.0;
+    imp->cdf[0] = 0.0;
+    for (size_t b = 1; b < n; ++b) {
+        double c;
+        if (flat) {
+            c = (double)b / (double)n; /* the exact b/N, one rounding */
+        } else {
+            neumaier_add(&sum, &lo, ldexp(weights[b - 1u], -scale_exp));
+            c = (sum + lo) / total;
+        }
+        imp->cdf[b] = nearbyint(c * GRID) / GRID;
+    }
+    imp->cdf[n] = 1.0;
+}
+
+mcs_status mcs_importance_init(mcs_importance *imp, size_t n, const double *weights)
+{
+    if (imp == NULL || weights == NULL)
+        return MCS_ERR_NULL;
+    if (n == 0u || n > (size_t)MCS_MAX_N)
+        return MCS_ERR_N_RANGE;
+    /* Validate everything before writing, so a failed call changes nothing. */
+    int scale_exp = 0, flat = 0;
+    double total = 0.0;
+    mcs_status st = check_weights(n, weights, &scale_exp, &flat);
+    if (st == MCS_OK)
+        st = scaled_total(n, weights, scale_exp, &total);
+    if (st != MCS_OK)
+        return st;
+
+    imp->n = n;
+    fill_cdf(imp, n, weights, scale_exp, total, flat);
+    /* g_b is the exact length of I_b (two multiples of 2^-53 in [0, 1]), the
+     * probability the generator's u lands there; p_b = N g_b weighs it. */
+    double inv_sum = 0.0, inv_lo = 0.0;
+    for (size_t b = 0; b < n; ++b) {
+        imp->g[b] = imp->cdf[b + 1u] - imp->cdf[b];
+        imp->p[b] = flat ? 1.0 : (double)n * imp->g[b];
+        neumaier_add(&inv_sum, &inv_lo, 1.0 / imp->p[b]);
+    }
+    /* H <= 1 exactly (the p_b average to 1: the g_b telescope to 1); keep
+     * rounding from putting a nearly flat function a hair above it. */
+    const double h = (double)n / (inv_sum + inv_lo);
+    imp->harmonic_mean = flat || h > 1.0 ? 1.0 : h;
+    return MCS_OK;
+}
 double mcs_importance_point_in_bin(size_t n, size_t b, double t)
 {
     double nd = (double)n;
@@ -91,6 +146,8 @@ mcs_status mcs_importance_warp(const mcs_importance *imp, double u, double *x, s
         return MCS_ERR_UNINIT;
     if (!(u >= 0.0 && u < 1.0))
         return MCS_ERR_POINT_RANGE;
+    if (x != NULL && bin != NULL && mcs_overlap_(x, sizeof *x, bin, sizeof *bin))
+        return MCS_ERR_ALIAS;
     double xx;
     size_t bb;
     mcs_importance_warp_unchecked(imp, u, &xx, &bb);
@@ -126,6 +183,8 @@ mcs_status mcs_importance_q(const mcs_importance *imp, size_t freq, double *re, 
         return MCS_ERR_UNINIT;
     if (freq >= imp->n)
         return MCS_ERR_FREQ_RANGE;
+    if (mcs_overlap_(re, sizeof *re, im, sizeof *im))
+        return MCS_ERR_ALIAS;
     mcs_importance_q_unchecked(imp, freq, re, im);
     return MCS_OK;
 }

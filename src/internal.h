@@ -6,6 +6,7 @@
 
 #include <math.h>
 #include <stddef.h>
+#include <stdint.h>
 
 #include "mcspec/pattern.h"
 #include "mcspec/status.h"
@@ -148,6 +149,45 @@ static inline mcs_status mcs_set_(double *out, double value)
 {
     *out = value;
     return MCS_OK;
+}
+
+/* Bytes of count elements of elem bytes each, saturating at SIZE_MAX (an array
+ * that large cannot exist, so an overlap test with it stays conservative). */
+static inline size_t mcs_bytes_(size_t count, size_t elem)
+{
+    return count > SIZE_MAX / elem ? SIZE_MAX : count * elem;
+}
+
+/* Whether the byte ranges [a, a + a_bytes) and [b, b + b_bytes) share a byte.
+ * The addresses are compared as integers: relational operators on pointers
+ * into different objects are undefined in C. */
+static inline int mcs_overlap_(const void *a, size_t a_bytes, const void *b, size_t b_bytes)
+{
+    const uintptr_t pa = (uintptr_t)a, pb = (uintptr_t)b;
+    if (a_bytes == 0u || b_bytes == 0u)
+        return 0;
+    return pa >= pb ? pa - pb < b_bytes : pb - pa < a_bytes;
+}
+
+/* Kahan's compensated sum: *sum stays within a few ulp of the exact total of
+ * every x added, however many (its error is 2u sum |x| to first order, with no
+ * factor of the number of terms), because *lo carries each rounding error into
+ * the next add. The sources refuse -ffast-math, which would fold it away. */
+static inline void mcs_kahan_add_(double *sum, double *lo, double x)
+{
+    const double y = x - *lo;
+    const double t = *sum + y;
+    *lo = (t - *sum) - y;
+    *sum = t;
+}
+
+/* The count after adding `more` to `count`: MCS_ERR_COUNT if it would pass
+ * MCS_MAX_COUNT (config.h), so no counter wraps and every count is exact in a
+ * double. */
+static inline mcs_status mcs_check_count_(uint64_t count, uint64_t more)
+{
+    const uint64_t cap = (uint64_t)MCS_MAX_COUNT;
+    return count <= cap && more <= cap - count ? MCS_OK : MCS_ERR_COUNT;
 }
 
 /* floor(N x) for x in [0,1), kept below N where x N rounds up to N. */

@@ -85,7 +85,10 @@ mcs_status mcs_io_load_spectrum(mcs_spectrum *acc, size_t len, const void *buf)
     return MCS_OK;
 }
 
-/* ---- moment: sum_s[N], then the upper triangle of sum_ss row by row ---- */
+/* ---- moment: shift[N], then sum_d[N], lo_d[N] and the upper triangles of
+ * sum_dd and lo_dd row by row (moment.h: sums of d = s - c, c the first
+ * trial, with their Kahan compensations, so a loaded object is the saved one
+ * and merges bit for bit like it) ---- */
 
 static mcs_status layout_moment(const uint64_t *shape, io_layout *lay)
 {
@@ -93,18 +96,41 @@ static mcs_status layout_moment(const uint64_t *shape, io_layout *lay)
     if (st != MCS_OK)
         return st;
     const size_t n = (size_t)shape[0];
-    /* Weights are >= 0, so every sum of weights or of their products is too. */
-    mcs_io_add_range(lay, n + n * (n + 1u) / 2u, IO_RULE_NONNEG);
+    /* c is a trial's s (weights >= 0); the sums of d are 0 before 2 trials. */
+    mcs_io_add_range(lay, n, IO_RULE_NONNEG);
+    mcs_io_add_range(lay, 2u * n + n * (n + 1u), IO_RULE_SPREAD);
     return MCS_OK;
+}
+
+/* The upper triangle of an N x N array, row by row. */
+static void put_upper(io_sink *sink, const double *a, size_t n)
+{
+    for (size_t m = 0; m < n; ++m)
+        mcs_io_put_array(sink, a + m * n + m, n - m);
+}
+
+/* Back from payload[at ..), mirrored into the lower triangle (both are
+ * stored, exactly symmetric); returns the index after it. */
+static size_t get_upper(double *a, const uint8_t *pl, size_t at, size_t n)
+{
+    for (size_t m = 0; m < n; ++m) {
+        mcs_io_get_array(a + m * n + m, pl, at, n - m);
+        for (size_t c = m + 1u; c < n; ++c)
+            a[c * n + m] = a[m * n + c];
+        at += n - m;
+    }
+    return at;
 }
 
 static void emit_moment(const void *obj, io_sink *sink)
 {
     const mcs_moment *acc = (const mcs_moment *)obj;
     const size_t n = acc->n;
-    mcs_io_put_array(sink, acc->sum_s, n);
-    for (size_t m = 0; m < n; ++m)
-        mcs_io_put_array(sink, acc->sum_ss + m * n + m, n - m);
+    mcs_io_put_array(sink, acc->shift, n);
+    mcs_io_put_array(sink, acc->sum_d, n);
+    mcs_io_put_array(sink, acc->lo_d, n);
+    put_upper(sink, acc->sum_dd, n);
+    put_upper(sink, acc->lo_dd, n);
 }
 
 mcs_status mcs_io_save_moment(const mcs_moment *acc, size_t cap, void *buf, size_t *len)
@@ -137,33 +163,40 @@ mcs_status mcs_io_load_moment(mcs_moment *acc, size_t len, const void *buf)
     st = mcs_moment_init(acc, n);
     if (st != MCS_OK)
         return st;
-    mcs_io_get_array(acc->sum_s, pl, 0u, n);
-    size_t at = n;
-    for (size_t m = 0; m < n; ++m) {
-        mcs_io_get_array(acc->sum_ss + m * n + m, pl, at, n - m);
-        at += n - m;
-    }
+    mcs_io_get_array(acc->shift, pl, 0u, n);
+    mcs_io_get_array(acc->sum_d, pl, n, n);
+    mcs_io_get_array(acc->lo_d, pl, 2u * n, n);
+    (void)get_upper(acc->lo_dd, pl, get_upper(acc->sum_dd, pl, 3u * n, n), n);
     acc->count = rec.count;
     return MCS_OK;
 }
 
-/* ---- autocorr: sum_s[N], then sum_a for lags 0..N/2 ---- */
+/* ---- autocorr: sum_s[N] and sum_dc, then lo_s[N], sum_lag and lo_lag for
+ * the lags 0..N/2, and lo_dc (autocorr.h: sum_lag holds centred lag sums
+ * for trials of K >= N, which may be negative; the lo_ are the Kahan
+ * compensations, so a loaded object is the saved one) ---- */
 
 static mcs_status layout_autocorr(const uint64_t *shape, io_layout *lay)
 {
     mcs_status st = layout_n(MCS_IO_KIND_AUTOCORR, shape[0], MCS_MAX_N, lay);
     if (st != MCS_OK)
         return st;
-    const size_t n = (size_t)shape[0];
-    mcs_io_add_range(lay, n + n / 2u + 1u, IO_RULE_NONNEG);
+    const size_t n = (size_t)shape[0], h1 = n / 2u + 1u;
+    mcs_io_add_range(lay, n + 1u, IO_RULE_NONNEG);
+    mcs_io_add_range(lay, n + 2u * h1 + 1u, 0u);
     return MCS_OK;
 }
 
 static void emit_autocorr(const void *obj, io_sink *sink)
 {
     const mcs_autocorr *acc = (const mcs_autocorr *)obj;
-    mcs_io_put_array(sink, acc->sum_s, acc->n);
-    mcs_io_put_array(sink, acc->sum_a, acc->n / 2u + 1u);
+    const size_t n = acc->n, h1 = n / 2u + 1u;
+    mcs_io_put_array(sink, acc->sum_s, n);
+    mcs_io_sink_put(sink, acc->sum_dc);
+    mcs_io_put_array(sink, acc->lo_s, n);
+    mcs_io_put_array(sink, acc->sum_lag, h1);
+    mcs_io_put_array(sink, acc->lo_lag, h1);
+    mcs_io_sink_put(sink, acc->lo_dc);
 }
 
 mcs_status mcs_io_save_autocorr(const mcs_autocorr *acc, size_t cap, void *buf, size_t *len)
@@ -196,8 +229,13 @@ mcs_status mcs_io_load_autocorr(mcs_autocorr *acc, size_t len, const void *buf)
     st = mcs_autocorr_init(acc, n);
     if (st != MCS_OK)
         return st;
+    const size_t h1 = n / 2u + 1u;
     mcs_io_get_array(acc->sum_s, pl, 0u, n);
-    mcs_io_get_array(acc->sum_a, pl, n, n / 2u + 1u);
+    acc->sum_dc = mcs_io_get_f64(pl, n);
+    mcs_io_get_array(acc->lo_s, pl, n + 1u, n);
+    mcs_io_get_array(acc->sum_lag, pl, 2u * n + 1u, h1);
+    mcs_io_get_array(acc->lo_lag, pl, 2u * n + 1u + h1, h1);
+    acc->lo_dc = mcs_io_get_f64(pl, 2u * n + 1u + 2u * h1);
     acc->count = rec.count;
     return MCS_OK;
 }

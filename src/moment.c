@@ -4,6 +4,12 @@
 
 #include <string.h>
 
+/* Read-outs refuse a stored value above 2^500 in magnitude, the bound of the
+ * record format too (io.h): trials never get there (the sums stay below
+ * 2^496, see the header's trial limit), and below it every read-out, squares
+ * of transforms of N values included, stays finite on any object. */
+#define LIMIT 3.273390607896142e+150 /* 2^500 */
+
 mcs_status mcs_moment_init(mcs_moment *acc, size_t n)
 {
     mcs_status st = mcs_check_init_(acc, n, (size_t)MCS_MAX_COV_N);
@@ -17,32 +23,55 @@ mcs_status mcs_moment_init(mcs_moment *acc, size_t n)
 
 static mcs_status moment_check(const mcs_moment *acc)
 {
-    return mcs_check_object_(acc, acc != NULL ? acc->n : 0u, (size_t)MCS_MAX_COV_N);
+    mcs_status st = mcs_check_object_(acc, acc != NULL ? acc->n : 0u, (size_t)MCS_MAX_COV_N);
+    return st == MCS_OK && acc->count > (uint64_t)MCS_MAX_COUNT ? MCS_ERR_INVARIANT : st;
 }
 
-/* Adds sample pair contributions. s_m s_n = sum over ordered pairs (j, j')
- * with n_j = m, n_j' = n of w_j w_j': a pair in two bins adds w w' to both
- * mirrored entries (so the matrix stays exactly symmetric), a pair in one
- * bin 2 w w' to its diagonal entry. */
-static void add_sample_pairs(mcs_moment *acc, size_t k, const size_t *bins,
-                             const double *weights)
+/* The checks every add shares once the trial itself is valid: its total
+ * weight (MAGNITUDE), the count (COUNT), and its arrays outside the object. */
+static mcs_status check_add(const mcs_moment *acc, double total, const void *a, size_t a_bytes,
+                            const void *b, size_t b_bytes)
+{
+    if (!(total <= MCS_MOMENT_MAX_TRIAL))
+        return MCS_ERR_MAGNITUDE;
+    mcs_status st = mcs_check_count_(acc->count, 1u);
+    if (st == MCS_OK && (mcs_overlap_(a, a_bytes, acc, sizeof *acc) ||
+                         mcs_overlap_(b, b_bytes, acc, sizeof *acc)))
+        st = MCS_ERR_ALIAS;
+    return st;
+}
+
+/* work holds the trial's s. The first trial becomes the shift c (its d is 0,
+ * so the sums stay 0); later ones add d = s - c over the bins where it is not
+ * 0: d_m into sum_d, d_m d_n into both mirrored sum_dd entries (the same
+ * product, so the matrix stays exactly symmetric), all with Kahan's
+ * compensation so the error does not grow with the number of trials. */
+static void add_work(mcs_moment *acc)
 {
     const size_t n = acc->n;
-    double *ss = acc->sum_ss;
-    for (size_t j = 0; j < k; ++j) {
-        const size_t b = bins[j];
-        const double w = weights[j];
-        acc->sum_s[b] += w;
-        ss[b * n + b] += w * w;
-        for (size_t jj = j + 1u; jj < k; ++jj) {
-            const size_t c = bins[jj];
-            const double ww = w * weights[jj];
-            if (b == c) {
-                ss[b * n + b] += 2.0 * ww;
-            } else {
-                ss[b * n + c] += ww;
-                ss[c * n + b] += ww;
-            }
+    if (acc->count == 0u) {
+        memcpy(acc->shift, acc->work, n * sizeof acc->work[0]);
+        acc->count = 1u;
+        return;
+    }
+    size_t len = 0u;
+    for (size_t m = 0; m < n; ++m) { /* compacts d != 0 without a branch (len <= m) */
+        const double d = acc->work[m] - acc->shift[m];
+        acc->work[len] = d;
+        acc->work_bins[len] = m;
+        len += d != 0.0;
+    }
+    for (size_t a = 0; a < len; ++a) {
+        const size_t m = acc->work_bins[a];
+        const double dm = acc->work[a];
+        mcs_kahan_add_(&acc->sum_d[m], &acc->lo_d[m], dm);
+        for (size_t b = a; b < len; ++b) {
+            /* one Kahan step for the pair, copied to the mirror entry, which
+             * has seen the same sequence of terms (so it holds the same) */
+            const size_t c = acc->work_bins[b], i = m * n + c, mirror = c * n + m;
+            mcs_kahan_add_(&acc->sum_dd[i], &acc->lo_dd[i], dm * acc->work[b]);
+            acc->sum_dd[mirror] = acc->sum_dd[i];
+            acc->lo_dd[mirror] = acc->lo_dd[i];
         }
     }
     acc->count += 1u;
@@ -54,9 +83,21 @@ mcs_status mcs_moment_add_bins(mcs_moment *acc, size_t k, const size_t *bins,
     mcs_status st = bins == NULL || weights == NULL ? MCS_ERR_NULL : moment_check(acc);
     if (st == MCS_OK)
         st = mcs_check_sparse_(acc->n, k, bins, weights);
-    if (st == MCS_OK)
-        add_sample_pairs(acc, k, bins, weights);
-    return st;
+    if (st != MCS_OK)
+        return st;
+    double total = 0.0;
+    for (size_t j = 0; j < k; ++j)
+        total += weights[j];
+    st = check_add(acc, total, bins, mcs_bytes_(k, sizeof *bins), weights,
+                   mcs_bytes_(k, sizeof *weights));
+    if (st != MCS_OK)
+        return st;
+    /* s of the trial: per-bin sums of its weights (eq. 38) */
+    memset(acc->work, 0, acc->n * sizeof acc->work[0]);
+    for (size_t j = 0; j < k; ++j)
+        acc->work[bins[j]] += weights[j];
+    add_work(acc);
+    return MCS_OK;
 }
 
 mcs_status mcs_moment_add_dense(mcs_moment *acc, size_t n, const double *s)
@@ -64,23 +105,45 @@ mcs_status mcs_moment_add_dense(mcs_moment *acc, size_t n, const double *s)
     mcs_status st = mcs_check_dense_(moment_check(acc), acc != NULL ? acc->n : 0u, n, s);
     if (st != MCS_OK)
         return st;
-    /* Each non-zero bin as one sample of weight s_m: the diagonal gets s_m^2
-     * and each pair of distinct bins s_m s_c in both mirrored entries. */
-    double *ss = acc->sum_ss;
+    double total = 0.0;
+    for (size_t m = 0; m < n; ++m)
+        total += s[m];
+    st = check_add(acc, total, s, n * sizeof *s, NULL, 0u);
+    if (st != MCS_OK)
+        return st;
+    memcpy(acc->work, s, n * sizeof *s);
+    add_work(acc);
+    return MCS_OK;
+}
+
+/* dst's sums of d += src's, moved from src's shift c_b to dst's c_a first:
+ * with e = c_b - c_a and T_b trials, sum (s - c_a) = sum (s - c_b) + T_b e
+ * and sum (s - c_a)(s - c_a)^T = sum (s - c_b)(s - c_b)^T + sum_b e^T
+ * + e sum_b^T + T_b e e^T. The second sums go first, while both first sums
+ * are unchanged; every src value is read before its dst entry is written,
+ * so dst == src (e = 0) doubles the sums. */
+static void merge_sums(mcs_moment *dst, const mcs_moment *src)
+{
+    const size_t n = dst->n;
+    const double tb = (double)src->count;
     for (size_t m = 0; m < n; ++m) {
-        const double a = s[m];
-        if (a == 0.0)
-            continue;
-        acc->sum_s[m] += a;
-        ss[m * n + m] += a * a;
-        for (size_t c = m + 1u; c < n; ++c) {
-            const double v = a * s[c];
-            ss[m * n + c] += v;
-            ss[c * n + m] += v;
+        const double em = src->shift[m] - dst->shift[m], bm = src->sum_d[m];
+        for (size_t c = 0; c < n; ++c) {
+            const size_t i = m * n + c;
+            const double ec = src->shift[c] - dst->shift[c];
+            const double hi = src->sum_dd[i], lo = src->lo_dd[i];
+            const double move = (bm * ec + em * src->sum_d[c]) + tb * (em * ec);
+            mcs_kahan_add_(&dst->sum_dd[i], &dst->lo_dd[i], hi);
+            mcs_kahan_add_(&dst->sum_dd[i], &dst->lo_dd[i], -lo);
+            mcs_kahan_add_(&dst->sum_dd[i], &dst->lo_dd[i], move);
         }
     }
-    acc->count += 1u;
-    return MCS_OK;
+    for (size_t m = 0; m < n; ++m) {
+        const double hi = src->sum_d[m], lo = src->lo_d[m];
+        mcs_kahan_add_(&dst->sum_d[m], &dst->lo_d[m], hi);
+        mcs_kahan_add_(&dst->sum_d[m], &dst->lo_d[m], -lo);
+        mcs_kahan_add_(&dst->sum_d[m], &dst->lo_d[m], tb * (src->shift[m] - dst->shift[m]));
+    }
 }
 
 mcs_status mcs_moment_merge(mcs_moment *dst, const mcs_moment *src)
@@ -90,13 +153,22 @@ mcs_status mcs_moment_merge(mcs_moment *dst, const mcs_moment *src)
         st = moment_check(src);
     if (st == MCS_OK && dst->n != src->n)
         st = MCS_ERR_MISMATCH;
-    if (st != MCS_OK)
+    if (st == MCS_OK)
+        st = mcs_check_count_(dst->count, src->count);
+    if (st == MCS_OK && dst != src && mcs_overlap_(dst, sizeof *dst, src, sizeof *src))
+        st = MCS_ERR_ALIAS;
+    if (st != MCS_OK || src->count == 0u)
         return st;
-    const size_t n = dst->n;
-    for (size_t j = 0; j < n; ++j)
-        dst->sum_s[j] += src->sum_s[j];
-    for (size_t j = 0; j < n * n; ++j)
-        dst->sum_ss[j] += src->sum_ss[j];
+    if (dst->count == 0u) { /* take src's shift and sums as they are */
+        const size_t n = dst->n;
+        memcpy(dst->shift, src->shift, n * sizeof dst->shift[0]);
+        memcpy(dst->sum_d, src->sum_d, n * sizeof dst->sum_d[0]);
+        memcpy(dst->lo_d, src->lo_d, n * sizeof dst->lo_d[0]);
+        memcpy(dst->sum_dd, src->sum_dd, n * n * sizeof dst->sum_dd[0]);
+        memcpy(dst->lo_dd, src->lo_dd, n * n * sizeof dst->lo_dd[0]);
+    } else {
+        merge_sums(dst, src);
+    }
     dst->count += src->count;
     return MCS_OK;
 }
@@ -109,7 +181,17 @@ mcs_status mcs_moment_count(const mcs_moment *acc, uint64_t *count)
     return st;
 }
 
-/* ---- read-out (src/readout.c): the trial averages are the sums / count ---- */
+/* Every x[len] finite and at most lim in magnitude (NaN fails the compare). */
+static int all_within(size_t len, const double *x, double lim)
+{
+    int ok = 1;
+    for (size_t j = 0; j < len; ++j)
+        ok &= fabs(x[j]) <= lim;
+    return ok;
+}
+
+/* ---- read-out (src/readout.c): <s> = c + sum_d / count, and the
+ * covariances come from the d sums alone (they do not depend on c) ---- */
 
 mcs_status mcs_readout_open_moment(const void *obj, mcs_readout *view)
 {
@@ -119,9 +201,13 @@ mcs_status mcs_readout_open_moment(const void *obj, mcs_readout *view)
         return st;
     if (acc->count == 0u)
         return MCS_ERR_EMPTY;
+    const size_t n = acc->n;
+    if (!all_within(n, acc->shift, LIMIT) || !all_within(n, acc->sum_d, LIMIT) ||
+        !all_within(n * n, acc->sum_dd, LIMIT))
+        return MCS_ERR_INVARIANT;
     /* k = 0: the accumulator does not know K, the caller names it */
-    *view = (mcs_readout){acc->n,     0u,          1.0 / (double)acc->count, acc->sum_s,
-                          acc->sum_ss, acc->cos_table, acc->sin_table};
+    *view = (mcs_readout){n,           0u,           1.0 / (double)acc->count, acc->sum_d,
+                          acc->sum_dd, acc->cos_table, acc->sin_table,         acc->shift};
     return MCS_OK;
 }
 

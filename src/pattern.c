@@ -17,6 +17,16 @@ const char *mcs_pattern_kind_str(mcs_pattern_kind kind)
     return "unknown";
 }
 
+/* Every p_n exactly 1: the uniform density (mcs_importance_init gives it for
+ * equal weights), which is drawn as no importance function at all. */
+static int is_flat(const mcs_importance *imp)
+{
+    for (size_t b = 0; b < imp->n; ++b)
+        if (imp->p[b] != 1.0)
+            return 0;
+    return 1;
+}
+
 mcs_status mcs_pattern_init(mcs_pattern *pat, mcs_pattern_kind kind, size_t n, size_t k,
                             const mcs_importance *importance)
 {
@@ -24,19 +34,22 @@ mcs_status mcs_pattern_init(mcs_pattern *pat, mcs_pattern_kind kind, size_t n, s
         return MCS_ERR_NULL;
     if (n == 0u || n > (size_t)MCS_MAX_N)
         return MCS_ERR_N_RANGE;
-    if (k == 0u)
+    if (k == 0u || k > (size_t)MCS_MAX_K)
         return MCS_ERR_K_RANGE;
     if (!mcs_kind_is_valid_(kind))
         return MCS_ERR_KIND;
     if (importance != NULL) {
-        /* The homogenizing shift moves samples by whole bins, which under a
-         * non-uniform density would no longer follow p: not defined. */
-        if (kind == MCS_PATTERN_HOMOGENIZED)
-            return MCS_ERR_KIND;
         if (!mcs_importance_is_valid_(importance))
             return MCS_ERR_UNINIT;
         if (importance->n != n)
             return MCS_ERR_MISMATCH;
+        /* The homogenizing shift moves samples by whole bins, which under a
+         * non-uniform density would no longer follow p: not defined (for a
+         * flat one either, to keep the rule simple). */
+        if (kind == MCS_PATTERN_HOMOGENIZED)
+            return MCS_ERR_KIND;
+        if (is_flat(importance))
+            importance = NULL;
     }
     pat->kind = kind;
     pat->n = n;
@@ -77,18 +90,51 @@ static void place(const mcs_pattern *pat, double u, double t, size_t *bin, doubl
     }
 }
 
+/* A configuration mcs_pattern_init could have produced, drawn with a seeded rng. */
+static mcs_status check_drawable(const mcs_pattern *pat, const mcs_rng *rng)
+{
+    if (pat->n == 0u || pat->n > (size_t)MCS_MAX_N || pat->k == 0u ||
+        pat->k > (size_t)MCS_MAX_K || !mcs_kind_is_valid_(pat->kind))
+        return MCS_ERR_UNINIT;
+    if (pat->importance != NULL && (!mcs_importance_is_valid_(pat->importance) ||
+                                    pat->importance->n != pat->n))
+        return MCS_ERR_UNINIT;
+    return mcs_rng_is_seeded_(rng) ? MCS_OK : MCS_ERR_UNINIT;
+}
+
+/* The draw's outputs overlap each other, or an object it reads while writing
+ * them: each output is written sample by sample, so no overlap can work. */
+static int draw_aliases(const mcs_pattern *pat, const mcs_rng *rng, size_t k,
+                        const size_t *bins, const double *weights, const double *points)
+{
+    const void *out[3] = {bins, weights, points};
+    const size_t len[3] = {mcs_bytes_(k, sizeof *bins), mcs_bytes_(k, sizeof *weights),
+                           points != NULL ? mcs_bytes_(k, sizeof *points) : 0u};
+    const size_t imp_len = pat->importance != NULL ? sizeof *pat->importance : 0u;
+    for (size_t a = 0; a < 3u; ++a) {
+        for (size_t b = a + 1u; b < 3u; ++b)
+            if (mcs_overlap_(out[a], len[a], out[b], len[b]))
+                return 1;
+        if (mcs_overlap_(out[a], len[a], pat, sizeof *pat) ||
+            mcs_overlap_(out[a], len[a], rng, sizeof *rng) ||
+            mcs_overlap_(out[a], len[a], pat->importance, imp_len))
+            return 1;
+    }
+    return 0;
+}
+
 mcs_status mcs_pattern_draw(const mcs_pattern *pat, mcs_rng *rng, size_t k, size_t *bins,
                             double *weights, double *points)
 {
     if (pat == NULL || rng == NULL || bins == NULL || weights == NULL)
         return MCS_ERR_NULL;
-    if (pat->n == 0u || pat->n > (size_t)MCS_MAX_N || pat->k == 0u || !mcs_kind_is_valid_(pat->kind))
-        return MCS_ERR_UNINIT;
-    if (pat->importance != NULL && (!mcs_importance_is_valid_(pat->importance) ||
-                                    pat->importance->n != pat->n))
-        return MCS_ERR_UNINIT;
+    mcs_status st = check_drawable(pat, rng);
+    if (st != MCS_OK)
+        return st;
     if (k != pat->k)
         return MCS_ERR_MISMATCH;
+    if (draw_aliases(pat, rng, k, bins, weights, points))
+        return MCS_ERR_ALIAS;
 
     const double nd = (double)pat->n, kd = (double)k;
     double beta = 0.5;
@@ -147,6 +193,12 @@ mcs_status mcs_pattern_bin_points(size_t n, size_t k, const mcs_importance *impo
         return MCS_ERR_K_RANGE;
     if (importance != NULL && (!mcs_importance_is_valid_(importance) || importance->n != n))
         return MCS_ERR_MISMATCH;
+    const size_t pb = mcs_bytes_(k, sizeof *points), bb = mcs_bytes_(k, sizeof *bins);
+    const size_t ib = importance != NULL ? sizeof *importance : 0u;
+    if (mcs_overlap_(points, pb, bins, bb) || mcs_overlap_(points, pb, weights, pb) ||
+        mcs_overlap_(bins, bb, weights, pb) || mcs_overlap_(bins, bb, importance, ib) ||
+        mcs_overlap_(weights, pb, importance, ib))
+        return MCS_ERR_ALIAS;
     mcs_status st = mcs_check_points_(k, points, NULL);
     if (st != MCS_OK)
         return st;
@@ -165,6 +217,10 @@ mcs_status mcs_pattern_dense(size_t n, size_t k, const size_t *bins, const doubl
         return MCS_ERR_NULL;
     if (n == 0u || n > (size_t)MCS_MAX_N)
         return MCS_ERR_N_RANGE;
+    const size_t sb = n * sizeof *s;
+    if (mcs_overlap_(s, sb, bins, mcs_bytes_(k, sizeof *bins)) ||
+        mcs_overlap_(s, sb, weights, mcs_bytes_(k, sizeof *weights)))
+        return MCS_ERR_ALIAS;
     mcs_status st = mcs_check_sparse_(n, k, bins, weights);
     if (st != MCS_OK)
         return st;

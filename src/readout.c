@@ -27,16 +27,47 @@ void mcs_readout_dft(const mcs_readout *view, const double *x, size_t freq, doub
     *im = i * scale;
 }
 
-/* Eq. 15: <S_k> = N^{-1/2} sum_n e^{-2 pi i k n/N} <s_n>. */
-static void mean_at(const mcs_readout *view, size_t freq, double *re, double *im)
+/* The transform of first * scale: <S_k> without a shift, <D_k> (d = s - c)
+ * with one. */
+static void first_mean_at(const mcs_readout *view, size_t freq, double *re, double *im)
 {
     mcs_readout_dft(view, view->first, freq, re, im);
     *re *= view->scale;
     *im *= view->scale;
 }
 
-void mcs_readout_cross_at(const mcs_readout *view, size_t freq_k, size_t freq_l, double *re,
-                          double *im)
+/* Eq. 15: <S_k> = N^{-1/2} sum_n e^{-2 pi i k n/N} <s_n>, with <s> = c + <d>
+ * for a shifted view (the transform is linear). */
+static void mean_at(const mcs_readout *view, size_t freq, double *re, double *im)
+{
+    first_mean_at(view, freq, re, im);
+    if (view->shift != NULL) {
+        double cr, ci;
+        mcs_readout_dft(view, view->shift, freq, &cr, &ci);
+        *re += cr;
+        *im += ci;
+    }
+}
+
+/* <s_bin>. */
+static double mean_entry(const mcs_readout *view, size_t bin)
+{
+    const double m = view->first[bin] * view->scale;
+    return view->shift != NULL ? view->shift[bin] + m : m;
+}
+
+/* a b* for a = (ar, ai), b = (br, bi), added to (*re, *im) with sign. */
+static void add_product(double ar, double ai, double br, double bi, double sign, double *re,
+                        double *im)
+{
+    *re += sign * (ar * br + ai * bi);
+    *im += sign * (ai * br - ar * bi);
+}
+
+/* Eq. 16 applied to second * scale: <S_k S_l*> without a shift, <D_k D_l*>
+ * with one. */
+static void second_at(const mcs_readout *view, size_t freq_k, size_t freq_l, double *re,
+                      double *im)
 {
     /* Eq. 16 separably: the inner sum over n with e^{+2 pi i l n/N}, the
      * outer over m with e^{-2 pi i k m/N}. O(N^2). */
@@ -66,17 +97,61 @@ void mcs_readout_cross_at(const mcs_readout *view, size_t freq_k, size_t freq_l,
     *im = i / (double)n * view->scale;
 }
 
-/* Cov(S_k, S_l) = <S_k S_l*> - <S_k><S_l>*. */
+void mcs_readout_cross_at(const mcs_readout *view, size_t freq_k, size_t freq_l, double *re,
+                          double *im)
+{
+    second_at(view, freq_k, freq_l, re, im);
+    if (view->shift != NULL) { /* <S_k S_l*> = <D_k D_l*> - <D_k><D_l>* + <S_k><S_l>* */
+        double ar, ai, br, bi;
+        first_mean_at(view, freq_k, &ar, &ai);
+        first_mean_at(view, freq_l, &br, &bi);
+        add_product(ar, ai, br, bi, -1.0, re, im);
+        mean_at(view, freq_k, &ar, &ai);
+        mean_at(view, freq_l, &br, &bi);
+        add_product(ar, ai, br, bi, 1.0, re, im);
+    }
+}
+
+/* Cov(S_k, S_l) = <S_k S_l*> - <S_k><S_l>*, which a shift leaves unchanged:
+ * the transform of second minus the product of the transforms of first. */
 static void covariance_at(const mcs_readout *view, size_t freq_k, size_t freq_l, double *re,
                           double *im)
 {
-    double cr, ci, kr, ki, lr, li;
-    mcs_readout_cross_at(view, freq_k, freq_l, &cr, &ci);
-    mean_at(view, freq_k, &kr, &ki);
-    mean_at(view, freq_l, &lr, &li);
-    /* <S_k><S_l>* = (kr + i ki)(lr - i li) */
-    *re = cr - (kr * lr + ki * li);
-    *im = ci - (ki * lr - kr * li);
+    double kr, ki, lr, li;
+    second_at(view, freq_k, freq_l, re, im);
+    first_mean_at(view, freq_k, &kr, &ki);
+    first_mean_at(view, freq_l, &lr, &li);
+    add_product(kr, ki, lr, li, -1.0, re, im);
+}
+
+/* The rounding bound of a variance Cov(S_k, S_k) read as above: the O(N^2)
+ * transform of second errs by at most (2N + 2) u sum |second| scale / N, the
+ * square of the O(N) transform of first by N u (sum |first| scale)^2 / N
+ * (u = eps / 2), and the accumulation of second by less. Twice their sum. */
+static double variance_rounding(const mcs_readout *view)
+{
+    const size_t n = view->n;
+    double a = 0.0, b = 0.0;
+    for (size_t j = 0; j < n * n; ++j)
+        a += fabs(view->second[j]);
+    for (size_t j = 0; j < n; ++j)
+        b += fabs(view->first[j]);
+    a *= view->scale;
+    b *= view->scale;
+    return 4.0 * ((double)n + 2.0) * DBL_EPSILON * (a + b * b) / (double)n;
+}
+
+/* A variance is >= 0: a value below 0 within the rounding bound tol is
+ * rounding and reads 0; one below -tol is no variance any data give, so the
+ * object holds values no calls produce. */
+static mcs_status clamp_variance(double tol, double *v)
+{
+    if (*v >= 0.0)
+        return MCS_OK;
+    if (!(*v >= -tol)) /* beyond rounding (or NaN) */
+        return MCS_ERR_INVARIANT;
+    *v = 0.0;
+    return MCS_OK;
 }
 
 double mcs_readout_form(const mcs_readout *view, size_t k, const double *f, const double *g)
@@ -153,7 +228,7 @@ mcs_status mcs_readout_bin_mean(const mcs_readout_source *src, size_t bin, doubl
 {
     mcs_readout v;
     mcs_status st = open_for(out != NULL, src, bin, bin, MCS_ERR_BIN_RANGE, &v);
-    return st == MCS_OK ? mcs_set_(out, v.first[bin] * v.scale) : st;
+    return st == MCS_OK ? mcs_set_(out, mean_entry(&v, bin)) : st;
 }
 
 mcs_status mcs_readout_bin_second(const mcs_readout_source *src, size_t bin_m,
@@ -161,62 +236,102 @@ mcs_status mcs_readout_bin_second(const mcs_readout_source *src, size_t bin_m,
 {
     mcs_readout v;
     mcs_status st = open_for(out != NULL, src, bin_m, bin_n, MCS_ERR_BIN_RANGE, &v);
-    return st == MCS_OK ? mcs_set_(out, v.second[bin_m * v.n + bin_n] * v.scale) : st;
+    if (st != MCS_OK)
+        return st;
+    double x = v.second[bin_m * v.n + bin_n] * v.scale;
+    if (v.shift != NULL) /* <s_m s_n> = Cov(d)_mn + <s_m><s_n> */
+        x += mean_entry(&v, bin_m) * mean_entry(&v, bin_n) -
+             (v.first[bin_m] * v.scale) * (v.first[bin_n] * v.scale);
+    return mcs_set_(out, x);
 }
 
-/* A complex read-out at frequencies freq_k, freq_l, the value from at. */
-typedef void (*complex_at)(const mcs_readout *view, size_t freq_k, size_t freq_l, double *re,
-                           double *im);
+/* A complex read-out at frequencies freq_k, freq_l: the value into re, im,
+ * and a status (only a variance can fail, see clamp_variance). */
+typedef mcs_status (*complex_at)(const mcs_readout *view, size_t freq_k, size_t freq_l,
+                                 double *re, double *im);
 
-static mcs_status read_complex(const mcs_readout_source *src, size_t freq_k,
-                               size_t freq_l, double *re, double *im, complex_at at)
+/* The value is computed into locals and written only when finite; re and im
+ * must be two different doubles (one double cannot hold both parts). Six
+ * arguments at most (see readout.h). */
+static mcs_status read_complex(const mcs_readout_source *src, size_t freq_k, size_t freq_l,
+                               double *re, double *im, complex_at at)
 {
     mcs_readout v;
     int outputs = re != NULL && im != NULL;
     mcs_status st = open_for(outputs, src, freq_k, freq_l, MCS_ERR_FREQ_RANGE, &v);
+    if (st == MCS_OK && mcs_overlap_(re, sizeof *re, im, sizeof *im))
+        st = MCS_ERR_ALIAS;
+    double r = 0.0, i = 0.0;
     if (st == MCS_OK)
-        at(&v, freq_k, freq_l, re, im);
+        st = at(&v, freq_k, freq_l, &r, &i);
+    if (st == MCS_OK && !(isfinite(r) && isfinite(i)))
+        st = MCS_ERR_NOT_FINITE;
+    if (st == MCS_OK) {
+        *re = r;
+        *im = i;
+    }
     return st;
 }
 
 /* <S_k> as a complex_at: one frequency, freq_l == freq_k. */
-static void mean_at_k(const mcs_readout *view, size_t freq_k, size_t freq_l, double *re,
-                      double *im)
+static mcs_status mean_value(const mcs_readout *view, size_t freq_k, size_t freq_l, double *re,
+                             double *im)
 {
     (void)freq_l;
     mean_at(view, freq_k, re, im);
+    return MCS_OK;
+}
+
+/* <S_k S_l*> as a complex_at. */
+static mcs_status cross_value(const mcs_readout *view, size_t freq_k, size_t freq_l,
+                              double *re, double *im)
+{
+    mcs_readout_cross_at(view, freq_k, freq_l, re, im);
+    return MCS_OK;
+}
+
+/* <|S_k|^2> as a complex_at (k = l): a second moment, never negative but for
+ * rounding (exact moments; see mcs_readout_nonnegative). */
+static mcs_status power_value(const mcs_readout *view, size_t freq_k, size_t freq_l,
+                              double *re, double *im)
+{
+    mcs_readout_cross_at(view, freq_k, freq_l, re, im);
+    if (*re < 0.0)
+        *re = mcs_readout_nonnegative(view, *re, power_bound(view));
+    return MCS_OK;
+}
+
+/* Cov(S_k, S_l) as a complex_at: a variance (k = l) is never negative. */
+static mcs_status covariance_value(const mcs_readout *view, size_t freq_k, size_t freq_l,
+                                   double *re, double *im)
+{
+    covariance_at(view, freq_k, freq_l, re, im);
+    return freq_k == freq_l ? clamp_variance(variance_rounding(view), re) : MCS_OK;
 }
 
 mcs_status mcs_readout_mean(const mcs_readout_source *src, size_t freq, double *re,
                             double *im)
 {
-    return read_complex(src, freq, freq, re, im, mean_at_k);
+    return read_complex(src, freq, freq, re, im, mean_value);
 }
 
 mcs_status mcs_readout_power(const mcs_readout_source *src, size_t freq, double *out)
 {
-    mcs_readout v;
-    mcs_status st = open_for(out != NULL, src, freq, freq, MCS_ERR_FREQ_RANGE, &v);
-    if (st != MCS_OK)
-        return st;
     double re = 0.0, im = 0.0; /* im is 0 up to rounding: <s s^T> is symmetric */
-    mcs_readout_cross_at(&v, freq, freq, &re, &im);
-    if (re < 0.0) /* a second moment: never negative but for rounding */
-        re = mcs_readout_nonnegative(&v, re, power_bound(&v));
-    *out = re;
-    return MCS_OK;
+    mcs_status st = read_complex(src, freq, freq, out != NULL ? &re : NULL, &im, power_value);
+    return st == MCS_OK ? mcs_set_(out, re) : st;
 }
 
 mcs_status mcs_readout_cross(const mcs_readout_source *src, size_t freq_k,
                              size_t freq_l, double *re, double *im)
 {
-    return read_complex(src, freq_k, freq_l, re, im, mcs_readout_cross_at);
+    return read_complex(src, freq_k, freq_l, re, im, cross_value);
 }
 
 mcs_status mcs_readout_covariance(const mcs_readout_source *src, size_t freq_k,
                                   size_t freq_l, double *re, double *im)
 {
-    return read_complex(src, freq_k, freq_l, re, im, covariance_at);
+    return read_complex(src, freq_k, freq_l, re, im, covariance_value);
 }
 
 /* ---- matrices ------------------------------------------------------------- */
@@ -247,7 +362,8 @@ static void chunk_of_g(const mcs_readout *view, size_t l, size_t m0, size_t len,
     }
 }
 
-static void cross_matrix_at(const mcs_readout *view, double *re, double *im)
+/* Eq. 16 for every k, l, applied to second * scale (see second_at). */
+static void second_matrix_at(const mcs_readout *view, double *re, double *im)
 {
     const size_t n = view->n;
     const double *ct = view->cos_table, *st = view->sin_table;
@@ -295,14 +411,56 @@ static mcs_status open_n(int outputs, const mcs_readout_source *src, size_t n,
     return st;
 }
 
+/* The outputs of a matrix read-out (n * n doubles each) are written while
+ * the object is read, and zeroed first: they must overlap neither each other
+ * nor any array of the view (MCS_ERR_ALIAS). */
+static mcs_status check_matrix_outputs(const mcs_readout *view, const double *re,
+                                       const double *im)
+{
+    const size_t n = view->n, nn = n * n * sizeof(double), n1 = n * sizeof(double);
+    const void *in[5] = {view->first, view->second, view->cos_table, view->sin_table,
+                         view->shift};
+    const size_t len[5] = {n1, nn, n1, n1, view->shift != NULL ? n1 : 0u};
+    int alias = mcs_overlap_(re, nn, im, nn);
+    for (size_t a = 0; a < 5u; ++a)
+        alias |= mcs_overlap_(re, nn, in[a], len[a]) || mcs_overlap_(im, nn, in[a], len[a]);
+    return alias ? MCS_ERR_ALIAS : MCS_OK;
+}
+
+/* Adds sign a_k b_l* to every entry, a and b the mean transforms `am`, `bm`
+ * (O(N^3): each is taken one coefficient at a time, as everywhere here). */
+typedef void (*mean_fn)(const mcs_readout *view, size_t freq, double *re, double *im);
+
+static void add_mean_products(const mcs_readout *view, mean_fn am, mean_fn bm, double sign,
+                              double *re, double *im)
+{
+    const size_t n = view->n;
+    for (size_t k = 0; k < n; ++k) {
+        double ar, ai;
+        am(view, k, &ar, &ai);
+        for (size_t l = 0; l < n; ++l) {
+            double br, bi;
+            bm(view, l, &br, &bi);
+            add_product(ar, ai, br, bi, sign, &re[k * n + l], &im[k * n + l]);
+        }
+    }
+}
+
 mcs_status mcs_readout_cross_matrix(const mcs_readout_source *src, size_t n,
                                     double *re, double *im)
 {
     mcs_readout v;
     mcs_status st = open_n(re != NULL && im != NULL, src, n, &v);
     if (st == MCS_OK)
-        cross_matrix_at(&v, re, im);
-    return st;
+        st = check_matrix_outputs(&v, re, im);
+    if (st != MCS_OK)
+        return st;
+    second_matrix_at(&v, re, im);
+    if (v.shift != NULL) { /* as mcs_readout_cross_at */
+        add_mean_products(&v, first_mean_at, first_mean_at, -1.0, re, im);
+        add_mean_products(&v, mean_at, mean_at, 1.0, re, im);
+    }
+    return MCS_OK;
 }
 
 mcs_status mcs_readout_covariance_matrix(const mcs_readout_source *src, size_t n,
@@ -310,20 +468,23 @@ mcs_status mcs_readout_covariance_matrix(const mcs_readout_source *src, size_t n
 {
     mcs_readout v;
     mcs_status st = open_n(re != NULL && im != NULL, src, n, &v);
+    if (st == MCS_OK)
+        st = check_matrix_outputs(&v, re, im);
     if (st != MCS_OK)
         return st;
-    cross_matrix_at(&v, re, im);
-    for (size_t k = 0; k < n; ++k) {
-        double ar, ai;
-        mean_at(&v, k, &ar, &ai);
-        for (size_t l = 0; l < n; ++l) {
-            double br, bi;
-            mean_at(&v, l, &br, &bi);
-            /* (ar + i ai)(br - i bi) */
-            re[k * n + l] -= ar * br + ai * bi;
-            im[k * n + l] -= ai * br - ar * bi;
-        }
+    /* The diagonal is checked before anything is written (see clamp_variance). */
+    const double tol = variance_rounding(&v);
+    for (size_t k = 0; k < n && st == MCS_OK; ++k) {
+        double vr, vi;
+        covariance_at(&v, k, k, &vr, &vi);
+        st = clamp_variance(tol, &vr);
     }
+    if (st != MCS_OK)
+        return st;
+    second_matrix_at(&v, re, im);
+    add_mean_products(&v, first_mean_at, first_mean_at, -1.0, re, im);
+    for (size_t k = 0; k < n; ++k)
+        (void)clamp_variance(tol, &re[k * n + k]);
     return MCS_OK;
 }
 
@@ -351,12 +512,19 @@ mcs_status mcs_readout_check_integrands(const mcs_readout_source *src, size_t n,
     return st == MCS_OK ? mcs_readout_check_integrand(src, n, k, g, view) : st;
 }
 
+/* *out = value if finite; an integrand so large that the value overflows is
+ * MCS_ERR_MAGNITUDE (the object's own values cannot make it overflow). */
+static mcs_status finite_result(double value, double *out)
+{
+    return isfinite(value) ? mcs_set_(out, value) : MCS_ERR_MAGNITUDE;
+}
+
 /* <I> = (1/K) sum_n f_n <s_n>. */
 static double estimator_mean_at(const mcs_readout *view, size_t k, const double *f)
 {
     double sum = 0.0;
     for (size_t b = 0; b < view->n; ++b)
-        sum += f[b] * (view->first[b] * view->scale);
+        sum += f[b] * mean_entry(view, b);
     return sum / (double)k;
 }
 
@@ -368,7 +536,7 @@ mcs_status mcs_readout_integrand_value(const mcs_readout_source *src, size_t n,
         return MCS_ERR_NULL;
     mcs_readout v;
     mcs_status st = mcs_readout_check_integrand(src, n, k, f, &v);
-    return st == MCS_OK ? mcs_set_(out, value(&v, k, f)) : st;
+    return st == MCS_OK ? finite_result(value(&v, k, f), out) : st;
 }
 
 mcs_status mcs_readout_estimator_mean(const mcs_readout_source *src, size_t n,
@@ -389,8 +557,7 @@ mcs_status mcs_readout_variance(const mcs_readout_source *src, size_t n, size_t 
     double var = mcs_readout_form(&v, k, f, f);
     if (var < 0.0) /* f^T Cov f: never negative but for rounding */
         var = mcs_readout_nonnegative(&v, var, mcs_readout_form_bound(&v, k, f, f));
-    *out = var;
-    return MCS_OK;
+    return finite_result(var, out);
 }
 
 mcs_status mcs_readout_estimator_covariance(const mcs_readout_source *src, size_t n,
@@ -401,5 +568,5 @@ mcs_status mcs_readout_estimator_covariance(const mcs_readout_source *src, size_
         return MCS_ERR_NULL;
     mcs_readout v;
     mcs_status st = mcs_readout_check_integrands(src, n, k, f, g, &v);
-    return st == MCS_OK ? mcs_set_(out, mcs_readout_form(&v, k, f, g)) : st;
+    return st == MCS_OK ? finite_result(mcs_readout_form(&v, k, f, g), out) : st;
 }

@@ -12,7 +12,10 @@
 
 /* Where an object's moments are: <s_bin> = first[bin] * scale and
  * <s_bin_m s_bin_n> = second[bin_m * N + bin_n] * scale (both triangles,
- * symmetric). */
+ * symmetric). With a shift c (the moment accumulator), first and second are
+ * sums of d = s - c instead: <s> = c + first * scale, and every covariance
+ * is read from them directly (it does not depend on c), without cancelling
+ * <s_m s_n> against <s_m><s_n>. */
 typedef struct {
     size_t n;              /* N */
     size_t k;              /* K of exact moments; 0: any K >= 1 the caller names */
@@ -21,6 +24,7 @@ typedef struct {
     const double *second;  /* [n * n] */
     const double *cos_table; /* cos(2 pi j / N), j < N */
     const double *sin_table; /* sin(2 pi j / N), j < N */
+    const double *shift;   /* [n] c, or NULL: first and second are of s itself */
 } mcs_readout;
 
 /* Checks obj and fills *view: MCS_ERR_UNINIT, MCS_ERR_EMPTY (no trials yet). */

@@ -8,6 +8,14 @@
 
 #define MCS_PCG_MULT UINT64_C(6364136223846793005)
 
+/* Seeding makes the increment odd; a zeroed (never seeded) generator has an
+ * even one, and its LCG from state 0 would output zeros forever. Every caller
+ * of the unchecked steps below checks this first. */
+static inline int mcs_rng_is_seeded_(const mcs_rng *rng)
+{
+    return (rng->inc & 1u) != 0u;
+}
+
 static inline uint32_t mcs_rng_next_(mcs_rng *rng)
 {
     uint64_t old = rng->state;

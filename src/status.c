@@ -26,6 +26,9 @@ const char *mcs_status_str(mcs_status status)
     case MCS_ERR_CHECKSUM: return "MCS_ERR_CHECKSUM";
     case MCS_ERR_FORMAT: return "MCS_ERR_FORMAT";
     case MCS_ERR_INVARIANT: return "MCS_ERR_INVARIANT";
+    case MCS_ERR_MAGNITUDE: return "MCS_ERR_MAGNITUDE";
+    case MCS_ERR_COUNT: return "MCS_ERR_COUNT";
+    case MCS_ERR_ALIAS: return "MCS_ERR_ALIAS";
     }
     return "MCS_ERR_UNKNOWN";
 }

@@ -1,4 +1,5 @@
 #include "mcspec/welford.h"
+#include "internal.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -15,12 +16,31 @@ mcs_status mcs_welford_init(mcs_welford *acc)
     return MCS_OK;
 }
 
-mcs_status mcs_welford_add(mcs_welford *acc, double x)
+/* A state some sequence of adds and merges produces: MCS_ERR_NULL without
+ * acc, MCS_ERR_INVARIANT if overwritten (so no read-out is NaN or stale). */
+static mcs_status welford_check(const mcs_welford *acc)
 {
     if (acc == NULL)
         return MCS_ERR_NULL;
+    const double f[4] = {acc->mean, acc->m2, acc->m3, acc->m4};
+    if (acc->count > (uint64_t)MCS_MAX_COUNT || !mcs_all_finite_(4u, f) || acc->m2 < 0.0 ||
+        acc->m4 < 0.0)
+        return MCS_ERR_INVARIANT;
+    return MCS_OK;
+}
+
+mcs_status mcs_welford_add(mcs_welford *acc, double x)
+{
+    mcs_status st = welford_check(acc);
+    if (st != MCS_OK)
+        return st;
     if (!isfinite(x))
         return MCS_ERR_NOT_FINITE;
+    if (fabs(x) > MCS_WELFORD_MAX_ABS)
+        return MCS_ERR_MAGNITUDE;
+    st = mcs_check_count_(acc->count, 1u);
+    if (st != MCS_OK)
+        return st;
     /* Welford/Pebay: deviations from the running mean, higher moments first
      * because they use the old lower ones; no raw power sums, so no
      * cancellation when the mean is large. */
@@ -37,69 +57,76 @@ mcs_status mcs_welford_add(mcs_welford *acc, double x)
 
 mcs_status mcs_welford_merge(mcs_welford *dst, const mcs_welford *src)
 {
-    if (dst == NULL || src == NULL)
-        return MCS_ERR_NULL;
-    if (src->count == 0u)
-        return MCS_OK;
+    mcs_status st = src == NULL ? MCS_ERR_NULL : welford_check(dst);
+    if (st == MCS_OK)
+        st = welford_check(src);
+    if (st == MCS_OK)
+        st = mcs_check_count_(dst->count, src->count);
+    if (st != MCS_OK || src->count == 0u)
+        return st;
     if (dst->count == 0u) {
         *dst = *src;
         return MCS_OK;
     }
     /* Chan, Golub and LeVeque for M2, Pebay for M3 and M4: combine through
-     * the gap between the two means. */
-    const mcs_welford a = *dst;
-    double na = (double)a.count, nb = (double)src->count, n = na + nb;
-    double d = src->mean - a.mean, d2 = d * d;
-    dst->mean = a.mean + d * (nb / n);
-    dst->m2 = a.m2 + src->m2 + d2 * na * nb / n;
-    dst->m3 = a.m3 + src->m3 + d2 * d * na * nb * (na - nb) / (n * n) +
-              3.0 * d * (na * src->m2 - nb * a.m2) / n;
-    dst->m4 = a.m4 + src->m4 + d2 * d2 * na * nb * (na * na - na * nb + nb * nb) / (n * n * n) +
-              6.0 * d2 * (na * na * src->m2 + nb * nb * a.m2) / (n * n) +
-              4.0 * d * (na * src->m3 - nb * a.m3) / n;
-    dst->count = a.count + src->count;
+     * the gap d between the two means. Both copied first (dst may be src);
+     * the count products are taken as fractions fa = na/n, fb = nb/n, so no
+     * intermediate grows past d^4 na (the textbook na nb (na^2 ...) / n^3
+     * overflowed at counts near 2^50 with deviations near the limit). */
+    const mcs_welford a = *dst, b = *src;
+    const double na = (double)a.count, n = na + (double)b.count;
+    const double fa = na / n, fb = (double)b.count / n;
+    const double d = b.mean - a.mean, d2 = d * d;
+    dst->mean = a.mean + d * fb;
+    dst->m2 = a.m2 + b.m2 + d2 * na * fb;
+    dst->m3 = a.m3 + b.m3 + d2 * d * na * fb * (fa - fb) + 3.0 * d * (fa * b.m2 - fb * a.m2);
+    dst->m4 = a.m4 + b.m4 + d2 * d2 * na * fb * (fa * fa - fa * fb + fb * fb) +
+              6.0 * d2 * (fa * fa * b.m2 + fb * fb * a.m2) + 4.0 * d * (fa * b.m3 - fb * a.m3);
+    dst->count = a.count + b.count;
     return MCS_OK;
+}
+
+/* The checks of a read-out: acc and out, a valid state, at least `least` values. */
+static mcs_status readout_check(const mcs_welford *acc, const double *out, uint64_t least)
+{
+    mcs_status st = out == NULL ? MCS_ERR_NULL : welford_check(acc);
+    return st == MCS_OK && acc->count < least ? MCS_ERR_EMPTY : st;
 }
 
 mcs_status mcs_welford_mean(const mcs_welford *acc, double *mean)
 {
-    if (acc == NULL || mean == NULL)
-        return MCS_ERR_NULL;
-    if (acc->count == 0u)
-        return MCS_ERR_EMPTY;
-    *mean = acc->mean;
-    return MCS_OK;
+    mcs_status st = readout_check(acc, mean, 1u);
+    return st == MCS_OK ? mcs_set_(mean, acc->mean) : st;
 }
 
 mcs_status mcs_welford_variance(const mcs_welford *acc, double *variance)
 {
-    if (acc == NULL || variance == NULL)
-        return MCS_ERR_NULL;
-    if (acc->count < 2u)
-        return MCS_ERR_EMPTY;
-    *variance = acc->m2 / (double)(acc->count - 1u);
-    return MCS_OK;
+    mcs_status st = readout_check(acc, variance, 2u);
+    return st == MCS_OK ? mcs_set_(variance, acc->m2 / (double)(acc->count - 1u)) : st;
 }
 
 mcs_status mcs_welford_stderr(const mcs_welford *acc, double *stderr_out)
 {
-    if (acc == NULL || stderr_out == NULL)
-        return MCS_ERR_NULL;
-    if (acc->count < 2u)
-        return MCS_ERR_EMPTY;
-    *stderr_out = sqrt(acc->m2 / (double)(acc->count - 1u) / (double)acc->count);
-    return MCS_OK;
+    mcs_status st = readout_check(acc, stderr_out, 2u);
+    if (st != MCS_OK)
+        return st;
+    return mcs_set_(stderr_out, sqrt(acc->m2 / (double)(acc->count - 1u) / (double)acc->count));
 }
 
 mcs_status mcs_welford_variance_stderr(const mcs_welford *acc, double *stderr_out)
 {
-    if (acc == NULL || stderr_out == NULL)
-        return MCS_ERR_NULL;
-    if (acc->count < 4u)
-        return MCS_ERR_EMPTY;
-    double c = (double)acc->count;
-    double s2 = acc->m2 / (c - 1.0), mu4 = acc->m4 / c;
-    double v = (mu4 - (c - 3.0) / (c - 1.0) * s2 * s2) / c;
-    *stderr_out = sqrt(v > 0.0 ? v : 0.0);
-    return MCS_OK;
+    mcs_status st = readout_check(acc, stderr_out, 4u);
+    if (st != MCS_OK)
+        return st;
+    /* Var[s^2] = (mu4 - sigma^4)/c + 2 sigma^4/(c (c-1)). mu4 - sigma^4 from
+     * the h-statistics h4 - h22 (unbiased; with central sample moments
+     * q2 = m2/c, q4 = m4/c it is c [(c^2 - c + 2) q4 - (c^2 + 3c - 6) q2^2] /
+     * ((c-1)(c-2)(c-3))), clamped at 0 as the true value is; sigma^4 of the
+     * second term from s^4, which keeps it from collapsing (see welford.h). */
+    const double c = (double)acc->count, q2 = acc->m2 / c, q4 = acc->m4 / c;
+    const double excess = c * ((c * c - c + 2.0) * q4 - (c * c + 3.0 * c - 6.0) * q2 * q2) /
+                          ((c - 1.0) * (c - 2.0) * (c - 3.0));
+    const double s2 = acc->m2 / (c - 1.0);
+    const double v = ((excess > 0.0 ? excess : 0.0) + 2.0 * s2 * s2 / (c - 1.0)) / c;
+    return mcs_set_(stderr_out, sqrt(v));
 }

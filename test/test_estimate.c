@@ -163,6 +163,38 @@ static void test_bad_input_returns_an_error_and_leaves_outputs_untouched(void)
     TEST_ASSERT_EQUAL_DOUBLE(99.0, out);
 }
 
+/* Issue 10 item 5: a term f w above MCS_ESTIMATE_MAX_ABS (2^110), or one
+ * that overflows, is refused; the limit itself is accepted, and the result
+ * then goes into a mcs_welford. f = 1e300 with a weight of 1e10 used to give
+ * I = inf with MCS_OK. */
+static double huge_f(double x, void *ctx)
+{
+    (void)x;
+    (void)ctx;
+    return 1e300;
+}
+
+static void test_a_term_above_the_limit_is_refused_and_the_limit_feeds_a_welford(void)
+{
+    const double f[2] = {1e300, MCS_ESTIMATE_MAX_ABS};
+    const size_t b0[1] = {0u}, b1[2] = {1u, 1u};
+    const double w_big[1] = {1e10}, w_one[2] = {1.0, 1.0}, w_tiny[1] = {1e-290};
+    const double pts[1] = {0.5};
+    double out = 99.0;
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_MAGNITUDE, mcs_estimate_bins(2u, 1u, f, b0, w_big, &out));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_MAGNITUDE, mcs_estimate_bins(2u, 1u, f, b0, w_one, &out));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_MAGNITUDE, mcs_estimate_points(1u, huge_f, NULL, pts, NULL, &out));
+    TEST_ASSERT_EQUAL_DOUBLE(99.0, out);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_estimate_bins(2u, 1u, f, b0, w_tiny, &out));
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12 * 1e10, 1e10, out);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_estimate_bins(2u, 2u, f, b1, w_one, &out));
+    TEST_ASSERT_EQUAL_DOUBLE(MCS_ESTIMATE_MAX_ABS, out);
+    mcs_welford acc;
+    mcs_welford_init(&acc);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_welford_add(&acc, out));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_welford_add(&acc, -out));
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -170,5 +202,6 @@ int main(void)
     RUN_TEST(test_uniform_is_biased_for_a_function_that_aliases_with_it);
     RUN_TEST(test_point_estimator_equals_bin_estimator_for_a_piecewise_constant_f);
     RUN_TEST(test_bad_input_returns_an_error_and_leaves_outputs_untouched);
+    RUN_TEST(test_a_term_above_the_limit_is_refused_and_the_limit_feeds_a_welford);
     return UNITY_END();
 }

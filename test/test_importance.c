@@ -91,7 +91,7 @@ static void test_bad_weights_return_an_error_and_leave_the_struct_untouched(void
     const double inf_w[3] = {1.0, INFINITY, 1.0};
     const double neg_w[3] = {1.0, -1.0, 3.0};
     const double zero_w[3] = {1.0, 0.0, 3.0};
-    const double huge_w[3] = {1e308, 1e308, 1e308};
+    const double tiny_w[3] = {1e308, 0.3, 0.3};
     TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_importance_init(NULL, 3u, good));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_importance_init(&imp, 3u, NULL));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_N_RANGE, mcs_importance_init(&imp, 0u, good));
@@ -100,7 +100,7 @@ static void test_bad_weights_return_an_error_and_leave_the_struct_untouched(void
     TEST_ASSERT_EQUAL_INT(MCS_ERR_NOT_FINITE, mcs_importance_init(&imp, 3u, inf_w));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_NEGATIVE, mcs_importance_init(&imp, 3u, neg_w));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_ZERO_WEIGHT, mcs_importance_init(&imp, 3u, zero_w));
-    TEST_ASSERT_EQUAL_INT(MCS_ERR_NOT_FINITE, mcs_importance_init(&imp, 3u, huge_w));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ZERO_WEIGHT, mcs_importance_init(&imp, 3u, tiny_w));
     TEST_ASSERT_EQUAL_MEMORY(&imp_copy, &imp, sizeof imp);
 }
 
@@ -175,6 +175,86 @@ static void test_bad_q_input_returns_an_error_and_leaves_outputs_untouched(void)
     TEST_ASSERT_EQUAL_MEMORY(&imp_copy, &imp, sizeof imp);
 }
 
+/* ---- issue 10 item 8 and issue 12: scale, tiny weights, the sampled CDF ---- */
+
+/* Issue 10 item 8: any positive scale is accepted (all equal at DBL_MAX, mixed
+ * near it, all subnormal); a weight too small next to the rest is refused
+ * ({1e308, 0.3, 0.3} used to pass with H = 0, outside the documented (0, 1]). */
+static void test_any_scale_is_accepted_and_a_negligible_weight_is_refused(void)
+{
+    const double all_max[3] = {1e308, 1e308, 1e308};
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_init(&imp, 3u, all_max));
+    for (int b = 0; b < 3; ++b)
+        TEST_ASSERT_EQUAL_DOUBLE(1.0, imp.p[b]);
+    TEST_ASSERT_EQUAL_DOUBLE(1.0, imp.harmonic_mean);
+    const double near_max[3] = {1.7e308, 0.85e308, 1.7e308}; /* sum overflows unscaled */
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_init(&imp, 3u, near_max));
+    TEST_ASSERT_DOUBLE_WITHIN(1e-15, 0.2, imp.g[1]);
+    const double sub[2] = {5e-324, 1e-323}; /* the two smallest subnormals: 1 : 2 */
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_init(&imp, 2u, sub));
+    TEST_ASSERT_DOUBLE_WITHIN(1e-15, 1.0 / 3.0, imp.g[0]);
+    TEST_ASSERT_TRUE(imp.harmonic_mean > 0.0 && imp.harmonic_mean <= 1.0);
+
+    memcpy(&imp_copy, &imp, sizeof imp);
+    const double tiny[3] = {1e308, 0.3, 0.3};
+    const double very_small[2] = {1.0, 1e-17}; /* issue 12: its bin was never drawn */
+    const double small[2] = {1.0, 1e-12};
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ZERO_WEIGHT, mcs_importance_init(&imp, 3u, tiny));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ZERO_WEIGHT, mcs_importance_init(&imp, 2u, very_small));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ZERO_WEIGHT, mcs_importance_init(&imp, 2u, small));
+    TEST_ASSERT_EQUAL_MEMORY(&imp_copy, &imp, sizeof imp);
+    /* The threshold itself: g = w / (1 + w) against 2^-32. */
+    const double at[2] = {1.0, 1.0001 * MCS_IMPORTANCE_MIN_G};
+    const double below[2] = {1.0, 0.9999 * MCS_IMPORTANCE_MIN_G};
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_init(&imp, 2u, at));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ZERO_WEIGHT, mcs_importance_init(&imp, 2u, below));
+}
+
+/* Issue 10 item 10: one double for both outputs of a call is refused. */
+static void test_one_storage_for_two_outputs_is_refused(void)
+{
+    const double w[3] = {1.0, 2.0, 3.0};
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_init(&imp, 3u, w));
+    double both = 7.0;
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_importance_q(&imp, 1u, &both, &both));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS,
+                          mcs_importance_warp(&imp, 0.5, &both, (size_t *)(void *)&both));
+    TEST_ASSERT_EQUAL_DOUBLE(7.0, both);
+}
+
+/* Grid points k / 2^53 (the generator's u) in [a, b), a and b in [0, 1]. */
+static double grid_count(double a, double b)
+{
+    return ceil(ldexp(b, 53)) - ceil(ldexp(a, 53));
+}
+
+/* Issue 12: p_n and the interval the generator samples agree exactly. Each
+ * CDF entry is on the generator's grid, g_n is the length of its interval,
+ * so P(bin n) = g_n exactly and <s_n> = K P(bin n) / p_n = K / N to rounding:
+ * unbiased, even for weights of 3e-10 and 3.4e-10 of the total, where the bin
+ * probability used to be off by ~1e-7 relative (1.4e-3 at 1e-12). */
+static void test_bin_probabilities_are_the_stored_g_so_the_estimator_is_unbiased(void)
+{
+    static const double sets[4][5] = {{1.0, 1.2e-9, 1.0, 1.0, 1.0},
+                                      {0.7, 2e-9, 0.2, 5.0, 1e-3},
+                                      {1.0, 2.0, 3.0, 4.0, 5.0},
+                                      {0.1, 0.1, 0.1, 0.1, 0.3}};
+    for (int i = 0; i < 4; ++i) {
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_init(&imp, 5u, sets[i]));
+        double total = 0.0;
+        for (int b = 0; b < 5; ++b)
+            total += sets[i][b];
+        for (size_t b = 0; b < 5u; ++b) {
+            const double prob = grid_count(imp.cdf[b], imp.cdf[b + 1u]) / 9007199254740992.0;
+            TEST_ASSERT_EQUAL_DOUBLE(imp.cdf[b + 1u] - imp.cdf[b], imp.g[b]);
+            TEST_ASSERT_TRUE(prob == imp.g[b]);
+            TEST_ASSERT_DOUBLE_WITHIN(4e-16, 1.0, prob / imp.p[b] * 5.0); /* <s_n> N / K */
+            /* and g is what was asked for, to 2^-19 relative at worst */
+            TEST_ASSERT_DOUBLE_WITHIN(2e-6 * sets[i][b] / total, sets[i][b] / total, imp.g[b]);
+        }
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -186,5 +266,8 @@ int main(void)
     RUN_TEST(test_bad_warp_input_returns_an_error_and_leaves_outputs_untouched);
     RUN_TEST(test_q_is_the_eq7_transform_of_one_over_p_and_q0_gives_one_over_h);
     RUN_TEST(test_bad_q_input_returns_an_error_and_leaves_outputs_untouched);
+    RUN_TEST(test_any_scale_is_accepted_and_a_negligible_weight_is_refused);
+    RUN_TEST(test_bin_probabilities_are_the_stored_g_so_the_estimator_is_unbiased);
+    RUN_TEST(test_one_storage_for_two_outputs_is_refused);
     return UNITY_END();
 }

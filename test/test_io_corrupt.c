@@ -153,8 +153,8 @@ static void test_sizes_above_this_builds_capacities_are_refused(void)
         const uint64_t sn = n + d, cn = c + d, p1 = f1 + d, p2 = f2 + d;
         const uint64_t side_x[2] = {s + d, 2u}, side_y[2] = {3u, s + d};
         shape_case(0u, &sn, 5u * (sn / 2u + 1u), range);
-        shape_case(1u, &cn, cn + cn * (cn + 1u) / 2u, range);
-        shape_case(2u, &sn, sn + sn / 2u + 1u, range);
+        shape_case(1u, &cn, 3u * cn + cn * (cn + 1u), range);
+        shape_case(2u, &sn, 2u * sn + 2u * (sn / 2u + 1u) + 2u, range);
         shape_case(4u, &p1, 2u * (p1 + 1u), freq);
         shape_case(5u, &p2, 2u * (2u * p2 + 1u) * (p2 + 1u) + 2u * (p2 + 1u), freq);
         shape_case(6u, side_x, 5u * side_x[0] * 2u, range);
@@ -235,10 +235,12 @@ static void test_broken_invariants_are_refused(void)
     expect_value(0u, len, 1u, -2.0 * big, MCS_ERR_INVARIANT);
     expect_value(0u, len, 3u * h1 + 1u, 1.0000001 * big, MCS_ERR_INVARIANT);
     len = save_a(&io_kinds[1], rec);
-    expect_value(1u, len, 2u, -1.0, MCS_ERR_INVARIANT);        /* sum_s */
-    expect_value(1u, len, 14u + 3u, -2.0, MCS_ERR_INVARIANT);  /* sum_ss[0][3] */
+    expect_value(1u, len, 2u, -1.0, MCS_ERR_INVARIANT);  /* shift: a trial's s */
+    expect_value(1u, len, 14u + 3u, -2.0, MCS_OK);       /* sum_d: deviations, either sign */
     len = save_a(&io_kinds[2], rec);
-    expect_value(2u, len, 14u + 7u, -1.0, MCS_ERR_INVARIANT);  /* sum_a[7] */
+    expect_value(2u, len, 2u, -1.0, MCS_ERR_INVARIANT);               /* sum_s */
+    expect_value(2u, len, 14u, -1.0, MCS_ERR_INVARIANT);              /* sum_dc */
+    expect_value(2u, len, 2u * 14u + 1u + 7u, -1.0, MCS_OK);          /* sum_lag[7]: centred */
     len = save_a(&io_kinds[3], rec);
     expect_value(3u, len, 1u, -1.0, MCS_ERR_INVARIANT);  /* m2 */
     expect_value(3u, len, 3u, -1.0, MCS_ERR_INVARIANT);  /* m4 */
@@ -272,8 +274,8 @@ static void test_counts_that_do_not_fit_the_data_are_refused(void)
         refused(o, MCS_ERR_INVARIANT, len, rec2, "count 2^64 - 1", 0u);
         set_count(rec2, len, MCS_IO_MAX_COUNT);
         TEST_ASSERT_EQUAL_INT(MCS_OK, o->load(io_obj(&set_a, o), len, rec2));
-        if (o->kind == MCS_IO_KIND_MOMENT || o->kind == MCS_IO_KIND_AUTOCORR)
-            continue; /* plain sums: any count >= 1 fits */
+        if (o->kind == MCS_IO_KIND_AUTOCORR)
+            continue; /* its sums are of s: any count >= 1 fits */
         /* One trial has no spread: M2 != 0 cannot be. */
         set_count(rec2, len, 1u);
         refused(o, MCS_ERR_INVARIANT, len, rec2, "one trial with spread", 1u);

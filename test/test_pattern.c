@@ -338,6 +338,141 @@ static void test_bad_points_or_bins_return_an_error_and_leave_outputs_untouched(
     TEST_ASSERT_EQUAL_MEMORY(s_copy, s, sizeof s);
 }
 
+/* ---- issue 10 items 3, 4, 10 and issue 12's flat importance function ---- */
+
+/* Issue 10 item 3: a never-seeded rng is refused before anything is written
+ * (a homogenized draw at N = 10 used to spin in the bounded shift draw). The
+ * random kind comes first, so that without the fix the test fails, not hangs. */
+static void test_a_never_seeded_rng_is_refused_by_every_kind(void)
+{
+    mcs_rng zero, before;
+    memset(&zero, 0, sizeof zero);
+    before = zero;
+    const mcs_pattern_kind kinds[4] = {MCS_PATTERN_RANDOM, MCS_PATTERN_STRATIFIED,
+                                       MCS_PATTERN_JITTER, MCS_PATTERN_HOMOGENIZED};
+    for (int i = 0; i < 4; ++i) {
+        mcs_pattern pat;
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_init(&pat, kinds[i], 10u, 3u, NULL));
+        set_guards(0u);
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_UNINIT,
+                              mcs_pattern_draw(&pat, &zero, 3u, bins, weights, points));
+        assert_guards(0u);
+        TEST_ASSERT_EQUAL_MEMORY(&before, &zero, sizeof zero);
+    }
+}
+
+/* Issue 10 item 4: K is bounded by MCS_MAX_K (pattern.h says why). */
+static void test_k_above_the_documented_maximum_is_refused(void)
+{
+    mcs_pattern pat, copy;
+    memset(&pat, 0, sizeof pat);
+    copy = pat;
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_K_RANGE, mcs_pattern_init(&pat, MCS_PATTERN_UNIFORM, 8u,
+                                                            (size_t)MCS_MAX_K + 1u, NULL));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_K_RANGE,
+                          mcs_pattern_init(&pat, MCS_PATTERN_RANDOM, 8u, SIZE_MAX, NULL));
+    TEST_ASSERT_EQUAL_MEMORY(&copy, &pat, sizeof pat);
+    TEST_ASSERT_EQUAL_INT(MCS_OK,
+                          mcs_pattern_init(&pat, MCS_PATTERN_UNIFORM, 8u, (size_t)MCS_MAX_K, NULL));
+    pat.k = (size_t)MCS_MAX_K + 1u; /* a caller's edit is caught at the draw */
+    mcs_rng rng;
+    mcs_rng_seed(&rng, 1u, 1u);
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_UNINIT, mcs_pattern_draw(&pat, &rng, pat.k, bins, weights, NULL));
+}
+
+/* One draw that must fail with MCS_ERR_ALIAS, writing nothing and leaving the
+ * rng where it was. buf holds every array of the call. */
+static double alias_buf[4 * MAXK];
+
+static void expect_draw_alias(const mcs_pattern *pat, mcs_rng *rng, size_t *b, double *w,
+                              double *x)
+{
+    for (size_t j = 0; j < 4u * MAXK; ++j)
+        alias_buf[j] = GUARD_W;
+    const mcs_rng before = *rng;
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_pattern_draw(pat, rng, pat->k, b, w, x));
+    TEST_ASSERT_EQUAL_MEMORY(&before, rng, sizeof before);
+    for (size_t j = 0; j < 4u * MAXK; ++j)
+        TEST_ASSERT_EQUAL_DOUBLE(GUARD_W, alias_buf[j]);
+}
+
+/* Issue 10 item 10: overlapping arrays are refused (pattern.h says which). */
+static void test_overlapping_arrays_are_refused_and_nothing_is_written(void)
+{
+    mcs_pattern pat;
+    mcs_rng rng;
+    mcs_rng_seed(&rng, 3u, 4u);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_init(&pat, MCS_PATTERN_JITTER, 16u, 8u, NULL));
+    double *w = alias_buf, *x = alias_buf + MAXK;
+    size_t *b = (size_t *)(void *)(alias_buf + 2 * MAXK);
+    expect_draw_alias(&pat, &rng, b, w, w);                 /* points == weights */
+    expect_draw_alias(&pat, &rng, b, w, w + 7);             /* partial overlap */
+    expect_draw_alias(&pat, &rng, (size_t *)(void *)(x + 4), w, x); /* bins in points */
+    /* an output over the generator itself */
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_pattern_draw(&pat, &rng, 8u, bins, weights,
+                                                          (double *)(void *)&rng));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_draw(&pat, &rng, 8u, b, w, x)); /* disjoint */
+
+    const size_t db[3] = {1u, 2u, 1u};
+    double s[8] = {0.5, 2.0, 0.25, 1, 1, 1, 1, 1}, copy[8];
+    memcpy(copy, s, sizeof s);
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_pattern_dense(8u, 3u, db, s, s)); /* s == weights */
+    TEST_ASSERT_EQUAL_MEMORY(copy, s, sizeof s);
+    double pts[4] = {0.1, 0.2, 0.3, 0.4}, pcopy[4];
+    memcpy(pcopy, pts, sizeof pts);
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_pattern_bin_points(8u, 4u, NULL, pts, bins, pts));
+    TEST_ASSERT_EQUAL_MEMORY(pcopy, pts, sizeof pts);
+}
+
+/* Issue 12: a flat importance function is the uniform density; a pattern
+ * with one draws bin for bin (and point for point) what it draws without,
+ * for every kind defined with one (homogenized is not). N = 10, K = 5
+ * uniform used to give 1 2 5 7 9: the rounded sum of ten 1/10 put u = 3/10
+ * below its edge. */
+static void test_a_flat_importance_function_reproduces_the_pattern_without_one(void)
+{
+    const size_t shapes[4][2] = {{10u, 5u}, {24u, 6u}, {7u, 20u}, {30u, 7u}};
+    static size_t bins2[MAXK];
+    static double weights2[MAXK], points2[MAXK];
+    for (int sh = 0; sh < 4; ++sh) {
+        const size_t n = shapes[sh][0], k = shapes[sh][1];
+        double w[30];
+        for (size_t b = 0; b < n; ++b)
+            w[b] = 0.1;
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_init(&imp, n, w));
+        for (int kind = 0; kind < MCS_PATTERN_KIND_COUNT; ++kind) {
+            mcs_pattern with, without;
+            if (all_kinds[kind] == MCS_PATTERN_HOMOGENIZED) { /* not defined with one */
+                TEST_ASSERT_EQUAL_INT(MCS_ERR_KIND,
+                                      mcs_pattern_init(&with, all_kinds[kind], n, k, &imp));
+                continue;
+            }
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_init(&with, all_kinds[kind], n, k, &imp));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_init(&without, all_kinds[kind], n, k, NULL));
+            mcs_rng r1, r2;
+            mcs_rng_seed(&r1, 40u + (uint64_t)sh, 41u);
+            r2 = r1;
+            for (int t = 0; t < 300; ++t) {
+                TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_draw(&with, &r1, k, bins, weights, points));
+                TEST_ASSERT_EQUAL_INT(MCS_OK,
+                                      mcs_pattern_draw(&without, &r2, k, bins2, weights2, points2));
+                TEST_ASSERT_EQUAL_MEMORY(bins2, bins, k * sizeof bins[0]);
+                TEST_ASSERT_EQUAL_MEMORY(weights2, weights, k * sizeof weights[0]);
+                TEST_ASSERT_EQUAL_MEMORY(points2, points, k * sizeof points[0]);
+            }
+        }
+    }
+    const size_t expect[5] = {1u, 3u, 5u, 7u, 9u};
+    double w[10] = {2, 2, 2, 2, 2, 2, 2, 2, 2, 2};
+    mcs_pattern uni;
+    mcs_rng rng;
+    mcs_rng_seed(&rng, 1u, 2u);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_init(&imp, 10u, w));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_init(&uni, MCS_PATTERN_UNIFORM, 10u, 5u, &imp));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_draw(&uni, &rng, 5u, bins, weights, NULL));
+    TEST_ASSERT_EQUAL_UINT_ARRAY(expect, bins, 5);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -353,5 +488,9 @@ int main(void)
     RUN_TEST(test_bad_pattern_configuration_returns_an_error_and_changes_nothing);
     RUN_TEST(test_bad_draw_writes_nothing_and_does_not_advance_the_rng);
     RUN_TEST(test_bad_points_or_bins_return_an_error_and_leave_outputs_untouched);
+    RUN_TEST(test_a_never_seeded_rng_is_refused_by_every_kind);
+    RUN_TEST(test_k_above_the_documented_maximum_is_refused);
+    RUN_TEST(test_overlapping_arrays_are_refused_and_nothing_is_written);
+    RUN_TEST(test_a_flat_importance_function_reproduces_the_pattern_without_one);
     return UNITY_END();
 }

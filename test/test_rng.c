@@ -100,6 +100,60 @@ static void test_bad_input_returns_an_error_and_changes_nothing(void)
     TEST_ASSERT_EQUAL_MEMORY(&copy, &rng, sizeof rng);
 }
 
+/* Issue 10 item 3: a zeroed generator's LCG outputs zeros forever, so a
+ * bounded draw that rejects 0 never returned. Seeding makes the increment
+ * odd: an even one is refused by every draw, which changes nothing. The u32
+ * and double checks come first so that without the fix the test fails
+ * rather than hangs in the bounded draw. */
+static void test_a_never_seeded_generator_is_refused_by_every_draw_instead_of_hanging(void)
+{
+    mcs_rng rng, copy;
+    memset(&rng, 0, sizeof rng);
+    copy = rng;
+    uint32_t u = 0xdeadbeefu;
+    double d = 42.0;
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_UNINIT, mcs_rng_u32(&rng, &u));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_UNINIT, mcs_rng_double(&rng, &d));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_UNINIT, mcs_rng_bounded(&rng, 10u, &u));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_UNINIT, mcs_rng_bounded(&rng, 0u, &u));
+    rng.state = 12345u; /* any state: the increment decides */
+    rng.inc = 2u;
+    copy = rng;
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_UNINIT, mcs_rng_bounded(&rng, 3u, &u));
+    TEST_ASSERT_EQUAL_HEX32(0xdeadbeefu, u);
+    TEST_ASSERT_EQUAL_DOUBLE(42.0, d);
+    TEST_ASSERT_EQUAL_MEMORY(&copy, &rng, sizeof rng);
+}
+
+/* Any odd increment is a full-period PCG32 stream: a 0xFF-filled generator
+ * is accepted and its bounded draws terminate and stay in range. */
+static void test_any_odd_increment_is_a_working_stream(void)
+{
+    mcs_rng rng;
+    memset(&rng, 0xFF, sizeof rng);
+    uint32_t seen = 0u;
+    for (int i = 0; i < 1000; ++i) {
+        uint32_t v = 99u;
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_rng_bounded(&rng, 7u, &v));
+        TEST_ASSERT_TRUE(v < 7u);
+        seen |= 1u << v;
+    }
+    TEST_ASSERT_EQUAL_HEX32(0x7Fu, seen); /* every value drawn */
+}
+
+/* Issue 10 item 10: an output inside the generator is refused (the state
+ * steps before the output is written, which would overwrite it). */
+static void test_an_output_inside_the_generator_is_refused(void)
+{
+    mcs_rng rng, copy;
+    mcs_rng_seed(&rng, 5u, 6u);
+    copy = rng;
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_rng_u32(&rng, (uint32_t *)(void *)&rng.state));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_rng_bounded(&rng, 7u, (uint32_t *)(void *)&rng.inc));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_rng_double(&rng, (double *)(void *)&rng.state));
+    TEST_ASSERT_EQUAL_MEMORY(&copy, &rng, sizeof rng);
+}
+
 static void test_status_strings_name_every_code(void)
 {
     TEST_ASSERT_EQUAL_STRING("MCS_OK", mcs_status_str(MCS_OK));
@@ -121,6 +175,9 @@ int main(void)
     RUN_TEST(test_bounded_draws_have_no_modulo_bias_for_a_large_odd_bound);
     RUN_TEST(test_doubles_are_in_unit_interval_with_53_bits_and_mean_one_half);
     RUN_TEST(test_bad_input_returns_an_error_and_changes_nothing);
+    RUN_TEST(test_a_never_seeded_generator_is_refused_by_every_draw_instead_of_hanging);
+    RUN_TEST(test_any_odd_increment_is_a_working_stream);
+    RUN_TEST(test_an_output_inside_the_generator_is_refused);
     RUN_TEST(test_status_strings_name_every_code);
     return UNITY_END();
 }

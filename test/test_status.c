@@ -15,7 +15,8 @@ static const mcs_status all_codes[] = {
     MCS_ERR_POINT_RANGE, MCS_ERR_KIND,    MCS_ERR_MISMATCH,   MCS_ERR_BOUND,
     MCS_ERR_EMPTY,    MCS_ERR_DOMAIN,     MCS_ERR_FREQ_RANGE, MCS_ERR_UNINIT,
     MCS_ERR_SPACE,    MCS_ERR_TRUNCATED,  MCS_ERR_MAGIC,      MCS_ERR_VERSION,
-    MCS_ERR_CHECKSUM, MCS_ERR_FORMAT,     MCS_ERR_INVARIANT};
+    MCS_ERR_CHECKSUM, MCS_ERR_FORMAT,     MCS_ERR_INVARIANT,  MCS_ERR_MAGNITUDE,
+    MCS_ERR_COUNT,    MCS_ERR_ALIAS};
 #define CODE_COUNT (sizeof all_codes / sizeof all_codes[0])
 
 static void test_the_codes_run_from_ok_down_without_a_gap(void)

@@ -54,6 +54,13 @@
 #error "MCS_MAX_SIDE must be at least 1"
 #endif
 
+/* Not a capacity (it sizes nothing and is not overridable): the largest
+ * count (trials, or values for a welford) any accumulator holds, 2^53, the
+ * last count a double represents exactly -- every read-out divides by it and
+ * every merge weighs by it. An add or merge that would pass it returns
+ * MCS_ERR_COUNT and changes nothing. */
+#define MCS_MAX_COUNT 9007199254740992u
+
 /* Link-time capacity check. Every file that includes this header references
  * a symbol named after all five capacities; libmcspec defines only the one
  * for the capacities it was built with (src/version.c). Code built with

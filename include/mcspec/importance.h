@@ -12,33 +12,57 @@
 extern "C" {
 #endif
 
+/* Smallest normalised weight g_n accepted: 2^-32 (about 2.3e-10). The
+ * generator draws u on the grid k / 2^53 (mcs_rng_double), so a CDF interval
+ * holds whole grid steps of 2^-53: at g_n >= 2^-32 the g_n stored is within
+ * about 2^-19 (relative) of the one asked for, the strata of stratified and
+ * jitter patterns (u spaced at most 2^-52 apart) resolve it to about 2^-20,
+ * and a sample weighs 1/p_n < 2^32 / N. A smaller weight is rejected
+ * (MCS_ERR_ZERO_WEIGHT) rather than sampled with a probability it does not
+ * have (at 1e-17 of the total, its bin would never be drawn). */
+#define MCS_IMPORTANCE_MIN_G 2.3283064365386963e-10
+
 typedef struct {
     size_t n;                  /* number of bins N */
-    double g[MCS_MAX_N];       /* normalised weights g_n, sum 1 */
-    double p[MCS_MAX_N];       /* p_n = N g_n (eq. 38), mean 1 */
+    double g[MCS_MAX_N];       /* g_n = cdf[n+1] - cdf[n] exactly: the probability that the
+                                  generator's u lands in bin n; sum 1 */
+    double p[MCS_MAX_N];       /* p_n = N g_n (eq. 38), mean 1; exactly 1 for a flat function
+                                  (where N g_n is 1 up to the rounding of the CDF) */
     double cdf[MCS_MAX_N + 1]; /* cdf[0] = 0, cdf[b+1] = g_0 + ... + g_b, cdf[n] = 1 exactly;
-                                  bin b owns the CDF interval I_b = [cdf[b], cdf[b+1]) */
-    double harmonic_mean;      /* H = N / sum_n 1/p_n (eq. 44) */
+                                  bin b owns the CDF interval I_b = [cdf[b], cdf[b+1]); every
+                                  entry a multiple of 2^-53 (the grid of mcs_rng_double) */
+    double harmonic_mean;      /* H = N / sum_n 1/p_n (eq. 44), in (0, 1] */
 } mcs_importance;
 
-/* Builds the importance function from n caller weights (any positive scale;
- * they are normalised). weights: n finite values > 0.
+/* Builds the importance function from n caller weights (any positive scale,
+ * 5e-324 to DBL_MAX: they are scaled by a power of two, then normalised).
+ * weights: n finite values > 0.
+ *
+ * The estimator is unbiased for the distribution the generator really
+ * samples: each CDF entry is rounded to the 2^-53 grid of the generator's u,
+ * g_n is the exact length of the interval I_n between two entries, and
+ * p_n = N g_n, so a sample lands in bin n with probability exactly g_n and
+ * carries 1/p_n. Weights that are all equal give the flat function: p_n = 1
+ * and H = 1 exactly, the uniform density, which a pattern treats as no
+ * importance function at all (pattern.h).
+ *
  * MCS_ERR_NULL, MCS_ERR_N_RANGE (n = 0 or n > MCS_MAX_N), MCS_ERR_NOT_FINITE,
- * MCS_ERR_NEGATIVE, MCS_ERR_ZERO_WEIGHT (a zero weight makes 1/p_n infinite).
- * On error *imp is untouched. */
+ * MCS_ERR_NEGATIVE, MCS_ERR_ZERO_WEIGHT (a zero weight, or one below
+ * MCS_IMPORTANCE_MIN_G of the total). On error *imp is untouched. */
 mcs_status mcs_importance_init(mcs_importance *imp, size_t n, const double *weights);
 
 /* Inverse-CDF warp: u in [0,1) lands in the bin b whose interval I_b holds it,
  * and goes to x = (b + (u - cdf[b]) / g_b) / N, with floor(N x) = b exactly.
- * x or bin may be NULL if not wanted. MCS_ERR_NULL (imp), MCS_ERR_UNINIT,
- * MCS_ERR_POINT_RANGE (u outside [0,1) or NaN); outputs untouched on error. */
+ * x or bin may be NULL if not wanted (not one storage for both:
+ * MCS_ERR_ALIAS). MCS_ERR_NULL (imp), MCS_ERR_UNINIT, MCS_ERR_POINT_RANGE
+ * (u outside [0,1) or NaN); outputs untouched on error. */
 mcs_status mcs_importance_warp(const mcs_importance *imp, double u, double *x, size_t *bin);
 
 /* Q_freq = N^{-1/2} sum_n e^{-2 pi i freq n / N} / p_n: the eq. 7 transform of
  * 1/p (eq. 43), which carries every importance-sampled cross spectrum (eq. 43,
  * 49, 52); N^{-1/2} Q_0 = 1/H (eq. 44). O(N) with trig per term.
- * MCS_ERR_NULL, MCS_ERR_UNINIT, MCS_ERR_FREQ_RANGE (freq >= imp->n).
- * Outputs untouched on error. */
+ * MCS_ERR_NULL, MCS_ERR_UNINIT, MCS_ERR_FREQ_RANGE (freq >= imp->n),
+ * MCS_ERR_ALIAS (re and im one double). Outputs untouched on error. */
 mcs_status mcs_importance_q(const mcs_importance *imp, size_t freq, double *re, double *im);
 
 #ifdef __cplusplus

@@ -26,12 +26,22 @@ typedef enum {
 
 #define MCS_PATTERN_KIND_COUNT 5
 
+/* Largest K a pattern takes: 2^30 (1 073 741 824) samples per trial. Why
+ * this bound: exact theory walks the K samples of a uniform pattern once
+ * (about 4 s at 2^30; at SIZE_MAX it never returned); u_j = (j + xi)/K keeps
+ * at least 53 - 30 = 23 bits of the in-stratum offset xi, and j N (N up to
+ * 2^12) stays an exact integer in a double, so bins are found exactly (past
+ * ~2^50 they are not); and a trial's total weight, at most
+ * K / (N MCS_IMPORTANCE_MIN_G) < 2^62, stays far inside every accumulator's
+ * magnitude limit. */
+#define MCS_MAX_K 1073741824u
+
 typedef struct {
     mcs_pattern_kind kind;
     size_t n;                         /* bins N, 1..MCS_MAX_N */
-    size_t k;                         /* samples per trial K, >= 1 */
-    const mcs_importance *importance; /* caller-owned, NULL for the uniform density;
-                                         must outlive the pattern */
+    size_t k;                         /* samples per trial K, 1..MCS_MAX_K */
+    const mcs_importance *importance; /* caller-owned, NULL for the uniform density (also
+                                         when a flat one was given); must outlive the pattern */
 } mcs_pattern;
 
 /* Name of a kind ("random", "stratified", "homogenized", "uniform",
@@ -39,33 +49,43 @@ typedef struct {
 const char *mcs_pattern_kind_str(mcs_pattern_kind kind);
 
 /* Configures a pattern. importance may be NULL; if not, its n must equal n.
- * MCS_ERR_NULL, MCS_ERR_N_RANGE, MCS_ERR_K_RANGE (k = 0), MCS_ERR_KIND
- * (unknown kind, or homogenized with importance), MCS_ERR_MISMATCH,
- * MCS_ERR_UNINIT (importance not initialised). *pat untouched on error. */
+ * A flat importance function (every p_n = 1: equal weights) is the uniform
+ * density, so the pattern stores NULL and draws bit for bit what it draws
+ * without one (the rounded CDF of 1/N steps could not put a point that lies
+ * exactly on a bin edge, such as the uniform pattern's, in the same bin).
+ * MCS_ERR_NULL, MCS_ERR_N_RANGE, MCS_ERR_K_RANGE (k = 0 or k > MCS_MAX_K),
+ * MCS_ERR_KIND (unknown kind, or homogenized with an importance function,
+ * flat or not), MCS_ERR_MISMATCH, MCS_ERR_UNINIT (importance not initialised).
+ * *pat untouched on error. */
 mcs_status mcs_pattern_init(mcs_pattern *pat, mcs_pattern_kind kind, size_t n, size_t k,
                             const mcs_importance *importance);
 
 /* Draws one trial: bins[k] (n_j in [0,N)), weights[k] (w_j = 1/p_{n_j}, 1 without
  * importance) and, if points is not NULL, points[k] (x_j in [0,1), floor(N x_j) = n_j).
- * k must equal pat->k (it is the length of every caller array).
- * MCS_ERR_NULL, MCS_ERR_MISMATCH (k != pat->k), MCS_ERR_UNINIT.
- * On error nothing is written and rng is not advanced. */
+ * k must equal pat->k (it is the length of every caller array). The three
+ * arrays must not overlap each other, *pat, *rng or the importance function.
+ * MCS_ERR_NULL, MCS_ERR_MISMATCH (k != pat->k), MCS_ERR_UNINIT (pat, or an
+ * rng never seeded), MCS_ERR_ALIAS (overlap). On error nothing is written
+ * and rng is not advanced. */
 mcs_status mcs_pattern_draw(const mcs_pattern *pat, mcs_rng *rng, size_t k, size_t *bins,
                             double *weights, double *points);
 
 /* Bins caller points (a renderer's own samples) into (bin, weight) form over
  * n bins: bin floor(N x_j), weight 1/p_bin (1 if importance is NULL).
- * points[k] in [0,1); bins[k], weights[k] written.
+ * points[k] in [0,1); bins[k], weights[k] written; no two of the three arrays
+ * (nor an output and the importance function) may overlap.
  * MCS_ERR_NULL, MCS_ERR_N_RANGE, MCS_ERR_K_RANGE (k = 0), MCS_ERR_MISMATCH
- * (importance->n != n), MCS_ERR_POINT_RANGE. Outputs untouched on error. */
+ * (importance->n != n), MCS_ERR_POINT_RANGE, MCS_ERR_ALIAS. Outputs untouched
+ * on error. */
 mcs_status mcs_pattern_bin_points(size_t n, size_t k, const mcs_importance *importance,
                                   const double *points, size_t *bins, double *weights);
 
 /* Dense s_n = r_n / p_n (eq. 38) from a trial's k (bin, weight) pairs:
  * s[bin] is the sum of the weights of the samples in that bin.
- * bins[k] in [0,n), weights[k] finite and >= 0, s[n] written.
+ * bins[k] in [0,n), weights[k] finite and >= 0, s[n] written; s must not
+ * overlap bins or weights (it is zeroed before they are read).
  * MCS_ERR_NULL, MCS_ERR_N_RANGE, MCS_ERR_K_RANGE (k = 0), MCS_ERR_BIN_RANGE,
- * MCS_ERR_NOT_FINITE, MCS_ERR_NEGATIVE. s untouched on error. */
+ * MCS_ERR_NOT_FINITE, MCS_ERR_NEGATIVE, MCS_ERR_ALIAS. s untouched on error. */
 mcs_status mcs_pattern_dense(size_t n, size_t k, const size_t *bins, const double *weights,
                              double *s);
 

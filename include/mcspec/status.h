@@ -13,7 +13,8 @@ typedef enum {
     MCS_ERR_K_RANGE = -3,         /* sample count k is 0 or above a capacity */
     MCS_ERR_NOT_FINITE = -4,      /* a weight or value is NaN or infinite */
     MCS_ERR_NEGATIVE = -5,        /* a weight is negative */
-    MCS_ERR_ZERO_WEIGHT = -6,     /* an importance weight is 0 (1/p_n would be infinite) or all are */
+    MCS_ERR_ZERO_WEIGHT = -6,     /* an importance weight is 0, or too small next to the total to be
+                                     sampled as asked (below MCS_IMPORTANCE_MIN_G of it) */
     MCS_ERR_BIN_RANGE = -7,       /* a bin index is outside [0, n) */
     MCS_ERR_POINT_RANGE = -8,     /* a point is outside [0, 1) */
     MCS_ERR_KIND = -9,            /* unknown pattern kind, or kind not defined with importance */
@@ -29,7 +30,11 @@ typedef enum {
     MCS_ERR_VERSION = -19,        /* record format version this build does not read */
     MCS_ERR_CHECKSUM = -20,       /* record CRC-32 does not match its bytes */
     MCS_ERR_FORMAT = -21,         /* record shape or lengths not what its kind needs, or bytes after it */
-    MCS_ERR_INVARIANT = -22       /* values no adds produce: negative M2, data with no trials, count > 2^53 */
+    MCS_ERR_INVARIANT = -22,      /* values no adds produce: negative M2, data with no trials, count > 2^53 */
+    MCS_ERR_MAGNITUDE = -23,      /* a finite value above the largest magnitude the call accepts
+                                     (its square or 4th power could overflow a sum; see the header) */
+    MCS_ERR_COUNT = -24,          /* an add or merge would take a count past MCS_MAX_COUNT */
+    MCS_ERR_ALIAS = -25           /* arrays overlap where the call cannot work in place */
 } mcs_status;
 
 /* Name of a status code as a static string ("MCS_OK", ...); never NULL. */

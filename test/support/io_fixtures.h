@@ -12,8 +12,8 @@
 
 /* Record sizes by docs/format.md. */
 #define IO_SPECTRUM_BYTES(n) (44u + 40u * ((n) / 2u + 1u))
-#define IO_MOMENT_BYTES(n) (44u + 8u * ((n) + (n) * ((n) + 1u) / 2u))
-#define IO_AUTOCORR_BYTES(n) (44u + 8u * ((n) + (n) / 2u + 1u))
+#define IO_MOMENT_BYTES(n) (44u + 8u * (3u * (n) + (n) * ((n) + 1u)))
+#define IO_AUTOCORR_BYTES(n) (44u + 8u * (2u * (n) + 2u * ((n) / 2u + 1u) + 2u))
 #define IO_WELFORD_BYTES 68u
 #define IO_POINTSET_BYTES(f) (44u + 16u * ((f) + 1u))
 #define IO_POINTSET2D_BYTES(f) (44u + 32u * ((f) + 1u) * ((f) + 1u))
@@ -22,7 +22,8 @@
 #define IO_MAX2(a, b) ((a) > (b) ? (a) : (b))
 /* Room for a record of every kind one size past this build's capacities. */
 #define IO_REC_MAX                                                                     \
-    IO_MAX2(IO_MAX2(IO_SPECTRUM_BYTES(MCS_MAX_N + 2u), IO_MOMENT_BYTES(MCS_MAX_COV_N + 1u)), \
+    IO_MAX2(IO_MAX2(IO_MAX2(IO_SPECTRUM_BYTES(MCS_MAX_N + 2u), IO_AUTOCORR_BYTES(MCS_MAX_N + 2u)), \
+                    IO_MOMENT_BYTES(MCS_MAX_COV_N + 1u)),                              \
             IO_MAX2(IO_POINTSET2D_BYTES(MCS_MAX_FREQ + 1u),                          \
                     IO_MAX2(IO_SPECTRUM2D_BYTES(MCS_MAX_SIDE + 1u, MCS_MAX_SIDE + 1u), \
                             IO_POINTSET_BYTES(MCS_MAX_FREQ_1D + 1u))))
