@@ -1,0 +1,126 @@
+/* Runs adversarial rows in forked children, so that a crash, a sanitizer
+ * report or a hang fails one row and the rest still run: the child reports
+ * the start and the result of each row through a pipe; the parent kills it
+ * when a row outlasts adv_timeout_ms and starts a new child after that row. */
+#define _POSIX_C_SOURCE 200809L
+#include "adv.h"
+
+#include <poll.h>
+#include <signal.h>
+#include <stdio.h>
+#include <string.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+int adv_timeout_ms = 1000;
+
+typedef struct {
+    int row, done, failed;
+    long calls;
+    char why[200];
+} report;
+
+static void child(int fd, const adv_row *rows, size_t from, size_t nrows)
+{
+    report m;
+    for (size_t i = from; i < nrows; ++i) {
+        memset(&m, 0, sizeof m);
+        m.row = (int)i;
+        if (write(fd, &m, sizeof m) != (ssize_t)sizeof m)
+            _exit(3);
+        m.failed = adv_run_row(&rows[i], m.why, &m.calls);
+        m.done = 1;
+        if (write(fd, &m, sizeof m) != (ssize_t)sizeof m)
+            _exit(3);
+    }
+    _exit(0);
+}
+
+static int read_report(int fd, report *m)
+{
+    size_t got = 0;
+    while (got < sizeof *m) {
+        ssize_t k = read(fd, (char *)m + got, sizeof *m - got);
+        if (k <= 0)
+            return 0;
+        got += (size_t)k;
+    }
+    return 1;
+}
+
+/* Collects one child's reports; returns the row to restart from. */
+static size_t parent(int fd, pid_t pid, size_t from, size_t nrows, int *result,
+                     char (*why)[200], long *calls)
+{
+    long cur = -1;
+    report m;
+    for (;;) {
+        struct pollfd p = {fd, POLLIN, 0};
+        int ready = poll(&p, 1, adv_timeout_ms);
+        if (ready == 0) {
+            kill(pid, SIGKILL);
+            waitpid(pid, NULL, 0);
+            size_t row = cur >= 0 ? (size_t)cur : from;
+            result[row] = 1;
+            snprintf(why[row], 200, "no return within %d ms (hang)", adv_timeout_ms);
+            return row + 1u;
+        }
+        if (!read_report(fd, &m)) {
+            int status = 0;
+            waitpid(pid, &status, 0);
+            if (cur < 0 && from >= nrows)
+                return nrows;
+            size_t row = cur >= 0 ? (size_t)cur : from;
+            if (cur < 0 && row >= nrows)
+                return nrows;
+            result[row] = 1;
+            if (WIFSIGNALED(status))
+                snprintf(why[row], 200, "crashed (signal %d)", WTERMSIG(status));
+            else
+                snprintf(why[row], 200, "child exited with status %d (sanitizer report above?)",
+                         WEXITSTATUS(status));
+            return row + 1u;
+        }
+        if (!m.done) {
+            cur = m.row;
+            continue;
+        }
+        result[m.row] = m.failed;
+        memcpy(why[m.row], m.why, sizeof m.why);
+        *calls += m.calls;
+        cur = -1;
+        if ((size_t)m.row + 1u == nrows) {
+            waitpid(pid, NULL, 0);
+            return nrows;
+        }
+    }
+}
+
+void adv_run(const adv_row *rows, size_t nrows, int *result, char (*why)[200], long *calls)
+{
+    size_t next = 0;
+    fflush(stdout);
+    fflush(stderr);
+    while (next < nrows) {
+        int fd[2];
+        if (pipe(fd) != 0)
+            break;
+        pid_t pid = fork();
+        if (pid == 0) {
+            close(fd[0]);
+            child(fd[1], rows, next, nrows);
+        }
+        close(fd[1]);
+        if (pid < 0) {
+            close(fd[0]);
+            break;
+        }
+        next = parent(fd[0], pid, next, nrows, result, why, calls);
+        close(fd[0]);
+    }
+    for (; next < nrows; ++next) { /* no fork: say so rather than pass silently */
+        result[next] = 1;
+        snprintf(why[next], 200, "could not fork");
+    }
+}
