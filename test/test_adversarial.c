@@ -294,14 +294,20 @@ static int item6_variance_stderr_is_never_zero_when_undefined(const adv_val *a)
                                                       : broken("MCS_OK with %g (m4 = %g)", se, w.m4);
 }
 
-/* Item 7: Cov(S_k, S_k) is a variance; rounding made it negative. */
-static int item7_covariance_of_a_frequency_with_itself_is_never_negative(const adv_val *a)
+/* Item 7: Cov(S_k, S_k) is a variance; rounding made it negative (and the
+ * exact Var[I] of eq. 52 corrected: fuzz_api found N = 2, f = {0.1, 0.1}). */
+static int item7_variances_are_never_negative(const adv_val *a)
 {
     static mcs_moment m;
     static mcs_theory th;
+    static mcs_importance imp;
     mcs_pattern pat;
     double re = 0.0, im = 0.0;
+    const double ones[2] = {1.0, 1.0}, f01[2] = {0.1, 0.1};
     (void)a;
+    mcs_importance_init(&imp, 2u, ones);
+    if (mcs_eq52_variance_corrected(&imp, 1u, f01, &re) == MCS_OK && re < 0.0)
+        return broken("eq52 corrected, uniform N = 2, f = {0.1, 0.1}: %g", re);
     mcs_moment_init(&m, 12u);
     for (int t = 0; t < 3; ++t)
         mcs_moment_add_bins(&m, 5u, base_bins[t], base_w);
@@ -316,16 +322,23 @@ static int item7_covariance_of_a_frequency_with_itself_is_never_negative(const a
     return MCS_OK;
 }
 
-/* Item 8: {1e308, 0.3, 0.3} gave H = 0; equal weights of 1e308 were refused
- * as not finite though any positive scale is documented. */
+/* Item 8: {1e308, 0.3, 0.3} gave H = 0, and 57 equal weights of 0.3 gave
+ * H = 1 + 2^-52 (fuzz_api), both outside the documented (0, 1]; equal
+ * weights of 1e308 were refused as not finite though any positive scale is
+ * documented. */
 static int item8_importance_weights_of_any_finite_scale(const adv_val *a)
 {
     static mcs_importance imp;
+    static double w57[57];
     const double w1[3] = {1e308, 0.3, 0.3}, w2[3] = {1e308, 1e308, 1e308};
     (void)a;
+    for (int j = 0; j < 57; ++j)
+        w57[j] = 0.3;
     if (mcs_importance_init(&imp, 3u, w1) == MCS_OK &&
         !(imp.harmonic_mean > 0.0 && imp.harmonic_mean <= 1.0))
         return broken("{1e308, 0.3, 0.3}: harmonic mean %g", imp.harmonic_mean);
+    if (mcs_importance_init(&imp, 57u, w57) == MCS_OK && !(imp.harmonic_mean <= 1.0))
+        return broken("57 weights of 0.3: harmonic mean %.17g", imp.harmonic_mean);
     int st = mcs_importance_init(&imp, 3u, w2);
     return st != MCS_ERR_NOT_FINITE ? MCS_OK : broken("three weights of 1e308: MCS_ERR_NOT_FINITE");
 }
@@ -416,7 +429,7 @@ static const scenario scenarios[] = {
     SCENARIO(item4_the_largest_accepted_k_gives_sound_theory_in_bounded_time, 4),
     SCENARIO(item5_no_accepted_input_poisons_a_read_out, 5),
     SCENARIO(item6_variance_stderr_is_never_zero_when_undefined, 6),
-    SCENARIO(item7_covariance_of_a_frequency_with_itself_is_never_negative, 7),
+    SCENARIO(item7_variances_are_never_negative, 7),
     SCENARIO(item8_importance_weights_of_any_finite_scale, 8),
     SCENARIO(item9_self_merges_never_wrap_the_count, 9),
     SCENARIO(item10_input_inside_the_plan_scratch_works_or_is_refused, 10),

@@ -214,9 +214,9 @@ static void int_rows(row_sink *k, int i, const adv_slot *s)
         vals[nv++] = (long)UINT32_MAX;
     } else {
         long lo = s->llo, hi = s->lhi;
-        long cand[8] = {lo - 1, lo, hi, hi + 1, 0,
+        long cand[8] = {lo > LONG_MIN ? lo - 1 : lo, lo, hi, hi < LONG_MAX ? hi + 1 : hi, 0,
                         s->kind == K_LONG ? LONG_MIN : INT_MIN,
-                        s->kind == K_LONG ? LONG_MAX : INT_MAX, (lo + hi) / 2};
+                        s->kind == K_LONG ? LONG_MAX : INT_MAX, lo / 2 + hi / 2};
         for (int c = 0; c < 8; ++c)
             vals[nv++] = cand[c];
     }
