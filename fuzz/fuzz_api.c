@@ -383,6 +383,27 @@ static void op_acc_init_merge_count(unsigned which)
     }
 }
 
+/* After a successful add of k finite samples: does some bin's s_n = the sum
+ * of its weights overflow? Then no spectrum of the trial exists, and MCS_OK
+ * means a stale or poisoned one (item 1 on the FFT path, 5 elsewhere). */
+static int bin_sum_overflows(size_t n, size_t k, const size_t *bins, const double *pts,
+                             const double *w)
+{
+    static double sum[MAXLEN];
+    if (n == 0u || n > MAXLEN)
+        return 0;
+    memset(sum, 0, n * sizeof sum[0]);
+    int bad = 0;
+    for (size_t j = 0; j < k; ++j) {
+        size_t b = bins != NULL ? bins[j] : (size_t)(pts[j] * (double)n);
+        if (b < n) {
+            sum[b] += w != NULL ? w[j] : 1.0;
+            bad |= !isfinite(sum[b]);
+        }
+    }
+    return bad;
+}
+
 /* One trial into an accumulator: sparse bins, dense s, or points. */
 static void op_add(void)
 {
@@ -416,6 +437,9 @@ static void op_add(void)
     end(st);
     if (o != NULL)
         counted(st, before, 1u, count_of(type, o));
+    const int sparse = type == AC || (type == MOM && how == 0) || (type == SPEC && how != 1);
+    if (st == MCS_OK && sparse && bin_sum_overflows(nb, k, type == SPEC && how == 2 ? NULL : zin, pts, w))
+        finding(type == SPEC ? 1 : 5, cur_fn, "MCS_OK for a trial whose bin sum overflows");
 }
 
 /* The read-outs and the operations on generators, plans, theory, closed

@@ -7,7 +7,9 @@
 
 #include <poll.h>
 #include <signal.h>
+#include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/types.h>
 #include <sys/wait.h>
@@ -34,7 +36,9 @@ static void child(int fd, const adv_row *rows, size_t from, size_t nrows)
         if (write(fd, &m, sizeof m) != (ssize_t)sizeof m)
             _exit(3);
     }
-    _exit(0);
+    /* exit, not _exit: at-exit checks (make check-alloc's allocation count,
+     * LeakSanitizer) see the child's calls too. The parent flushed stdio. */
+    exit(0);
 }
 
 static int read_report(int fd, report *m)
@@ -49,49 +53,56 @@ static int read_report(int fd, report *m)
     return 1;
 }
 
-/* Collects one child's reports; returns the row to restart from. */
+#if defined(__GNUC__)
+__attribute__((format(printf, 4, 5)))
+#endif
+static void blame(int *result, char (*why)[200], size_t row, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    result[row] = 1;
+    vsnprintf(why[row], 200, fmt, ap);
+    va_end(ap);
+}
+
+/* Collects one child's reports; returns the row to restart from. A child
+ * that dies or hangs fails the row it was in (or the next one, if it died
+ * between rows), and the next child starts after it. */
 static size_t parent(int fd, pid_t pid, size_t from, size_t nrows, int *result,
                      char (*why)[200], long *calls)
 {
-    long cur = -1;
+    size_t row = from; /* the row the child is in, or the next one */
     report m;
+    int status = 0;
     for (;;) {
         struct pollfd p = {fd, POLLIN, 0};
-        int ready = poll(&p, 1, adv_timeout_ms);
-        if (ready == 0) {
+        if (poll(&p, 1, adv_timeout_ms) == 0) {
             kill(pid, SIGKILL);
             waitpid(pid, NULL, 0);
-            size_t row = cur >= 0 ? (size_t)cur : from;
-            result[row] = 1;
-            snprintf(why[row], 200, "no return within %d ms (hang)", adv_timeout_ms);
+            blame(result, why, row, "no return within %d ms (hang)", adv_timeout_ms);
             return row + 1u;
         }
         if (!read_report(fd, &m)) {
-            int status = 0;
             waitpid(pid, &status, 0);
-            if (cur < 0 && from >= nrows)
-                return nrows;
-            size_t row = cur >= 0 ? (size_t)cur : from;
-            if (cur < 0 && row >= nrows)
-                return nrows;
-            result[row] = 1;
             if (WIFSIGNALED(status))
-                snprintf(why[row], 200, "crashed (signal %d)", WTERMSIG(status));
+                blame(result, why, row, "crashed (signal %d)", WTERMSIG(status));
             else
-                snprintf(why[row], 200, "child exited with status %d (sanitizer report above?)",
-                         WEXITSTATUS(status));
+                blame(result, why, row, "child exited with status %d (sanitizer report above?)",
+                      WEXITSTATUS(status));
             return row + 1u;
         }
-        if (!m.done) {
-            cur = m.row;
+        row = (size_t)m.row;
+        if (!m.done)
             continue;
-        }
-        result[m.row] = m.failed;
-        memcpy(why[m.row], m.why, sizeof m.why);
+        result[row] = m.failed;
+        memcpy(why[row], m.why, sizeof m.why);
         *calls += m.calls;
-        cur = -1;
-        if ((size_t)m.row + 1u == nrows) {
-            waitpid(pid, NULL, 0);
+        if (++row == nrows) {
+            waitpid(pid, &status, 0);
+            if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+                blame(result, why, nrows - 1u,
+                      "child exited with status %d after its last row (an at-exit check: an "
+                      "allocation count, a leak?)", WEXITSTATUS(status));
             return nrows;
         }
     }
