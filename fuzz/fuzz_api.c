@@ -224,7 +224,7 @@ static size_t *zarray(size_t len, size_t n)
     unsigned mode = byte() % 4u, mul = 1u + byte() % 7u;
     size_t off = byte();
     for (size_t j = 0; j < len; ++j)
-        zin[j] = mode == 3 ? size_any() : n > 0u ? (j * mul + off) % (n + (mode == 2)) : off;
+        zin[j] = mode == 3 ? size_any() : n > 0u ? (j * mul + off) % (n + (mode == 2 && n < SIZE_MAX)) : off;
     return zin;
 }
 
