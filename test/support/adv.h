@@ -52,7 +52,7 @@ enum { E_D, E_Z, E_U32, E_U64 };
 
 /* Contents of input arrays and scalars, and the checks on outputs. */
 enum {
-    R_NONE,
+    R_NONE,   /* objects and scalars without a content role */
     R_WEIGHT, /* finite, >= 0 (a sample weight, a dense s_n) */
     R_IMPW,   /* finite, > 0 (importance weights) */
     R_F,      /* finite, any sign (an integrand, a signal) */
@@ -85,11 +85,10 @@ enum {
 };
 
 /* Array length: op over slot values. */
-enum { L_CONST, L_SLOT, L_2SLOT, L_SQ, L_HALF, L_OBJN, L_OBJNN, L_KDIM, L_SQOBJ, L_PROD };
+enum { L_SLOT, L_2SLOT, L_SQ, L_HALF, L_OBJN, L_OBJNN, L_KDIM, L_PROD };
 
 typedef struct {
     uint8_t op, a, b;
-    size_t c;
 } adv_len;
 
 typedef struct {
@@ -180,7 +179,6 @@ const char *adv_type_name(int type);
 int adv_build(int type, int ov, int v, void *obj);
 /* N of an object as the length of its arrays (0 if it has none). */
 size_t adv_obj_n(int type, const void *obj);
-size_t adv_obj_nn(int type, const void *obj);
 /* The same from the state a row asks for (zeroed and 0xFF objects: the base N). */
 size_t adv_state_n(int type, int ov);
 size_t adv_state_nn(int type, int ov, int v);

@@ -57,14 +57,12 @@ static size_t length_of(const adv_row *r, const adv_call *c, const adv_len *l)
 {
     const adv_slot *o = &r->fn->slot[l->a];
     switch (l->op) {
-    case L_CONST: return l->c;
     case L_SLOT: return slot_value(r, l->a);
     case L_2SLOT: return 2u * slot_value(r, l->a);
     case L_SQ: return slot_value(r, l->a) * slot_value(r, l->a);
     case L_HALF: return slot_value(r, l->a) / 2u + 1u;
     case L_OBJN: return adv_state_n(o->type, c->ov[l->a]);
     case L_OBJNN: return adv_state_nn(o->type, c->ov[l->a], r->variant);
-    case L_SQOBJ: return adv_state_n(o->type, c->ov[l->a]) * adv_state_n(o->type, c->ov[l->a]);
     case L_PROD: return slot_value(r, l->a) * slot_value(r, l->b);
     default: /* L_KDIM: k times the dimension of the sampler in slot b */
         return slot_value(r, l->a) *

@@ -251,16 +251,6 @@ size_t adv_state_nn(int type, int ov, int v)
     return n;
 }
 
-/* Length of the arrays that cover an object's whole index set. */
-size_t adv_obj_nn(int type, const void *obj)
-{
-    if (type == T_SPECTRUM2D)
-        return ((const mcs_spectrum2d *)obj)->n_x * ((const mcs_spectrum2d *)obj)->n_y;
-    if (type == T_SAMPLER)
-        return ((const mcs_sampler *)obj)->k * ((const mcs_sampler *)obj)->dim;
-    return adv_obj_n(type, obj);
-}
-
 int adv_has_count(int type)
 {
     return type == T_WELFORD || type == T_SPECTRUM || type == T_MOMENT || type == T_AUTOCORR ||
