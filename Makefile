@@ -226,7 +226,8 @@ run: all
 # Every Unity runner, then the command-line and CSV checks of the section
 # examples (test/examples_check.sh prints a Unity-style summary too).
 test: $(TEST_BIN) $(SECTION_BIN)
-	@EXAMPLES="$(SECTION_BIN)" sh test/run_tests.sh $(TEST_BIN) test/examples_check.sh
+	@EXAMPLES="$(SECTION_BIN)" MCSPEC="$(CLI_BIN)" sh test/run_tests.sh $(TEST_BIN) \
+	    test/examples_check.sh test/cli_check.sh test/record_check.sh
 
 clean:
 	rm -rf build

@@ -1,6 +1,7 @@
 /* Section 1 of the note: variance of a gradient (the difference of two
  * neighbouring pixels' integrals) estimated with independent samples
  * (eq. 1-2) and with shared samples (eq. 3-4), for every pattern kind. */
+#include "exact.h"
 #include "mcspec.h"
 #include "measure.h"
 #include "readout.h"
@@ -17,7 +18,9 @@ static const char help_text[] =
     "(eq. 1-2: Var = Var[f] + Var[g] ~ 2 Var[f]) and with shared samples\n"
     "(eq. 3-4: Var = Var[h], h = f - g), for every pattern kind.\n"
     "The first table is measured only; the second puts the note's forms\n"
-    "beside the exact discrete variance (mcspec theory) and the measurement.\n";
+    "beside the exact discrete variance (mcspec theory) and the measurement.\n"
+    "Any N up to MCS_MAX_N: above MCS_MAX_COV_N the exact variances come from\n"
+    "mcs_theory_spectrum, and eq. 2 and 4 are its Var[f] + Var[g] and Var[h].\n";
 
 static const mcs_pattern_kind kinds[MCS_PATTERN_KIND_COUNT] = {
     MCS_PATTERN_RANDOM, MCS_PATTERN_STRATIFIED, MCS_PATTERN_HOMOGENIZED, MCS_PATTERN_JITTER,
@@ -30,7 +33,7 @@ enum { E_F_ON_A, E_G_ON_A, E_G_ON_B, E_H_ON_C };
 enum { D_INDEPENDENT, D_SHARED };
 
 static ex_run runs[MCS_PATTERN_KIND_COUNT];
-static double f[MCS_MAX_COV_N], g[MCS_MAX_COV_N], h[MCS_MAX_COV_N];
+static double f[MCS_MAX_N], g[MCS_MAX_N], h[MCS_MAX_N];
 /* Exact variances are differences of second moments of size ~ mean f^2, so
  * anything below 1e-12 of that is rounding, not variance. */
 static double noise_floor;
@@ -109,21 +112,34 @@ static void variance_row(const ex_options *opt, const char *quantity, const char
     ex_row_print(opt, &r);
 }
 
-/* The second table: exact variances of the kind from mcs_theory beside the
- * note's forms. */
+/* Eq. 2 and eq. 4 from the N x N moments (mcs_eq2, mcs_eq4); above
+ * MCS_MAX_COV_N their definitions, Var[f] + Var[g] and Var[h], from
+ * mcs_theory_spectrum. 0 if a value is missing. */
+static int gradient_forms(const ex_options *opt, const ex_exact *ex, double vf, double vg,
+                          double vh, double *eq2, double *eq4)
+{
+    const mcs_theory *th = ex_exact_theory(ex);
+    if (th == NULL) {
+        *eq2 = vf + vg;
+        *eq4 = vh;
+        return !isnan(*eq2) && !isnan(*eq4);
+    }
+    return mcs_eq2_uncorrelated_variance(th, opt->n, opt->k, f, g, eq2) == MCS_OK &&
+           mcs_eq4_correlated_variance(th, opt->n, opt->k, f, g, eq4) == MCS_OK;
+}
+
+/* The second table: exact variances of the kind beside the note's forms. */
 static int predicted_rows(const ex_options *opt, int i)
 {
-    static mcs_theory th;
+    static ex_exact ex;
     mcs_pattern_kind kind = kinds[i];
     const ex_run *run = &runs[i];
-    double vf, vg, vh, cov_fg, eq2, eq4;
-    if (mcs_theory_init(&th, &run->pattern) != MCS_OK ||
-        mcs_theory_variance(&th, opt->n, opt->k, f, &vf) != MCS_OK ||
-        mcs_theory_variance(&th, opt->n, opt->k, g, &vg) != MCS_OK ||
-        mcs_theory_variance(&th, opt->n, opt->k, h, &vh) != MCS_OK ||
-        mcs_theory_estimator_covariance(&th, opt->n, opt->k, f, g, &cov_fg) != MCS_OK ||
-        mcs_eq2_uncorrelated_variance(&th, opt->n, opt->k, f, g, &eq2) != MCS_OK ||
-        mcs_eq4_correlated_variance(&th, opt->n, opt->k, f, g, &eq4) != MCS_OK)
+    double eq2, eq4;
+    if (ex_exact_init(&ex, &run->pattern) != MCS_OK)
+        return 0;
+    double vf = ex_exact_variance(&ex, f), vg = ex_exact_variance(&ex, g);
+    double vh = ex_exact_variance(&ex, h), cov_fg = ex_exact_estimator_covariance(&ex, f, g);
+    if (isnan(vf) || isnan(vg) || isnan(cov_fg) || !gradient_forms(opt, &ex, vf, vg, vh, &eq2, &eq4))
         return 0;
     const mcs_welford *indep = &run->difference[D_INDEPENDENT], *fa = &run->estimate[E_F_ON_A];
     /* Independent trials: no covariance, so the exact variance of the
@@ -148,7 +164,7 @@ static int predicted_rows(const ex_options *opt, int i)
 int main(int argc, char **argv)
 {
     ex_options opt = {64u, 8u, 100000ul, 1u, 0};
-    int rc = ex_parse_options(argc, argv, &opt, MCS_MAX_COV_N, EX_MAX_K, help_text);
+    int rc = ex_parse_options(argc, argv, &opt, MCS_MAX_N, EX_MAX_K, help_text);
     if (rc != EX_PARSE_OK)
         return rc;
     fill_integrands(opt.n);

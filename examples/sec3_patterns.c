@@ -3,6 +3,7 @@
  * uniform jitter: power spectra at chosen frequencies, the off-diagonal
  * <S_k S_l*> that makes fixed strata non-stationary, and what that does to
  * the estimator variance of eq. 14. */
+#include "exact.h"
 #include "mcspec.h"
 #include "measure.h"
 #include "readout.h"
@@ -22,7 +23,10 @@ static const char help_text[] =
     "(a smooth part and an edge) at the bin centres. Exact predictions come\n"
     "from mcspec theory, closed forms from the note (mcs_eqNN_*).\n"
     "Eq. 33 as printed (sinc^2) is an N -> infinity form: its limit check\n"
-    "compares it with the exact finite-N form at 16 N.\n";
+    "compares it with the exact finite-N form at 16 N (or the largest multiple\n"
+    "of N within MCS_MAX_N; none above MCS_MAX_N / 2). Any N up to MCS_MAX_N:\n"
+    "above MCS_MAX_COV_N the exact values come from mcs_theory_spectrum, and the\n"
+    "check against the N x N moment accumulator is skipped.\n";
 
 enum { P_RANDOM, P_STRAT, P_HOMOG, P_UNIFORM, P_JITTER, P_COUNT };
 
@@ -32,10 +36,10 @@ static const mcs_pattern_kind kinds[P_COUNT] = {MCS_PATTERN_RANDOM, MCS_PATTERN_
 
 static ex_run runs[P_COUNT];
 static mcs_spectrum spectra[P_COUNT];
-static mcs_theory theories[P_COUNT];
+static ex_exact exacts[P_COUNT];
 static mcs_moment moment_strat;
 static mcs_dft big_plan;
-static double f[MCS_MAX_COV_N];
+static double f[MCS_MAX_N];
 static double f_big[MCS_MAX_N], big_re[MCS_MAX_N], big_im[MCS_MAX_N];
 
 /* What the summary reads from the rows above it. */
@@ -59,11 +63,12 @@ static size_t pair_l(const ex_options *opt)
     return opt->k + 1u;
 }
 
-/* Eq. 33's sinc^2 form against the exact finite-N form at M bins, relative. */
+/* Eq. 33's sinc^2 form against the exact finite-N form at M bins, relative
+ * (EX_NA for M = 0, no larger N). */
 static double eq33_gap(size_t m, size_t k, size_t freq)
 {
     double lim = 0.0, ex = 0.0;
-    if (mcs_eq33_stratified_power_limit(m, k, freq, &lim) != MCS_OK ||
+    if (m == 0u || mcs_eq33_stratified_power_limit(m, k, freq, &lim) != MCS_OK ||
         mcs_eq33_stratified_power_exact(m, k, freq, &ex) != MCS_OK)
         return EX_NA;
     return ex_rel_gap(lim, ex, 1e-12 * (double)k / (double)m);
@@ -73,7 +78,7 @@ static double eq33_gap(size_t m, size_t k, size_t freq)
  * eq. 33 (exact finite-N form if exact_form, else the sinc^2 form). */
 static double eq14_stratified_at(size_t m, size_t k, int exact_form)
 {
-    if (m > MCS_MAX_N || mcs_dft_init(&big_plan, m) != MCS_OK)
+    if (m == 0u || m > MCS_MAX_N || mcs_dft_init(&big_plan, m) != MCS_OK)
         return EX_NA;
     ex_integrand_bins(m, f_big);
     if (mcs_dft_real(&big_plan, m, f_big, big_re, big_im) != MCS_OK)
@@ -99,7 +104,7 @@ static int measure_spectra(const ex_options *opt)
     size_t nfreq = pick_freqs(opt->n, opt->k, freqs);
     for (int p = 0; p < P_COUNT; ++p) {
         ex_run *run = &runs[p];
-        mcs_status st = ex_run_setup(run, &theories[p], &spectra[p], kinds[p], opt->n, opt->k,
+        mcs_status st = ex_run_setup(run, &exacts[p], &spectra[p], kinds[p], opt->n, opt->k,
                                      NULL, opt->seed, 0x300u + (uint64_t)kinds[p]);
         if (st != MCS_OK) {
             fprintf(stderr, "sec3: %s: %s\n", mcs_pattern_kind_str(kinds[p]), mcs_status_str(st));
@@ -135,7 +140,7 @@ static void power_rows(const ex_options *opt, int p, const size_t *freqs, size_t
         double closed = EX_NA, gap_big = EX_NA, v = 0.0;
         const char *eq = "";
         double se, meas = ex_spectrum_power(&spectra[p], q, &se);
-        double exact = ex_theory_power(&theories[p], q);
+        double exact = ex_exact_power(&exacts[p], q);
         switch (p) {
         case P_RANDOM:
             eq = "eq. 23";
@@ -145,7 +150,7 @@ static void power_rows(const ex_options *opt, int p, const size_t *freqs, size_t
         case P_HOMOG:
             eq = "eq. 33";
             closed = ex_or_na(mcs_eq33_stratified_power_limit(opt->n, opt->k, q, &v), &v);
-            gap_big = eq33_gap(EX_LARGE_N_FACTOR * opt->n, opt->k, q);
+            gap_big = eq33_gap(ex_large_n(opt->n), opt->k, q);
             break;
         default:
             eq = "eq. 37";
@@ -171,12 +176,12 @@ static void eq33_notes(const ex_options *opt, const size_t *freqs, size_t nfreq)
         if (!isnan(g) && g > worst) {
             worst = g;
             at = freqs[i];
-            worst_big = eq33_gap(EX_LARGE_N_FACTOR * n, k, freqs[i]);
+            worst_big = eq33_gap(ex_large_n(n), k, freqs[i]);
         }
     }
     double th_vs_exact = 0.0, v = 0.0, w = 0.0;
     for (size_t q = 1; q < n; ++q)
-        if (mcs_theory_power(&theories[P_STRAT], q, &v) == MCS_OK &&
+        if (!isnan(v = ex_exact_power(&exacts[P_STRAT], q)) &&
             mcs_eq33_stratified_power_exact(n, k, q, &w) == MCS_OK)
             th_vs_exact = fmax(th_vs_exact, fabs(v - w) / ((double)k / (double)n));
     if (worst > 0.0)
@@ -184,13 +189,14 @@ static void eq33_notes(const ex_options *opt, const size_t *freqs, size_t nfreq)
                  "eq. 33 sinc^2 vs the exact finite-N form K/N - (K/N)^3 sin^2(pi k/K) / "
                  "sin^2(pi k/N): largest gap %.3g (relative) at k = %zu for N = %zu, %.3g "
                  "at N = %zu",
-                 worst, at, n, worst_big, EX_LARGE_N_FACTOR * n);
+                 worst, at, n, worst_big, ex_large_n(n));
     else
         ex_note(opt, "eq. 33: K does not divide N, or no probed frequency separates the forms");
-    ex_notef(opt,
-             "mcspec theory's stratified power equals that exact finite-N form to %.2g K/N "
-             "over all k",
-             th_vs_exact);
+    if (n % k == 0u) /* the exact finite-N form needs K dividing N */
+        ex_notef(opt,
+                 "mcspec theory's stratified power equals that exact finite-N form to %.2g K/N "
+                 "over all k",
+                 th_vs_exact);
 }
 
 /* ---- power spectra ---- */
@@ -218,7 +224,7 @@ static void delta_section(const ex_options *opt)
         if (q == 0u || q >= n || (i > 0 && q == dk[i - 1]) || (i == 2 && q == dk[0]))
             continue;
         double v = 0.0;
-        double exact = ex_theory_power(&theories[P_STRAT], q) - kn;
+        double exact = ex_exact_power(&exacts[P_STRAT], q) - kn;
         /* K/N is a constant: the stderr is the power's */
         double se, meas = ex_spectrum_power(&spectra[P_STRAT], q, &se) - kn;
         double p31 = ex_or_na(mcs_eq31_stratified_delta_printed(n, k, q, &v), &v);
@@ -243,7 +249,7 @@ static void mean_rows(const ex_options *opt, int p)
         return;
     double a = 0.0, b = 0.0;
     ex_complex se, meas = ex_run_mean(&runs[p], idx, &se);
-    ex_complex exact = ex_complex_or_na(mcs_theory_mean(&theories[p], k, &a, &b), &a, &b);
+    ex_complex exact = ex_exact_mean(&exacts[p], k);
     ex_complex closed = {0.0, 0.0};
     const char *eq = "eq. 10";
     if (p == P_UNIFORM) {
@@ -284,7 +290,7 @@ static double cross_rows(const ex_options *opt, int p, size_t l)
         return 0.0;
     double a = 0.0, b = 0.0;
     ex_complex se, meas = ex_run_mean_pair(&runs[p], idx, &se);
-    ex_complex exact = ex_complex_or_na(mcs_theory_cross(&theories[p], 1u, l, &a, &b), &a, &b);
+    ex_complex exact = ex_exact_cross(&exacts[p], 1u, l);
     ex_complex zero = {0.0, 0.0};
     ex_row_print_complex(opt, "sec3", "<S_k S_l*> if stationary", "eq. 14", name, 1, (long)l,
                          zero, exact, meas, se, floor_);
@@ -303,6 +309,11 @@ static double cross_rows(const ex_options *opt, int p, size_t l)
 /* The moment accumulator on the same trials gives the same cross moment. */
 static void moment_check_note(const ex_options *opt)
 {
+    if (opt->n > (size_t)MCS_MAX_COV_N) {
+        ex_notef(opt, "check against mcs_moment (N x N sums): skipped above MCS_MAX_COV_N = %d",
+                 MCS_MAX_COV_N);
+        return;
+    }
     size_t l = pair_l(opt);
     int idx = ex_run_probe_pair(&runs[P_STRAT], 1u, l);
     double a = 0.0, b = 0.0;
@@ -340,9 +351,9 @@ typedef struct {
 
 static eq14_forms eq14_with_closed_forms(size_t n, size_t k)
 {
-    double pw_exact[MCS_MAX_COV_N] = {0.0}, pw_limit[MCS_MAX_COV_N] = {0.0};
-    double pw_random[MCS_MAX_COV_N] = {0.0}, pw_jitter[MCS_MAX_COV_N] = {0.0};
-    int ok33 = 1, ok37 = 1;
+    static double pw_exact[MCS_MAX_N], pw_limit[MCS_MAX_N], pw_random[MCS_MAX_N],
+        pw_jitter[MCS_MAX_N];
+    int ok33 = n % k == 0u, ok37 = n % k == 0u; /* both need K dividing N */
     for (size_t q = 1; q < n; ++q) {
         ok33 = ok33 && mcs_eq33_stratified_power_exact(n, k, q, &pw_exact[q]) == MCS_OK &&
                mcs_eq33_stratified_power_limit(n, k, ex_fold(n, q), &pw_limit[q]) == MCS_OK;
@@ -386,13 +397,13 @@ static void variance_section(const ex_options *opt, sec3_summary *s)
     eq14_forms e = eq14_with_closed_forms(n, k);
     /* The homogenized pattern is stationary, so its exact variance at 16 N is
      * eq. 14 with the exact finite-N power there. */
-    size_t big = EX_LARGE_N_FACTOR * n;
+    size_t big = ex_large_n(n);
     double vb_exact = eq14_stratified_at(big, k, 1), vb_limit = eq14_stratified_at(big, k, 0);
     double limit_gap_big = ex_rel_gap(vb_limit, vb_exact, 1e-300);
     variances var;
     double v = 0.0;
     for (int p = 0; p < P_COUNT; ++p) {
-        var.exact[p] = ex_or_na(mcs_theory_variance(&theories[p], n, k, f, &v), &v);
+        var.exact[p] = ex_exact_variance(&exacts[p], f);
         var.measured[p] = ex_variance(&runs[p].estimate[0], &var.se[p]);
     }
     double v25 = ex_or_na(mcs_eq25_random_variance(n, k, f, &v), &v);
@@ -419,7 +430,7 @@ static void variance_section(const ex_options *opt, sec3_summary *s)
              "fixed strata: measured Var[I] = %.4g +- %.2g; homogenized: %.4g +- %.2g; "
              "random: %.4g +- %.2g",
              meas[P_STRAT], se[P_STRAT], meas[P_HOMOG], se[P_HOMOG], meas[P_RANDOM], se[P_RANDOM]);
-    if (!isnan(e.strat_limit) && !isnan(e.strat_exact))
+    if (!isnan(e.strat_limit) && !isnan(e.strat_exact) && !isnan(limit_gap_big))
         ex_notef(opt,
                  "eq. 14 with eq. 33 (sinc^2) vs with the exact finite-N power: %.3g relative "
                  "at N = %zu, %.3g at N = %zu (homogenized, where eq. 14 is exact)",
@@ -436,16 +447,19 @@ static void summary_notes(const ex_options *opt, const sec3_summary *s)
                  "eq. 14 with eq. 33 misses the fixed-strata variance by %.0f%% (z = %.1f); with "
                  "homogenized strata it is off by %.2g%% (z = %.2f)",
                  100.0 * s->fixed_gap, s->fixed_z, 100.0 * s->homog_gap, s->homog_z);
-    ex_notef(opt,
-             "fixed strata are not stationary: an off-diagonal <S_1 S_l*> lies %.0f stderr from "
-             "0; homogenizing removes it",
-             s->strat_offdiag_z);
+    if (opt->n < 3u) /* the probed pairs (1, 2) and (1, K + 1) need N >= 3 */
+        ex_note(opt, "N < 3: no pair k != l >= 1 to show the non-stationarity of fixed strata");
+    else
+        ex_notef(opt,
+                 "fixed strata are not stationary: an off-diagonal <S_1 S_l*> lies %.0f stderr "
+                 "from 0; homogenizing removes it",
+                 s->strat_offdiag_z);
 }
 
 int main(int argc, char **argv)
 {
     ex_options opt = {64u, 8u, 200000ul, 1u, 0};
-    int rc = ex_parse_options(argc, argv, &opt, MCS_MAX_COV_N, EX_MAX_K, help_text);
+    int rc = ex_parse_options(argc, argv, &opt, MCS_MAX_N, EX_MAX_K, help_text);
     if (rc != EX_PARSE_OK)
         return rc;
     if (!measure_spectra(&opt))

@@ -5,9 +5,10 @@
  * claim that importance sampling raises the power spectrum, the variance of
  * eq. 52 as printed and corrected, and the bound of eq. 58 as printed and
  * corrected. */
+#include "exact.h"
+#include "importance.h"
 #include "mcspec.h"
 #include "measure.h"
-#include "importance.h"
 #include "readout.h"
 #include "report.h"
 
@@ -35,8 +36,11 @@ static const char help_text[] =
     "Bound rows (eq. 58) put the bound in the closed column; their verdict is\n"
     "the bound rule below. Eq. 50 is an N -> infinity form when the strata are\n"
     "whole bins (flat g, g1b): its limit check uses the exact finite-N form\n"
-    "there, eq. 33's exact form + (K/N)(1/H - 1), at 16 N (checked against\n"
-    "mcspec theory at N in the notes). The note's N -> infinity forms are\n"
+    "there, eq. 33's exact form + (K/N)(1/H - 1), at 16 N (the largest multiple\n"
+    "of N within MCS_MAX_N if smaller; none above MCS_MAX_N / 2), checked\n"
+    "against mcspec theory at N in the notes. Any N up to MCS_MAX_N: above\n"
+    "MCS_MAX_COV_N the exact values come from mcs_theory_spectrum, and eq. 52\n"
+    "and 55 are taken by their Parseval equals. The note's N -> infinity forms are\n"
     "evaluated at the signed frequency min(k, N - k) wherever a sum over all k\n"
     "is formed.\n";
 
@@ -61,11 +65,10 @@ static const run_spec specs[R_COUNT] = {
 };
 
 static mcs_importance imps[EX_G_COUNT];
-static mcs_importance imp_big; /* a g at a larger N, for limit checks */
 static ex_run runs[R_COUNT];
 static mcs_spectrum spectra[R_COUNT];
-static mcs_theory theories[R_COUNT];
-static double f[MCS_MAX_COV_N], f_const[MCS_MAX_COV_N];
+static ex_exact exacts[R_COUNT];
+static double f[MCS_MAX_N], f_const[MCS_MAX_N];
 static size_t n_bins, k_samples;
 static double kn, pfloor; /* K/N, and the rounding scale of a power: 1e-10 K/N K */
 
@@ -122,7 +125,7 @@ static int setup_and_measure(const ex_options *opt)
             return 0;
     for (int r = 0; r < R_COUNT; ++r) {
         ex_run *run = &runs[r];
-        mcs_status st = ex_run_setup(run, &theories[r], &spectra[r], specs[r].kind, opt->n,
+        mcs_status st = ex_run_setup(run, &exacts[r], &spectra[r], specs[r].kind, opt->n,
                                      opt->k, imp_of(r), opt->seed, 0x400u + (uint64_t)r);
         if (st == MCS_OK) {
             ex_run_probe(run, 0u);
@@ -148,72 +151,31 @@ static double theory_mean_power(int r)
 {
     double sum = 0.0;
     for (size_t q = 1; q < n_bins; ++q)
-        sum += ex_theory_power(&theories[r], q);
+        sum += ex_exact_power(&exacts[r], q);
     return sum / (double)(n_bins - 1u);
 }
 
-/* H of run r's g discretised over m bins (1 without importance or flat). */
-static double h_at(int r, size_t m)
+/* Run r for the limit checks of examples/support/importance.c. */
+static ex_imp_run imp_run(int r)
 {
-    int g = specs[r].g;
-    if (m == n_bins || g == EX_G_NONE || g == EX_G_FLAT)
-        return h_of(r);
-    if (ex_importance_for(g, m, k_samples, &imp_big) != MCS_OK)
-        return EX_NA;
-    return imp_big.harmonic_mean;
-}
-
-/* Run r's g discretised over m bins (NULL without importance), as h_at. */
-static const mcs_importance *imp_at(int r, size_t m)
-{
-    int g = specs[r].g;
-    if (g == EX_G_NONE)
-        return NULL;
-    if (m == n_bins)
-        return &imps[g];
-    if (ex_importance_for(g, m, k_samples, &imp_big) != MCS_OK)
-        return NULL;
-    return &imp_big;
-}
-
-/* The note's power for run r at m bins and DFT index q (eq. 23, 33, 45, 50). */
-static double closed_power_at(int r, size_t m, size_t q)
-{
-    return ex_closed_power_at(specs[r].kind, imp_at(r, m), m, k_samples, q);
+    ex_imp_run run = {specs[r].kind, specs[r].g, n_bins, k_samples};
+    return run;
 }
 
 /* The exact power of a stratified run at m bins where it is known in closed
- * form: strata of m/K whole bins (no g, flat g, g1b; the notes below check it
- * at N). EX_NA otherwise. */
+ * form (strata of m/K whole bins; the notes below check it at N), else EX_NA. */
 static double exact_power_at(int r, size_t m, size_t q)
 {
-    int g = specs[r].g;
-    double h = h_at(r, m);
-    if (specs[r].kind != MCS_PATTERN_STRATIFIED ||
-        (g != EX_G_NONE && g != EX_G_FLAT && !(g == EX_G_BALANCED && m % k_samples == 0u)))
-        return EX_NA;
-    return ex_whole_bin_power_at(m, k_samples, h, q);
+    const ex_imp_run run = imp_run(r);
+    return ex_imp_exact_power(&run, m, q);
 }
 
-/* Mean over k >= 1 of the closed form (exact = 0) or of exact_power_at (1). */
-static double mean_power_at(int r, size_t m, int exact)
-{
-    double sum = 0.0;
-    for (size_t q = 1; q < m; ++q)
-        sum += exact ? exact_power_at(r, m, q) : closed_power_at(r, m, q);
-    return sum / (double)(m - 1u);
-}
-
-/* Relative gap of the closed form to the exact value at EX_LARGE_N_FACTOR N,
- * at index q, or of their means over k >= 1 if q == 0. */
+/* Relative gap of the closed form to the exact value at the larger N, at
+ * index q, or of their means over k >= 1 if q == 0. */
 static double gap_at_large_n(int r, size_t q, double floor_)
 {
-    size_t big = EX_LARGE_N_FACTOR * n_bins;
-    double c = q == 0u ? mean_power_at(r, big, 0) : closed_power_at(r, big, q);
-    double e = q == 0u ? mean_power_at(r, big, 1) : exact_power_at(r, big, q);
-    if (isnan(c) || isnan(e))
-        return EX_NA;
-    return ex_rel_gap(c, e, floor_ / (double)EX_LARGE_N_FACTOR);
+    const ex_imp_run run = imp_run(r);
+    return ex_imp_limit_gap(&run, q, floor_);
 }
 
 /* A row of run r (its name in the pattern column), no limit check. */
@@ -239,7 +201,7 @@ static void unbiasedness_section(const ex_options *opt)
     ex_heading(opt, "unbiasedness under importance sampling: <s_n> = K/N, so <I> = mean of f "
                     "(eq. 11)");
     for (int r = R_RANDOM_G1; r < R_COUNT; ++r)
-        ex_estimator_mean_row(opt, "sec4", specs[r].name, &theories[r], &runs[r], f);
+        ex_estimator_mean_row(opt, "sec4", specs[r].name, &exacts[r], &runs[r], f);
 }
 
 /* <|S_q|^2> of run r: eq. 46 (random) or eq. 51 (stratified) at q = 0, where
@@ -262,7 +224,7 @@ static void power_row(const ex_options *opt, int r, size_t q)
     const char *eq =
         q == 0u ? (is_random ? "eq. 46" : "eq. 51") : (is_random ? "eq. 45" : "eq. 50");
     ex_row row = run_row(q == 0u ? "<|S_0|^2>" : "<|S_k|^2>", eq, r, (long)q, EX_NO_FREQ, closed,
-                         ex_theory_power(&theories[r], q), meas, se, pfloor);
+                         ex_exact_power(&exacts[r], q), meas, se, pfloor);
     if (q > 0u)
         row.limit_gap = gap_at_large_n(r, q, pfloor);
     ex_row_print(opt, &row);
@@ -287,7 +249,7 @@ static double whole_bin_check(void)
         for (int i = 0; i < 3; ++i) {
             double e = exact_power_at(wr[i], n_bins, q);
             if (!isnan(e))
-                worst = fmax(worst, fabs(ex_theory_power(&theories[wr[i]], q) - e) / kn);
+                worst = fmax(worst, fabs(ex_exact_power(&exacts[wr[i]], q) - e) / kn);
         }
     }
     return worst;
@@ -305,11 +267,19 @@ static void power_section(const ex_options *opt)
     for (int i = 0; i < 5; ++i)
         for (size_t j = 0; j < nfreq; ++j)
             power_row(opt, rs[i], freqs[j]);
-    ex_notef(opt,
-             "strata of N/K whole bins (none, flat, g1b): mcspec theory's spectrum equals "
-             "eq. 33's exact finite-N form + (K/N)(1/H - 1) to %.2g K/N over all k; the limit "
-             "checks use that form at %u N",
-             check, EX_LARGE_N_FACTOR);
+    const size_t big = ex_large_n(opt->n);
+    if (big > 0u)
+        ex_notef(opt,
+                 "strata of N/K whole bins (none, flat, g1b): mcspec theory's spectrum equals "
+                 "eq. 33's exact finite-N form + (K/N)(1/H - 1) to %.2g K/N over all k; the "
+                 "limit checks use that form at %u N",
+                 check, (unsigned)(big / opt->n));
+    else
+        ex_notef(opt,
+                 "strata of N/K whole bins (none, flat, g1b): mcspec theory's spectrum equals "
+                 "eq. 33's exact finite-N form + (K/N)(1/H - 1) to %.2g K/N over all k; no "
+                 "larger N within MCS_MAX_N for the limit checks",
+                 check);
 }
 
 /* <S_k S_l*> of run r against eq. 43 (random) or eq. 49 (stratified).
@@ -326,8 +296,7 @@ static double cross_rows(const ex_options *opt, int r, size_t freq_k, size_t fre
         is_random ? mcs_eq43_importance_cross(imp_of(r), k, freq_k, freq_l, &a, &b)
                   : mcs_eq49_importance_stratified_cross(imp_of(r), k, freq_k, freq_l, &a, &b);
     ex_complex closed = ex_complex_or_na(st, &a, &b);
-    ex_complex exact =
-        ex_complex_or_na(mcs_theory_cross(&theories[r], freq_k, freq_l, &a, &b), &a, &b);
+    ex_complex exact = ex_exact_cross(&exacts[r], freq_k, freq_l);
     ex_complex se, meas = ex_run_mean_pair(&runs[r], idx, &se);
     double floor_ = 1e-10 * kn;
     ex_row_print_complex(opt, "sec4", "<S_k S_l*>", is_random ? "eq. 43" : "eq. 49",
@@ -384,7 +353,7 @@ static void rise_scan(sec4_summary *s)
         int b = base_of(r);
         s->rises_everywhere[r] = 1;
         for (size_t q = 1; q < n_bins; ++q) {
-            double d = ex_theory_power(&theories[r], q) - ex_theory_power(&theories[b], q);
+            double d = ex_exact_power(&exacts[r], q) - ex_exact_power(&exacts[b], q);
             s->rises_everywhere[r] = s->rises_everywhere[r] && d > 0.0;
             if (r == R_STRAT_G1 && q <= n_bins / 2u && d < s->worst_diff) {
                 s->worst_diff = d;
@@ -427,7 +396,7 @@ static void rise_rows(const ex_options *opt, const sec4_summary *s)
         double sa, ma = ex_spectrum_power(&spectra[a], q, &sa);
         double sb, mb = ex_spectrum_power(&spectra[b], q, &sb);
         rise_row(opt, "power rise vs no IS", a, (long)q,
-                 ex_theory_power(&theories[a], q) - ex_theory_power(&theories[b], q), ma - mb, sa,
+                 ex_exact_power(&exacts[a], q) - ex_exact_power(&exacts[b], q), ma - mb, sa,
                  sb);
     }
 }
@@ -445,9 +414,10 @@ static void mean_power_section(const ex_options *opt, sec4_summary *s)
         int is_random = specs[r].kind == MCS_PATTERN_RANDOM;
         const char *eq = is_random ? (specs[r].g == EX_G_NONE ? "eq. 23" : "eq. 45")
                                    : (specs[r].g == EX_G_NONE ? "eq. 33" : "eq. 50");
+        const ex_imp_run run = imp_run(r);
         ex_row row = run_row("mean_k>=1 <|S_k|^2>", eq, r, EX_NO_FREQ, EX_NO_FREQ,
-                             mean_power_at(r, n_bins, 0), s->mean_exact[r], s->mean_meas[r],
-                             s->mean_se[r], pfloor);
+                             ex_imp_mean_power(&run, n_bins, 0), s->mean_exact[r],
+                             s->mean_meas[r], s->mean_se[r], pfloor);
         /* EX_NA unless strata are whole bins */
         row.limit_gap = gap_at_large_n(r, 0u, pfloor);
         ex_row_print(opt, &row);
@@ -474,7 +444,7 @@ static void eq52_section(const ex_options *opt, sec4_summary *s)
     double v = 0.0;
     for (int r = 0; r < R_COUNT; ++r) {
         s->var_meas[r] = ex_variance(&runs[r].estimate[0], &s->var_se[r]);
-        s->var_exact[r] = ex_or_na(mcs_theory_variance(&theories[r], n, k, f, &v), &v);
+        s->var_exact[r] = ex_exact_variance(&exacts[r], f);
     }
     double primal_vs_spectral = 0.0;
     for (int r = R_RANDOM_G1; r <= R_RANDOM_G2; ++r) {
@@ -502,10 +472,10 @@ static void eq52_section(const ex_options *opt, sec4_summary *s)
 static void eq58_rows(const ex_options *opt, int r, int which, char *above, size_t *used,
                       size_t size)
 {
-    const size_t n = opt->n, k = opt->k;
+    const size_t k = opt->k;
     const double *ff = which == 0 ? f : f_const;
     double v = 0.0, se = 0.0;
-    double exact = ex_or_na(mcs_theory_variance(&theories[r], n, k, ff, &v), &v);
+    double exact = ex_exact_variance(&exacts[r], ff);
     double meas = ex_variance(&runs[r].estimate[which], &se);
     double printed = ex_or_na(mcs_eq58_bound_printed(imp_of(r), k, ff, &v), &v);
     double corrected = ex_or_na(mcs_eq58_bound_corrected(imp_of(r), k, ff, &v), &v);
@@ -592,7 +562,7 @@ static void summary_notes(const ex_options *opt, const sec4_summary *s)
 int main(int argc, char **argv)
 {
     ex_options opt = {64u, 8u, 200000ul, 1u, 0};
-    int rc = ex_parse_options(argc, argv, &opt, MCS_MAX_COV_N, EX_MAX_K, help_text);
+    int rc = ex_parse_options(argc, argv, &opt, MCS_MAX_N, EX_MAX_K, help_text);
     if (rc != EX_PARSE_OK)
         return rc;
     if (!setup_and_measure(&opt))

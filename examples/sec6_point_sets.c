@@ -10,6 +10,7 @@
 #include "mcspec/sampler.h"
 #include "mcspec/spectrum2d.h"
 #include "measure.h"
+#include "readout.h"
 #include "report.h"
 
 #include <math.h>
@@ -62,24 +63,23 @@ static double fgrid[MCS_MAX_SIDE * MCS_MAX_SIDE], f_re[MCS_MAX_SIDE * MCS_MAX_SI
 static mcs_pointset2d meas, base;
 static mcs_spectrum2d plan;
 
+/* The samplers' kinds, sources S_HALTON.. in order (the patterns' sources
+ * are their mcs_pattern2d_kind values). */
+static const mcs_sampler_kind sampler_kinds[4] = {MCS_SAMPLER_HALTON, MCS_SAMPLER_HAMMERSLEY,
+                                                  MCS_SAMPLER_SOBOL, MCS_SAMPLER_KRONECKER};
+
 static const char *source_name(int s)
 {
-    static const mcs_pattern2d_kind pk[7] = {
-        MCS_PATTERN2D_RANDOM, MCS_PATTERN2D_JITTERED, MCS_PATTERN2D_GRID, MCS_PATTERN2D_SHIFTED_GRID,
-        MCS_PATTERN2D_NROOKS, MCS_PATTERN2D_MULTI_JITTERED, MCS_PATTERN2D_CMJ};
-    static const mcs_sampler_kind sk[4] = {MCS_SAMPLER_HALTON, MCS_SAMPLER_HAMMERSLEY,
-                                           MCS_SAMPLER_SOBOL, MCS_SAMPLER_KRONECKER};
-    return s < S_HALTON ? mcs_pattern2d_kind_str(pk[s]) : mcs_sampler_kind_str(sk[s - S_HALTON]);
+    return s < S_HALTON ? mcs_pattern2d_kind_str((mcs_pattern2d_kind)s)
+                        : mcs_sampler_kind_str(sampler_kinds[s - S_HALTON]);
 }
 
 static mcs_status source_init(source *src, int s, size_t k)
 {
-    static const mcs_sampler_kind sk[4] = {MCS_SAMPLER_HALTON, MCS_SAMPLER_HAMMERSLEY,
-                                           MCS_SAMPLER_SOBOL, MCS_SAMPLER_KRONECKER};
     memset(src, 0, sizeof *src);
     src->is_sampler = s >= S_HALTON;
     if (src->is_sampler)
-        return mcs_sampler_init(&src->sampler, sk[s - S_HALTON], 2u, k);
+        return mcs_sampler_init(&src->sampler, sampler_kinds[s - S_HALTON], 2u, k);
     return mcs_pattern2d_init(&src->pattern, (mcs_pattern2d_kind)s, k, 0u, 0u);
 }
 
@@ -92,16 +92,8 @@ static mcs_status source_draw(const source *src, mcs_rng *rng, size_t k)
 static ex_row row_of(const char *quantity, const char *equation, const char *pattern, long freq,
                      double closed, double exact, double measured, double se, double floor_)
 {
-    ex_row r = {"sec6", quantity, equation, pattern, freq, EX_NO_FREQ, closed, exact, measured,
-                se, EX_NA, floor_};
-    return r;
-}
-
-/* *v if the call that filled it succeeded, else EX_NA. (A pointer, so *v is
- * read after the call: function arguments are unsequenced.) */
-static double value_or_na(mcs_status st, const double *v)
-{
-    return st == MCS_OK ? *v : EX_NA;
+    return ex_row_of("sec6", quantity, equation, pattern, freq, EX_NO_FREQ, closed, exact,
+                     measured, se, floor_);
 }
 
 /* ---- part 1: radial power and anisotropy ---------------------------------- */
@@ -114,11 +106,11 @@ static void exact_radial(const source *src, int s, size_t r, double *power, doub
     double p = 0.0, a = 0.0;
     *power = *aniso = EX_NA;
     if (!src->is_sampler) {
-        *power = value_or_na(mcs_pointset2d_exact_radial(&src->pattern, r, &p), &p);
-        *aniso = value_or_na(mcs_pointset2d_exact_anisotropy(&src->pattern, r, &a), &a);
+        *power = ex_or_na(mcs_pointset2d_exact_radial(&src->pattern, r, &p), &p);
+        *aniso = ex_or_na(mcs_pointset2d_exact_anisotropy(&src->pattern, r, &a), &a);
     } else if (s != S_SOBOL) {
-        *power = value_or_na(mcs_pointset2d_radial(&base, r, &p), &p);
-        *aniso = value_or_na(mcs_pointset2d_anisotropy(&base, r, &a), &a);
+        *power = ex_or_na(mcs_pointset2d_radial(&base, r, &p), &p);
+        *aniso = ex_or_na(mcs_pointset2d_anisotropy(&base, r, &a), &a);
     }
 }
 
@@ -148,9 +140,9 @@ static int radial_part(const ex_options *opt, size_t fmax, const size_t *radii, 
         const double floor_ = 1e-9 * (double)opt->k;
         for (size_t i = 0; i < nradii; ++i) {
             double p = 0.0, se = 0.0, a = 0.0, ep = EX_NA, ea = EX_NA;
-            double mp = value_or_na(mcs_pointset2d_radial(&meas, radii[i], &p), &p);
-            double mse = value_or_na(mcs_pointset2d_radial_stderr(&meas, radii[i], &se), &se);
-            double ma = value_or_na(mcs_pointset2d_anisotropy(&meas, radii[i], &a), &a);
+            double mp = ex_or_na(mcs_pointset2d_radial(&meas, radii[i], &p), &p);
+            double mse = ex_or_na(mcs_pointset2d_radial_stderr(&meas, radii[i], &se), &se);
+            double ma = ex_or_na(mcs_pointset2d_anisotropy(&meas, radii[i], &a), &a);
             exact_radial(&src, s, radii[i], &ep, &ea);
             ex_row r = row_of("radial power", "P(r)", source_name(s), (long)radii[i], EX_NA, ep,
                               mp, mse, floor_);
@@ -443,9 +435,9 @@ static int binned_part(const ex_options *opt)
         }
         if (st != MCS_OK)
             return 0;
-        double closed = value_or_na(
+        double closed = ex_or_na(
             mcs_spectrum2d_exact_variance14(&src.pattern, n, n, f_re, f_im, &v14), &v14);
-        double exact = value_or_na(
+        double exact = ex_or_na(
             mcs_spectrum2d_exact_variance(&src.pattern, n, n, f_re, f_im, &v13), &v13);
         ex_row r = row_of("Var[I] binned", "eq. 13/14", source_name(kinds[i]), EX_NO_FREQ,
                           closed, exact, c2, sqrt(fmax(c4 - c2 * c2, 0.0) / t), 1e-12 * c2);

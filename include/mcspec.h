@@ -24,5 +24,6 @@
 #include "mcspec/spectrum2d.h"
 #include "mcspec/theory.h"
 #include "mcspec/eq.h"
+#include "mcspec/io.h"
 
 #endif /* MCSPEC_H */

@@ -11,8 +11,9 @@
 #                   headers the sources include), and the allow-list on it
 #
 # The libraries are built at the default capacities; the firmware links its
-# own copy built with FW_DEFS (-DMCS_MAX_N=256) so that its static
-# mcs_spectrum fits a small part's RAM.
+# own copy built with FW_DEFS so that its static accumulators fit a small
+# part's RAM: MCS_MAX_N=256 for the mcs_spectrum, and a 2D point-set cutoff
+# of 8, a 1D one of 32 and 8 x 8 bins for the 2D binned spectrum.
 
 .PHONY: cross cross-m4 cross-m7 cross-rv sizes cross-m4-lib cross-m7-lib
 
@@ -20,7 +21,9 @@ ARM_PREFIX ?= arm-none-eabi-
 RV_PREFIX  ?= riscv64-unknown-elf-
 CROSS_OPT  ?= -O2 -g
 FW_OPT     ?= -Os -g
-FW_DEFS    ?= -DMCS_MAX_N=256
+FW_DEFS    ?= -DMCS_MAX_N=256 -DMCS_MAX_FREQ=8 -DMCS_MAX_FREQ_1D=32 -DMCS_MAX_SIDE=8
+# The smallest configuration the size table shows.
+SMALL_DEFS ?= -DMCS_MAX_N=64 -DMCS_MAX_COV_N=16 -DMCS_MAX_FREQ=4 -DMCS_MAX_FREQ_1D=16 -DMCS_MAX_SIDE=4
 CROSS_COMMON := -ffreestanding -ffunction-sections -fdata-sections
 M4_ARCH := -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16
 M7_ARCH := -mcpu=cortex-m7 -mthumb -mfloat-abi=hard -mfpu=fpv5-d16
@@ -42,23 +45,34 @@ endif
 # A library build in directory $(1) with compiler prefix $(2) and flags $(3).
 # Vendored code keeps its own warnings, but an undeclared function is an error
 # there too (with tools/freestanding that is how a stray malloc shows up).
+# Like the host build's flags stamp (Makefile), $(1)/flags.txt changes only
+# when the flags do, and every object depends on it: `make cross
+# FW_DEFS=...` or `CPPFLAGS=-DMCS_MAX_SIDE=...` rebuilds instead of linking
+# objects of two capacities together.
 define MCS_CROSS_LIB
-$(1)/obj/src/vendor/%.o: src/vendor/%.c
+$(1)/flags.txt: MCS_CROSS_FLAGS_TEXT = $(2)gcc | $(2)ar | $$(WARN) | $$(VENDOR_WARN) | $(3) | \
+    $$(MCS_CPPFLAGS) | $$(CPPFLAGS) | $$(KISS_DEFS)
+$(1)/flags.txt: FORCE
+	@mkdir -p $$(@D)
+	@printf '%s\n' '$$(subst ','\'',$$(MCS_CROSS_FLAGS_TEXT))' >$$@.new
+	@if cmp -s $$@.new $$@; then rm -f $$@.new; else mv -f $$@.new $$@; fi
+
+$(1)/obj/src/vendor/%.o: src/vendor/%.c $(1)/flags.txt
 	@mkdir -p $$(@D)
 	@echo "CC $$@"
 	$$(EMB_Q)$(2)gcc $$(VENDOR_WARN) -Werror=implicit-function-declaration $(3) $$(KISS_DEFS) \
 	    -MMD -MP -c $$< -o $$@
 
-$(1)/obj/src/%.o: src/%.c
+$(1)/obj/src/%.o: src/%.c $(1)/flags.txt
 	@mkdir -p $$(@D)
 	@echo "CC $$@"
 	$$(EMB_Q)$(2)gcc $$(WARN) $(3) $$(MCS_CPPFLAGS) $$(CPPFLAGS) -isystem src/vendor/kissfft $$(KISS_DEFS) \
 	    -MMD -MP -c $$< -o $$@
 
-$(1)/libmcspec.a: $$(LIB_SRC:%.c=$(1)/obj/%.o) $$(KISS_SRC:%.c=$(1)/obj/%.o)
+$(1)/libmcspec.a: $$(LIB_SRC:%.c=$(1)/obj/%.o) $$(KISS_SRC:%.c=$(1)/obj/%.o) $(1)/flags.txt
 	@rm -f $$@
 	@echo "AR $$@"
-	$$(EMB_Q)$(2)ar rcs $$@ $$^
+	$$(EMB_Q)$(2)ar rcs $$@ $$(filter %.o,$$^)
 
 -include $$(wildcard $(1)/obj/src/*.d $(1)/obj/src/vendor/kissfft/*.d)
 endef
@@ -68,7 +82,8 @@ define MCS_CORTEX_M
 $(call MCS_CROSS_LIB,build/cross-$(1),$(ARM_PREFIX),$(2) $(CROSS_COMMON) $(CROSS_OPT))
 $(call MCS_CROSS_LIB,build/cross-$(1)/fw,$(ARM_PREFIX),$(2) $(CROSS_COMMON) $(FW_OPT) $(FW_DEFS) -fstack-usage -fcallgraph-info=su)
 
-build/cross-$(1)/fw/obj/examples/firmware/%.o: examples/firmware/%.c
+# The firmware's own objects share the stamp of its library (same flags).
+build/cross-$(1)/fw/obj/examples/firmware/%.o: examples/firmware/%.c build/cross-$(1)/fw/flags.txt
 	@mkdir -p $$(@D)
 	@echo "CC $$@"
 	$$(EMB_Q)$(ARM_PREFIX)gcc $$(WARN) $(2) $(CROSS_COMMON) $(FW_OPT) $(FW_DEFS) -fstack-usage \
@@ -118,8 +133,8 @@ cross-rv: build/rv/libmcspec.a
 # sizeof each public struct: on the host, on Cortex-M (32-bit size_t) at the
 # default capacities, at the firmware's, and at a small configuration.
 sizes:
-	@echo "sizeof, bytes (tools/sizes.sh):"
+	@echo "sizeof, bytes (tools/sizes.sh); firmware: $(FW_DEFS); small: $(SMALL_DEFS)"
 	@sh tools/sizes.sh build/sizes "x86-64|$(CC)|$(EMB_NM)|" \
 	    "Cortex-M|$(ARM_PREFIX)gcc|$(ARM_PREFIX)nm|$(M4_ARCH)" \
-	    "Cortex-M -DMCS_MAX_N=256|$(ARM_PREFIX)gcc|$(ARM_PREFIX)nm|$(M4_ARCH) -DMCS_MAX_N=256" \
-	    "Cortex-M -DMCS_MAX_N=64 -DMCS_MAX_COV_N=16|$(ARM_PREFIX)gcc|$(ARM_PREFIX)nm|$(M4_ARCH) -DMCS_MAX_N=64 -DMCS_MAX_COV_N=16"
+	    "Cortex-M firmware|$(ARM_PREFIX)gcc|$(ARM_PREFIX)nm|$(M4_ARCH) $(FW_DEFS)" \
+	    "Cortex-M small|$(ARM_PREFIX)gcc|$(ARM_PREFIX)nm|$(M4_ARCH) $(SMALL_DEFS)"

@@ -83,6 +83,7 @@ fuzz-build: $(FUZZ_BUILD)/fuzz_$(1)
 endef
 
 # ------------------------------------------------------------------ targets
+$(eval $(call MCS_FUZZ_TARGET,load,30))
 $(eval $(call MCS_FUZZ_TARGET,api,30))
 # fuzz_api.c includes its second half (one translation unit).
 $(FUZZ_BUILD)/fuzz_api: fuzz/fuzz_api_ops.h

@@ -25,7 +25,7 @@ INSTALL      ?= install
 CMAKE        ?= cmake
 
 GEN_DIR      := $(BUILD)/install
-GEN_CAPS     := $(GEN_DIR)/capacities
+GEN_CAPS     := $(GEN_DIR)/capacities.sed
 GEN_CONFIG_H := $(GEN_DIR)/mcspec/config.h
 GEN_PC       := $(GEN_DIR)/mcspec.pc
 GEN_CMAKE    := $(GEN_DIR)/mcspecConfig.cmake $(GEN_DIR)/mcspecConfigVersion.cmake
@@ -34,20 +34,31 @@ INSTALL_DOCS := LICENSE CHANGELOG.md docs/integrating.md
 KISS_LICENCES := src/vendor/kissfft/COPYING src/vendor/kissfft/LICENSES/BSD-3-Clause \
                  src/vendor/kissfft/LICENSES/Unlicense
 
-# "N COV_N" from the archive's tag mcs_config_requires_..._MCS_MAX_N_<N>_MCS_MAX_COV_N_<C>.
+# The capacity macros, in the order config.h's MCS_CONFIG_LINK_TAG names them.
+MCS_CAPS := MCS_MAX_N MCS_MAX_COV_N MCS_MAX_FREQ MCS_MAX_FREQ_1D MCS_MAX_SIDE
+
+# A sed script, "s|@NAME@|value|g" per capacity, from the archive's one tag
+# mcs_config_requires_libmcspec_built_with_MCS_MAX_N_<N>_..._MCS_MAX_SIDE_<S>:
+# each name of MCS_CAPS in turn, then a decimal value, and nothing left over.
 $(GEN_CAPS): $(LIB)
 	@mkdir -p $(@D)
-	@$(EMB_NM) -P -g --defined-only $(LIB) | \
-	    sed -n 's/^mcs_config_requires_libmcspec_built_with_MCS_MAX_N_\([0-9][0-9]*\)_MCS_MAX_COV_N_\([0-9][0-9]*\) .*/\1 \2/p' \
-	    >$@.tmp
-	@test "$$(wc -l <$@.tmp)" -eq 1 || { rm -f $@.tmp; \
-	    echo "install: no capacity tag in $(LIB) (MCS_MAX_N and MCS_MAX_COV_N must be plain decimal numbers)"; \
+	@tag=$$($(EMB_NM) -P -g --defined-only $(LIB) | \
+	    sed -n 's/^mcs_config_requires_libmcspec_built_with\(_[A-Za-z0-9_]*\) .*/\1/p'); \
+	rest=$$tag; : >$@.tmp; \
+	for cap in $(MCS_CAPS); do \
+	    case $$rest in _$${cap}_[0-9]*) ;; *) rest=bad; break ;; esac; \
+	    rest=$${rest#_$${cap}_}; value=$${rest%%_*}; rest=$${rest#"$$value"}; \
+	    case $$value in *[!0-9]*) rest=bad; break ;; esac; \
+	    echo "s|@$$cap@|$$value|g" >>$@.tmp; \
+	done; \
+	test -n "$$tag" && test -z "$$rest" || { rm -f $@.tmp; \
+	    echo "install: no single capacity tag naming $(MCS_CAPS) in $(LIB)" \
+	        "(the capacities must be plain decimal numbers); found: $$tag"; \
 	    exit 1; }
 	@mv -f $@.tmp $@
 
 # Substitutes @NAME@ in a template: $(call mcs_subst,template,extra sed args).
-mcs_subst = N=$$(cut -d' ' -f1 $(GEN_CAPS)); C=$$(cut -d' ' -f2 $(GEN_CAPS)); \
-    sed -e "s|@MCS_MAX_N@|$$N|g" -e "s|@MCS_MAX_COV_N@|$$C|g" -e 's|@VERSION@|$(VERSION)|g' \
+mcs_subst = sed -f $(GEN_CAPS) -e 's|@VERSION@|$(VERSION)|g' \
         -e 's|@VERSION_MAJOR@|$(VERSION_MAJOR)|g' -e 's|@VERSION_MINOR@|$(VERSION_MINOR)|g' $(2) $(1)
 
 # config.h with the capacities block spliced in after its "mcspec-install:" line.
@@ -105,7 +116,12 @@ uninstall:
 	@true
 
 # Consumers of the installed files (test/consumers/run.sh says which). The
-# script installs with this Makefile into a temporary prefix itself.
+# script installs with this Makefile into a temporary prefix itself;
+# BUILD_LIB is the build tree's archive, for the link-time capacity check.
 check-install: $(LIB) $(BUILD)/libmcspec.so
 	@MAKE='$(MAKE)' CC='$(CC)' CXX='$(CXX)' CMAKE='$(CMAKE)' NM='$(EMB_NM)' WERROR='$(WERROR)' \
-	    sh test/consumers/run.sh
+	    BUILD_LIB='$(LIB)' sh test/consumers/run.sh
+
+# The mcspec command installs with the library (mk/cli.mk).
+install: install-cli
+uninstall: uninstall-cli

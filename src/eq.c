@@ -54,7 +54,18 @@ void mcs_eq_dft_at(size_t n, const double *x, size_t freq, double *re, double *i
 double mcs_eq_ac_energy(size_t n, const double *f)
 {
     double sum = 0.0;
-    for (size_t b = 1; b < n; ++b) {
+    if (n > (size_t)MCS_MAX_COV_N) {
+        /* Parseval: sum_{k>=1} |F_k|^2 = sum_n f_n^2 - |F_0|^2 = sum_n (f_n - fbar)^2,
+         * in two passes (no cancellation of sum f^2 against N fbar^2) */
+        double mean = 0.0;
+        for (size_t b = 0; b < n; ++b)
+            mean += f[b];
+        mean /= (double)n;
+        for (size_t b = 0; b < n; ++b)
+            sum += (f[b] - mean) * (f[b] - mean);
+        return sum;
+    }
+    for (size_t b = 1; b < n; ++b) { /* the note's sum, term by term */
         double fr, fi;
         mcs_eq_dft_at(n, f, b, &fr, &fi);
         sum += fr * fr + fi * fi;
@@ -65,14 +76,26 @@ double mcs_eq_ac_energy(size_t n, const double *f)
 /* ---- Section 1: the exact moments' read-out of two integrands ------------ */
 
 /* Var[I_f] + Var[I_g], less 2 Cov(I_f, I_g) when f and g are estimated from
- * one shared trial (eq. 4); independent trials have no covariance (eq. 2). */
+ * one shared trial (eq. 4); independent trials have no covariance (eq. 2).
+ * Variances: never negative, rounding clamped as mcs_theory_variance. */
 static double gradient_variance(const mcs_readout *view, size_t k, const double *f,
                                 const double *g, int shared)
 {
+    double vf = mcs_readout_form(view, k, f, f), vg = mcs_readout_form(view, k, g, g);
+    if (!shared) {
+        if (vf < 0.0)
+            vf = mcs_readout_nonnegative(view, vf, mcs_readout_form_bound(view, k, f, f));
+        if (vg < 0.0)
+            vg = mcs_readout_nonnegative(view, vg, mcs_readout_form_bound(view, k, g, g));
+        return vf + vg;
+    }
     /* (f - g)^T Cov (f - g), expanded so no difference array is needed */
-    double var = mcs_readout_form(view, k, f, f) + mcs_readout_form(view, k, g, g);
-    if (shared)
-        var -= 2.0 * mcs_readout_form(view, k, f, g);
+    double var = vf + vg - 2.0 * mcs_readout_form(view, k, f, g);
+    if (var < 0.0)
+        var = mcs_readout_nonnegative(view, var,
+                                      mcs_readout_form_bound(view, k, f, f) +
+                                          mcs_readout_form_bound(view, k, g, g) +
+                                          2.0 * mcs_readout_form_bound(view, k, f, g));
     return var;
 }
 
@@ -155,7 +178,7 @@ mcs_status mcs_eq14_variance(size_t n, size_t k, const double *f, const double *
                              double *out)
 {
     int outputs = f != NULL && power != NULL && out != NULL;
-    mcs_status st = check_f(outputs, n, (size_t)MCS_MAX_COV_N, k, f);
+    mcs_status st = check_f(outputs, n, (size_t)MCS_MAX_N, k, f);
     if (st == MCS_OK && !mcs_all_finite_(n - 1u, power + 1))
         st = MCS_ERR_NOT_FINITE;
     if (st != MCS_OK)
@@ -200,7 +223,7 @@ mcs_status mcs_eq23_random_power(size_t n, size_t k, size_t freq, double *out)
 
 mcs_status mcs_eq24_random_variance(size_t n, size_t k, const double *f, double *out)
 {
-    mcs_status st = check_f(f != NULL && out != NULL, n, (size_t)MCS_MAX_COV_N, k, f);
+    mcs_status st = check_f(f != NULL && out != NULL, n, (size_t)MCS_MAX_N, k, f);
     return st == MCS_OK ? mcs_set_(out, mcs_eq_ac_energy(n, f) / ((double)k * (double)n)) : st;
 }
 

@@ -162,13 +162,51 @@ static double fq_variance(const mcs_importance *imp, size_t k, const double *f, 
     return sum / ((double)k * nd * sqrt(nd));
 }
 
-/* The double sums of eq. 52 as printed and eq. 55, checked: (1/K) N^{-3/2}
- * sum_{k >= k0, l >= l0} F_k* F_l Q_{k-l}. */
+/* The same double sums for N above MCS_MAX_COV_N, by Parseval in O(N). With
+ * q = 1/p, fbar the mean of f: sum over all k, l of F_k* F_l Q_{k-l} is
+ * sqrt(N) sum f^2 q, its row k = 0 and its column l = 0 are each
+ * F_0 sum f q, and its corner F_0^2 Q_0; so, over N^{3/2} K,
+ *   k, l >= 1 (eq. 52 printed): (1/N) sum q (f - fbar)^2,
+ *   k >= 1, all l (eq. 55):     (1/N) sum f q (f - fbar),
+ *   all k, l less |F_0|^2/N (eq. 52 corrected): (1/N) sum p (f q - fbar)^2,
+ * each written so that no large sums cancel (mean p = 1). */
+static double fq_variance_parseval(const mcs_importance *imp, size_t k, const double *f,
+                                   size_t k0, size_t l0)
+{
+    const size_t n = imp->n;
+    double fbar = 0.0, sum = 0.0;
+    for (size_t b = 0; b < n; ++b)
+        fbar += f[b];
+    fbar /= (double)n;
+    for (size_t b = 0; b < n; ++b) {
+        const double q = 1.0 / imp->p[b], d = f[b] - fbar;
+        if (k0 == 0u)
+            sum += imp->p[b] * (f[b] * q - fbar) * (f[b] * q - fbar);
+        else
+            sum += l0 == 0u ? f[b] * q * d : q * d * d;
+    }
+    return sum / ((double)n * (double)k);
+}
+
+/* The double sums of eq. 52 as printed and corrected and eq. 55, checked:
+ * (1/K) N^{-3/2} sum_{k >= k0, l >= l0} F_k* F_l Q_{k-l} (less |F_0|^2/N K
+ * when k0 = 0, eq. 52 corrected), term by term up to MCS_MAX_COV_N. */
 static mcs_status fq_form(const mcs_importance *imp, size_t k, const double *f, size_t k0,
                           size_t l0, double *out)
 {
-    mcs_status st = check_imp_f(imp, k, f, out, (size_t)MCS_MAX_COV_N);
-    return st == MCS_OK ? mcs_set_(out, fq_variance(imp, k, f, k0, l0)) : st;
+    mcs_status st = check_imp_f(imp, k, f, out, (size_t)MCS_MAX_N);
+    if (st != MCS_OK)
+        return st;
+    if (imp->n > (size_t)MCS_MAX_COV_N)
+        return mcs_set_(out, fq_variance_parseval(imp, k, f, k0, l0));
+    if (k0 != 0u)
+        return mcs_set_(out, fq_variance(imp, k, f, k0, l0));
+    const double nd = (double)imp->n;
+    double sum = 0.0;
+    for (size_t b = 0; b < imp->n; ++b)
+        sum += f[b];
+    const double f0_sq = sum * sum / nd; /* |F_0|^2 */
+    return mcs_set_(out, (fq_variance(imp, 1u, f, 0u, 0u) - f0_sq / nd) / (double)k);
 }
 
 mcs_status mcs_eq52_variance_printed(const mcs_importance *imp, size_t k, const double *f,
@@ -186,22 +224,13 @@ mcs_status mcs_eq55_variance_convolution(const mcs_importance *imp, size_t k, co
 mcs_status mcs_eq52_variance_corrected(const mcs_importance *imp, size_t k, const double *f,
                                        double *out)
 {
-    mcs_status st = check_imp_f(imp, k, f, out, (size_t)MCS_MAX_COV_N);
-    if (st != MCS_OK)
-        return st;
-    double nd = (double)imp->n;
-    double sum = 0.0;
-    for (size_t b = 0; b < imp->n; ++b)
-        sum += f[b];
-    double f0_sq = sum * sum / nd; /* |F_0|^2 */
-    *out = (fq_variance(imp, 1u, f, 0u, 0u) - f0_sq / nd) / (double)k;
-    return MCS_OK;
+    return fq_form(imp, k, f, 0u, 0u, out); /* every k, l, less the mean term */
 }
 
 mcs_status mcs_eq58_bound_printed(const mcs_importance *imp, size_t k, const double *f,
                                   double *out)
 {
-    mcs_status st = check_imp_f(imp, k, f, out, (size_t)MCS_MAX_COV_N);
+    mcs_status st = check_imp_f(imp, k, f, out, (size_t)MCS_MAX_N);
     if (st != MCS_OK) /* sum_{k >= 1} |F_k|^2 needs the DFT of f */
         return st;
     *out = mcs_eq_ac_energy(imp->n, f) / imp->harmonic_mean / (double)k;

@@ -23,7 +23,8 @@ mcs_status mcs_eq_check_pair(int outputs, size_t n, size_t k, size_t freq_k, siz
  * index (freq t mod N): no table, so any N. */
 void mcs_eq_dft_at(size_t n, const double *x, size_t freq, double *re, double *im);
 
-/* sum_{k >= 1} |F_k|^2 by direct DFTs, O(N^2) trig. */
+/* sum_{k >= 1} |F_k|^2: by direct DFTs, O(N^2) trig, for N <= MCS_MAX_COV_N;
+ * above, its equal by Parseval, sum_n (f_n - fbar)^2, O(N). */
 double mcs_eq_ac_energy(size_t n, const double *f);
 
 /* Delta_kl of eq. 30 as printed, unchecked: K dividing N, freq_k and freq_l

@@ -1,4 +1,5 @@
 #include "mcspec/pattern2d.h"
+#include "pattern2d_internal.h"
 #include "rng_inline.h"
 
 #include <math.h>
@@ -19,11 +20,6 @@ const char *mcs_pattern2d_kind_str(mcs_pattern2d_kind kind)
     return "unknown";
 }
 
-static int kind_is_valid(mcs_pattern2d_kind kind)
-{
-    return (unsigned)kind < (unsigned)MCS_PATTERN2D_KIND_COUNT; /* enum may be unsigned */
-}
-
 /* strata_y = the largest divisor of k with strata_y^2 <= k. */
 static void square_strata(size_t k, size_t *sx, size_t *sy)
 {
@@ -40,7 +36,7 @@ mcs_status mcs_pattern2d_init(mcs_pattern2d *pat, mcs_pattern2d_kind kind, size_
 {
     if (pat == NULL)
         return MCS_ERR_NULL;
-    if (!kind_is_valid(kind))
+    if (!mcs_pattern2d_kind_is_valid_(kind))
         return MCS_ERR_KIND;
     if (k == 0u || k > (size_t)MCS_PATTERN2D_MAX_K)
         return MCS_ERR_K_RANGE;
@@ -54,13 +50,6 @@ mcs_status mcs_pattern2d_init(mcs_pattern2d *pat, mcs_pattern2d_kind kind, size_
     pat->strata_x = strata_x;
     pat->strata_y = strata_y;
     return MCS_OK;
-}
-
-static int pattern_is_valid(const mcs_pattern2d *pat)
-{
-    return kind_is_valid(pat->kind) && pat->k >= 1u && pat->k <= (size_t)MCS_PATTERN2D_MAX_K &&
-           pat->strata_x >= 1u && pat->k % pat->strata_x == 0u &&
-           pat->k / pat->strata_x == pat->strata_y;
 }
 
 /* (a + v) / d by one rounding, kept below 1 where rounding would reach it
@@ -98,6 +87,14 @@ static void draw_cells(const mcs_pattern2d *pat, mcs_rng *rng, double *points)
     }
 }
 
+/* Exchanges points[a] and points[b]: one step of a shuffle. */
+static void swap_at(double *points, size_t a, size_t b)
+{
+    double t = points[a];
+    points[a] = points[b];
+    points[b] = t;
+}
+
 /* Fisher-Yates on the x slots (they hold the permutation as exact integers
  * until it is complete, so no scratch array is needed). */
 static void draw_nrooks(size_t k, mcs_rng *rng, double *points)
@@ -106,9 +103,7 @@ static void draw_nrooks(size_t k, mcs_rng *rng, double *points)
         points[2u * j] = (double)j;
     for (size_t j = k - 1u; j > 0u; --j) {
         size_t r = mcs_rng_bounded_(rng, (uint32_t)(j + 1u));
-        double t = points[2u * j];
-        points[2u * j] = points[2u * r];
-        points[2u * r] = t;
+        swap_at(points, 2u * j, 2u * r);
     }
     for (size_t j = 0; j < k; ++j) {
         points[2u * j] = fine_point((size_t)points[2u * j], mcs_rng_double_(rng), k);
@@ -132,16 +127,12 @@ static void draw_multi_jittered(const mcs_pattern2d *pat, mcs_rng *rng, double *
     for (size_t i = 0; i < m; ++i)
         for (size_t j = 0; j + 1u < n; ++j) {
             size_t r = j + mcs_rng_bounded_(rng, (uint32_t)(n - j));
-            double t = points[2u * (j * m + i)];
-            points[2u * (j * m + i)] = points[2u * (r * m + i)];
-            points[2u * (r * m + i)] = t;
+            swap_at(points, 2u * (j * m + i), 2u * (r * m + i));
         }
     for (size_t j = 0; j < n; ++j)
         for (size_t i = 0; i + 1u < m; ++i) {
             size_t r = i + mcs_rng_bounded_(rng, (uint32_t)(m - i));
-            double t = points[2u * (j * m + i) + 1u];
-            points[2u * (j * m + i) + 1u] = points[2u * (j * m + r) + 1u];
-            points[2u * (j * m + r) + 1u] = t;
+            swap_at(points, 2u * (j * m + i) + 1u, 2u * (j * m + r) + 1u);
         }
 }
 
@@ -219,7 +210,7 @@ mcs_status mcs_pattern2d_draw(const mcs_pattern2d *pat, mcs_rng *rng, size_t k, 
 {
     if (pat == NULL || rng == NULL || points == NULL)
         return MCS_ERR_NULL;
-    if (!pattern_is_valid(pat))
+    if (!mcs_pattern2d_is_valid_(pat))
         return MCS_ERR_UNINIT;
     if (k != pat->k)
         return MCS_ERR_MISMATCH;

@@ -4,67 +4,60 @@
 #include <math.h>
 #include <string.h>
 
-static int pointset_is_valid(const mcs_pointset *acc)
+/* MCS_ERR_NULL without acc, MCS_ERR_UNINIT unless it came from init. */
+static mcs_status check_acc(const mcs_pointset *acc)
 {
-    return acc->freq_max >= 1u && acc->freq_max <= (size_t)MCS_MAX_FREQ_1D;
+    return mcs_check_object_(acc, acc != NULL ? acc->freq_max : 0u, (size_t)MCS_MAX_FREQ_1D);
 }
 
 mcs_status mcs_pointset_init(mcs_pointset *acc, size_t freq_max)
 {
-    if (acc == NULL)
-        return MCS_ERR_NULL;
-    if (freq_max == 0u || freq_max > (size_t)MCS_MAX_FREQ_1D)
-        return MCS_ERR_FREQ_RANGE;
+    mcs_status st = mcs_ps_check_init(acc, freq_max, (size_t)MCS_MAX_FREQ_1D);
+    if (st != MCS_OK)
+        return st;
     memset(acc, 0, sizeof *acc);
     acc->freq_max = freq_max;
     return MCS_OK;
 }
 
-/* Phase rows of point slot p: low[b] = e^{-2 pi i b x}, b < B, and
- * high[a] = amp e^{-2 pi i a B x}, a < blocks. B x mod 1 is exact (B is a
- * power of two), so the high row is the phase row of that fraction. */
-static void phase_rows(mcs_pointset *acc, int p, double x, double amp, size_t blocks)
+/* Phase rows of point slot p for point q of k (a padding slot past the
+ * last point contributes 0): low[b] = e^{-2 pi i b x}, b < B, and
+ * high[a] = e^{-2 pi i a B x}, a < blocks. B x mod 1 is exact (B is a power
+ * of two), so the high row is the phase row of that fraction. */
+static void phase_rows(mcs_pointset *acc, int p, size_t k, const double *points, size_t q)
 {
+    const double x = q < k ? points[q] : 0.0, amp = q < k ? 1.0 : 0.0;
+    const size_t blocks = acc->freq_max / MCS_POINTSET_BLOCK + 1u;
     mcs_ps_phase_row(x, 1.0, MCS_POINTSET_BLOCK - 1u, acc->low[p][0], acc->low[p][1]);
     double xb = (double)MCS_POINTSET_BLOCK * x;
     mcs_ps_phase_row(xb - floor(xb), amp, blocks - 1u, acc->high[p][0], acc->high[p][1]);
 }
 
 /* S(a B + b) += sum over the four slots of high_p[a] low_p[b]. */
-static void accumulate_four(mcs_pointset *acc, size_t blocks)
+static void accumulate_four(mcs_pointset *acc)
 {
-    for (size_t a = 0; a < blocks; ++a) {
-        double y[8];
-        for (size_t p = 0; p < 4u; ++p) {
-            y[2u * p] = acc->high[p][0][a];
-            y[2u * p + 1u] = acc->high[p][1][a];
-        }
-        size_t off = a * MCS_POINTSET_BLOCK;
-        mcs_ps_row_update4(MCS_POINTSET_BLOCK, acc->re + off, acc->im + off, acc->low[0][0],
-                           acc->low[0][1], acc->low[1][0], acc->low[1][1], acc->low[2][0],
-                           acc->low[2][1], acc->low[3][0], acc->low[3][1], y);
-    }
+    const double *const x[8] = {acc->low[0][0], acc->low[0][1], acc->low[1][0], acc->low[1][1],
+                                acc->low[2][0], acc->low[2][1], acc->low[3][0], acc->low[3][1]};
+    const double *const y[8] = {acc->high[0][0], acc->high[0][1], acc->high[1][0],
+                                acc->high[1][1], acc->high[2][0], acc->high[2][1],
+                                acc->high[3][0], acc->high[3][1]};
+    mcs_ps_outer4(acc->freq_max / MCS_POINTSET_BLOCK + 1u, MCS_POINTSET_BLOCK, acc->re, acc->im,
+                  x, y);
 }
 
 mcs_status mcs_pointset_add(mcs_pointset *acc, size_t k, const double *points)
 {
-    if (acc == NULL || points == NULL)
-        return MCS_ERR_NULL;
-    if (!pointset_is_valid(acc))
-        return MCS_ERR_UNINIT;
-    if (k == 0u)
-        return MCS_ERR_K_RANGE;
-    if (!mcs_ps_points_in_range(k, points))
-        return MCS_ERR_POINT_RANGE;
+    mcs_status st = points == NULL ? MCS_ERR_NULL : check_acc(acc);
+    if (st == MCS_OK)
+        st = k == 0u ? MCS_ERR_K_RANGE : mcs_check_points_(k, points, NULL);
+    if (st != MCS_OK)
+        return st;
     const size_t fmax = acc->freq_max, blocks = fmax / MCS_POINTSET_BLOCK + 1u;
-    memset(acc->re, 0, blocks * MCS_POINTSET_BLOCK * sizeof acc->re[0]);
-    memset(acc->im, 0, blocks * MCS_POINTSET_BLOCK * sizeof acc->im[0]);
+    mcs_ps_clear(blocks * MCS_POINTSET_BLOCK, acc->re, acc->im);
     for (size_t j = 0; j < k; j += 4u) {
-        for (int p = 0; p < 4; ++p) {
-            size_t q = j + (size_t)p;
-            phase_rows(acc, p, q < k ? points[q] : 0.0, q < k ? 1.0 : 0.0, blocks);
-        }
-        accumulate_four(acc, blocks);
+        for (int p = 0; p < 4; ++p)
+            phase_rows(acc, p, k, points, j + (size_t)p);
+        accumulate_four(acc);
     }
     acc->count++;
     const double inv_k = 1.0 / (double)k;
@@ -77,63 +70,45 @@ mcs_status mcs_pointset_add(mcs_pointset *acc, size_t k, const double *points)
 
 mcs_status mcs_pointset_merge(mcs_pointset *dst, const mcs_pointset *src)
 {
-    if (dst == NULL || src == NULL)
-        return MCS_ERR_NULL;
-    if (!pointset_is_valid(dst) || !pointset_is_valid(src))
-        return MCS_ERR_UNINIT;
-    if (dst->freq_max != src->freq_max)
-        return MCS_ERR_MISMATCH;
-    if (src->count == 0u)
-        return MCS_OK;
-    const uint64_t na = dst->count, nb = src->count;
-    for (size_t f = 0; f <= dst->freq_max; ++f)
-        mcs_ps_chan(&dst->mean[f], &dst->m2[f], na, src->mean[f], src->m2[f], nb);
-    dst->count = na + nb;
+    mcs_status st = mcs_ps_pair_status(check_acc(dst), check_acc(src));
+    if (st == MCS_OK && dst->freq_max != src->freq_max)
+        st = MCS_ERR_MISMATCH;
+    if (st != MCS_OK || src->count == 0u)
+        return st;
+    mcs_ps_chan_cells(dst->freq_max + 1u, dst->mean, dst->m2, dst->count, src->mean, src->m2,
+                      src->count);
+    dst->count += src->count;
     return MCS_OK;
 }
 
 mcs_status mcs_pointset_count(const mcs_pointset *acc, uint64_t *count)
 {
-    if (acc == NULL || count == NULL)
-        return MCS_ERR_NULL;
-    if (!pointset_is_valid(acc))
-        return MCS_ERR_UNINIT;
-    *count = acc->count;
-    return MCS_OK;
+    mcs_status st = count == NULL ? MCS_ERR_NULL : check_acc(acc);
+    if (st == MCS_OK)
+        *count = acc->count;
+    return st;
 }
 
-static mcs_status read_check(const mcs_pointset *acc, long freq, const double *out,
-                             uint64_t min_count, size_t *index)
+/* <P(freq)> (want_stderr 0) or its standard error (1). */
+static mcs_status read_power(const mcs_pointset *acc, long freq, int want_stderr, double *out)
 {
-    if (acc == NULL || out == NULL)
-        return MCS_ERR_NULL;
-    if (!pointset_is_valid(acc))
-        return MCS_ERR_UNINIT;
-    size_t f = mcs_ps_abs(freq);
+    mcs_status st = out == NULL ? MCS_ERR_NULL : check_acc(acc);
+    if (st != MCS_OK)
+        return st;
+    const size_t f = mcs_ps_abs(freq);
     if (f > acc->freq_max)
         return MCS_ERR_FREQ_RANGE;
-    if (acc->count < min_count)
-        return MCS_ERR_EMPTY;
-    *index = f;
-    return MCS_OK;
+    return mcs_ps_read(acc->mean[f], acc->m2[f], acc->count, want_stderr, out);
 }
 
 mcs_status mcs_pointset_power(const mcs_pointset *acc, long freq, double *out)
 {
-    size_t f = 0u;
-    mcs_status st = read_check(acc, freq, out, 1u, &f);
-    if (st == MCS_OK)
-        *out = acc->mean[f];
-    return st;
+    return read_power(acc, freq, 0, out);
 }
 
 mcs_status mcs_pointset_power_stderr(const mcs_pointset *acc, long freq, double *out)
 {
-    size_t f = 0u;
-    mcs_status st = read_check(acc, freq, out, 2u, &f);
-    if (st == MCS_OK)
-        *out = mcs_ps_stderr(acc->m2[f], acc->count);
-    return st;
+    return read_power(acc, freq, 1, out);
 }
 
 mcs_status mcs_pointset_exact_power(mcs_pattern_kind kind, size_t k, long freq, double *out)

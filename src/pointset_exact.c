@@ -1,21 +1,15 @@
 /* Exact point-set power spectra of the 2D patterns (pointset2d.h). */
 #include "mcspec/pointset2d.h"
+#include "pattern2d_internal.h"
 #include "pointset_internal.h"
 
 #include <math.h>
-
-static int pattern_is_valid(const mcs_pattern2d *pat)
-{
-    return (unsigned)pat->kind < (unsigned)MCS_PATTERN2D_KIND_COUNT && pat->k >= 1u &&
-           pat->k <= (size_t)MCS_PATTERN2D_MAX_K && pat->strata_x >= 1u &&
-           pat->k % pat->strata_x == 0u && pat->k / pat->strata_x == pat->strata_y;
-}
 
 static mcs_status check(const mcs_pattern2d *pat, const double *out)
 {
     if (pat == NULL || out == NULL)
         return MCS_ERR_NULL;
-    if (!pattern_is_valid(pat))
+    if (!mcs_pattern2d_is_valid_(pat))
         return MCS_ERR_UNINIT;
     if (pat->kind == MCS_PATTERN2D_MULTI_JITTERED || pat->kind == MCS_PATTERN2D_CMJ)
         return MCS_ERR_KIND;
@@ -57,29 +51,20 @@ mcs_status mcs_pointset2d_exact_power(const mcs_pattern2d *pat, long freq_x, lon
     return MCS_OK;
 }
 
-/* Whole-plane mean and unbiased variance (divisor n - 1) of the exact power
- * over annulus r; returns the count n. Every term is even in fx and in fy,
- * so the quadrant ax, ay >= 0 is enumerated with sign multiplicities. */
-static double exact_ring(const mcs_pattern2d *pat, size_t r, double *mean, double *var)
+/* The exact power over annulus r, the whole plane counted. Every term is
+ * even in fx and in fy, so the quadrant ax, ay >= 0 is enumerated with sign
+ * multiplicities. */
+static void exact_ring(const mcs_pattern2d *pat, size_t r, mcs_ps_ring *g)
 {
-    double sum = 0.0, n = 0.0, ss = 0.0;
     for (int pass = 0; pass < 2; ++pass)
         for (size_t ay = 0; ay <= r; ++ay)
             for (size_t ax = 0; ax <= r; ++ax) {
-                if (mcs_ps_isqrt(ax * ax + ay * ay) != r)
+                double w = mcs_ps_ring_weight(ax, ay, r);
+                if (w == 0.0)
                     continue;
-                double w = (ax > 0u ? 2.0 : 1.0) * (ay > 0u ? 2.0 : 1.0);
                 double p = ax == 0u && ay == 0u ? (double)pat->k : exact_nonzero(pat, ax, ay);
-                if (pass == 0) {
-                    sum += w * p;
-                    n += w;
-                } else {
-                    ss += w * (p - sum / n) * (p - sum / n);
-                }
+                mcs_ps_ring_add(g, pass, w, p);
             }
-    *mean = sum / n;
-    *var = n > 1.0 ? ss / (n - 1.0) : 0.0;
-    return n;
 }
 
 mcs_status mcs_pointset2d_exact_radial(const mcs_pattern2d *pat, size_t radius, double *out)
@@ -87,8 +72,9 @@ mcs_status mcs_pointset2d_exact_radial(const mcs_pattern2d *pat, size_t radius, 
     mcs_status st = check(pat, out);
     if (st != MCS_OK)
         return st;
-    double var = 0.0;
-    (void)exact_ring(pat, radius, out, &var);
+    mcs_ps_ring g = {0.0, 0.0, 0.0};
+    exact_ring(pat, radius, &g);
+    *out = g.sum / g.n;
     return MCS_OK;
 }
 
@@ -98,11 +84,8 @@ mcs_status mcs_pointset2d_exact_anisotropy(const mcs_pattern2d *pat, size_t radi
     mcs_status st = check(pat, out_db);
     if (st != MCS_OK)
         return st;
-    double mean = 0.0, var = 0.0;
-    double n = exact_ring(pat, radius, &mean, &var);
+    mcs_ps_ring g = {0.0, 0.0, 0.0};
+    exact_ring(pat, radius, &g);
     /* Differences at the rounding level of the mean are no variance. */
-    if (n < 2.0 || !(mean > 0.0) || !(var > 1e-24 * mean * mean))
-        return MCS_ERR_DOMAIN;
-    *out_db = 10.0 * log10(var / (mean * mean));
-    return MCS_OK;
+    return mcs_ps_ring_db(&g, 0.0, 1e-24, out_db);
 }

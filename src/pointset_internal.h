@@ -1,18 +1,41 @@
 /* Helpers shared by the point-set periodogram accumulators (pointset.c,
- * pointset2d.c, pointset_exact.c); private header. */
+ * pointset2d.c, pointset_exact.c) and the binned 2D spectrum (spectrum2d.c,
+ * spectrum2d_exact.c): the outer-product kernel of a trial, the per-cell
+ * Welford and Chan updates, the read-out of a mean or its standard error,
+ * and the annulus arithmetic; private header. */
 #ifndef MCSPEC_POINTSET_INTERNAL_H
 #define MCSPEC_POINTSET_INTERNAL_H
 
 #include <math.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <string.h>
+
+#include "internal.h"
+#include "mcspec/status.h"
 
 /* Phases are advanced by one complex multiplication per frequency; every
  * MCS_PS_ANCHOR steps they are recomputed from sin and cos, so rounding
  * accumulates over at most this many products (a few 1e-15 in all). */
 #define MCS_PS_ANCHOR 32u
 
-#define MCS_PS_TWO_PI 6.283185307179586476925286766559
+/* The first check of a point-set or binned 2D accumulator's init:
+ * MCS_ERR_NULL without the object, MCS_ERR_FREQ_RANGE unless 1 <= f <= cap. */
+static inline mcs_status mcs_ps_check_init(const void *acc, size_t freq_max, size_t cap)
+{
+    mcs_status st = mcs_check_init_(acc, freq_max, cap);
+    return st == MCS_ERR_N_RANGE ? MCS_ERR_FREQ_RANGE : st;
+}
+
+/* The status of a call on two objects (merge) from each one's own check:
+ * MCS_ERR_NULL first, as if both had been checked for NULL before anything
+ * else, then the first object's status, then the second's. */
+static inline mcs_status mcs_ps_pair_status(mcs_status a, mcs_status b)
+{
+    if (a == MCS_ERR_NULL || b == MCS_ERR_NULL)
+        return MCS_ERR_NULL;
+    return a != MCS_OK ? a : b;
+}
 
 /* e^{-2 pi i f x} for x in [0,1): f x reduced mod 1 first so the angle stays
  * in [0, 2 pi) however large f is. */
@@ -20,7 +43,7 @@ static inline void mcs_ps_phase(double x, size_t f, double *re, double *im)
 {
     double t = (double)f * x;
     t -= floor(t);
-    double a = MCS_PS_TWO_PI * t;
+    double a = MCS_TWO_PI * t;
     *re = cos(a);
     *im = -sin(a);
 }
@@ -72,13 +95,26 @@ static inline void mcs_ps_row_update4(size_t stride, double *restrict sr, double
     }
 }
 
-/* 1 if every x[i], i < count, lies in [0, 1) (NaN fails). */
-static inline int mcs_ps_points_in_range(size_t count, const double *x)
+/* S[r stride + c] += sum over four points p of y_p[r] x_p[c], r < rows,
+ * c < stride (even): a trial's sum over points as outer products of per-point
+ * rows, four points per pass over S. x[2p], x[2p + 1] are point p's x row
+ * (re, im), y[2p], y[2p + 1] its y row. */
+static inline void mcs_ps_outer4(size_t rows, size_t stride, double *re, double *im,
+                                 const double *const x[8], const double *const y[8])
 {
-    for (size_t i = 0; i < count; ++i)
-        if (!(x[i] >= 0.0 && x[i] < 1.0))
-            return 0;
-    return 1;
+    for (size_t r = 0; r < rows; ++r) {
+        const double c[8] = {y[0][r], y[1][r], y[2][r], y[3][r],
+                             y[4][r], y[5][r], y[6][r], y[7][r]};
+        mcs_ps_row_update4(stride, re + r * stride, im + r * stride, x[0], x[1], x[2], x[3], x[4],
+                           x[5], x[6], x[7], c);
+    }
+}
+
+/* Zeroes a trial's sums re[cells], im[cells] before its points go in. */
+static inline void mcs_ps_clear(size_t cells, double *re, double *im)
+{
+    memset(re, 0, cells * sizeof *re);
+    memset(im, 0, cells * sizeof *im);
 }
 
 /* Welford update of (mean, m2) with value v as the count-th value. */
@@ -98,11 +134,32 @@ static inline void mcs_ps_chan(double *mean_a, double *m2_a, uint64_t na, double
     *m2_a += m2_b + d * d * ((double)na * (double)nb / n);
 }
 
+/* (mean_a, m2_a) over na trials <- union with (mean_b, m2_b) over nb, cell by
+ * cell over the first `cells` cells (Chan et al.). */
+static inline void mcs_ps_chan_cells(size_t cells, double *mean_a, double *m2_a, uint64_t na,
+                                     const double *mean_b, const double *m2_b, uint64_t nb)
+{
+    for (size_t i = 0; i < cells; ++i)
+        mcs_ps_chan(&mean_a[i], &m2_a[i], na, mean_b[i], m2_b[i], nb);
+}
+
 /* sqrt(m2 / (T - 1) / T): standard error of a mean over T >= 2 trials. */
 static inline double mcs_ps_stderr(double m2, uint64_t count)
 {
     double t = (double)count;
     return sqrt(fmax(m2, 0.0) / (t - 1.0) / t);
+}
+
+/* A read-out of one cell over `count` trials: *out = its mean (want_stderr 0)
+ * or the standard error of the mean (1). MCS_ERR_EMPTY without a trial, or
+ * for the standard error without two; *out untouched then. */
+static inline mcs_status mcs_ps_read(double mean, double m2, uint64_t count, int want_stderr,
+                                     double *out)
+{
+    if (count < (want_stderr ? 2u : 1u))
+        return MCS_ERR_EMPTY;
+    *out = want_stderr ? mcs_ps_stderr(m2, count) : mean;
+    return MCS_OK;
 }
 
 /* |f| as a size_t, without overflow at LONG_MIN. */
@@ -117,8 +174,8 @@ static inline double mcs_ps_sinc2(size_t f, size_t d)
 {
     if (f == 0u)
         return 1.0;
-    double s = sin(MCS_PS_TWO_PI * 0.5 * (double)(f % d) / (double)d);
-    double a = MCS_PS_TWO_PI * 0.5 * (double)f / (double)d;
+    double s = sin(MCS_TWO_PI * 0.5 * (double)(f % d) / (double)d);
+    double a = MCS_TWO_PI * 0.5 * (double)f / (double)d;
     return (s * s) / (a * a);
 }
 
@@ -132,6 +189,47 @@ static inline size_t mcs_ps_isqrt(size_t q)
     while ((r + 1u) * (r + 1u) <= q)
         ++r;
     return r;
+}
+
+/* How many whole-plane wave vectors (+-ax, +-ay) the quadrant wave vector
+ * (ax, ay) stands for if it lies in annulus r (r <= |f| < r + 1), else 0. */
+static inline double mcs_ps_ring_weight(size_t ax, size_t ay, size_t r)
+{
+    if (mcs_ps_isqrt(ax * ax + ay * ay) != r)
+        return 0.0;
+    return (ax > 0u ? 2.0 : 1.0) * (ay > 0u ? 2.0 : 1.0);
+}
+
+/* Weighted mean and unbiased variance of the values over an annulus, in two
+ * passes over them (the variance of values near a large mean would cancel in
+ * one): pass 0 sums w p and w, pass 1 the weighted squared deviations. */
+typedef struct {
+    double sum, n, ss;
+} mcs_ps_ring;
+
+static inline void mcs_ps_ring_add(mcs_ps_ring *g, int pass, double w, double p)
+{
+    if (pass == 0) {
+        g->sum += w * p;
+        g->n += w;
+    } else {
+        g->ss += w * (p - g->sum / g->n) * (p - g->sum / g->n);
+    }
+}
+
+/* psa's anisotropy 10 log10(var / mean^2) of the annulus in dB (divisor
+ * n - 1). MCS_ERR_DOMAIN when it is not finite: fewer than two wave vectors,
+ * a mean not above mean_min (an empty annulus measured as rounding residue),
+ * or a variance not above var_rel_min mean^2 (differences at the rounding
+ * level of the mean are no variance). *out_db untouched then. */
+static inline mcs_status mcs_ps_ring_db(const mcs_ps_ring *g, double mean_min,
+                                        double var_rel_min, double *out_db)
+{
+    const double mean = g->sum / g->n, var = g->n > 1.0 ? g->ss / (g->n - 1.0) : 0.0;
+    if (g->n < 2.0 || !(mean > mean_min) || !(var > var_rel_min * mean * mean))
+        return MCS_ERR_DOMAIN;
+    *out_db = 10.0 * log10(var / (mean * mean));
+    return MCS_OK;
 }
 
 #endif /* MCSPEC_POINTSET_INTERNAL_H */

@@ -4,6 +4,7 @@
 #include "readout.h"
 #include "internal.h"
 
+#include <float.h>
 #include <math.h>
 
 void mcs_readout_dft(const mcs_readout *view, const double *x, size_t freq, double *re,
@@ -96,6 +97,43 @@ double mcs_readout_form(const mcs_readout *view, size_t k, const double *f, cons
     return sum / (kd * kd);
 }
 
+/* Rounding bound of a form over the moments: (2N + 16) DBL_EPSILON times the
+ * sum of the magnitudes of its terms, (1/K^2) sum |f_m| |g_n| (|<s_m s_n>| +
+ * |<s_m>| |<s_n>|). Each term carries the few roundings of the moments and of
+ * its product, and a sum of N terms at most N more (twice: rows, then the
+ * sum of rows). */
+double mcs_readout_form_bound(const mcs_readout *view, size_t k, const double *f,
+                              const double *g)
+{
+    const size_t n = view->n;
+    const double sc = view->scale;
+    double sum = 0.0;
+    for (size_t m = 0; m < n; ++m) {
+        const double *row = &view->second[m * n];
+        const double mean_m = fabs(view->first[m] * sc);
+        double acc = 0.0;
+        for (size_t b = 0; b < n; ++b)
+            acc += (fabs(row[b] * sc) + mean_m * fabs(view->first[b] * sc)) * fabs(g[b]);
+        sum += fabs(f[m]) * acc;
+    }
+    const double kd = (double)k;
+    return (2.0 * (double)n + 16.0) * DBL_EPSILON * sum / (kd * kd);
+}
+
+double mcs_readout_nonnegative(const mcs_readout *view, double value, double bound)
+{
+    return view->k != 0u && value < 0.0 && -value <= bound ? 0.0 : value;
+}
+
+/* The bound of <|S_k|^2> = (1/N) sum e^{..} <s_m s_n>: |e^{..}| = 1. */
+static double power_bound(const mcs_readout *view)
+{
+    double sum = 0.0;
+    for (size_t j = 0; j < view->n * view->n; ++j)
+        sum += fabs(view->second[j] * view->scale);
+    return (2.0 * (double)view->n + 16.0) * DBL_EPSILON * sum / (double)view->n;
+}
+
 /* ---- checked read-outs ---------------------------------------------------- */
 
 /* Opens obj for a read-out: outputs given (else NULL), the object's own
@@ -157,10 +195,16 @@ mcs_status mcs_readout_mean(const mcs_readout_source *src, size_t freq, double *
 
 mcs_status mcs_readout_power(const mcs_readout_source *src, size_t freq, double *out)
 {
-    double re = 0.0, im = 0.0;
-    mcs_status st = read_complex(src, freq, freq, out != NULL ? &re : NULL, &im,
-                                 mcs_readout_cross_at);
-    return st == MCS_OK ? mcs_set_(out, re) : st; /* im is 0 up to rounding: <s s^T> is symmetric */
+    mcs_readout v;
+    mcs_status st = open_for(out != NULL, src, freq, freq, MCS_ERR_FREQ_RANGE, &v);
+    if (st != MCS_OK)
+        return st;
+    double re = 0.0, im = 0.0; /* im is 0 up to rounding: <s s^T> is symmetric */
+    mcs_readout_cross_at(&v, freq, freq, &re, &im);
+    if (re < 0.0) /* a second moment: never negative but for rounding */
+        re = mcs_readout_nonnegative(&v, re, power_bound(&v));
+    *out = re;
+    return MCS_OK;
 }
 
 mcs_status mcs_readout_cross(const mcs_readout_source *src, size_t freq_k,
@@ -336,7 +380,17 @@ mcs_status mcs_readout_estimator_mean(const mcs_readout_source *src, size_t n,
 mcs_status mcs_readout_variance(const mcs_readout_source *src, size_t n, size_t k,
                                 const double *f, double *out)
 {
-    return mcs_readout_estimator_covariance(src, n, k, f, f, out);
+    if (out == NULL)
+        return MCS_ERR_NULL;
+    mcs_readout v;
+    mcs_status st = mcs_readout_check_integrand(src, n, k, f, &v);
+    if (st != MCS_OK)
+        return st;
+    double var = mcs_readout_form(&v, k, f, f);
+    if (var < 0.0) /* f^T Cov f: never negative but for rounding */
+        var = mcs_readout_nonnegative(&v, var, mcs_readout_form_bound(&v, k, f, f));
+    *out = var;
+    return MCS_OK;
 }
 
 mcs_status mcs_readout_estimator_covariance(const mcs_readout_source *src, size_t n,

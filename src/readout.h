@@ -88,6 +88,16 @@ mcs_status mcs_readout_integrand_value(const mcs_readout_source *src, size_t n,
 /* (1/K^2) f^T Cov(s) g, K = k, both checked. */
 double mcs_readout_form(const mcs_readout *view, size_t k, const double *f, const double *g);
 
+/* The rounding bound of mcs_readout_form(view, k, f, g): (2N + 16)
+ * DBL_EPSILON (1/K^2) sum_{m,n} |f_m| |g_n| (|<s_m s_n>| + |<s_m>| |<s_n>|). */
+double mcs_readout_form_bound(const mcs_readout *view, size_t k, const double *f,
+                              const double *g);
+
+/* A value that cannot be negative (a variance, a power) read from exact
+ * moments (view->k != 0): in [-bound, 0) it is rounding and reads 0; below
+ * -bound, or from measured moments, it is returned as it is. */
+double mcs_readout_nonnegative(const mcs_readout *view, double value, double bound);
+
 /* Eq. 7 at one frequency, freq < N, of any x[N] from the view's twiddle table. */
 void mcs_readout_dft(const mcs_readout *view, const double *x, size_t freq, double *re,
                      double *im);

@@ -71,8 +71,11 @@ mcs_status mcs_sampler_init(mcs_sampler *s, mcs_sampler_kind kind, size_t dim, s
     return MCS_OK;
 }
 
-static mcs_status check(const mcs_sampler *s, size_t k)
+/* The checks of a trial of k points into points: NULL, UNINIT, MISMATCH. */
+static mcs_status check(const mcs_sampler *s, size_t k, const double *points)
 {
+    if (s == NULL || points == NULL)
+        return MCS_ERR_NULL;
     if (!mcs_sampler_has_dim(s->kind, s->dim) || !k_in_range(s->k))
         return MCS_ERR_UNINIT;
     if (k != s->k)
@@ -186,9 +189,7 @@ static double rotate(double u, double shift)
 
 mcs_status mcs_sampler_base_points(const mcs_sampler *s, size_t k, double *points)
 {
-    if (s == NULL || points == NULL)
-        return MCS_ERR_NULL;
-    mcs_status st = check(s, k);
+    mcs_status st = check(s, k, points);
     if (st != MCS_OK)
         return st;
     const size_t dim = s->dim;
@@ -203,9 +204,7 @@ mcs_status mcs_sampler_base_points(const mcs_sampler *s, size_t k, double *point
 
 mcs_status mcs_sampler_draw(const mcs_sampler *s, mcs_rng *rng, size_t k, double *points)
 {
-    if (s == NULL || rng == NULL || points == NULL)
-        return MCS_ERR_NULL;
-    mcs_status st = check(s, k);
+    mcs_status st = rng == NULL ? MCS_ERR_NULL : check(s, k, points);
     if (st != MCS_OK)
         return st;
     const size_t dim = s->dim;

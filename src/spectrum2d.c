@@ -14,23 +14,23 @@ static size_t stride_of(size_t n_x)
     return n_x + n_x % 2u;
 }
 
+/* Stored wave vectors of an N1 x N2 plane: rows k2 = 0..N2/2. */
+static size_t cells_of(const mcs_spectrum2d *acc)
+{
+    return stride_of(acc->n_x) * (acc->n_y / 2u + 1u);
+}
+
 static int side_ok(size_t n)
 {
     return n >= 1u && n <= (size_t)MCS_MAX_SIDE;
 }
 
-static int spectrum2d_is_valid(const mcs_spectrum2d *acc)
+/* MCS_ERR_NULL without acc, MCS_ERR_UNINIT unless it came from init. */
+static mcs_status check_acc(const mcs_spectrum2d *acc)
 {
-    return side_ok(acc->n_x) && side_ok(acc->n_y);
-}
-
-static void twiddles(size_t n, double *c, double *s)
-{
-    for (size_t t = 0; t < n; ++t) {
-        double a = MCS_PS_TWO_PI * (double)t / (double)n;
-        c[t] = cos(a);
-        s[t] = sin(a);
-    }
+    if (acc == NULL)
+        return MCS_ERR_NULL;
+    return side_ok(acc->n_x) && side_ok(acc->n_y) ? MCS_OK : MCS_ERR_UNINIT;
 }
 
 mcs_status mcs_spectrum2d_init(mcs_spectrum2d *acc, size_t n_x, size_t n_y)
@@ -42,23 +42,22 @@ mcs_status mcs_spectrum2d_init(mcs_spectrum2d *acc, size_t n_x, size_t n_y)
     memset(acc, 0, sizeof *acc);
     acc->n_x = n_x;
     acc->n_y = n_y;
-    twiddles(n_x, acc->cos_x, acc->sin_x);
-    twiddles(n_y, acc->cos_y, acc->sin_y);
+    mcs_twiddles_(n_x, acc->cos_x, acc->sin_x);
+    mcs_twiddles_(n_y, acc->cos_y, acc->sin_y);
     return MCS_OK;
 }
 
-static size_t bin_of(double x, size_t n)
-{
-    size_t b = (size_t)(x * (double)n);
-    return b < n ? b : n - 1u;
-}
-
-/* Twiddle rows of point slot p in bin (b1, b2) with weight w:
+/* Twiddle rows of point slot p for point q of k, binned at (b1, b2), with its
+ * weight (a padding slot past the last point has weight 0):
  * x row e^{-2 pi i k1 b1/N1}, k1 < N1; y row w e^{-2 pi i k2 b2/N2}, k2 <= N2/2.
  * Table indices advance by b mod N, so every twiddle is an exact entry. */
-static void twiddle_rows(mcs_spectrum2d *acc, int p, size_t b1, size_t b2, double w)
+static void twiddle_rows(mcs_spectrum2d *acc, int p, size_t k, const double *points,
+                         const double *weights, size_t q)
 {
     const size_t n1 = acc->n_x, n2 = acc->n_y;
+    const size_t b1 = q < k ? mcs_point_bin_(points[2u * q], n1) : 0u;
+    const size_t b2 = q < k ? mcs_point_bin_(points[2u * q + 1u], n2) : 0u;
+    const double w = q >= k ? 0.0 : weights != NULL ? weights[q] : 1.0;
     double *xr = acc->rows[p][XR], *xi = acc->rows[p][XI];
     for (size_t k1 = 0, t = 0; k1 < n1; ++k1) {
         xr[k1] = acc->cos_x[t];
@@ -80,18 +79,12 @@ static void twiddle_rows(mcs_spectrum2d *acc, int p, size_t b1, size_t b2, doubl
 
 static void accumulate_four(mcs_spectrum2d *acc)
 {
-    const size_t stride = stride_of(acc->n_x);
     double (*r)[4][MCS_SPECTRUM2D_STRIDE] = acc->rows;
-    for (size_t k2 = 0; k2 <= acc->n_y / 2u; ++k2) {
-        double y[8];
-        for (size_t p = 0; p < 4u; ++p) {
-            y[2u * p] = r[p][YR][k2];
-            y[2u * p + 1u] = r[p][YI][k2];
-        }
-        mcs_ps_row_update4(stride, acc->re + k2 * stride, acc->im + k2 * stride, r[0][XR],
-                           r[0][XI], r[1][XR], r[1][XI], r[2][XR], r[2][XI], r[3][XR], r[3][XI],
-                           y);
-    }
+    const double *const x[8] = {r[0][XR], r[0][XI], r[1][XR], r[1][XI],
+                                r[2][XR], r[2][XI], r[3][XR], r[3][XI]};
+    const double *const y[8] = {r[0][YR], r[0][YI], r[1][YR], r[1][YI],
+                                r[2][YR], r[2][YI], r[3][YR], r[3][YI]};
+    mcs_ps_outer4(acc->n_y / 2u + 1u, stride_of(acc->n_x), acc->re, acc->im, x, y);
 }
 
 /* Normalise the trial's S_k (eq. 7's N^{-1/2}) and update the statistics. */
@@ -113,44 +106,32 @@ static void update_statistics(mcs_spectrum2d *acc)
         }
 }
 
-static mcs_status check_weights(size_t k, const double *w)
+/* The checks of a trial: K >= 1, points[2 k] in [0,1), weights[k] (if any)
+ * finite and >= 0, in that order. */
+static mcs_status check_trial(size_t k, const double *points, const double *weights)
 {
-    for (size_t j = 0; w != NULL && j < k; ++j) {
-        if (!isfinite(w[j]))
-            return MCS_ERR_NOT_FINITE;
-        if (w[j] < 0.0)
-            return MCS_ERR_NEGATIVE;
-    }
-    return MCS_OK;
+    if (k == 0u)
+        return MCS_ERR_K_RANGE;
+    if (k > SIZE_MAX / 2u)
+        return MCS_ERR_POINT_RANGE;
+    mcs_status st = mcs_check_points_(2u * k, points, NULL);
+    for (size_t j = 0; st == MCS_OK && weights != NULL && j < k; ++j)
+        st = mcs_check_weight_(weights[j]);
+    return st;
 }
 
 mcs_status mcs_spectrum2d_add_points(mcs_spectrum2d *acc, size_t k, const double *points,
                                      const double *weights)
 {
-    if (acc == NULL || points == NULL)
-        return MCS_ERR_NULL;
-    if (!spectrum2d_is_valid(acc))
-        return MCS_ERR_UNINIT;
-    if (k == 0u)
-        return MCS_ERR_K_RANGE;
-    if (k > SIZE_MAX / 2u || !mcs_ps_points_in_range(2u * k, points))
-        return MCS_ERR_POINT_RANGE;
-    mcs_status st = check_weights(k, weights);
+    mcs_status st = points == NULL ? MCS_ERR_NULL : check_acc(acc);
+    if (st == MCS_OK)
+        st = check_trial(k, points, weights);
     if (st != MCS_OK)
         return st;
-    const size_t cells = stride_of(acc->n_x) * (acc->n_y / 2u + 1u);
-    memset(acc->re, 0, cells * sizeof acc->re[0]);
-    memset(acc->im, 0, cells * sizeof acc->im[0]);
+    mcs_ps_clear(cells_of(acc), acc->re, acc->im);
     for (size_t j = 0; j < k; j += 4u) {
-        for (int p = 0; p < 4; ++p) {
-            size_t q = j + (size_t)p;
-            if (q < k)
-                twiddle_rows(acc, p, bin_of(points[2u * q], acc->n_x),
-                             bin_of(points[2u * q + 1u], acc->n_y),
-                             weights != NULL ? weights[q] : 1.0);
-            else
-                twiddle_rows(acc, p, 0u, 0u, 0.0); /* padding: contributes 0 */
-        }
+        for (int p = 0; p < 4; ++p)
+            twiddle_rows(acc, p, k, points, weights, j + (size_t)p);
         accumulate_four(acc);
     }
     update_statistics(acc);
@@ -159,50 +140,46 @@ mcs_status mcs_spectrum2d_add_points(mcs_spectrum2d *acc, size_t k, const double
 
 mcs_status mcs_spectrum2d_merge(mcs_spectrum2d *dst, const mcs_spectrum2d *src)
 {
-    if (dst == NULL || src == NULL)
-        return MCS_ERR_NULL;
-    if (!spectrum2d_is_valid(dst) || !spectrum2d_is_valid(src))
-        return MCS_ERR_UNINIT;
-    if (dst->n_x != src->n_x || dst->n_y != src->n_y)
-        return MCS_ERR_MISMATCH;
-    if (src->count == 0u)
-        return MCS_OK;
+    mcs_status st = mcs_ps_pair_status(check_acc(dst), check_acc(src));
+    if (st == MCS_OK && (dst->n_x != src->n_x || dst->n_y != src->n_y))
+        st = MCS_ERR_MISMATCH;
+    if (st != MCS_OK || src->count == 0u)
+        return st;
     const uint64_t na = dst->count, nb = src->count;
     const double n = (double)na + (double)nb, fb = (double)nb / n;
     const double cross = (double)na * (double)nb / n;
-    const size_t cells = stride_of(dst->n_x) * (dst->n_y / 2u + 1u);
+    const size_t cells = cells_of(dst);
+    /* Chan et al. for the complex mean: the squared gap is |d|^2. */
     for (size_t i = 0; i < cells; ++i) {
         double dr = src->mean_re[i] - dst->mean_re[i], di = src->mean_im[i] - dst->mean_im[i];
         dst->mean_re[i] += dr * fb;
         dst->mean_im[i] += di * fb;
         dst->m2_s[i] += src->m2_s[i] + (dr * dr + di * di) * cross;
-        mcs_ps_chan(&dst->mean_pow[i], &dst->m2_pow[i], na, src->mean_pow[i], src->m2_pow[i], nb);
     }
+    mcs_ps_chan_cells(cells, dst->mean_pow, dst->m2_pow, na, src->mean_pow, src->m2_pow, nb);
     dst->count = na + nb;
     return MCS_OK;
 }
 
 mcs_status mcs_spectrum2d_count(const mcs_spectrum2d *acc, uint64_t *count)
 {
-    if (acc == NULL || count == NULL)
-        return MCS_ERR_NULL;
-    if (!spectrum2d_is_valid(acc))
-        return MCS_ERR_UNINIT;
-    *count = acc->count;
-    return MCS_OK;
+    mcs_status st = count == NULL ? MCS_ERR_NULL : check_acc(acc);
+    if (st == MCS_OK)
+        *count = acc->count;
+    return st;
 }
 
-/* Stored index of (k1, k2); *conj = 1 when it is the mirror -k's entry. */
-static mcs_status lookup(const mcs_spectrum2d *acc, size_t k1, size_t k2, uint64_t min_count,
+/* The checks of a read-out at k = (k1, k2) with output out, and the stored
+ * index of k; *conj = 1 when it is the mirror -k's entry. */
+static mcs_status lookup(const mcs_spectrum2d *acc, size_t k1, size_t k2, const double *out,
                          size_t *index, int *conj)
 {
-    if (!spectrum2d_is_valid(acc))
-        return MCS_ERR_UNINIT;
+    mcs_status st = out == NULL ? MCS_ERR_NULL : check_acc(acc);
+    if (st != MCS_OK)
+        return st;
     const size_t n1 = acc->n_x, n2 = acc->n_y;
     if (k1 >= n1 || k2 >= n2)
         return MCS_ERR_FREQ_RANGE;
-    if (acc->count < min_count)
-        return MCS_ERR_EMPTY;
     *conj = k2 > n2 / 2u;
     if (*conj) {
         k2 = n2 - k2;
@@ -215,63 +192,46 @@ static mcs_status lookup(const mcs_spectrum2d *acc, size_t k1, size_t k2, uint64
 mcs_status mcs_spectrum2d_mean(const mcs_spectrum2d *acc, size_t freq_k, size_t freq_l,
                                double *re, double *im)
 {
-    if (acc == NULL || re == NULL || im == NULL)
-        return MCS_ERR_NULL;
     size_t i = 0u;
     int conj = 0;
-    mcs_status st = lookup(acc, freq_k, freq_l, 1u, &i, &conj);
+    mcs_status st = im == NULL ? MCS_ERR_NULL : lookup(acc, freq_k, freq_l, re, &i, &conj);
+    if (st == MCS_OK)
+        st = mcs_ps_read(acc->mean_re[i], 0.0, acc->count, 0, re);
+    if (st == MCS_OK)
+        *im = conj ? -acc->mean_im[i] : acc->mean_im[i];
+    return st;
+}
+
+/* <|S_k|^2> (what 0), its standard error (1), or that of <S_k> (2). */
+static mcs_status read_stat(const mcs_spectrum2d *acc, size_t k1, size_t k2, int what,
+                            double *out)
+{
+    size_t i = 0u;
+    int conj = 0;
+    mcs_status st = lookup(acc, k1, k2, out, &i, &conj);
     if (st != MCS_OK)
         return st;
-    *re = acc->mean_re[i];
-    *im = conj ? -acc->mean_im[i] : acc->mean_im[i];
-    return MCS_OK;
+    if (what == 2)
+        return mcs_ps_read(0.0, acc->m2_s[i], acc->count, 1, out);
+    return mcs_ps_read(acc->mean_pow[i], acc->m2_pow[i], acc->count, what, out);
 }
 
 mcs_status mcs_spectrum2d_power(const mcs_spectrum2d *acc, size_t freq_k, size_t freq_l,
                                 double *out)
 {
-    if (acc == NULL || out == NULL)
-        return MCS_ERR_NULL;
-    size_t i = 0u;
-    int conj = 0;
-    mcs_status st = lookup(acc, freq_k, freq_l, 1u, &i, &conj);
-    if (st == MCS_OK)
-        *out = acc->mean_pow[i];
-    return st;
+    return read_stat(acc, freq_k, freq_l, 0, out);
 }
 
 mcs_status mcs_spectrum2d_power_stderr(const mcs_spectrum2d *acc, size_t freq_k, size_t freq_l,
                                        double *out)
 {
-    if (acc == NULL || out == NULL)
-        return MCS_ERR_NULL;
-    size_t i = 0u;
-    int conj = 0;
-    mcs_status st = lookup(acc, freq_k, freq_l, 2u, &i, &conj);
-    if (st == MCS_OK)
-        *out = mcs_ps_stderr(acc->m2_pow[i], acc->count);
-    return st;
+    return read_stat(acc, freq_k, freq_l, 1, out);
 }
 
 mcs_status mcs_spectrum2d_mean_stderr(const mcs_spectrum2d *acc, size_t freq_k, size_t freq_l,
                                       double *out)
 {
-    if (acc == NULL || out == NULL)
-        return MCS_ERR_NULL;
-    size_t i = 0u;
-    int conj = 0;
-    mcs_status st = lookup(acc, freq_k, freq_l, 2u, &i, &conj);
-    if (st == MCS_OK)
-        *out = mcs_ps_stderr(acc->m2_s[i], acc->count);
-    return st;
-}
-
-static int all_finite(size_t n, const double *v)
-{
-    for (size_t i = 0; i < n; ++i)
-        if (!isfinite(v[i]))
-            return 0;
-    return 1;
+    return read_stat(acc, freq_k, freq_l, 2, out);
 }
 
 /* S_k over k2 <= N2/2 by direct sums over the non-zero s_n (exact table
@@ -279,12 +239,11 @@ static int all_finite(size_t n, const double *v)
 mcs_status mcs_spectrum2d_transform(const mcs_spectrum2d *acc, const double *s, double *re,
                                     double *im)
 {
-    if (acc == NULL || s == NULL || re == NULL || im == NULL)
-        return MCS_ERR_NULL;
-    if (!spectrum2d_is_valid(acc))
-        return MCS_ERR_UNINIT;
+    mcs_status st = s == NULL || re == NULL || im == NULL ? MCS_ERR_NULL : check_acc(acc);
+    if (st != MCS_OK)
+        return st;
     const size_t n1 = acc->n_x, n2 = acc->n_y, n = n1 * n2;
-    if (!all_finite(n, s))
+    if (!mcs_all_finite_(n, s))
         return MCS_ERR_NOT_FINITE;
     memset(re, 0, n * sizeof *re);
     memset(im, 0, n * sizeof *im);
@@ -319,16 +278,15 @@ mcs_status mcs_spectrum2d_transform(const mcs_spectrum2d *acc, const double *s, 
 mcs_status mcs_spectrum2d_variance14(const mcs_spectrum2d *acc, size_t k, const double *f_re,
                                      const double *f_im, double *out)
 {
-    if (acc == NULL || f_re == NULL || f_im == NULL || out == NULL)
-        return MCS_ERR_NULL;
-    if (!spectrum2d_is_valid(acc))
-        return MCS_ERR_UNINIT;
-    if (k == 0u)
-        return MCS_ERR_K_RANGE;
-    if (acc->count == 0u)
-        return MCS_ERR_EMPTY;
+    mcs_status st = f_re == NULL || f_im == NULL || out == NULL ? MCS_ERR_NULL : check_acc(acc);
+    if (st == MCS_OK && k == 0u)
+        st = MCS_ERR_K_RANGE;
+    if (st == MCS_OK && acc->count == 0u)
+        st = MCS_ERR_EMPTY;
+    if (st != MCS_OK)
+        return st;
     const size_t n1 = acc->n_x, n2 = acc->n_y;
-    if (!all_finite(n1 * n2, f_re) || !all_finite(n1 * n2, f_im))
+    if (!mcs_all_finite_(n1 * n2, f_re) || !mcs_all_finite_(n1 * n2, f_im))
         return MCS_ERR_NOT_FINITE;
     double sum = 0.0;
     for (size_t k2 = 0; k2 < n2; ++k2)

@@ -14,22 +14,16 @@
  *   is not a multiple of (N1, N2) unless they are equal).
  * All three are unbiased: <S_k> = K N^{-1/2} d_k0. */
 #include "mcspec/spectrum2d.h"
+#include "pattern2d_internal.h"
 #include "pointset_internal.h"
 
 #include <math.h>
-
-static int pattern_is_valid(const mcs_pattern2d *pat)
-{
-    return (unsigned)pat->kind < (unsigned)MCS_PATTERN2D_KIND_COUNT && pat->k >= 1u &&
-           pat->k <= (size_t)MCS_PATTERN2D_MAX_K && pat->strata_x >= 1u &&
-           pat->k % pat->strata_x == 0u && pat->k / pat->strata_x == pat->strata_y;
-}
 
 static mcs_status check(const mcs_pattern2d *pat, size_t n_x, size_t n_y)
 {
     if (pat == NULL)
         return MCS_ERR_NULL;
-    if (!pattern_is_valid(pat))
+    if (!mcs_pattern2d_is_valid_(pat))
         return MCS_ERR_UNINIT;
     if (n_x == 0u || n_x > (size_t)MCS_MAX_SIDE || n_y == 0u || n_y > (size_t)MCS_MAX_SIDE)
         return MCS_ERR_N_RANGE;
@@ -42,9 +36,18 @@ static mcs_status check(const mcs_pattern2d *pat, size_t n_x, size_t n_y)
     return MCS_OK;
 }
 
-static mcs_status check_freqs(size_t n_x, size_t n_y, size_t k1, size_t k2)
+/* The checks of a read-out at wave vectors k = (k[0], k[1]) and l (l may be
+ * k) with outputs out_a, out_b: NULL, then those of check, then
+ * MCS_ERR_FREQ_RANGE. */
+static mcs_status check_at(const mcs_pattern2d *pat, size_t n_x, size_t n_y, const size_t *k,
+                           const size_t *l, const double *const out[2])
 {
-    return k1 < n_x && k2 < n_y ? MCS_OK : MCS_ERR_FREQ_RANGE;
+    if (out[0] == NULL || out[1] == NULL)
+        return MCS_ERR_NULL;
+    mcs_status st = check(pat, n_x, n_y);
+    if (st == MCS_OK && !(k[0] < n_x && k[1] < n_y && l[0] < n_x && l[1] < n_y))
+        st = MCS_ERR_FREQ_RANGE;
+    return st;
 }
 
 /* (-1)^(number of whole half-turns in pi q / n): with q mod n it gives
@@ -63,7 +66,7 @@ static void block_sum(size_t k, size_t a, size_t n, double *re, double *im)
         *im = 0.0;
         return;
     }
-    const double pi = MCS_PS_TWO_PI * 0.5, nd = (double)n;
+    const double pi = MCS_TWO_PI * 0.5, nd = (double)n;
     const size_t ka = k * a, kb = k * (a - 1u);
     double mag = half_turns_sign(ka, n) * sin(pi * (double)(ka % n) / nd) /
                  sin(pi * (double)k / nd);
@@ -114,17 +117,23 @@ static void covariance(const grid *g, const size_t *k, const size_t *l, double *
     }
 }
 
+/* <S_k>: K N^{-1/2} at k = 0 and 0 elsewhere, all three kinds being unbiased. */
+static double mean_re(const grid *g, const size_t *k)
+{
+    return k[0] == 0u && k[1] == 0u ? (double)g->pat->k / sqrt((double)g->n_x * (double)g->n_y)
+                                    : 0.0;
+}
+
 mcs_status mcs_spectrum2d_exact_mean(const mcs_pattern2d *pat, size_t n_x, size_t n_y,
                                      size_t freq_k, size_t freq_l, double *re, double *im)
 {
-    if (re == NULL || im == NULL)
-        return MCS_ERR_NULL;
-    mcs_status st = check(pat, n_x, n_y);
-    if (st == MCS_OK)
-        st = check_freqs(n_x, n_y, freq_k, freq_l);
+    const size_t k[2] = {freq_k, freq_l};
+    const double *const out[2] = {re, im};
+    mcs_status st = check_at(pat, n_x, n_y, k, k, out);
     if (st != MCS_OK)
         return st;
-    *re = freq_k == 0u && freq_l == 0u ? (double)pat->k / sqrt((double)n_x * (double)n_y) : 0.0;
+    const grid g = {pat, n_x, n_y};
+    *re = mean_re(&g, k);
     *im = 0.0;
     return MCS_OK;
 }
@@ -133,17 +142,12 @@ mcs_status mcs_spectrum2d_exact_covariance(const mcs_pattern2d *pat, size_t n_x,
                                            size_t k1, size_t k2, size_t l1, size_t l2,
                                            double *re, double *im)
 {
-    if (re == NULL || im == NULL)
-        return MCS_ERR_NULL;
-    mcs_status st = check(pat, n_x, n_y);
-    if (st == MCS_OK)
-        st = check_freqs(n_x, n_y, k1, k2);
-    if (st == MCS_OK)
-        st = check_freqs(n_x, n_y, l1, l2);
+    const size_t k[2] = {k1, k2}, l[2] = {l1, l2};
+    const double *const out[2] = {re, im};
+    mcs_status st = check_at(pat, n_x, n_y, k, l, out);
     if (st != MCS_OK)
         return st;
     const grid g = {pat, n_x, n_y};
-    const size_t k[2] = {k1, k2}, l[2] = {l1, l2};
     double c[2];
     covariance(&g, k, l, c);
     *re = c[0];
@@ -154,16 +158,16 @@ mcs_status mcs_spectrum2d_exact_covariance(const mcs_pattern2d *pat, size_t n_x,
 mcs_status mcs_spectrum2d_exact_power(const mcs_pattern2d *pat, size_t n_x, size_t n_y,
                                       size_t freq_k, size_t freq_l, double *out)
 {
-    double mr = 0.0, mi = 0.0, c[2];
-    if (out == NULL)
-        return MCS_ERR_NULL;
-    mcs_status st = mcs_spectrum2d_exact_mean(pat, n_x, n_y, freq_k, freq_l, &mr, &mi);
+    const size_t k[2] = {freq_k, freq_l};
+    const double *const outs[2] = {out, out};
+    mcs_status st = check_at(pat, n_x, n_y, k, k, outs);
     if (st != MCS_OK)
         return st;
     const grid g = {pat, n_x, n_y};
-    const size_t k[2] = {freq_k, freq_l};
+    double c[2];
     covariance(&g, k, k, c);
-    *out = c[0] + mr * mr + mi * mi;
+    const double m = mean_re(&g, k);
+    *out = c[0] + m * m;
     return MCS_OK;
 }
 
@@ -173,12 +177,9 @@ static mcs_status check_f(const mcs_pattern2d *pat, size_t n_x, size_t n_y, cons
     if (f_re == NULL || f_im == NULL || out == NULL)
         return MCS_ERR_NULL;
     mcs_status st = check(pat, n_x, n_y);
-    if (st != MCS_OK)
-        return st;
-    for (size_t i = 0; i < n_x * n_y; ++i)
-        if (!isfinite(f_re[i]) || !isfinite(f_im[i]))
-            return MCS_ERR_NOT_FINITE;
-    return MCS_OK;
+    if (st == MCS_OK && !(mcs_all_finite_(n_x * n_y, f_re) && mcs_all_finite_(n_x * n_y, f_im)))
+        st = MCS_ERR_NOT_FINITE;
+    return st;
 }
 
 /* (K/N)^3 sum over residue classes r of |sum_{k = r mod (m,n)} F_k^* A(k)|^2:

@@ -19,6 +19,13 @@ const char *mcs_status_str(mcs_status status)
     case MCS_ERR_DOMAIN: return "MCS_ERR_DOMAIN";
     case MCS_ERR_FREQ_RANGE: return "MCS_ERR_FREQ_RANGE";
     case MCS_ERR_UNINIT: return "MCS_ERR_UNINIT";
+    case MCS_ERR_SPACE: return "MCS_ERR_SPACE";
+    case MCS_ERR_TRUNCATED: return "MCS_ERR_TRUNCATED";
+    case MCS_ERR_MAGIC: return "MCS_ERR_MAGIC";
+    case MCS_ERR_VERSION: return "MCS_ERR_VERSION";
+    case MCS_ERR_CHECKSUM: return "MCS_ERR_CHECKSUM";
+    case MCS_ERR_FORMAT: return "MCS_ERR_FORMAT";
+    case MCS_ERR_INVARIANT: return "MCS_ERR_INVARIANT";
     }
     return "MCS_ERR_UNKNOWN";
 }

@@ -3,6 +3,7 @@
 #include "mcspec/theory.h"
 #include "internal.h"
 #include "readout.h"
+#include "theory_internal.h"
 
 #include <math.h>
 
@@ -77,25 +78,6 @@ static double strat_pair(double am, double bm, double an, double bn)
     return sum;
 }
 
-/* Bin of the uniform pattern's u_j = (j + 1/2)/K, by the generator's own
- * arithmetic (src/pattern.c: stratum_point, then place), so a u_j on a bin
- * edge lands in the same bin. Without importance that is the exact
- * floor((2j + 1) N / (2K)); with importance it is the CDF search of the
- * correctly rounded u_j. */
-static size_t uniform_bin(const mcs_pattern *pat, size_t j)
-{
-    if (pat->importance != NULL) {
-        double u = ((double)j + 0.5) / (double)pat->k;
-        if (!(u < 1.0))
-            u = nextafter(1.0, 0.0);
-        size_t bin = 0;
-        (void)mcs_importance_warp(pat->importance, u, NULL, &bin);
-        return bin;
-    }
-    size_t b = (size_t)(((double)j + 0.5) * (double)pat->n / (double)pat->k);
-    return b < pat->n ? b : pat->n - 1u;
-}
-
 /* Homogenized: the generator shifts the stratified bins by d uniform in [0, N),
  * so <s_m s_n> = (1/N) sum_d strat<s_{m-d} s_{n-d}>, a function of n - m only. */
 static void homogenize(mcs_theory *th)
@@ -120,49 +102,11 @@ static void homogenize(mcs_theory *th)
         th->mean_s[m] = mean;
 }
 
-/* Bin b of the pattern is [edge(b), edge(b + 1)) in t = u K units (its CDF
- * interval with importance, [b/N, (b+1)/N) without); its length in u is the
- * probability one uniform u lands in it; 1/p_b its weight. */
-static double bin_edge(const mcs_pattern *pat, size_t b)
-{
-    double kd = (double)pat->k;
-    if (pat->importance != NULL)
-        return pat->importance->cdf[b] * kd;
-    return ((double)b * kd) / (double)pat->n; /* exact product, one rounding */
-}
-
-static double bin_length(const mcs_pattern *pat, size_t b)
-{
-    if (pat->importance != NULL)
-        return pat->importance->cdf[b + 1u] - pat->importance->cdf[b];
-    return 1.0 / (double)pat->n;
-}
-
-static double bin_inv_p(const mcs_pattern *pat, size_t b)
-{
-    return pat->importance != NULL ? 1.0 / pat->importance->p[b] : 1.0;
-}
-
-static mcs_status check_pattern(const mcs_pattern *pat)
-{
-    if (pat->n == 0u || pat->k == 0u || !mcs_kind_is_valid_(pat->kind))
-        return MCS_ERR_UNINIT;
-    if (pat->n > (size_t)MCS_MAX_COV_N)
-        return MCS_ERR_N_RANGE;
-    if (pat->importance != NULL) {
-        if (pat->kind == MCS_PATTERN_HOMOGENIZED)
-            return MCS_ERR_KIND;
-        if (pat->importance->n != pat->n)
-            return MCS_ERR_UNINIT;
-    }
-    return MCS_OK;
-}
-
 mcs_status mcs_theory_init(mcs_theory *th, const mcs_pattern *pat)
 {
     if (th == NULL || pat == NULL)
         return MCS_ERR_NULL;
-    mcs_status st = check_pattern(pat);
+    mcs_status st = mcs_theory_check_pattern_(pat, (size_t)MCS_MAX_COV_N);
     if (st != MCS_OK)
         return st;
 
@@ -179,9 +123,9 @@ mcs_status mcs_theory_init(mcs_theory *th, const mcs_pattern *pat)
         for (size_t b = 0; b < n; ++b)
             th->mean_s[b] = 0.0;
         for (size_t j = 0; j < pat->k; ++j)
-            th->mean_s[uniform_bin(pat, j)] += 1.0;
+            th->mean_s[mcs_theory_uniform_bin_(pat, j)] += 1.0;
         for (size_t m = 0; m < n; ++m)
-            th->mean_s[m] *= bin_inv_p(pat, m);
+            th->mean_s[m] *= mcs_theory_inv_p_(pat, m);
         for (size_t m = 0; m < n; ++m)
             for (size_t b = 0; b < n; ++b)
                 th->second[m * n + b] = th->mean_s[m] * th->mean_s[b];
@@ -189,12 +133,12 @@ mcs_status mcs_theory_init(mcs_theory *th, const mcs_pattern *pat)
     }
 
     for (size_t m = 0; m < n; ++m) {
-        double len_m = bin_length(pat, m), inv_pm = bin_inv_p(pat, m);
-        double am = bin_edge(pat, m), bm = bin_edge(pat, m + 1u);
+        double len_m = mcs_theory_length_(pat, m), inv_pm = mcs_theory_inv_p_(pat, m);
+        double am = mcs_theory_edge_(pat, m), bm = mcs_theory_edge_(pat, m + 1u);
         /* sum_j P(u_j in I_m) = K |I_m| for random, stratified and jitter alike. */
         th->mean_s[m] = kd * len_m * inv_pm;
         for (size_t b = 0; b < n; ++b) {
-            double len_b = bin_length(pat, b);
+            double len_b = mcs_theory_length_(pat, b);
             double diag = m == b ? kd * len_m : 0.0; /* j = j': P(u_j in I_m cap I_n) */
             double rr;
             switch (pat->kind) {
@@ -202,14 +146,14 @@ mcs_status mcs_theory_init(mcs_theory *th, const mcs_pattern *pat)
                 rr = diag + kd * (kd - 1.0) * len_m * len_b;
                 break;
             case MCS_PATTERN_JITTER: /* one shared beta: exact integral */
-                rr = jitter_pair(am, bm, bin_edge(pat, b), bin_edge(pat, b + 1u));
+                rr = jitter_pair(am, bm, mcs_theory_edge_(pat, b), mcs_theory_edge_(pat, b + 1u));
                 break;
             default: /* stratified, homogenized: independent across strata only */
                 rr = diag + kd * kd * len_m * len_b -
-                     strat_pair(am, bm, bin_edge(pat, b), bin_edge(pat, b + 1u));
+                     strat_pair(am, bm, mcs_theory_edge_(pat, b), mcs_theory_edge_(pat, b + 1u));
                 break;
             }
-            th->second[m * n + b] = rr * inv_pm * bin_inv_p(pat, b);
+            th->second[m * n + b] = rr * inv_pm * mcs_theory_inv_p_(pat, b);
         }
     }
     if (pat->kind == MCS_PATTERN_HOMOGENIZED)

@@ -33,8 +33,10 @@ _Static_assert(_Generic((kiss_fft_scalar)0, double: 1, default: 0),
  * for `strings libmcspec.a`. */
 #define MCS_VERSION_STR_(x) #x
 #define MCS_VERSION_STR(x) MCS_VERSION_STR_(x)
-const char MCS_CONFIG_LINK_TAG[] = "mcspec " MCS_VERSION_STRING " MCS_MAX_N=" MCS_VERSION_STR(
-    MCS_MAX_N) " MCS_MAX_COV_N=" MCS_VERSION_STR(MCS_MAX_COV_N);
+const char MCS_CONFIG_LINK_TAG[] =
+    "mcspec " MCS_VERSION_STRING " MCS_MAX_N=" MCS_VERSION_STR(MCS_MAX_N)
+    " MCS_MAX_COV_N=" MCS_VERSION_STR(MCS_MAX_COV_N) " MCS_MAX_FREQ=" MCS_VERSION_STR(MCS_MAX_FREQ)
+    " MCS_MAX_FREQ_1D=" MCS_VERSION_STR(MCS_MAX_FREQ_1D) " MCS_MAX_SIDE=" MCS_VERSION_STR(MCS_MAX_SIDE);
 
 const char *mcs_version(void)
 {

@@ -15,7 +15,11 @@
 #   holds, limit, approx, fails or empty, and whose numeric fields parse as
 #   numbers (or are empty);
 #   the same seed gives byte-identical output (CSV and table), and a
-#   different seed changes it.
+#   different seed changes it;
+#   sections 1-5 run above MCS_MAX_COV_N (--n 150) with every measured value
+#   agreeing with the exact one and no nan, and every section runs at a
+#   degenerate size (section 2: N = 50, K = 10 with zero variances; section
+#   3: N = 1) without nan, absurd numbers or a false disagreement.
 # Ends with a Unity-style summary ("N Tests F Failures 0 Ignored", then OK or
 # FAIL), so test/run_tests.sh can count it as one more runner; exit status
 # non-zero on failure.
@@ -101,6 +105,35 @@ for bin in "$@"; do
     # --opt=value spelling gives the same run as --opt value.
     "$bin" --csv --n="$n" --k="$k" --trials="$TRIALS" --seed=7 >"$tmp/csv4" 2>/dev/null
     if cmp -s "$tmp/csv1" "$tmp/csv4"; then ok; else bad "$name: --opt=value differs from --opt value"; fi
+
+    # Any N: above MCS_MAX_COV_N (64 by default) the exact theory still
+    # answers, every measured value agrees with it, and nothing prints nan.
+    case $name in sec[1-5]_*)
+        if "$bin" --n 150 --k 7 --trials "$TRIALS" --seed 3 >"$tmp/big" 2>"$tmp/err" &&
+            ! grep -qi 'nan' "$tmp/big" && ! grep -q '^WARNING' "$tmp/big"; then ok; else
+            bad "$name --n 150: failed, nan, or a disagreement ($(grep -i -m1 'nan\|^WARNING' "$tmp/big"))"
+        fi ;;
+    esac
+    # Degenerate sizes: no nan, no absurd numbers (a z or a value of more
+    # than 30 characters), no false disagreement. Section 2 at N = 50, K = 10
+    # has zero-variance jitter and uniform rows; section 3 at N = 1 has no
+    # frequency above 0.
+    case $name in
+    sec2_*) small="--n 50 --k 10" ;;
+    sec3_*) small="--n 1 --k 3" ;;
+    *) small="--n 1 --k 2" ;;
+    esac
+    # shellcheck disable=SC2086 # word splitting of $small is intended
+    if "$bin" $small --trials "$TRIALS" >"$tmp/small" 2>"$tmp/err" &&
+        ! grep -qi 'nan' "$tmp/small" && ! grep -q '^WARNING' "$tmp/small" &&
+        ! grep -Eq '[0-9.e+-]{31,}' "$tmp/small"; then ok; else
+        bad "$name $small: failed, nan, an absurd number or a false disagreement"
+    fi
+    if [ "$name" = sec2_fourier ]; then
+        # no z beyond 1e6 on a row whose exact and measured values agree
+        zs=$(awk '$1 == "Var[I]" && ($(NF-2) + 0 > 1e6 || $(NF-2) + 0 < -1e6)' "$tmp/small")
+        if [ -z "$zs" ]; then ok; else bad "$name $small: absurd z_exact: $zs"; fi
+    fi
 done
 
 echo "-----------------------"

@@ -1,5 +1,6 @@
 #include "mcspec/pattern2d.h"
 #include "mcspec/rng.h"
+#include "points_ref.h"
 #include "unity.h"
 
 #include <math.h>
@@ -18,13 +19,6 @@ static const mcs_pattern2d_kind all_kinds[MCS_PATTERN2D_KIND_COUNT] = {
     MCS_PATTERN2D_RANDOM, MCS_PATTERN2D_JITTERED, MCS_PATTERN2D_GRID, MCS_PATTERN2D_SHIFTED_GRID,
     MCS_PATTERN2D_NROOKS, MCS_PATTERN2D_MULTI_JITTERED, MCS_PATTERN2D_CMJ};
 
-static mcs_pattern2d make(mcs_pattern2d_kind kind, size_t k, size_t sx, size_t sy)
-{
-    mcs_pattern2d p;
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern2d_init(&p, kind, k, sx, sy));
-    return p;
-}
-
 /* Every box of a cols x rows partition of the square holds exactly one point. */
 static void assert_one_per_box(size_t k, size_t cols, size_t rows)
 {
@@ -38,20 +32,21 @@ static void assert_one_per_box(size_t k, size_t cols, size_t rows)
         TEST_ASSERT_EQUAL_UINT(1u, count[b]);
 }
 
+/* The strata init records for (k, sx, sy) are (want_x, want_y). */
+static void assert_strata(mcs_pattern2d_kind kind, size_t k, size_t sx, size_t sy, size_t want_x,
+                          size_t want_y)
+{
+    mcs_pattern2d p = points_pattern2d(kind, k, sx, sy);
+    TEST_ASSERT_EQUAL_UINT(want_x, p.strata_x);
+    TEST_ASSERT_EQUAL_UINT(want_y, p.strata_y);
+}
+
 static void test_default_strata_are_the_most_nearly_square_grid(void)
 {
-    mcs_pattern2d p = make(MCS_PATTERN2D_JITTERED, 12u, 0u, 0u);
-    TEST_ASSERT_EQUAL_UINT(4u, p.strata_x);
-    TEST_ASSERT_EQUAL_UINT(3u, p.strata_y);
-    p = make(MCS_PATTERN2D_JITTERED, 64u, 0u, 0u);
-    TEST_ASSERT_EQUAL_UINT(8u, p.strata_x);
-    TEST_ASSERT_EQUAL_UINT(8u, p.strata_y);
-    p = make(MCS_PATTERN2D_JITTERED, 13u, 0u, 0u);
-    TEST_ASSERT_EQUAL_UINT(13u, p.strata_x);
-    TEST_ASSERT_EQUAL_UINT(1u, p.strata_y);
-    p = make(MCS_PATTERN2D_CMJ, 12u, 2u, 6u);
-    TEST_ASSERT_EQUAL_UINT(2u, p.strata_x);
-    TEST_ASSERT_EQUAL_UINT(6u, p.strata_y);
+    assert_strata(MCS_PATTERN2D_JITTERED, 12u, 0u, 0u, 4u, 3u);
+    assert_strata(MCS_PATTERN2D_JITTERED, 64u, 0u, 0u, 8u, 8u);
+    assert_strata(MCS_PATTERN2D_JITTERED, 13u, 0u, 0u, 13u, 1u);
+    assert_strata(MCS_PATTERN2D_CMJ, 12u, 2u, 6u, 2u, 6u);
 }
 
 static void test_every_kind_writes_k_points_inside_the_unit_square(void)
@@ -62,7 +57,7 @@ static void test_every_kind_writes_k_points_inside_the_unit_square(void)
     for (int c = 0; c < MCS_PATTERN2D_KIND_COUNT; ++c)
         for (int s = 0; s < 4; ++s) {
             size_t k = shapes[s][0] * shapes[s][1];
-            mcs_pattern2d p = make(all_kinds[c], k, shapes[s][0], shapes[s][1]);
+            mcs_pattern2d p = points_pattern2d(all_kinds[c], k, shapes[s][0], shapes[s][1]);
             for (int t = 0; t < 20; ++t) {
                 pts[2 * k] = GUARD;
                 TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern2d_draw(&p, &rng, k, pts));
@@ -81,18 +76,18 @@ static void test_stratified_kinds_keep_their_stratification_every_trial(void)
     for (int s = 0; s < 3; ++s) {
         size_t m = shapes[s][0], n = shapes[s][1], k = m * n;
         for (int t = 0; t < 50; ++t) {
-            mcs_pattern2d p = make(MCS_PATTERN2D_JITTERED, k, m, n);
+            mcs_pattern2d p = points_pattern2d(MCS_PATTERN2D_JITTERED, k, m, n);
             TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern2d_draw(&p, &rng, k, pts));
             assert_one_per_box(k, m, n);
-            p = make(MCS_PATTERN2D_SHIFTED_GRID, k, m, n);
+            p = points_pattern2d(MCS_PATTERN2D_SHIFTED_GRID, k, m, n);
             TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern2d_draw(&p, &rng, k, pts));
             assert_one_per_box(k, m, n);
-            p = make(MCS_PATTERN2D_NROOKS, k, m, n);
+            p = points_pattern2d(MCS_PATTERN2D_NROOKS, k, m, n);
             TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern2d_draw(&p, &rng, k, pts));
             assert_one_per_box(k, k, 1u);
             assert_one_per_box(k, 1u, k);
             for (int mj = 0; mj < 2; ++mj) {
-                p = make(mj ? MCS_PATTERN2D_CMJ : MCS_PATTERN2D_MULTI_JITTERED, k, m, n);
+                p = points_pattern2d(mj ? MCS_PATTERN2D_CMJ : MCS_PATTERN2D_MULTI_JITTERED, k, m, n);
                 TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern2d_draw(&p, &rng, k, pts));
                 assert_one_per_box(k, m, n);
                 assert_one_per_box(k, k, 1u);
@@ -107,7 +102,7 @@ static void test_grid_is_the_cell_centres_and_shifted_grid_moves_them_together(v
     mcs_rng rng, rng0;
     mcs_rng_seed(&rng, 7u, 7u);
     rng0 = rng;
-    mcs_pattern2d p = make(MCS_PATTERN2D_GRID, 15u, 5u, 3u);
+    mcs_pattern2d p = points_pattern2d(MCS_PATTERN2D_GRID, 15u, 5u, 3u);
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern2d_draw(&p, &rng, 15u, pts));
     TEST_ASSERT_EQUAL_MEMORY(&rng0, &rng, sizeof rng); /* deterministic: no draws */
     for (size_t j = 0; j < 3u; ++j)
@@ -115,7 +110,7 @@ static void test_grid_is_the_cell_centres_and_shifted_grid_moves_them_together(v
             TEST_ASSERT_EQUAL_DOUBLE((i + 0.5) / 5.0, pts[2 * (j * 5 + i)]);
             TEST_ASSERT_EQUAL_DOUBLE((j + 0.5) / 3.0, pts[2 * (j * 5 + i) + 1]);
         }
-    p = make(MCS_PATTERN2D_SHIFTED_GRID, 15u, 5u, 3u);
+    p = points_pattern2d(MCS_PATTERN2D_SHIFTED_GRID, 15u, 5u, 3u);
     for (int t = 0; t < 20; ++t) {
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern2d_draw(&p, &rng, 15u, pts));
         double bx = pts[0] * 5.0, by = pts[1] * 3.0;
@@ -164,7 +159,7 @@ static void test_every_randomised_kind_puts_k_times_area_points_in_a_box_on_aver
     for (int c = 0; c < MCS_PATTERN2D_KIND_COUNT; ++c) {
         if (all_kinds[c] == MCS_PATTERN2D_GRID)
             continue;
-        mcs_pattern2d p = make(all_kinds[c], 12u, 4u, 3u);
+        mcs_pattern2d p = points_pattern2d(all_kinds[c], 12u, 4u, 3u);
         for (int b = 0; b < 3; ++b) {
             double sum = 0.0, sum2 = 0.0, area = (box[b][1] - box[b][0]) * (box[b][3] - box[b][2]);
             for (int t = 0; t < T; ++t) {
@@ -206,17 +201,15 @@ static void test_bad_draw_writes_nothing_and_does_not_advance_the_rng(void)
     mcs_rng rng, rng0;
     mcs_rng_seed(&rng, 1u, 2u);
     rng0 = rng;
-    mcs_pattern2d p = make(MCS_PATTERN2D_JITTERED, 4u, 2u, 2u), bad = p;
+    mcs_pattern2d p = points_pattern2d(MCS_PATTERN2D_JITTERED, 4u, 2u, 2u), bad = p;
     bad.strata_y = 3u; /* 2 x 3 != 4: not from init */
-    for (size_t i = 0; i < 10u; ++i)
-        pts[i] = GUARD;
+    points_guard_fill(pts, 10u, GUARD);
     TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_pattern2d_draw(NULL, &rng, 4u, pts));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_pattern2d_draw(&p, NULL, 4u, pts));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_pattern2d_draw(&p, &rng, 4u, NULL));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_MISMATCH, mcs_pattern2d_draw(&p, &rng, 3u, pts));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_UNINIT, mcs_pattern2d_draw(&bad, &rng, 4u, pts));
-    for (size_t i = 0; i < 10u; ++i)
-        TEST_ASSERT_EQUAL_DOUBLE(GUARD, pts[i]);
+    points_guard_check(pts, 10u, GUARD);
     TEST_ASSERT_EQUAL_MEMORY(&rng0, &rng, sizeof rng);
 }
 

@@ -1,6 +1,7 @@
 #include "mcspec/pattern2d.h"
 #include "mcspec/pointset2d.h"
 #include "mcspec/rng.h"
+#include "points_ref.h"
 #include "unity.h"
 
 #include <math.h>
@@ -14,25 +15,6 @@ void tearDown(void) {}
 static mcs_pointset2d acc, acc2, acc3, snapshot;
 static double pts[2 * MAXK];
 
-static double ref_power(size_t k, const double *p, long fx, long fy)
-{
-    const long double two_pi = 6.283185307179586476925286766559L;
-    long double re = 0.0L, im = 0.0L;
-    for (size_t j = 0; j < k; ++j) {
-        long double a = two_pi * ((long double)fx * p[2 * j] + (long double)fy * p[2 * j + 1]);
-        re += cosl(a);
-        im -= sinl(a);
-    }
-    return (double)((re * re + im * im) / (long double)k);
-}
-
-static mcs_pattern2d make(mcs_pattern2d_kind kind, size_t k, size_t sx, size_t sy)
-{
-    mcs_pattern2d p;
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern2d_init(&p, kind, k, sx, sy));
-    return p;
-}
-
 static void test_one_trial_matches_the_direct_sum_at_every_wave_vector(void)
 {
     mcs_rng rng;
@@ -41,14 +23,13 @@ static void test_one_trial_matches_the_direct_sum_at_every_wave_vector(void)
     const size_t fmax = MCS_MAX_FREQ < 40 ? MCS_MAX_FREQ : 40; /* past one re-anchoring */
     for (int c = 0; c < 3; ++c) {
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_init(&acc, fmax));
-        for (size_t i = 0; i < 2 * ks[c]; ++i)
-            mcs_rng_double(&rng, &pts[i]);
+        points_uniform(&rng, 2 * ks[c], pts);
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_add(&acc, ks[c], pts));
         for (long fy = -(long)fmax; fy <= (long)fmax; ++fy)
             for (long fx = -(long)fmax; fx <= (long)fmax; ++fx) {
                 double p = 0.0;
                 TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_power(&acc, fx, fy, &p));
-                TEST_ASSERT_DOUBLE_WITHIN(1e-12 * (double)ks[c], ref_power(ks[c], pts, fx, fy), p);
+                TEST_ASSERT_DOUBLE_WITHIN(1e-12 * (double)ks[c], points_periodogram(2u, ks[c], pts, fx, fy), p);
             }
     }
 }
@@ -59,8 +40,7 @@ static void test_radial_average_of_one_trial_is_the_whole_plane_annulus_mean(voi
     mcs_rng_seed(&rng, 2u, 9u);
     const long fmax = 12;
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_init(&acc, (size_t)fmax));
-    for (size_t i = 0; i < 2 * 20u; ++i)
-        mcs_rng_double(&rng, &pts[i]);
+    points_uniform(&rng, 2 * 20u, pts);
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_add(&acc, 20u, pts));
     size_t total = 0u;
     for (size_t r = 0; r <= (size_t)fmax; ++r) {
@@ -127,19 +107,19 @@ static void check_kind_against_exact(const mcs_pattern2d *pat, int trials, size_
 
 static void test_random_and_jittered_points_match_their_exact_spectra(void)
 {
-    mcs_pattern2d p = make(MCS_PATTERN2D_RANDOM, 9u, 0u, 0u);
+    mcs_pattern2d p = points_pattern2d(MCS_PATTERN2D_RANDOM, 9u, 0u, 0u);
     check_kind_against_exact(&p, 4000, 8u, 1u);
-    p = make(MCS_PATTERN2D_JITTERED, 12u, 4u, 3u);
+    p = points_pattern2d(MCS_PATTERN2D_JITTERED, 12u, 4u, 3u);
     check_kind_against_exact(&p, 20000, 9u, 2u);
-    p = make(MCS_PATTERN2D_JITTERED, 5u, 5u, 1u);
+    p = points_pattern2d(MCS_PATTERN2D_JITTERED, 5u, 5u, 1u);
     check_kind_against_exact(&p, 10000, 6u, 3u);
 }
 
 static void test_grids_give_the_exact_comb_with_or_without_the_shift(void)
 {
-    mcs_pattern2d p = make(MCS_PATTERN2D_GRID, 6u, 3u, 2u);
+    mcs_pattern2d p = points_pattern2d(MCS_PATTERN2D_GRID, 6u, 3u, 2u);
     check_kind_against_exact(&p, 3, 10u, 4u);
-    p = make(MCS_PATTERN2D_SHIFTED_GRID, 6u, 3u, 2u);
+    p = points_pattern2d(MCS_PATTERN2D_SHIFTED_GRID, 6u, 3u, 2u);
     check_kind_against_exact(&p, 50, 10u, 5u);
     double v = 0.0;
     mcs_pointset2d_exact_power(&p, 3, -4, &v);
@@ -150,9 +130,9 @@ static void test_grids_give_the_exact_comb_with_or_without_the_shift(void)
 
 static void test_n_rooks_points_match_their_exact_spectrum(void)
 {
-    mcs_pattern2d p = make(MCS_PATTERN2D_NROOKS, 5u, 0u, 0u);
+    mcs_pattern2d p = points_pattern2d(MCS_PATTERN2D_NROOKS, 5u, 0u, 0u);
     check_kind_against_exact(&p, 40000, 6u, 6u);
-    p = make(MCS_PATTERN2D_NROOKS, 1u, 0u, 0u);
+    p = points_pattern2d(MCS_PATTERN2D_NROOKS, 1u, 0u, 0u);
     check_kind_against_exact(&p, 2000, 3u, 7u);
 }
 
@@ -171,16 +151,16 @@ static void assert_anisotropy_matches_exact(const mcs_pattern2d *p, size_t r_lo,
 
 static void test_anisotropy_of_jittered_and_n_rooks_points_converges_to_the_exact_one(void)
 {
-    mcs_pattern2d p = make(MCS_PATTERN2D_JITTERED, 16u, 4u, 4u);
+    mcs_pattern2d p = points_pattern2d(MCS_PATTERN2D_JITTERED, 16u, 4u, 4u);
     check_kind_against_exact(&p, 20000, 8u, 8u);
     assert_anisotropy_matches_exact(&p, 1u, 2u);
     double v = 0.0;
     TEST_ASSERT_EQUAL_INT(MCS_ERR_DOMAIN, mcs_pointset2d_anisotropy(&acc, 0u, &v));
-    p = make(MCS_PATTERN2D_NROOKS, 16u, 0u, 0u);
+    p = points_pattern2d(MCS_PATTERN2D_NROOKS, 16u, 0u, 0u);
     check_kind_against_exact(&p, 20000, 8u, 9u);
     assert_anisotropy_matches_exact(&p, 1u, 7u);
     /* Random points are exactly isotropic: no finite exact anisotropy. */
-    p = make(MCS_PATTERN2D_RANDOM, 16u, 0u, 0u);
+    p = points_pattern2d(MCS_PATTERN2D_RANDOM, 16u, 0u, 0u);
     TEST_ASSERT_EQUAL_INT(MCS_ERR_DOMAIN, mcs_pointset2d_exact_anisotropy(&p, 3u, &v));
 }
 
@@ -191,8 +171,7 @@ static void test_anisotropy_is_psa_variance_over_squared_mean_in_decibels(void)
     mcs_rng_seed(&rng, 3u, 3u);
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_init(&acc, 7u));
     for (int t = 0; t < 30; ++t) {
-        for (size_t i = 0; i < 2 * 10u; ++i)
-            mcs_rng_double(&rng, &pts[i]);
+        points_uniform(&rng, 2 * 10u, pts);
         mcs_pointset2d_add(&acc, 10u, pts);
     }
     for (size_t r = 1; r <= 7u; ++r) {
@@ -223,8 +202,7 @@ static void test_merge_of_halves_equals_one_pass(void)
     mcs_pointset2d_init(&acc3, 6u);
     for (int t = 0; t < 200; ++t) {
         size_t k = 1u + (size_t)t % 7u;
-        for (size_t i = 0; i < 2 * k; ++i)
-            mcs_rng_double(&rng, &pts[i]);
+        points_uniform(&rng, 2 * k, pts);
         mcs_pointset2d_add(&acc, k, pts);
         mcs_pointset2d_add(t < 70 ? &acc2 : &acc3, k, pts);
     }
@@ -239,8 +217,7 @@ static void test_merge_of_halves_equals_one_pass(void)
             mcs_pointset2d_power(&acc2, fx, fy, &b);
             mcs_pointset2d_power_stderr(&acc, fx, fy, &sa);
             mcs_pointset2d_power_stderr(&acc2, fx, fy, &sb);
-            TEST_ASSERT_DOUBLE_WITHIN(1e-12 * fabs(a) + 1e-14, a, b);
-            TEST_ASSERT_DOUBLE_WITHIN(1e-10 * sa + 1e-15, sa, sb);
+            points_assert_merged(a, sa, b, sb);
         }
     for (size_t r = 0; r <= 6u; ++r) {
         double a = 0.0, b = 0.0, sa = 0.0, sb = 0.0;
@@ -248,8 +225,7 @@ static void test_merge_of_halves_equals_one_pass(void)
         mcs_pointset2d_radial(&acc2, r, &b);
         mcs_pointset2d_radial_stderr(&acc, r, &sa);
         mcs_pointset2d_radial_stderr(&acc2, r, &sb);
-        TEST_ASSERT_DOUBLE_WITHIN(1e-12 * fabs(a), a, b);
-        TEST_ASSERT_DOUBLE_WITHIN(1e-10 * sa + 1e-15, sa, sb);
+        points_assert_merged(a, sa, b, sb);
     }
 }
 
@@ -301,7 +277,7 @@ static void test_bad_input_returns_an_error_and_changes_nothing(void)
     TEST_ASSERT_EQUAL_INT(MCS_ERR_UNINIT, mcs_pointset2d_count(&acc2, &n));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_pointset2d_radial(&acc, 1u, NULL));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_pointset2d_ring_size(1u, NULL));
-    mcs_pattern2d p = make(MCS_PATTERN2D_CMJ, 4u, 0u, 0u), bad_pat = p;
+    mcs_pattern2d p = points_pattern2d(MCS_PATTERN2D_CMJ, 4u, 0u, 0u), bad_pat = p;
     TEST_ASSERT_EQUAL_INT(MCS_ERR_KIND, mcs_pointset2d_exact_power(&p, 1, 1, &out));
     p.kind = MCS_PATTERN2D_MULTI_JITTERED;
     TEST_ASSERT_EQUAL_INT(MCS_ERR_KIND, mcs_pointset2d_exact_radial(&p, 1u, &out));

@@ -1,5 +1,6 @@
 #include "mcspec/rng.h"
 #include "mcspec/sampler.h"
+#include "points_ref.h"
 #include "unity.h"
 
 #include <math.h>
@@ -243,8 +244,7 @@ static void test_bad_draw_writes_nothing_and_does_not_advance_the_rng(void)
     bad.kind = MCS_SAMPLER_HALTON;
     bad.dim = 1u; /* not a valid combination: not from init */
     bad.k = 4u;
-    for (size_t i = 0; i < 10u; ++i)
-        pts[i] = GUARD;
+    points_guard_fill(pts, 10u, GUARD);
     TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_sampler_draw(NULL, &rng, 4u, pts));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_sampler_draw(&s, NULL, 4u, pts));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_sampler_draw(&s, &rng, 4u, NULL));
@@ -253,8 +253,7 @@ static void test_bad_draw_writes_nothing_and_does_not_advance_the_rng(void)
     TEST_ASSERT_EQUAL_INT(MCS_ERR_UNINIT, mcs_sampler_base_points(&bad, 4u, pts));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_MISMATCH, mcs_sampler_base_points(&s, 3u, pts));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_sampler_base_points(&s, 4u, NULL));
-    for (size_t i = 0; i < 10u; ++i)
-        TEST_ASSERT_EQUAL_DOUBLE(GUARD, pts[i]);
+    points_guard_check(pts, 10u, GUARD);
     TEST_ASSERT_EQUAL_MEMORY(&rng0, &rng, sizeof rng);
     /* A good draw writes exactly k * dim values. */
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_sampler_draw(&s, &rng, 4u, pts));

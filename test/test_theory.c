@@ -35,112 +35,15 @@ static void init_importance(size_t n, const double *w)
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_init(&imp, n, w));
 }
 
-/* ---- brute force: every outcome, by a route independent of the overlap
- * formula. All interval endpoints in u (bin edges or CDF values, strata) are
- * multiples of 1/grid, so a sample's bin is constant on each grid cell: the
- * cell midpoint is pushed through the library's warp (or floor(u N)), the
- * trial's dense s is formed and weighted by the cell probabilities. --------- */
+/* ---- brute force (test/support/theory_ref.c): every outcome ---------------- */
 
 static double bf_mean[NMAX];
 static double bf_second[NMAX * NMAX];
 
-static size_t bf_bin(const mcs_importance *im, size_t n, double u, double *w)
-{
-    if (im != NULL) {
-        size_t b = 0;
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_warp(im, u, NULL, &b));
-        *w = 1.0 / im->p[b];
-        return b;
-    }
-    size_t b = (size_t)(u * (double)n);
-    *w = 1.0;
-    return b < n ? b : n - 1u;
-}
-
-/* Adds one equally likely outcome; brute_force divides by their number at
- * the end (without importance every sum is then an exact integer). */
-static void bf_add(size_t n, size_t k, const size_t *bins, const double *w, size_t shift)
-{
-    double s[NMAX] = {0.0};
-    for (size_t j = 0; j < k; ++j)
-        s[(bins[j] + shift) % n] += w[j];
-    for (size_t m = 0; m < n; ++m) {
-        bf_mean[m] += s[m];
-        for (size_t b = 0; b < n; ++b)
-            bf_second[m * n + b] += s[m] * s[b];
-    }
-}
-
-static void bf_normalise(size_t n, double outcomes)
-{
-    for (size_t m = 0; m < n; ++m) {
-        bf_mean[m] /= outcomes;
-        for (size_t b = 0; b < n; ++b)
-            bf_second[m * n + b] /= outcomes;
-    }
-}
-
-/* Odometer over k digits in [0, base): returns 0 when it wraps. */
-static int odometer_next(size_t *digit, size_t k, size_t base)
-{
-    for (size_t j = 0; j < k; ++j) {
-        if (++digit[j] < base)
-            return 1;
-        digit[j] = 0;
-    }
-    return 0;
-}
-
 static void brute_force(mcs_pattern_kind kind, size_t n, size_t k, const mcs_importance *im,
                         size_t grid)
 {
-    memset(bf_mean, 0, sizeof bf_mean);
-    memset(bf_second, 0, sizeof bf_second);
-    size_t bins[KMAX] = {0}, digit[KMAX] = {0};
-    double w[KMAX] = {0.0};
-    const double gd = (double)grid;
-    switch (kind) {
-    case MCS_PATTERN_RANDOM:
-        do {
-            for (size_t j = 0; j < k; ++j)
-                bins[j] = bf_bin(im, n, ((double)digit[j] + 0.5) / gd, &w[j]);
-            bf_add(n, k, bins, w, 0u);
-        } while (odometer_next(digit, k, grid));
-        bf_normalise(n, pow(gd, (double)k));
-        break;
-    case MCS_PATTERN_STRATIFIED:
-    case MCS_PATTERN_HOMOGENIZED: {
-        TEST_ASSERT_EQUAL_UINT(0u, grid % k);
-        size_t cells = grid / k;
-        size_t shifts = kind == MCS_PATTERN_HOMOGENIZED ? n : 1u;
-        do {
-            for (size_t j = 0; j < k; ++j)
-                bins[j] = bf_bin(im, n, ((double)(j * cells + digit[j]) + 0.5) / gd, &w[j]);
-            for (size_t d = 0; d < shifts; ++d)
-                bf_add(n, k, bins, w, d);
-        } while (odometer_next(digit, k, cells));
-        bf_normalise(n, pow((double)cells, (double)k) * (double)shifts);
-        break;
-    }
-    case MCS_PATTERN_JITTER:
-        for (size_t c = 0; c < grid; ++c) {
-            double beta = ((double)c + 0.5) / gd;
-            for (size_t j = 0; j < k; ++j)
-                bins[j] = bf_bin(im, n, ((double)j + beta) / (double)k, &w[j]);
-            bf_add(n, k, bins, w, 0u);
-        }
-        bf_normalise(n, gd);
-        break;
-    case MCS_PATTERN_UNIFORM: { /* deterministic: the one outcome is the generator's */
-        mcs_pattern pat;
-        mcs_rng rng;
-        mcs_rng_seed(&rng, 9u, 9u);
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_init(&pat, kind, n, k, im));
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_draw(&pat, &rng, k, bins, w, NULL));
-        bf_add(n, k, bins, w, 0u);
-        break;
-    }
-    }
+    theory_brute_force(kind, n, k, im, grid, bf_mean, bf_second);
 }
 
 static void assert_theory_equals_brute_force(const mcs_theory *t, const char *label)
@@ -160,27 +63,12 @@ static void assert_theory_equals_brute_force(const mcs_theory *t, const char *la
     }
 }
 
-static size_t gcd(size_t a, size_t b)
-{
-    while (b != 0u) {
-        size_t t = a % b;
-        a = b;
-        b = t;
-    }
-    return a;
-}
-
-static size_t lcm(size_t a, size_t b)
-{
-    return a / gcd(a, b) * b;
-}
-
 /* Enumerates every kind for (n, k) with grid = lcm(denominator of edges, k);
  * random only while grid^k stays small. */
 static void check_all_kinds_by_enumeration(size_t n, size_t k, const mcs_importance *im,
                                            size_t edge_denominator)
 {
-    size_t grid = lcm(edge_denominator, k);
+    size_t grid = theory_lcm(edge_denominator, k);
     for (int i = 0; i < MCS_PATTERN_KIND_COUNT; ++i) {
         mcs_pattern_kind kind = all_kinds[i];
         if (im != NULL && kind == MCS_PATTERN_HOMOGENIZED)
@@ -826,6 +714,36 @@ static void test_bad_matrix_read_outs_return_an_error_and_write_nothing(void)
     }
 }
 
+static void test_exact_variances_and_powers_are_never_negative(void)
+{
+    /* Jitter over N = 50 with K = 10: every stratum is 5 whole bins and this f
+     * sums alike over each, so I does not depend on beta and Var[I] = 0; as a
+     * difference of second moments it came out -1.1e-16 (issue 12). */
+    double f[50];
+    for (size_t b = 0; b < 50u; ++b)
+        f[b] = 0.5 + 0.3 * sin(2.0 * THEORY_PI * ((double)b + 0.5) / 50.0) + (b >= 15u ? 0.4 : 0.0);
+    double v = SENTINEL;
+    theory_init(&th, MCS_PATTERN_JITTER, 50u, 10u, NULL);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_theory_variance(&th, 50u, 10u, f, &v));
+    TEST_ASSERT_EQUAL_DOUBLE(0.0, v);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_eq4_correlated_variance(&th, 50u, 10u, f, f, &v));
+    TEST_ASSERT_TRUE(v >= 0.0);
+    /* every power and variance of a sweep, where several are 0 exactly */
+    double g[NMAX];
+    for (size_t n = 1; n <= NMAX; n += 9u)
+        for (size_t k = 1; k <= 2u * n; k += n / 4u + 1u)
+            for (int i = 0; i < MCS_PATTERN_KIND_COUNT; ++i) {
+                theory_init(&th, all_kinds[i], n, k, NULL);
+                theory_make_f(n, g, (double)k);
+                TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_theory_variance(&th, n, k, g, &v));
+                TEST_ASSERT_TRUE(v >= 0.0);
+                for (size_t q = 0; q < n; ++q) {
+                    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_theory_power(&th, q, &v));
+                    TEST_ASSERT_TRUE(v >= 0.0);
+                }
+            }
+}
+
 static void test_theory_struct_size_is_as_documented(void)
 {
     printf("sizeof(mcs_theory) = %zu bytes at MCS_MAX_COV_N = %d\n", sizeof(mcs_theory),
@@ -853,6 +771,7 @@ int main(void)
     RUN_TEST(test_bad_theory_init_returns_an_error_and_changes_nothing);
     RUN_TEST(test_bad_read_outs_return_an_error_and_change_nothing);
     RUN_TEST(test_bad_matrix_read_outs_return_an_error_and_write_nothing);
+    RUN_TEST(test_exact_variances_and_powers_are_never_negative);
     RUN_TEST(test_theory_struct_size_is_as_documented);
     return UNITY_END();
 }

@@ -12,8 +12,11 @@
 # happens to define them. Each failure names the symbol and the object that
 # references it; the exit status is 1 if there is any.
 set -eu
+# shellcheck source=tools/common.sh
+. "$(dirname "$0")/common.sh"
+USAGE="usage: $0 [-n nm] [-a allowlist] [-r runtime-lib] [-l label] file..."
 
-NM=nm
+NM='nm'
 ALLOW="$(dirname "$0")/alloc_allowlist.txt"
 RUNTIME=
 LABEL=
@@ -23,18 +26,17 @@ while getopts n:a:r:l: opt; do
     a) ALLOW=$OPTARG ;;
     r) RUNTIME=$OPTARG ;;
     l) LABEL=$OPTARG ;;
-    *) echo "usage: $0 [-n nm] [-a allowlist] [-r runtime-lib] [-l label] file..." >&2; exit 2 ;;
+    *) usage_exit ;;
     esac
 done
 shift $((OPTIND - 1))
-[ $# -ge 1 ] || { echo "check_alloc: no input file" >&2; exit 2; }
+[ $# -ge 1 ] || fail_exit 2 "check_alloc: no input file"
 for f in "$@"; do
-    [ -r "$f" ] || { echo "check_alloc: cannot read $f" >&2; exit 2; }
+    [ -r "$f" ] || fail_exit 2 "check_alloc: cannot read $f"
 done
 [ -n "$LABEL" ] || LABEL=$*
 
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT INT TERM
+make_tmp
 
 # Defined anywhere in the inputs (any type but U/w/v-undefined).
 "$NM" -A -P --defined-only "$@" 2>/dev/null | awk '{ print $2 }' | sort -u >"$tmp/defined"

@@ -17,6 +17,9 @@
 # Fails (exit 1) if any frame exceeds LIMIT bytes (default 1024) or is
 # dynamic (alloca or VLA), or if there are no .su files.
 set -eu
+# shellcheck source=tools/common.sh
+. "$(dirname "$0")/common.sh"
+USAGE="usage: $0 [-l limit] [-d depth] [-n top] [-p headers-dir] [-e roots] dir"
 
 LIMIT=1024
 DEPTH=8
@@ -30,19 +33,18 @@ while getopts l:d:n:p:e: opt; do
     n) TOP=$OPTARG ;;
     p) HDRS=$OPTARG ;;
     e) ROOTS=$OPTARG ;;
-    *) echo "usage: $0 [-l limit] [-d depth] [-n top] [-p headers-dir] [-e roots] dir" >&2; exit 2 ;;
+    *) usage_exit ;;
     esac
 done
 shift $((OPTIND - 1))
-[ $# -eq 1 ] || { echo "usage: $0 [-l limit] [-d depth] [-n top] [-p headers-dir] [-e roots] dir" >&2; exit 2; }
+[ $# -eq 1 ] || usage_exit
 dir=$1
 
 su_files=$(find "$dir" -name '*.su' | sort)
-[ -n "$su_files" ] || { echo "stack: no .su files under $dir" >&2; exit 1; }
+[ -n "$su_files" ] || fail_exit 1 "stack: no .su files under $dir"
 ci_files=$(find "$dir" -name '*.ci' | sort)
 
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT INT TERM
+make_tmp
 
 # Roots: every mcs_xxx( in the public headers, or the -e list.
 if [ -n "$ROOTS" ]; then

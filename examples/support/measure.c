@@ -29,13 +29,13 @@ mcs_status ex_run_init(ex_run *run, mcs_pattern_kind kind, size_t n, size_t k,
     return MCS_OK;
 }
 
-mcs_status ex_run_setup(ex_run *run, mcs_theory *theory, mcs_spectrum *spectrum,
+mcs_status ex_run_setup(ex_run *run, ex_exact *exact, mcs_spectrum *spectrum,
                         mcs_pattern_kind kind, size_t n, size_t k,
                         const mcs_importance *importance, uint64_t seed, uint64_t stream)
 {
     mcs_status st = ex_run_init(run, kind, n, k, importance, seed, stream);
-    if (st == MCS_OK && theory != NULL)
-        st = mcs_theory_init(theory, &run->pattern);
+    if (st == MCS_OK && exact != NULL)
+        st = ex_exact_init(exact, &run->pattern);
     if (st == MCS_OK && spectrum != NULL)
         st = mcs_spectrum_init(spectrum, n);
     return st;
@@ -214,12 +214,20 @@ ex_complex ex_run_mean_pair(const ex_run *run, int idx, ex_complex *stderr_out)
     return mean_parts(&run->x_re[idx], &run->x_im[idx], stderr_out);
 }
 
+double ex_run_mean_power(const ex_run *run, double *stderr_out)
+{
+    const double scale = run->n > 1u ? 1.0 / (double)(run->n - 1u) : EX_NA;
+    double m = ex_mean(&run->parseval, stderr_out) * scale;
+    *stderr_out *= scale;
+    return m;
+}
+
 ex_row ex_estimator_mean_row(const ex_options *opt, const char *section, const char *pattern,
-                             const mcs_theory *th, const ex_run *run, const double *f)
+                             const ex_exact *ex, const ex_run *run, const double *f)
 {
     double v = 0.0, se = 0.0;
     double closed = ex_or_na(mcs_eq11_unbiased_mean(run->n, f, &v), &v);
-    double exact = ex_or_na(mcs_theory_estimator_mean(th, run->n, run->k, f, &v), &v);
+    double exact = ex_exact_estimator_mean(ex, f);
     double meas = ex_mean(&run->estimate[0], &se);
     ex_row r = ex_row_of(section, "<I>", "eq. 11", pattern, EX_NO_FREQ, EX_NO_FREQ, closed, exact,
                          meas, se, 1e-12);

@@ -26,6 +26,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "exact.h"
 #include "mcspec.h"
 #include "report.h"
 
@@ -64,11 +65,11 @@ typedef struct {
 mcs_status ex_run_init(ex_run *run, mcs_pattern_kind kind, size_t n, size_t k,
                        const mcs_importance *importance, uint64_t seed, uint64_t stream);
 
-/* ex_run_init, then the exact moments of the run's pattern into theory
- * (mcs_theory_init) and an empty spectrum accumulator over N into spectrum
+/* ex_run_init, then the exact moments of the run's pattern into exact
+ * (ex_exact_init) and an empty spectrum accumulator over N into spectrum
  * (mcs_spectrum_init), either of which may be NULL. Returns the first
  * failing status, or MCS_OK. */
-mcs_status ex_run_setup(ex_run *run, mcs_theory *theory, mcs_spectrum *spectrum,
+mcs_status ex_run_setup(ex_run *run, ex_exact *exact, mcs_spectrum *spectrum,
                         mcs_pattern_kind kind, size_t n, size_t k,
                         const mcs_importance *importance, uint64_t seed, uint64_t stream);
 
@@ -100,12 +101,16 @@ ex_complex ex_run_mean(const ex_run *run, int idx, ex_complex *stderr_out);
  * (stderr_out may be NULL). */
 ex_complex ex_run_mean_pair(const ex_run *run, int idx, ex_complex *stderr_out);
 
+/* Measured mean over k >= 1 of <|S_k|^2>: the run's Parseval sum over N - 1,
+ * and its standard error into *stderr_out (EX_NA for N = 1). */
+double ex_run_mean_power(const ex_run *run, double *stderr_out);
+
 /* Prints eq. 11's row "<I>" of a run: the closed form is the mean of f
- * (mcs_eq11_unbiased_mean), the exact value mcs_theory_estimator_mean of th,
+ * (mcs_eq11_unbiased_mean), the exact value the estimator mean of exact,
  * the measurement the mean of the run's first integrand (which must be f) with
  * its standard error. Returns the row. */
 ex_row ex_estimator_mean_row(const ex_options *opt, const char *section, const char *pattern,
-                             const mcs_theory *th, const ex_run *run, const double *f);
+                             const ex_exact *exact, const ex_run *run, const double *f);
 
 /* Copies the candidate frequencies that lie in [1, N) to out, dropping
  * repeats, in order; returns how many. out holds at least ncand. */

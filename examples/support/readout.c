@@ -31,12 +31,6 @@ double ex_variance(const mcs_welford *w, double *stderr_out)
     return ex_or_na(mcs_welford_variance(w, &v), &v);
 }
 
-double ex_theory_power(const mcs_theory *theory, size_t freq)
-{
-    double v = 0.0;
-    return ex_or_na(mcs_theory_power(theory, freq, &v), &v);
-}
-
 double ex_spectrum_power(const mcs_spectrum *spectrum, size_t freq, double *stderr_out)
 {
     double p = 0.0, se = 0.0;

@@ -22,8 +22,6 @@ double ex_mean(const mcs_welford *w, double *stderr_out);
 /* Unbiased variance and its standard error (EX_NA if too few values). */
 double ex_variance(const mcs_welford *w, double *stderr_out);
 
-/* Exact <|S_freq|^2> of a theory (mcs_theory_power), EX_NA where undefined. */
-double ex_theory_power(const mcs_theory *theory, size_t freq);
 /* Measured <|S_freq|^2> of a spectrum accumulator, and its standard error
  * (stderr_out may be NULL); EX_NA where unavailable. */
 double ex_spectrum_power(const mcs_spectrum *spectrum, size_t freq, double *stderr_out);

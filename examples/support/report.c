@@ -383,6 +383,41 @@ unsigned ex_end(const ex_options *opt)
     return disagreements;
 }
 
+int ex_take_option(int *argc, char **argv, const char *name, const char **value)
+{
+    const size_t len = strlen(name);
+    for (int i = 1; i < *argc; ++i) {
+        const char *a = argv[i];
+        int used = 0;
+        if (strcmp(a, name) == 0) {
+            if (i + 1 >= *argc) {
+                usage_error(argv[0], "missing value for", name);
+                return -1;
+            }
+            *value = argv[i + 1];
+            used = 2;
+        } else if (strncmp(a, name, len) == 0 && a[len] == '=') {
+            *value = a + len + 1;
+            used = 1;
+        }
+        if (used > 0) {
+            for (int j = i; j + used < *argc; ++j)
+                argv[j] = argv[j + used];
+            *argc -= used;
+            return 1;
+        }
+    }
+    return 0;
+}
+
+double ex_variance_floor(size_t n, size_t k, const double *f, double v)
+{
+    double f2 = 0.0;
+    for (size_t b = 0; b < n; ++b)
+        f2 += f[b] * f[b] / (double)n;
+    return fmax(1e-12 * fmax(fabs(v), 1e-12), 1e-15 * f2 / (double)k);
+}
+
 double ex_integrand(double x)
 {
     const double pi = 3.14159265358979323846;

@@ -27,6 +27,18 @@ enum { EX_PARSE_OK = -1, EX_PARSE_HELP = 0, EX_PARSE_ERROR = 2 };
 int ex_parse_options(int argc, char **argv, ex_options *opt, size_t max_n, size_t max_k,
                      const char *help);
 
+/* Takes an example's own string option "--name VALUE" or "--name=VALUE" out
+ * of argv (shifting the rest down, *argc reduced) before ex_parse_options
+ * sees it: 1 with *value set if present, 0 if absent, -1 (after a usage
+ * message on stderr) if its value is missing. */
+int ex_take_option(int *argc, char **argv, const char *name, const char **value);
+
+/* The rounding floor of a Var[I] row for f[n] and K: 1e-12 of the variance
+ * v (at least 1e-24), and at least 1e-15 of E[f^2]/K, the size of the second
+ * moments a variance is formed from, so a variance of 0 that some route
+ * rounds to 1e-19 reads 0 (verdict holds, z 0). */
+double ex_variance_floor(size_t n, size_t k, const double *f, double v);
+
 /* The integrand the sections share: a smooth wave plus an edge at x = 0.3,
  * 0.5 + 0.3 sin(2 pi x) + 0.4 [x >= 0.3]. */
 double ex_integrand(double x);

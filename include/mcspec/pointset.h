@@ -19,19 +19,12 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include "config.h" /* MCS_MAX_FREQ_1D, the largest cutoff F */
 #include "status.h"
 #include "pattern.h"
 
 #ifdef __cplusplus
 extern "C" {
-#endif
-
-/* Largest cutoff F of a 1D point-set spectrum. */
-#ifndef MCS_MAX_FREQ_1D
-#define MCS_MAX_FREQ_1D 1024
-#endif
-#if MCS_MAX_FREQ_1D < 1
-#error "MCS_MAX_FREQ_1D must be at least 1"
 #endif
 
 /* Frequencies are split as f = a B + b, b < B, so that

@@ -30,19 +30,12 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include "config.h" /* MCS_MAX_FREQ, the largest per-axis cutoff F */
 #include "status.h"
 #include "pattern2d.h"
 
 #ifdef __cplusplus
 extern "C" {
-#endif
-
-/* Largest per-axis cutoff F of a 2D point-set spectrum. */
-#ifndef MCS_MAX_FREQ
-#define MCS_MAX_FREQ 32
-#endif
-#if MCS_MAX_FREQ < 1
-#error "MCS_MAX_FREQ must be at least 1"
 #endif
 
 /* Stored wave vectors: fx = -F..F by fy = 0..F, each row padded to an even

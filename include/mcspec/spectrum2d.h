@@ -36,19 +36,12 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include "config.h" /* MCS_MAX_SIDE, the largest N1 and N2 */
 #include "status.h"
 #include "pattern2d.h"
 
 #ifdef __cplusplus
 extern "C" {
-#endif
-
-/* Largest N1 and N2 of the 2D binned framework. */
-#ifndef MCS_MAX_SIDE
-#define MCS_MAX_SIDE 64
-#endif
-#if MCS_MAX_SIDE < 1
-#error "MCS_MAX_SIDE must be at least 1"
 #endif
 
 /* Stored rows k2 = 0..N2/2, each padded to an even length for the kernel. */

@@ -22,7 +22,14 @@ typedef enum {
     MCS_ERR_EMPTY = -12,          /* too few trials for the quantity asked (e.g. variance of < 2) */
     MCS_ERR_DOMAIN = -13,         /* closed form asked outside the domain where the note defines it */
     MCS_ERR_FREQ_RANGE = -14,     /* a frequency index is outside [0, n) */
-    MCS_ERR_UNINIT = -15          /* object was not initialised by its init function */
+    MCS_ERR_UNINIT = -15,         /* object was not initialised by its init function */
+    MCS_ERR_SPACE = -16,          /* caller buffer smaller than the record to save */
+    MCS_ERR_TRUNCATED = -17,      /* saved record shorter than its header says (or than a header) */
+    MCS_ERR_MAGIC = -18,          /* bytes do not start with the mcspec record magic */
+    MCS_ERR_VERSION = -19,        /* record format version this build does not read */
+    MCS_ERR_CHECKSUM = -20,       /* record CRC-32 does not match its bytes */
+    MCS_ERR_FORMAT = -21,         /* record shape or lengths not what its kind needs, or bytes after it */
+    MCS_ERR_INVARIANT = -22       /* values no adds produce: negative M2, data with no trials, count > 2^53 */
 } mcs_status;
 
 /* Name of a status code as a static string ("MCS_OK", ...); never NULL. */

@@ -2,7 +2,8 @@
  * installed files only (pkg-config, static and shared), through
  * add_subdirectory and FetchContent, and with mismatched capacities (which
  * must not build). Exit status 0 when every check of mcspec_checks.h holds.
- * With EXPECT_MAX_N defined it also checks the capacity it was given. */
+ * With EXPECT_MAX_N or EXPECT_MAX_SIDE defined it also checks that capacity
+ * (the one its build passed it). */
 #include "mcspec_checks.h"
 
 int main(void)
@@ -11,6 +12,12 @@ int main(void)
 #ifdef EXPECT_MAX_N
     if (MCS_MAX_N != EXPECT_MAX_N) {
         printf("FAIL MCS_MAX_N is %d, expected %d\n", (int)MCS_MAX_N, (int)EXPECT_MAX_N);
+        ++bad;
+    }
+#endif
+#ifdef EXPECT_MAX_SIDE
+    if (MCS_MAX_SIDE != EXPECT_MAX_SIDE) {
+        printf("FAIL MCS_MAX_SIDE is %d, expected %d\n", (int)MCS_MAX_SIDE, (int)EXPECT_MAX_SIDE);
         ++bad;
     }
 #endif

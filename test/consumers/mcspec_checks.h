@@ -104,9 +104,11 @@ static int mcspec_checks(void)
         }
     }
     if (bad == 0)
-        printf("mcspec %s (MCS_MAX_N %d, MCS_MAX_COV_N %d): DFT, power spectrum (sparse and FFT"
-               " paths) and input check right\n",
-               mcs_version(), (int)MCS_MAX_N, (int)MCS_MAX_COV_N);
+        printf("mcspec %s (MCS_MAX_N %d, MCS_MAX_COV_N %d, MCS_MAX_FREQ %d, MCS_MAX_FREQ_1D %d,"
+               " MCS_MAX_SIDE %d): DFT, power spectrum (sparse and FFT paths) and input check"
+               " right\n",
+               mcs_version(), (int)MCS_MAX_N, (int)MCS_MAX_COV_N, (int)MCS_MAX_FREQ,
+               (int)MCS_MAX_FREQ_1D, (int)MCS_MAX_SIDE);
     return bad;
 }
 

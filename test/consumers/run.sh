@@ -17,16 +17,21 @@
 #     - a consumer with -DMCS_MAX_N=256 against the installed headers does
 #       not compile; against the source tree's headers it does not link
 #       (static, shared, and with --gc-sections);
+#     - the same with -DMCS_MAX_SIDE=16 (one of the 2D capacities): it does
+#       not compile against the installed headers, and does not link to the
+#       build tree's libmcspec.a (BUILD_LIB, default build/libmcspec.a);
 #     - the library sources with -ffast-math or -ffinite-math-only, or
 #       without the KissFFT configuration, do not compile.
-#  4. CMake: the library built with CMake (shared at MCS_MAX_N = 256, and
-#     static) and installed exports exactly the API and serves the C++
-#     consumer; a C consumer takes mcspec by add_subdirectory and by
-#     FetchContent.
+#  4. CMake: the library built with CMake (shared and static, both at
+#     MCS_MAX_N = 256 and MCS_MAX_SIDE = 16) and installed exports exactly
+#     the API, carries those capacities in mcspec.pc and the package, and
+#     serves the C++ consumer; a C consumer takes mcspec by add_subdirectory
+#     and by FetchContent.
 # Prints one line per check and "N passed, N failed"; exit 1 on any failure.
 set -u
 
 : "${MAKE:=make}" "${CC:=cc}" "${CXX:=c++}" "${CMAKE:=cmake}" "${NM:=nm}"
+: "${BUILD_LIB:=build/libmcspec.a}"
 root=$(pwd)
 here=$root/test/consumers
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/mcspec-consumers.XXXXXX")
@@ -76,6 +81,14 @@ must_fail() {
 
 version=$(sed -n 's/^#define MCS_VERSION_STRING "\(.*\)"/\1/p' include/mcspec/version.h)
 major=${version%%.*}
+case $BUILD_LIB in /*) ;; *) BUILD_LIB=$root/$BUILD_LIB ;; esac
+
+# The default capacities (include/mcspec/config.h), which make install records.
+default_caps="-DMCS_MAX_N=4096 -DMCS_MAX_COV_N=64 -DMCS_MAX_FREQ=32 -DMCS_MAX_FREQ_1D=1024 -DMCS_MAX_SIDE=64"
+# tag N COV_N FREQ FREQ_1D SIDE: config.h's link-time tag for those capacities.
+tag() {
+    echo "mcs_config_requires_libmcspec_built_with_MCS_MAX_N_$1_MCS_MAX_COV_N_$2_MCS_MAX_FREQ_$3_MCS_MAX_FREQ_1D_$4_MCS_MAX_SIDE_$5"
+}
 
 # ------------------------------------------------------------ 1. stage
 stage=$tmp/stage
@@ -95,9 +108,14 @@ staged_files() {
     readelf -d "$p/lib/libmcspec.so.$version" | grep -q "Library soname: \[libmcspec.so.$major\]" ||
         { echo "SONAME is not libmcspec.so.$major"; return 1; }
     grep -q '^prefix=/opt/mcspec$' "$p/lib/pkgconfig/mcspec.pc" || { echo "mcspec.pc prefix"; return 1; }
-    grep -q '^Cflags: .*-DMCS_MAX_N=4096 -DMCS_MAX_COV_N=64' "$p/lib/pkgconfig/mcspec.pc" ||
+    grep -q -- "^Cflags: .*$default_caps\$" "$p/lib/pkgconfig/mcspec.pc" ||
         { echo "mcspec.pc Cflags lack the capacities"; return 1; }
-    grep -q 'MCS_MAX_N != 4096' "$p/include/mcspec/config.h" || { echo "config.h lacks the capacities"; return 1; }
+    for c in 'MCS_MAX_N != 4096' 'MCS_MAX_COV_N != 64' 'MCS_MAX_FREQ != 32' 'MCS_MAX_FREQ_1D != 1024' \
+             'MCS_MAX_SIDE != 64'; do
+        grep -q "$c" "$p/include/mcspec/config.h" || { echo "config.h lacks $c"; return 1; }
+    done
+    grep -q 'MCS_MAX_N=4096;MCS_MAX_COV_N=64;MCS_MAX_FREQ=32;MCS_MAX_FREQ_1D=1024;MCS_MAX_SIDE=64' \
+        "$p/lib/cmake/mcspec/mcspecConfig.cmake" || { echo "mcspecConfig.cmake lacks the capacities"; return 1; }
     grep -q 'set(PACKAGE_VERSION "'"$version"'")' "$p/lib/cmake/mcspec/mcspecConfigVersion.cmake" ||
         { echo "version file"; return 1; }
     echo "all in place"
@@ -184,7 +202,7 @@ check "C++17 consumer, find_package(mcspec 0.2), mcspec::mcspec static" cxx_stat
 must_fail "consumer with -DMCS_MAX_N=256 against the installed headers (4096) does not compile" \
     "built with MCS_MAX_N=4096" \
     $CC $cflags -DMCS_MAX_N=256 -I"$prefix/include" -c "$here/consumer.c" -o "$tmp/mismatch.o"
-tag256=mcs_config_requires_libmcspec_built_with_MCS_MAX_N_256_MCS_MAX_COV_N_64
+tag256=$(tag 256 64 32 1024 64)
 # shellcheck disable=SC2086
 must_fail "consumer with -DMCS_MAX_N=256 (source-tree headers) does not link to the installed libmcspec.a" \
     "undefined reference to \`$tag256'" \
@@ -200,6 +218,17 @@ must_fail "... nor with -ffunction-sections -fdata-sections -Wl,--gc-sections" \
     $CC $cflags -ffunction-sections -fdata-sections -DMCS_MAX_N=256 -I"$root/include" \
         "$here/consumer.c" -o "$tmp/mismatch_gc" -Wl,--gc-sections $pc_libs_L -Wl,-Bstatic -lmcspec \
         -Wl,-Bdynamic -lm
+# One of the capacities added with the point-set and 2D modules, against
+# the installed headers and against the build tree's archive.
+# shellcheck disable=SC2086
+must_fail "consumer with -DMCS_MAX_SIDE=16 against the installed headers (64) does not compile" \
+    "built with MCS_MAX_SIDE=64" \
+    $CC $cflags -DMCS_MAX_SIDE=16 -I"$prefix/include" -c "$here/consumer.c" -o "$tmp/mismatch_side.o"
+# shellcheck disable=SC2086
+must_fail "consumer with -DMCS_MAX_SIDE=16 (source-tree headers) does not link to the build tree's libmcspec.a" \
+    "undefined reference to \`$(tag 4096 64 32 1024 16)'" \
+    $CC $cflags -DMCS_MAX_SIDE=16 -I"$root/include" "$here/consumer.c" -o "$tmp/mismatch_side" \
+        "$BUILD_LIB" -lm
 must_fail "library sources with -ffast-math do not compile" "do not compile the library with -ffast-math" \
     "$MAKE" --no-print-directory BUILD="$tmp/fastmath" CFLAGS=-ffast-math "$tmp/fastmath/libmcspec.a"
 must_fail "library sources with -ffinite-math-only do not compile" "do not compile the library with -ffast-math" \
@@ -221,22 +250,26 @@ cmake_lib() {
         -DMCSPEC_WERROR="${WERROR:-OFF}" "$@" &&
         "$CMAKE" --build "$dir" && "$CMAKE" --install "$dir"
 }
-check "CMake: libmcspec shared, MCSPEC_MAX_N=256, built and installed" \
-    cmake_lib "$tmp/cm_shared" -DBUILD_SHARED_LIBS=ON -DMCSPEC_MAX_N=256
-check "CMake: libmcspec static, MCSPEC_MAX_N=256, built and installed" \
-    cmake_lib "$tmp/cm_static" -DBUILD_SHARED_LIBS=OFF -DMCSPEC_MAX_N=256
+check "CMake: libmcspec shared, MCSPEC_MAX_N=256 MCSPEC_MAX_SIDE=16, built and installed" \
+    cmake_lib "$tmp/cm_shared" -DBUILD_SHARED_LIBS=ON -DMCSPEC_MAX_N=256 -DMCSPEC_MAX_SIDE=16
+check "CMake: libmcspec static, MCSPEC_MAX_N=256 MCSPEC_MAX_SIDE=16, built and installed" \
+    cmake_lib "$tmp/cm_static" -DBUILD_SHARED_LIBS=OFF -DMCSPEC_MAX_N=256 -DMCSPEC_MAX_SIDE=16
 cm_so=$cmprefix/lib/libmcspec.so.$version
 check "CMake: libmcspec.so.$version has SONAME libmcspec.so.$major" \
     sh -c "readelf -d '$cm_so' | grep -q 'Library soname: \[libmcspec.so.$major\]'"
 check "CMake: both libraries export exactly the API of the installed headers" \
     sh tools/check_api.sh -c "$CC -I$cmprefix/include" -d "$cmprefix/include" -n "$NM" \
         -p tools/api_pending.txt "$cmprefix/lib/libmcspec.a" "$cm_so"
-check "CMake: installed mcspec.pc carries MCS_MAX_N=256" \
-    sh -c "PKG_CONFIG_PATH='$cmprefix/lib/pkgconfig' pkg-config --cflags mcspec | grep -q -- '-DMCS_MAX_N=256 '"
-cxx_cm() { build_cxx "$tmp/cxx_cm" "$cmprefix" -DEXPECT_MAX_N=256 && links_shared "$tmp/cxx_cm/cxx_consumer"; }
-cxx_cm_static() { build_cxx "$tmp/cxx_cm_static" "$cmprefix" -DEXPECT_MAX_N=256 -DMCSPEC_USE_STATIC=ON; }
-check "C++17 consumer against the CMake install (shared, 256)" cxx_cm
-check "C++17 consumer against the CMake install (static, 256)" cxx_cm_static
+cm_caps="-DMCS_MAX_N=256 -DMCS_MAX_COV_N=64 -DMCS_MAX_FREQ=32 -DMCS_MAX_FREQ_1D=1024 -DMCS_MAX_SIDE=16"
+check "CMake: installed mcspec.pc carries all five capacities ($cm_caps)" \
+    sh -c "PKG_CONFIG_PATH='$cmprefix/lib/pkgconfig' pkg-config --cflags mcspec | grep -q -- '$cm_caps'"
+cm_expect="-DEXPECT_MAX_N=256 -DEXPECT_MAX_SIDE=16"
+# shellcheck disable=SC2086
+cxx_cm() { build_cxx "$tmp/cxx_cm" "$cmprefix" $cm_expect && links_shared "$tmp/cxx_cm/cxx_consumer"; }
+# shellcheck disable=SC2086
+cxx_cm_static() { build_cxx "$tmp/cxx_cm_static" "$cmprefix" $cm_expect -DMCSPEC_USE_STATIC=ON; }
+check "C++17 consumer against the CMake install (shared, 256, side 16)" cxx_cm
+check "C++17 consumer against the CMake install (static, 256, side 16)" cxx_cm_static
 
 subdir() {
     dir=$1
@@ -245,8 +278,9 @@ subdir() {
         "$CMAKE" --build "$dir" && "$dir/subdir_consumer"
 }
 check "C consumer, add_subdirectory(mcspec)" subdir "$tmp/subdir"
-check "C consumer, FetchContent(mcspec), MCSPEC_MAX_N=256 shared" \
-    subdir "$tmp/fetch" -DUSE_FETCHCONTENT=ON -DMCSPEC_MAX_N=256 -DEXPECT_MAX_N=256 -DBUILD_SHARED_LIBS=ON
+check "C consumer, FetchContent(mcspec), MCSPEC_MAX_N=256 MCSPEC_MAX_SIDE=16 shared" \
+    subdir "$tmp/fetch" -DUSE_FETCHCONTENT=ON -DMCSPEC_MAX_N=256 -DEXPECT_MAX_N=256 \
+        -DMCSPEC_MAX_SIDE=16 -DEXPECT_MAX_SIDE=16 -DBUILD_SHARED_LIBS=ON
 
 echo "check-install: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -52,6 +52,135 @@ void theory_lumpy_importance(mcs_importance *imp, size_t n)
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_init(imp, n, w));
 }
 
+/* ---- brute force ------------------------------------------------------------ */
+
+static size_t bf_bin(const mcs_importance *im, size_t n, double u, double *w)
+{
+    if (im != NULL) {
+        size_t b = 0;
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_warp(im, u, NULL, &b));
+        *w = 1.0 / im->p[b];
+        return b;
+    }
+    size_t b = (size_t)(u * (double)n);
+    *w = 1.0;
+    return b < n ? b : n - 1u;
+}
+
+/* Adds one equally likely outcome; the caller divides by their number at the
+ * end (without importance every sum is then an exact integer). */
+static void bf_add(size_t n, size_t k, const size_t *bins, const double *w, size_t shift,
+                   double *mean, double *second)
+{
+    double s[MCS_MAX_COV_N] = {0.0};
+    for (size_t j = 0; j < k; ++j)
+        s[(bins[j] + shift) % n] += w[j];
+    for (size_t m = 0; m < n; ++m) {
+        mean[m] += s[m];
+        for (size_t b = 0; b < n; ++b)
+            second[m * n + b] += s[m] * s[b];
+    }
+}
+
+static void bf_normalise(size_t n, double outcomes, double *mean, double *second)
+{
+    for (size_t m = 0; m < n; ++m) {
+        mean[m] /= outcomes;
+        for (size_t b = 0; b < n; ++b)
+            second[m * n + b] /= outcomes;
+    }
+}
+
+/* Odometer over k digits in [0, base): returns 0 when it wraps. */
+static int odometer_next(size_t *digit, size_t k, size_t base)
+{
+    for (size_t j = 0; j < k; ++j) {
+        if (++digit[j] < base)
+            return 1;
+        digit[j] = 0;
+    }
+    return 0;
+}
+
+static void bf_random(size_t n, size_t k, const mcs_importance *im, size_t grid, double *mean,
+                      double *second)
+{
+    size_t bins[THEORY_BF_KMAX] = {0}, digit[THEORY_BF_KMAX] = {0};
+    double w[THEORY_BF_KMAX] = {0.0};
+    const double gd = (double)grid;
+    do {
+        for (size_t j = 0; j < k; ++j)
+            bins[j] = bf_bin(im, n, ((double)digit[j] + 0.5) / gd, &w[j]);
+        bf_add(n, k, bins, w, 0u, mean, second);
+    } while (odometer_next(digit, k, grid));
+    bf_normalise(n, pow(gd, (double)k), mean, second);
+}
+
+static void bf_stratified(mcs_pattern_kind kind, size_t n, size_t k, const mcs_importance *im,
+                          size_t grid, double *mean, double *second)
+{
+    size_t bins[THEORY_BF_KMAX] = {0}, digit[THEORY_BF_KMAX] = {0};
+    double w[THEORY_BF_KMAX] = {0.0};
+    TEST_ASSERT_EQUAL_UINT(0u, grid % k);
+    const size_t cells = grid / k;
+    const size_t shifts = kind == MCS_PATTERN_HOMOGENIZED ? n : 1u;
+    do {
+        for (size_t j = 0; j < k; ++j)
+            bins[j] = bf_bin(im, n, ((double)(j * cells + digit[j]) + 0.5) / (double)grid, &w[j]);
+        for (size_t d = 0; d < shifts; ++d)
+            bf_add(n, k, bins, w, d, mean, second);
+    } while (odometer_next(digit, k, cells));
+    bf_normalise(n, pow((double)cells, (double)k) * (double)shifts, mean, second);
+}
+
+void theory_brute_force(mcs_pattern_kind kind, size_t n, size_t k, const mcs_importance *im,
+                        size_t grid, double *mean, double *second)
+{
+    TEST_ASSERT_TRUE(n <= MCS_MAX_COV_N && k <= THEORY_BF_KMAX);
+    memset(mean, 0, n * sizeof *mean);
+    memset(second, 0, n * n * sizeof *second);
+    size_t bins[THEORY_BF_KMAX] = {0};
+    double w[THEORY_BF_KMAX] = {0.0};
+    const double gd = (double)grid;
+    if (kind == MCS_PATTERN_RANDOM) {
+        bf_random(n, k, im, grid, mean, second);
+    } else if (kind == MCS_PATTERN_STRATIFIED || kind == MCS_PATTERN_HOMOGENIZED) {
+        bf_stratified(kind, n, k, im, grid, mean, second);
+    } else if (kind == MCS_PATTERN_JITTER) {
+        for (size_t c = 0; c < grid; ++c) {
+            double beta = ((double)c + 0.5) / gd;
+            for (size_t j = 0; j < k; ++j)
+                bins[j] = bf_bin(im, n, ((double)j + beta) / (double)k, &w[j]);
+            bf_add(n, k, bins, w, 0u, mean, second);
+        }
+        bf_normalise(n, gd, mean, second);
+    } else { /* uniform, deterministic: the one outcome is the generator's */
+        mcs_pattern pat;
+        mcs_rng rng;
+        mcs_rng_seed(&rng, 9u, 9u);
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_init(&pat, kind, n, k, im));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_draw(&pat, &rng, k, bins, w, NULL));
+        bf_add(n, k, bins, w, 0u, mean, second);
+    }
+}
+
+static size_t gcd(size_t a, size_t b)
+{
+    while (b != 0u) {
+        size_t t = a % b;
+        a = b;
+        b = t;
+    }
+    return a;
+}
+
+size_t theory_lcm(size_t a, size_t b)
+{
+    return a / gcd(a, b) * b;
+}
+
+/* ---- bad integrands ----------------------------------------------------------- */
+
 static mcs_theory th_before;
 
 /* fn(th, n, k, f, g) through whichever of one, two is given. */

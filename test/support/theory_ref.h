@@ -25,6 +25,23 @@ void theory_ref_dft(size_t n, const double *x, double *re, double *im);
 /* A lumpy importance function over n bins into *imp; fails the test on error. */
 void theory_lumpy_importance(mcs_importance *imp, size_t n);
 
+/* Every outcome of one trial of the pattern (kind, n, k, im), enumerated by a
+ * route independent of the theory's overlap formulas: all interval endpoints
+ * in u (bin edges or CDF values, strata) are multiples of 1/grid, so a
+ * sample's bin is constant on each grid cell; the cell midpoint goes through
+ * the library's warp (or floor(u N)), and each trial's dense s is weighted
+ * by its cell probability. Random and stratified enumerate grid^k and
+ * (grid/k)^k outcomes (grid a multiple of k for stratified), homogenized
+ * adds the n shifts, jitter the grid values of beta, uniform draws its one
+ * outcome from the generator. mean[n] = <s_n>, second[n * n] = <s_m s_n>;
+ * n <= MCS_MAX_COV_N, k <= THEORY_BF_KMAX. */
+#define THEORY_BF_KMAX 64
+void theory_brute_force(mcs_pattern_kind kind, size_t n, size_t k, const mcs_importance *im,
+                        size_t grid, double *mean, double *second);
+
+/* Least common multiple. */
+size_t theory_lcm(size_t a, size_t b);
+
 /* The read-outs of integrands on exact moments, mcs_theory_variance and the
  * closed forms built on it, share one argument list and one set of bad-input
  * statuses. Exactly one of one, two is not NULL. th: initialised, th->n <= 63.

@@ -12,6 +12,7 @@ int main()
 {
     int bad = mcspec_checks();
     static_assert(MCS_MAX_N == EXPECT_MAX_N, "mcspec::mcspec passed another MCS_MAX_N");
+    static_assert(MCS_MAX_SIDE == EXPECT_MAX_SIDE, "mcspec::mcspec passed another MCS_MAX_SIDE");
     constexpr std::string_view header_version{MCS_VERSION_STRING};
     const std::array<int, 3> parts{MCS_VERSION_MAJOR, MCS_VERSION_MINOR, MCS_VERSION_PATCH};
     if (header_version.empty() || parts[0] < 0) {

@@ -1,0 +1,349 @@
+/* Point-set and value-list readers of the mcspec command (see input.h). */
+#include "input.h"
+#include "cli.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+/* Most columns a line can have: 2 coordinates and a weight. */
+#define MAX_COLUMNS 3
+
+typedef struct {
+    const char *cmd;
+    const char *name;
+    FILE *fp;
+    char *buf;
+    size_t cap;
+    unsigned long line;
+} reader;
+
+const char *cli_input_name(const char *path)
+{
+    return path == NULL || strcmp(path, "-") == 0 ? "<stdin>" : path;
+}
+
+static int reader_open(reader *r, const char *cmd, const char *path)
+{
+    r->cmd = cmd;
+    r->name = cli_input_name(path);
+    r->buf = NULL;
+    r->cap = 0;
+    r->line = 0;
+    if (path == NULL || strcmp(path, "-") == 0) {
+        r->fp = stdin;
+        return 0;
+    }
+    r->fp = fopen(path, "r");
+    if (r->fp == NULL)
+        return cli_fail(cmd, "cannot read '%s': %s", path, strerror(errno));
+    /* fopen succeeds on a directory; the first read would fail less clearly. */
+    struct stat st;
+    if (fstat(fileno(r->fp), &st) == 0 && S_ISDIR(st.st_mode)) {
+        fclose(r->fp);
+        r->fp = NULL;
+        return cli_fail(cmd, "cannot read '%s': it is a directory", path);
+    }
+    return 0;
+}
+
+static void reader_close(reader *r)
+{
+    if (r->fp != NULL && r->fp != stdin)
+        fclose(r->fp);
+    r->fp = NULL;
+    free(r->buf);
+    r->buf = NULL;
+}
+
+/* Next line without its end-of-line characters: 1, or 0 at the end of the
+ * input, or -1 after a read error (reported). */
+static int reader_next(reader *r, char **line)
+{
+    errno = 0;
+    ssize_t len = getline(&r->buf, &r->cap, r->fp);
+    if (len < 0) {
+        if (ferror(r->fp)) {
+            cli_fail(r->cmd, "%s: line %lu: read error: %s", r->name, r->line + 1u,
+                     strerror(errno != 0 ? errno : EIO));
+            return -1;
+        }
+        return 0;
+    }
+    ++r->line;
+    while (len > 0 && (r->buf[len - 1] == '\n' || r->buf[len - 1] == '\r'))
+        r->buf[--len] = '\0';
+    *line = r->buf;
+    return 1;
+}
+
+static int is_blank(char c)
+{
+    return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+}
+
+/* Splits line in place at blanks; stores up to max tokens, returns how many
+ * there are in all (so a caller can report a wrong column count). */
+static size_t split(char *line, char **tok, size_t max)
+{
+    size_t count = 0;
+    char *c = line;
+    for (;;) {
+        while (is_blank(*c))
+            ++c;
+        if (*c == '\0')
+            return count;
+        if (count < max)
+            tok[count] = c;
+        ++count;
+        while (*c != '\0' && !is_blank(*c))
+            ++c;
+        if (*c != '\0')
+            *c++ = '\0';
+    }
+}
+
+/* A finite number filling all of tok. 0, or an exit status (reported). */
+static int parse_number(const reader *r, const char *tok, const char *what, double *out)
+{
+    char *end = NULL;
+    errno = 0;
+    double v = strtod(tok, &end);
+    if (end == tok || *end != '\0') {
+        cli_fail(r->cmd, "%s: line %lu: %s '%s' is not a number", r->name, r->line, what, tok);
+        return CLI_EXIT_USAGE;
+    }
+    if (!isfinite(v)) {
+        cli_fail(r->cmd, "%s: line %lu: %s '%s' is not a finite number", r->name, r->line, what,
+                 tok);
+        return CLI_EXIT_USAGE;
+    }
+    *out = v;
+    return 0;
+}
+
+/* ---- Point sets -------------------------------------------------------------- */
+
+typedef struct {
+    double *coords;
+    double *weights;
+    size_t k, cap, dim;
+} point_buf;
+
+static int buf_push(const char *cmd, point_buf *b, const double *coord, double weight)
+{
+    if (b->k == b->cap) {
+        size_t cap = b->cap != 0u ? 2u * b->cap : 1024u;
+        double *c = realloc(b->coords, cap * b->dim * sizeof *c);
+        if (c == NULL)
+            return cli_internal(cmd, "out of memory reading a set of %zu points", b->k);
+        b->coords = c;
+        double *w = realloc(b->weights, cap * sizeof *w);
+        if (w == NULL)
+            return cli_internal(cmd, "out of memory reading a set of %zu points", b->k);
+        b->weights = w;
+        b->cap = cap;
+    }
+    memcpy(b->coords + b->k * b->dim, coord, b->dim * sizeof *coord);
+    b->weights[b->k++] = weight;
+    return 0;
+}
+
+/* One point line, tokens already split: coordinates (checked or wrapped),
+ * then the weight. */
+static int parse_point(const reader *r, const cli_pointset_format *fmt, char **tok, size_t ntok,
+                       double *coord, double *weight)
+{
+    size_t want = fmt->dim + (fmt->weights ? 1u : 0u);
+    if (ntok != want) {
+        const char *hint = fmt->weights ? (fmt->dim == 1u ? "a point, then its weight"
+                                                          : "the coordinates, then the weight")
+                                        : (ntok == fmt->dim + 1u ? "a weight column needs --weights"
+                                                                 : "one point per line");
+        return cli_fail(r->cmd, "%s: line %lu: expected %zu column%s, found %zu (%s)", r->name,
+                        r->line, want, want == 1u ? "" : "s", ntok, hint);
+    }
+    for (size_t d = 0; d < fmt->dim; ++d) {
+        int rc = parse_number(r, tok[d], "coordinate", &coord[d]);
+        if (rc != 0)
+            return rc;
+        if (fmt->wrap) {
+            coord[d] -= floor(coord[d]);
+            if (coord[d] >= 1.0) /* a tiny negative value rounds up to 1: it is 0 mod 1 */
+                coord[d] = 0.0;
+        } else if (!(coord[d] >= 0.0 && coord[d] < 1.0)) {
+            return cli_fail(r->cmd, "%s: line %lu: coordinate %s is outside [0,1) (--wrap takes it "
+                            "modulo 1)", r->name, r->line, tok[d]);
+        }
+    }
+    *weight = 1.0;
+    if (fmt->weights) {
+        int rc = parse_number(r, tok[fmt->dim], "weight", weight);
+        if (rc != 0)
+            return rc;
+        if (*weight < 0.0)
+            return cli_fail(r->cmd, "%s: line %lu: weight %s is negative", r->name, r->line,
+                            tok[fmt->dim]);
+    }
+    return 0;
+}
+
+static int emit_set(const cli_pointset_format *fmt, point_buf *b, cli_pointset_fn fn, void *ctx,
+                    cli_pointset_stats *stats, cli_progress *progress)
+{
+    int rc = fn(ctx, b->k, b->coords, fmt->weights ? b->weights : NULL);
+    if (rc != 0)
+        return rc;
+    ++stats->sets;
+    stats->k_min = b->k < stats->k_min ? b->k : stats->k_min;
+    stats->k_max = b->k > stats->k_max ? b->k : stats->k_max;
+    b->k = 0;
+    if (progress != NULL)
+        cli_progress_update(progress, stats->sets);
+    return 0;
+}
+
+/* The line loop: rc 0 at the end of the input with every set emitted. */
+static int read_sets(reader *r, const cli_pointset_format *fmt, point_buf *b, cli_pointset_fn fn,
+                     void *ctx, cli_pointset_stats *stats, cli_progress *progress)
+{
+    unsigned long sep_line = 0;
+    char *line = NULL;
+    int got;
+    while ((got = reader_next(r, &line)) > 0) {
+        char *s = line;
+        while (is_blank(*s))
+            ++s;
+        if (*s == '\0')
+            continue;
+        if (*s == '#') {
+            if (b->k > 0u) {
+                int rc = emit_set(fmt, b, fn, ctx, stats, progress);
+                if (rc != 0)
+                    return rc;
+            } else if (stats->sets > 0u) {
+                return cli_fail(r->cmd, "%s: line %lu: empty point set (no point since the '#' "
+                                "line at line %lu; remove one of them)", r->name, r->line, sep_line);
+            }
+            sep_line = r->line;
+            continue;
+        }
+        char *tok[MAX_COLUMNS];
+        double coord[MAX_COLUMNS] = {0.0, 0.0, 0.0}, weight = 1.0;
+        size_t ntok = split(s, tok, MAX_COLUMNS);
+        int rc = parse_point(r, fmt, tok, ntok, coord, &weight);
+        if (rc == 0)
+            rc = buf_push(r->cmd, b, coord, weight);
+        if (rc != 0)
+            return rc;
+    }
+    if (got < 0)
+        return CLI_EXIT_USAGE;
+    if (b->k > 0u)
+        return emit_set(fmt, b, fn, ctx, stats, progress);
+    return 0;
+}
+
+int cli_read_pointsets(const char *cmd, const char *path, const cli_pointset_format *fmt,
+                       cli_pointset_fn fn, void *ctx, cli_pointset_stats *stats,
+                       cli_progress *progress)
+{
+    stats->sets = 0;
+    stats->k_min = (size_t)-1;
+    stats->k_max = 0;
+    stats->lines = 0;
+    reader r;
+    int rc = reader_open(&r, cmd, path);
+    if (rc != 0)
+        return rc;
+    point_buf b = {NULL, NULL, 0, 0, fmt->dim};
+    rc = read_sets(&r, fmt, &b, fn, ctx, stats, progress);
+    stats->lines = r.line;
+    if (rc == 0 && stats->sets == 0u && r.line == 0u)
+        rc = cli_fail(cmd, "%s: the input is empty (no lines, so no point sets)", r.name);
+    else if (rc == 0 && stats->sets == 0u)
+        rc = cli_fail(cmd, "%s: line %lu: end of input and no point read (one point per line; "
+                      "see %s --help)", r.name, r.line, cmd);
+    if (stats->sets == 0u)
+        stats->k_min = 0;
+    reader_close(&r);
+    free(b.coords);
+    free(b.weights);
+    return rc;
+}
+
+/* ---- Value lists ------------------------------------------------------------- */
+
+static int push_value(const char *cmd, double **values, size_t *count, size_t *cap, double v)
+{
+    if (*count == *cap) {
+        size_t c = *cap != 0u ? 2u * *cap : 256u;
+        double *p = realloc(*values, c * sizeof *p);
+        if (p == NULL)
+            return cli_internal(cmd, "out of memory reading %zu values", *count);
+        *values = p;
+        *cap = c;
+    }
+    (*values)[(*count)++] = v;
+    return 0;
+}
+
+static int read_value_lines(reader *r, const char *what, int positive, size_t max,
+                            double **values, size_t *count)
+{
+    size_t cap = 0;
+    char *line = NULL;
+    int got;
+    while ((got = reader_next(r, &line)) > 0) {
+        char *tok[2];
+        size_t ntok = split(line, tok, 2);
+        if (ntok == 0u || tok[0][0] == '#')
+            continue;
+        if (ntok != 1u)
+            return cli_fail(r->cmd, "%s: line %lu: expected one %s per line, found %zu columns",
+                            r->name, r->line, what, ntok);
+        double v = 0.0;
+        int rc = parse_number(r, tok[0], what, &v);
+        if (rc != 0)
+            return rc;
+        if (positive && !(v > 0.0))
+            return cli_fail(r->cmd, "%s: line %lu: %s %s must be > 0", r->name, r->line, what,
+                            tok[0]);
+        if (*count == max)
+            return cli_fail(r->cmd, "%s: line %lu: more than %zu values (the most this build "
+                            "takes, MCS_MAX_N)", r->name, r->line, max);
+        rc = push_value(r->cmd, values, count, &cap, v);
+        if (rc != 0)
+            return rc;
+    }
+    if (got < 0)
+        return CLI_EXIT_USAGE;
+    if (*count == 0u && r->line == 0u)
+        return cli_fail(r->cmd, "%s: the input is empty (no lines, so no %s)", r->name, what);
+    if (*count == 0u)
+        return cli_fail(r->cmd, "%s: line %lu: end of input and no %s read", r->name, r->line,
+                        what);
+    return 0;
+}
+
+int cli_read_values(const char *cmd, const char *path, const char *what, int positive,
+                    size_t max, double **values, size_t *count)
+{
+    *values = NULL;
+    *count = 0;
+    reader r;
+    int rc = reader_open(&r, cmd, path);
+    if (rc != 0)
+        return rc;
+    rc = read_value_lines(&r, what, positive, max, values, count);
+    reader_close(&r);
+    if (rc != 0) {
+        free(*values);
+        *values = NULL;
+        *count = 0;
+    }
+    return rc;
+}

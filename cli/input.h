@@ -1,0 +1,58 @@
+/* Text input of the mcspec command: point sets and lists of values.
+ *
+ * Every error names the input, the line and what was wrong, as one line on
+ * stderr, and the reader stops there; a reader calls back only with complete,
+ * validated data, so a caller that prints after reading never prints
+ * anything partial. "-" (or NULL) is standard input. */
+#ifndef MCSPEC_CLI_INPUT_H
+#define MCSPEC_CLI_INPUT_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "progress.h"
+
+/* Point-set files (utk's convention): one point per line, its coordinates
+ * separated by blanks (spaces or tabs), then its weight when `weights` is
+ * set; a line starting with '#' ends the current set; blank lines are
+ * ignored. '#' lines before the first point are a header and are skipped; a
+ * '#' line right after another (only blank lines between) would make an empty
+ * set and is an error; a final '#' line is allowed. Coordinates must be
+ * finite and in [0,1) (with `wrap`, any finite value is taken modulo 1);
+ * weights finite and >= 0. */
+typedef struct {
+    size_t dim;  /* coordinates per point, 1 or 2 */
+    int weights; /* a weight column follows the coordinates */
+    int wrap;    /* take coordinates modulo 1 instead of rejecting them */
+} cli_pointset_format;
+
+typedef struct {
+    uint64_t sets;       /* complete sets passed to the callback */
+    size_t k_min, k_max; /* fewest and most points in a set */
+    unsigned long lines; /* lines read */
+} cli_pointset_stats;
+
+/* Receives one complete set: k points, coords[k * dim] (point j at
+ * coords[j * dim ...]), weights[k] or NULL without a weight column. Returns
+ * 0 to go on, or an exit status to stop with (it has printed why). */
+typedef int (*cli_pointset_fn)(void *ctx, size_t k, const double *coords,
+                               const double *weights);
+
+/* Reads every set of path. Returns 0, or an exit status after one line on
+ * stderr. progress (may be NULL) counts sets. */
+int cli_read_pointsets(const char *cmd, const char *path, const cli_pointset_format *fmt,
+                       cli_pointset_fn fn, void *ctx, cli_pointset_stats *stats,
+                       cli_progress *progress);
+
+/* A list of values, one finite number per line ('#' lines and blank lines
+ * are skipped), at most max of them; with `positive`, each must be > 0.
+ * *values is allocated (the caller frees it) and holds *count >= 1 values.
+ * what names the values in messages ("integrand value"). Returns 0 or an
+ * exit status after one line on stderr. */
+int cli_read_values(const char *cmd, const char *path, const char *what, int positive,
+                    size_t max, double **values, size_t *count);
+
+/* The name messages use for path: "<stdin>" for NULL or "-". */
+const char *cli_input_name(const char *path);
+
+#endif /* MCSPEC_CLI_INPUT_H */

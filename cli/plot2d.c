@@ -1,0 +1,124 @@
+/* The figure of a 2D point-set spectrum (see plot.h): the image of the mean
+ * periodogram and its radial profile, side by side. */
+#include "plot.h"
+
+#include <math.h>
+#include <stdio.h>
+
+typedef struct {
+    const cli_plot_info *info;
+    const cli_ps_row *rows2d, *radial;
+    size_t nrows2d, nradial;
+} pointset2d_figure;
+
+/* Largest <P> drawn in the image, k != 0 (P(0) = K would flatten the colour
+ * scale); 1 if nothing is positive. */
+static double image_top(const pointset2d_figure *fig)
+{
+    double top = 0.0;
+    for (size_t i = 0; i < fig->nrows2d; ++i) {
+        const cli_ps_row *r = &fig->rows2d[i];
+        if ((r->kx != 0 || r->ky != 0) && !isnan(r->power) && r->power > top)
+            top = r->power;
+    }
+    return top > 0.0 ? top : 1.0;
+}
+
+/* Largest value of the profile (r >= 1): measured plus its standard error,
+ * exact; 1 if nothing is positive. */
+static double profile_top(const pointset2d_figure *fig)
+{
+    double top = 0.0;
+    for (size_t i = 1; i < fig->nradial; ++i)
+        top = cli_plot_raise_top(top, fig->radial[i].power, fig->radial[i].power_stderr,
+                                 fig->radial[i].exact, (double)NAN);
+    return top > 0.0 ? top : 1.0;
+}
+
+static int has_exact(const pointset2d_figure *fig)
+{
+    for (size_t i = 1; i < fig->nradial; ++i)
+        if (!isnan(fig->radial[i].exact))
+            return 1;
+    return 0;
+}
+
+/* data.txt: the profile, r >= 1, in cli_plot_profile's columns; data2.txt:
+ * the image, one scan line per ky (gnuplot's grid format). */
+static int write_data(const char *tmp, const pointset2d_figure *fig)
+{
+    FILE *fp = cli_plot_data(tmp, "data.txt");
+    if (fp == NULL)
+        return -1;
+    fputs("# r radial radial-stderr radial+stderr exact closed\n", fp);
+    for (size_t i = 1; i < fig->nradial; ++i) {
+        const cli_ps_row *r = &fig->radial[i];
+        cli_plot_profile_row(fp, r->kx, r->power, r->power_stderr, r->exact, (double)NAN);
+    }
+    int ok = fclose(fp) == 0;
+    fp = cli_plot_data(tmp, "data2.txt");
+    if (fp == NULL)
+        return -1;
+    fputs("# kx ky power\n", fp);
+    for (size_t i = 0; i < fig->nrows2d; ++i) {
+        const cli_ps_row *r = &fig->rows2d[i];
+        if (i > 0u && r->ky != fig->rows2d[i - 1u].ky)
+            fputc('\n', fp);
+        fprintf(fp, "%ld %ld", r->kx, r->ky);
+        cli_plot_value(fp, r->power);
+        fputc('\n', fp);
+    }
+    return fclose(fp) == 0 && ok ? 0 : -1;
+}
+
+static void write_image_panel(FILE *fp, const char *tmp, const pointset2d_figure *fig)
+{
+    const long f = fig->rows2d[fig->nrows2d - 1u].kx;
+    fputs("set title \"mean periodogram ⟨P(k)⟩ (P(0) = K: off the scale)\" noenhanced\n"
+          "set xlabel \"k_x\"\nset ylabel \"k_y\"\nset cblabel \"⟨P(k)⟩\" noenhanced\n"
+          "set size ratio -1\nset border lw 1.2\nunset key\n"
+          "set palette defined (0 '#000004', 1 '#3b0f70', 2 '#8c2981', 3 '#de4968', "
+          "4 '#fe9f6d', 5 '#fcfdbf')\n", fp);
+    fprintf(fp, "set xrange [%.1f:%.1f]\nset yrange [%.1f:%.1f]\nset cbrange [0:%.17g]\n",
+            -(double)f - 0.5, (double)f + 0.5, -(double)f - 0.5, (double)f + 0.5,
+            image_top(fig));
+    fputs("plot ", fp);
+    cli_plot_data_ref(fp, tmp, "data2.txt");
+    fputs(" using 1:2:3 with image notitle\n", fp);
+}
+
+static void write_profile_panel(FILE *fp, const char *tmp, const pointset2d_figure *fig)
+{
+    const long f = fig->radial[fig->nradial - 1u].kx;
+    fputs("set title \"radial average over the annuli r ≤ |k| < r + 1\" noenhanced\n"
+          "set xlabel \"radius r\"\nset ylabel \"radial average of ⟨P(k)⟩\"\n"
+          "set size noratio\nunset cblabel\nunset colorbox\n", fp);
+    cli_plot_style(fp);
+    fprintf(fp, "set xrange [0.5:%.17g]\nset yrange [0:%.17g]\n", (double)f + 0.5,
+            1.45 * profile_top(fig));
+    const cli_plot_series s = {tmp, "data.txt", "measured",
+                               has_exact(fig) ? fig->info->exact_label : NULL, NULL};
+    cli_plot_profile(fp, &s);
+}
+
+static int write_pointset2d(FILE *fp, const char *tmp, const void *ctx)
+{
+    const pointset2d_figure *fig = ctx;
+    if (write_data(tmp, fig) != 0)
+        return -1;
+    fputs("set multiplot layout 1,2 title ", fp);
+    cli_plot_title(fp, fig->info);
+    fputc('\n', fp);
+    write_image_panel(fp, tmp, fig);
+    write_profile_panel(fp, tmp, fig);
+    fputs("unset multiplot\n", fp);
+    return 0;
+}
+
+int cli_plot_pointset2d(const char *cmd, const char *path, const cli_plot_info *info,
+                        const cli_ps_row *rows2d, size_t nrows2d, const cli_ps_row *radial,
+                        size_t nradial)
+{
+    const pointset2d_figure fig = {info, rows2d, radial, nrows2d, nradial};
+    return cli_plot_render(cmd, path, write_pointset2d, &fig);
+}

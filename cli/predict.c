@@ -1,0 +1,160 @@
+/* Theory look-up of the mcspec command (see predict.h). */
+#include "predict.h"
+#include "cli.h"
+#include "output.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static int divides(size_t k, size_t n)
+{
+    return k != 0u && n % k == 0u;
+}
+
+/* K^2/N: S_0 = K / sqrt(N) for every trial without importance (eq. 17). */
+static double power0_plain(const mcs_pattern *pat)
+{
+    return (double)pat->k * (double)pat->k / (double)pat->n;
+}
+
+/* The note's closed form as printed, at freq in [0, N/2]; NaN outside its
+ * domain (MCS_ERR_DOMAIN and the like are expected here: the note defines
+ * each form on part of the space). */
+static double closed_form(const mcs_pattern *pat, size_t freq)
+{
+    size_t n = pat->n, k = pat->k;
+    double v = 0.0;
+    if (pat->importance == NULL) {
+        if (freq == 0u)
+            return power0_plain(pat);
+        switch (pat->kind) {
+        case MCS_PATTERN_RANDOM:
+            return cli_or_nan(mcs_eq23_random_power(n, k, freq, &v), &v);
+        case MCS_PATTERN_STRATIFIED:
+        case MCS_PATTERN_HOMOGENIZED: /* a cyclic shift leaves |S_k| as it is */
+            return cli_or_nan(mcs_eq33_stratified_power_limit(n, k, freq, &v), &v);
+        case MCS_PATTERN_UNIFORM:
+        case MCS_PATTERN_JITTER:
+            return cli_or_nan(mcs_eq37_jitter_power(n, k, freq, &v), &v);
+        }
+        return (double)NAN;
+    }
+    const mcs_importance *imp = pat->importance;
+    if (pat->kind == MCS_PATTERN_RANDOM)
+        return freq == 0u ? cli_or_nan(mcs_eq46_importance_power0(imp, k, &v), &v)
+                          : cli_or_nan(mcs_eq45_importance_power(imp, k, freq, &v), &v);
+    /* Eq. 51 is eq. 46 (eq.h); the note states it for K dividing N, as eq. 50. */
+    if (pat->kind == MCS_PATTERN_STRATIFIED && divides(k, n))
+        return freq == 0u ? cli_or_nan(mcs_eq46_importance_power0(imp, k, &v), &v)
+                          : cli_or_nan(mcs_eq50_importance_stratified_power(imp, k, freq, &v), &v);
+    return (double)NAN;
+}
+
+static const char *closed_source(const mcs_pattern *pat)
+{
+    int whole = divides(pat->k, pat->n);
+    if (pat->importance != NULL) {
+        if (pat->kind == MCS_PATTERN_RANDOM)
+            return "eq. 45 (k = 0: eq. 46)";
+        if (pat->kind == MCS_PATTERN_STRATIFIED && whole)
+            return "eq. 50 (k = 0: eq. 51)";
+        return "";
+    }
+    switch (pat->kind) {
+    case MCS_PATTERN_RANDOM:
+        return "eq. 23 (k = 0: eq. 17)";
+    case MCS_PATTERN_STRATIFIED:
+    case MCS_PATTERN_HOMOGENIZED:
+        return whole ? "eq. 33, its N -> infinity form (k = 0: eq. 17)" : "eq. 17 at k = 0 only";
+    case MCS_PATTERN_UNIFORM:
+    case MCS_PATTERN_JITTER:
+        return whole ? "eq. 37" : "eq. 17 at k = 0 only";
+    }
+    return "";
+}
+
+static int theory_power(const char *cmd, const mcs_pattern *pat, cli_prediction *pred)
+{
+    mcs_theory *th = cli_alloc(cmd, 1, sizeof *th);
+    if (th == NULL)
+        return CLI_EXIT_FAIL;
+    mcs_status st = mcs_theory_init(th, pat);
+    for (size_t f = 0; st == MCS_OK && f < pred->nfreq; ++f)
+        st = mcs_theory_power(th, f, &pred->exact[f]);
+    free(th);
+    if (st != MCS_OK)
+        return cli_internal(cmd, "exact theory failed: %s", mcs_status_str(st));
+    snprintf(pred->exact_source, sizeof pred->exact_source, "%s", "mcs_theory (exact moments)");
+    return 0;
+}
+
+/* Above MCS_MAX_COV_N: the O(N)-memory exact spectrum, every kind, with or
+ * without importance (it copies what it needs from pat). */
+static int theory_spectrum_power(const char *cmd, const mcs_pattern *pat, cli_prediction *pred)
+{
+    mcs_theory_spectrum *ts = cli_alloc(cmd, 1, sizeof *ts);
+    double *power = cli_alloc(cmd, pat->n, sizeof *power);
+    mcs_status st = MCS_ERR_NULL;
+    if (ts != NULL && power != NULL) {
+        st = mcs_theory_spectrum_init(ts, pat);
+        if (st == MCS_OK)
+            st = mcs_theory_power_spectrum(ts, pat->n, power);
+        for (size_t f = 0; st == MCS_OK && f < pred->nfreq; ++f)
+            pred->exact[f] = power[f];
+    }
+    free(ts);
+    free(power);
+    if (ts == NULL || power == NULL)
+        return CLI_EXIT_FAIL;
+    if (st != MCS_OK)
+        return cli_internal(cmd, "exact theory failed: %s", mcs_status_str(st));
+    snprintf(pred->exact_source, sizeof pred->exact_source, "%s",
+             "mcs_theory_spectrum (exact, any N)");
+    return 0;
+}
+
+int cli_predict_power(const char *cmd, const mcs_pattern *pat, cli_prediction *pred)
+{
+    pred->nfreq = pat->n / 2u + 1u;
+    pred->exact_source[0] = '\0';
+    snprintf(pred->closed_source, sizeof pred->closed_source, "%s", closed_source(pat));
+    for (size_t f = 0; f < pred->nfreq; ++f) {
+        pred->closed[f] = closed_form(pat, f);
+        pred->exact[f] = (double)NAN;
+    }
+    if (pat->n <= (size_t)MCS_MAX_COV_N)
+        return theory_power(cmd, pat, pred);
+    return theory_spectrum_power(cmd, pat, pred);
+}
+
+int cli_predict_variance(const char *cmd, const mcs_pattern *pat, const double *f, double *out,
+                         const char **source)
+{
+    *out = (double)NAN;
+    *source = "";
+    mcs_status st = MCS_OK;
+    if (pat->n <= (size_t)MCS_MAX_COV_N) {
+        mcs_theory *th = cli_alloc(cmd, 1, sizeof *th);
+        if (th == NULL)
+            return CLI_EXIT_FAIL;
+        st = mcs_theory_init(th, pat);
+        if (st == MCS_OK)
+            st = mcs_theory_variance(th, pat->n, pat->k, f, out);
+        free(th);
+        *source = "mcs_theory (exact moments)";
+    } else {
+        mcs_theory_spectrum *ts = cli_alloc(cmd, 1, sizeof *ts);
+        if (ts == NULL)
+            return CLI_EXIT_FAIL;
+        st = mcs_theory_spectrum_init(ts, pat);
+        if (st == MCS_OK)
+            st = mcs_theory_spectrum_variance(ts, pat->n, pat->k, f, out);
+        free(ts);
+        *source = "mcs_theory_spectrum (exact, any N)";
+    }
+    if (st != MCS_OK)
+        return cli_internal(cmd, "exact variance failed: %s", mcs_status_str(st));
+    return 0;
+}

@@ -1,0 +1,350 @@
+/* Saved accumulators for the mcspec command (see record.h). */
+#include "record.h"
+#include "atomic.h"
+#include "cli.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Largest record file read: far above any kind this build holds (a spectrum
+ * at MCS_MAX_N = 4096 is 82 KB), small enough to refuse a wrong file early. */
+#define RECORD_FILE_MAX ((size_t)1 << 30)
+
+typedef struct {
+    mcs_io_kind kind;
+    size_t size;
+    mcs_status (*init)(void *obj, const size_t *shape); /* NULL: not made here */
+    mcs_status (*load)(void *obj, size_t len, const void *buf);
+    mcs_status (*save)(const void *obj, size_t cap, void *buf, size_t *len);
+    mcs_status (*merge)(void *dst, const void *src);
+} kind_ops;
+
+static mcs_status load_spectrum(void *o, size_t l, const void *b) { return mcs_io_load_spectrum(o, l, b); }
+static mcs_status load_moment(void *o, size_t l, const void *b) { return mcs_io_load_moment(o, l, b); }
+static mcs_status load_autocorr(void *o, size_t l, const void *b) { return mcs_io_load_autocorr(o, l, b); }
+static mcs_status load_welford(void *o, size_t l, const void *b) { return mcs_io_load_welford(o, l, b); }
+static mcs_status save_spectrum(const void *o, size_t c, void *b, size_t *l) { return mcs_io_save_spectrum(o, c, b, l); }
+static mcs_status save_moment(const void *o, size_t c, void *b, size_t *l) { return mcs_io_save_moment(o, c, b, l); }
+static mcs_status save_autocorr(const void *o, size_t c, void *b, size_t *l) { return mcs_io_save_autocorr(o, c, b, l); }
+static mcs_status save_welford(const void *o, size_t c, void *b, size_t *l) { return mcs_io_save_welford(o, c, b, l); }
+static mcs_status merge_spectrum(void *d, const void *s) { return mcs_spectrum_merge(d, s); }
+static mcs_status merge_moment(void *d, const void *s) { return mcs_moment_merge(d, s); }
+static mcs_status merge_autocorr(void *d, const void *s) { return mcs_autocorr_merge(d, s); }
+static mcs_status merge_welford(void *d, const void *s) { return mcs_welford_merge(d, s); }
+static mcs_status load_pointset(void *o, size_t l, const void *b) { return mcs_io_load_pointset(o, l, b); }
+static mcs_status load_pointset2d(void *o, size_t l, const void *b) { return mcs_io_load_pointset2d(o, l, b); }
+static mcs_status load_spectrum2d(void *o, size_t l, const void *b) { return mcs_io_load_spectrum2d(o, l, b); }
+static mcs_status save_pointset(const void *o, size_t c, void *b, size_t *l) { return mcs_io_save_pointset(o, c, b, l); }
+static mcs_status save_pointset2d(const void *o, size_t c, void *b, size_t *l) { return mcs_io_save_pointset2d(o, c, b, l); }
+static mcs_status save_spectrum2d(const void *o, size_t c, void *b, size_t *l) { return mcs_io_save_spectrum2d(o, c, b, l); }
+static mcs_status merge_pointset(void *d, const void *s) { return mcs_pointset_merge(d, s); }
+static mcs_status merge_pointset2d(void *d, const void *s) { return mcs_pointset2d_merge(d, s); }
+static mcs_status merge_spectrum2d(void *d, const void *s) { return mcs_spectrum2d_merge(d, s); }
+static mcs_status init_spectrum(void *o, const size_t *s) { return mcs_spectrum_init(o, s[0]); }
+static mcs_status init_pointset(void *o, const size_t *s) { return mcs_pointset_init(o, s[0]); }
+static mcs_status init_pointset2d(void *o, const size_t *s) { return mcs_pointset2d_init(o, s[0]); }
+static mcs_status init_spectrum2d(void *o, const size_t *s) { return mcs_spectrum2d_init(o, s[0], s[1]); }
+
+static const kind_ops kinds[] = {
+    {MCS_IO_KIND_SPECTRUM, sizeof(mcs_spectrum), init_spectrum, load_spectrum, save_spectrum,
+     merge_spectrum},
+    {MCS_IO_KIND_MOMENT, sizeof(mcs_moment), NULL, load_moment, save_moment, merge_moment},
+    {MCS_IO_KIND_AUTOCORR, sizeof(mcs_autocorr), NULL, load_autocorr, save_autocorr,
+     merge_autocorr},
+    {MCS_IO_KIND_WELFORD, sizeof(mcs_welford), NULL, load_welford, save_welford, merge_welford},
+    {MCS_IO_KIND_POINTSET, sizeof(mcs_pointset), init_pointset, load_pointset, save_pointset,
+     merge_pointset},
+    {MCS_IO_KIND_POINTSET2D, sizeof(mcs_pointset2d), init_pointset2d, load_pointset2d,
+     save_pointset2d, merge_pointset2d},
+    {MCS_IO_KIND_SPECTRUM2D, sizeof(mcs_spectrum2d), init_spectrum2d, load_spectrum2d,
+     save_spectrum2d, merge_spectrum2d},
+};
+
+static const kind_ops *ops_of(uint32_t kind)
+{
+    for (size_t i = 0; i < sizeof kinds / sizeof kinds[0]; ++i)
+        if ((uint32_t)kinds[i].kind == kind)
+            return &kinds[i];
+    return NULL;
+}
+
+int cli_acc_new(const char *cmd, mcs_io_kind kind, const size_t shape[2], cli_acc *acc)
+{
+    const kind_ops *ops = ops_of(kind);
+    if (ops == NULL || ops->init == NULL)
+        return cli_internal(cmd, "cannot make a %s accumulator", mcs_io_kind_str(kind));
+    void *obj = cli_alloc(cmd, 1, ops->size);
+    if (obj == NULL)
+        return CLI_EXIT_FAIL;
+    mcs_status st = ops->init(obj, shape);
+    if (st != MCS_OK) {
+        free(obj);
+        return cli_internal(cmd, "setting up a %s accumulator: %s", mcs_io_kind_str(kind),
+                            mcs_status_str(st));
+    }
+    acc->kind = kind;
+    acc->obj = obj;
+    return 0;
+}
+
+int cli_acc_new_spectrum(const char *cmd, size_t n, cli_acc *acc)
+{
+    const size_t shape[2] = {n, 0u};
+    return cli_acc_new(cmd, MCS_IO_KIND_SPECTRUM, shape, acc);
+}
+
+void cli_acc_copy_to(const cli_acc *acc, void *obj)
+{
+    memcpy(obj, acc->obj, ops_of(acc->kind)->size);
+}
+
+void cli_acc_free(cli_acc *acc)
+{
+    free(acc->obj);
+    acc->obj = NULL;
+}
+
+uint64_t cli_acc_count(const cli_acc *acc)
+{
+    switch (acc->kind) {
+    case MCS_IO_KIND_SPECTRUM: return ((const mcs_spectrum *)acc->obj)->count;
+    case MCS_IO_KIND_MOMENT: return ((const mcs_moment *)acc->obj)->count;
+    case MCS_IO_KIND_AUTOCORR: return ((const mcs_autocorr *)acc->obj)->count;
+    case MCS_IO_KIND_POINTSET: return ((const mcs_pointset *)acc->obj)->count;
+    case MCS_IO_KIND_POINTSET2D: return ((const mcs_pointset2d *)acc->obj)->count;
+    case MCS_IO_KIND_SPECTRUM2D: return ((const mcs_spectrum2d *)acc->obj)->count;
+    default: return ((const mcs_welford *)acc->obj)->count;
+    }
+}
+
+void cli_acc_shape(const cli_acc *acc, size_t shape[2])
+{
+    shape[0] = shape[1] = 0u;
+    switch (acc->kind) {
+    case MCS_IO_KIND_SPECTRUM: shape[0] = ((const mcs_spectrum *)acc->obj)->n; break;
+    case MCS_IO_KIND_MOMENT: shape[0] = ((const mcs_moment *)acc->obj)->n; break;
+    case MCS_IO_KIND_AUTOCORR: shape[0] = ((const mcs_autocorr *)acc->obj)->n; break;
+    case MCS_IO_KIND_POINTSET: shape[0] = ((const mcs_pointset *)acc->obj)->freq_max; break;
+    case MCS_IO_KIND_POINTSET2D: shape[0] = ((const mcs_pointset2d *)acc->obj)->freq_max; break;
+    case MCS_IO_KIND_SPECTRUM2D:
+        shape[0] = ((const mcs_spectrum2d *)acc->obj)->n_x;
+        shape[1] = ((const mcs_spectrum2d *)acc->obj)->n_y;
+        break;
+    default: break;
+    }
+}
+
+const char *cli_acc_describe(const cli_acc *acc, char *buf, size_t size)
+{
+    size_t shape[2];
+    cli_acc_shape(acc, shape);
+    const char *kind = mcs_io_kind_str(acc->kind);
+    const char *a = kind[0] == 'a' ? "an" : "a"; /* "an autocorr record" */
+    if (acc->kind == MCS_IO_KIND_WELFORD)
+        snprintf(buf, size, "%s %s record", a, kind);
+    else if (acc->kind == MCS_IO_KIND_POINTSET || acc->kind == MCS_IO_KIND_POINTSET2D)
+        snprintf(buf, size, "%s %s record of F = %zu", a, kind, shape[0]);
+    else if (acc->kind == MCS_IO_KIND_SPECTRUM2D)
+        snprintf(buf, size, "%s %s record of %zu x %zu bins", a, kind, shape[0], shape[1]);
+    else
+        snprintf(buf, size, "%s %s record of N = %zu", a, kind, shape[0]);
+    return buf;
+}
+
+/* The whole file into a new buffer. */
+static int read_file(const char *cmd, const char *path, unsigned char **buf, size_t *len)
+{
+    FILE *fp = fopen(path, "rb");
+    if (fp == NULL)
+        return cli_fail(cmd, "cannot read %s: %s", path, strerror(errno));
+    size_t cap = 1u << 16, used = 0u;
+    unsigned char *p = malloc(cap);
+    while (p != NULL) {
+        used += fread(p + used, 1u, cap - used, fp);
+        if (used < cap || cap >= RECORD_FILE_MAX)
+            break;
+        unsigned char *q = realloc(p, cap * 2u);
+        if (q == NULL)
+            free(p);
+        p = q;
+        cap *= 2u;
+    }
+    int bad = p == NULL || ferror(fp) || (used == cap && cap >= RECORD_FILE_MAX);
+    int err = errno;
+    fclose(fp);
+    if (bad) {
+        free(p);
+        if (p == NULL)
+            return cli_internal(cmd, "out of memory reading %s", path);
+        return cli_fail(cmd, "cannot read %s: %s", path,
+                        used == cap ? "larger than any record" : strerror(err));
+    }
+    *buf = p;
+    *len = used;
+    return 0;
+}
+
+/* One line saying what is wrong with the record of path. */
+static int record_error(const char *cmd, const char *path, mcs_status st, const mcs_io_info *info)
+{
+    switch (st) {
+    case MCS_ERR_MAGIC: return cli_fail(cmd, "%s: not an mcspec record", path);
+    case MCS_ERR_TRUNCATED:
+        return cli_fail(cmd, "%s: truncated (shorter than its header says)", path);
+    case MCS_ERR_VERSION:
+        return cli_fail(cmd, "%s: a record of another format version; this build reads "
+                        "version %u", path, (unsigned)MCS_IO_VERSION);
+    case MCS_ERR_FORMAT:
+        return cli_fail(cmd, "%s: malformed record (its lengths do not fit its kind)", path);
+    case MCS_ERR_CHECKSUM: return cli_fail(cmd, "%s: checksum mismatch (corrupted)", path);
+    case MCS_ERR_KIND:
+        return cli_fail(cmd, "%s: record kind %u, unknown to this build", path,
+                        (unsigned)info->kind);
+    case MCS_ERR_N_RANGE:
+    case MCS_ERR_FREQ_RANGE:
+        return cli_fail(cmd, "%s: a %s record of size %llu%s, beyond this build's capacity "
+                        "(MCS_MAX_* in docs/format.md)", path, mcs_io_kind_str(info->kind),
+                        (unsigned long long)info->shape[0], info->shape_len > 1u ? " x ..." : "");
+    case MCS_ERR_NOT_FINITE: return cli_fail(cmd, "%s: holds a NaN or infinite value", path);
+    case MCS_ERR_INVARIANT:
+        return cli_fail(cmd, "%s: holds values no accumulation produces (negative spread, data "
+                        "with no trials, a count above 2^53 or a value above 2^500)", path);
+    default: return cli_fail(cmd, "%s: cannot load: %s", path, mcs_status_str(st));
+    }
+}
+
+int cli_acc_read(const char *cmd, const char *path, cli_acc *acc)
+{
+    unsigned char *buf = NULL;
+    size_t len = 0u;
+    int rc = read_file(cmd, path, &buf, &len);
+    if (rc != 0)
+        return rc;
+    mcs_io_info info;
+    memset(&info, 0, sizeof info);
+    mcs_status st = mcs_io_peek(len, buf, &info);
+    const kind_ops *ops = st == MCS_OK ? ops_of(info.kind) : NULL;
+    if (st == MCS_OK && ops == NULL)
+        st = MCS_ERR_KIND;
+    void *obj = st == MCS_OK ? cli_alloc(cmd, 1, ops->size) : NULL;
+    if (st == MCS_OK && obj == NULL) {
+        free(buf);
+        return CLI_EXIT_FAIL;
+    }
+    if (st == MCS_OK)
+        st = ops->load(obj, len, buf);
+    free(buf);
+    if (st != MCS_OK) {
+        free(obj);
+        return record_error(cmd, path, st, &info);
+    }
+    acc->kind = ops->kind;
+    acc->obj = obj;
+    return 0;
+}
+
+int cli_acc_save(const char *cmd, const cli_acc *acc, unsigned char **buf, size_t *len)
+{
+    const kind_ops *ops = ops_of(acc->kind);
+    size_t need = 0u;
+    mcs_status st = ops != NULL ? ops->save(acc->obj, 0u, NULL, &need) : MCS_ERR_KIND;
+    if (st == MCS_ERR_NOT_FINITE || st == MCS_ERR_INVARIANT)
+        return cli_fail(cmd, "cannot save: the accumulator overflowed (%s)", mcs_status_str(st));
+    if (st != MCS_OK)
+        return cli_internal(cmd, "saving the accumulator failed: %s", mcs_status_str(st));
+    unsigned char *p = cli_alloc(cmd, 1, need);
+    if (p == NULL)
+        return CLI_EXIT_FAIL;
+    st = ops->save(acc->obj, need, p, len);
+    if (st != MCS_OK) {
+        free(p);
+        return cli_internal(cmd, "saving the accumulator failed: %s", mcs_status_str(st));
+    }
+    *buf = p;
+    return 0;
+}
+
+int cli_acc_write(const char *cmd, const char *path, const cli_acc *acc)
+{
+    unsigned char *buf = NULL;
+    size_t len = 0u;
+    int rc = cli_acc_save(cmd, acc, &buf, &len);
+    if (rc == 0)
+        rc = cli_write_atomic(cmd, path, buf, len);
+    free(buf);
+    return rc;
+}
+
+int cli_acc_same(const cli_acc *a, const cli_acc *b)
+{
+    size_t sa[2], sb[2];
+    cli_acc_shape(a, sa);
+    cli_acc_shape(b, sb);
+    return a->kind == b->kind && sa[0] == sb[0] && sa[1] == sb[1];
+}
+
+int cli_acc_merge(const char *cmd, cli_acc *dst, const cli_acc *src, const char *what)
+{
+    char da[96], db[96];
+    if (!cli_acc_same(dst, src))
+        return cli_fail(cmd, "%s holds %s, the others %s: cannot merge", what,
+                        cli_acc_describe(src, da, sizeof da), cli_acc_describe(dst, db, sizeof db));
+    if (cli_acc_count(dst) + cli_acc_count(src) > MCS_IO_MAX_COUNT)
+        return cli_fail(cmd, "merging %s would pass 2^53 trials", what);
+    mcs_status st = ops_of(dst->kind)->merge(dst->obj, src->obj);
+    if (st != MCS_OK)
+        return cli_internal(cmd, "merging %s failed: %s", what, mcs_status_str(st));
+    return 0;
+}
+
+int cli_tree_push(const char *cmd, cli_merge_tree *tree, cli_acc *acc, const char *what)
+{
+    if (tree->depth == sizeof tree->level / sizeof tree->level[0]) {
+        cli_acc_free(acc);
+        return cli_internal(cmd, "merge tree full");
+    }
+    tree->level[tree->depth] = *acc;
+    tree->leaves[tree->depth] = 1u;
+    tree->depth += 1u;
+    acc->obj = NULL;
+    /* Carry: two equal subtrees side by side become one, left absorbs right. */
+    while (tree->depth >= 2u && tree->leaves[tree->depth - 1u] == tree->leaves[tree->depth - 2u]) {
+        cli_acc *left = &tree->level[tree->depth - 2u], *right = &tree->level[tree->depth - 1u];
+        int rc = cli_acc_merge(cmd, left, right, what);
+        cli_acc_free(right);
+        tree->depth -= 1u;
+        if (rc != 0)
+            return rc;
+        tree->leaves[tree->depth - 1u] *= 2u;
+    }
+    return 0;
+}
+
+int cli_tree_finish(const char *cmd, cli_merge_tree *tree, cli_acc *out)
+{
+    int rc = tree->depth == 0u ? cli_internal(cmd, "nothing to merge") : 0;
+    while (rc == 0 && tree->depth >= 2u) {
+        cli_acc *left = &tree->level[tree->depth - 2u], *right = &tree->level[tree->depth - 1u];
+        rc = cli_acc_merge(cmd, left, right, "the last inputs");
+        cli_acc_free(right);
+        tree->depth -= 1u;
+    }
+    if (rc != 0) {
+        cli_tree_free(tree);
+        out->obj = NULL;
+        return rc;
+    }
+    *out = tree->level[0];
+    tree->level[0].obj = NULL;
+    tree->depth = 0u;
+    return 0;
+}
+
+void cli_tree_free(cli_merge_tree *tree)
+{
+    for (size_t i = 0; i < tree->depth; ++i)
+        cli_acc_free(&tree->level[i]);
+    tree->depth = 0u;
+}

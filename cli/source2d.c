@@ -1,0 +1,154 @@
+/* The named 2D point sources (see source2d.h). */
+#include "source2d.h"
+#include "cli.h"
+#include "output.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* The 2D pattern kind named name, or -1. */
+static int pattern_kind(const char *name)
+{
+    for (int i = 0; i < MCS_PATTERN2D_KIND_COUNT; ++i)
+        if (strcmp(name, mcs_pattern2d_kind_str((mcs_pattern2d_kind)i)) == 0)
+            return i;
+    return -1;
+}
+
+/* The sampler kind named name that exists in 2D, or -1. */
+static int sampler_kind(const char *name)
+{
+    for (int i = 0; i < MCS_SAMPLER_KIND_COUNT; ++i)
+        if (strcmp(name, mcs_sampler_kind_str((mcs_sampler_kind)i)) == 0 &&
+            mcs_sampler_has_dim((mcs_sampler_kind)i, 2u))
+            return i;
+    return -1;
+}
+
+int cli_source2d_known(const char *name)
+{
+    return pattern_kind(name) >= 0 || sampler_kind(name) >= 0;
+}
+
+/* Sobol points are Owen-scrambled, not rotated: no fixed periodogram. */
+static int has_base(const cli_source2d *src)
+{
+    return src->is_sampler && src->sampler.kind != MCS_SAMPLER_SOBOL;
+}
+
+/* One trial of the unrandomised set into src->base. */
+static int measure_base(const char *cmd, cli_source2d *src, size_t freq)
+{
+    double *pts = cli_alloc(cmd, 2u * src->k, sizeof *pts);
+    src->base = cli_alloc(cmd, 1, sizeof *src->base);
+    if (pts == NULL || src->base == NULL) {
+        free(pts);
+        return CLI_EXIT_FAIL;
+    }
+    mcs_status st = mcs_sampler_base_points(&src->sampler, src->k, pts);
+    if (st == MCS_OK)
+        st = mcs_pointset2d_init(src->base, freq);
+    if (st == MCS_OK)
+        st = mcs_pointset2d_add(src->base, src->k, pts);
+    free(pts);
+    if (st != MCS_OK)
+        return cli_internal(cmd, "the unrandomised %s set: %s", src->name, mcs_status_str(st));
+    return 0;
+}
+
+int cli_source2d_init(const char *cmd, const char *name, size_t k, size_t freq,
+                      cli_source2d *src)
+{
+    memset(src, 0, sizeof *src);
+    src->name = name;
+    src->k = k;
+    const int pk = pattern_kind(name), sk = sampler_kind(name);
+    mcs_status st = MCS_ERR_KIND;
+    if (pk >= 0) {
+        st = mcs_pattern2d_init(&src->pattern, (mcs_pattern2d_kind)pk, k, 0u, 0u);
+    } else if (sk >= 0) {
+        src->is_sampler = 1;
+        st = mcs_sampler_init(&src->sampler, (mcs_sampler_kind)sk, 2u, k);
+    }
+    if (st == MCS_ERR_KIND)
+        return cli_fail(cmd, "unknown 2D pattern '%s' (%s)", name, CLI_SOURCE2D_NAMES);
+    if (st != MCS_OK)
+        return cli_fail(cmd, "cannot set up %s with K = %zu: %s", name, k, mcs_status_str(st));
+    return has_base(src) ? measure_base(cmd, src, freq) : 0;
+}
+
+void cli_source2d_free(cli_source2d *src)
+{
+    free(src->base);
+    src->base = NULL;
+}
+
+const char *cli_source2d_exact_source(const cli_source2d *src)
+{
+    if (has_base(src))
+        return "unrandomised set";
+    if (src->is_sampler || src->pattern.kind == MCS_PATTERN2D_MULTI_JITTERED ||
+        src->pattern.kind == MCS_PATTERN2D_CMJ)
+        return "";
+    return "closed form";
+}
+
+int cli_source2d_uses_strata(const cli_source2d *src)
+{
+    return !src->is_sampler && src->pattern.kind != MCS_PATTERN2D_RANDOM &&
+           src->pattern.kind != MCS_PATTERN2D_NROOKS;
+}
+
+static double exact_at(const void *ctx, long kx, long ky)
+{
+    const cli_source2d *src = ctx;
+    double v = 0.0;
+    if (has_base(src))
+        return cli_or_nan(mcs_pointset2d_power(src->base, kx, ky, &v), &v);
+    if (src->is_sampler)
+        return (double)NAN;
+    return cli_or_nan(mcs_pointset2d_exact_power(&src->pattern, kx, ky, &v), &v);
+}
+
+static double exact_radial(const void *ctx, size_t r)
+{
+    const cli_source2d *src = ctx;
+    double v = 0.0;
+    if (has_base(src))
+        return cli_or_nan(mcs_pointset2d_radial(src->base, r, &v), &v);
+    if (src->is_sampler)
+        return (double)NAN;
+    return cli_or_nan(mcs_pointset2d_exact_radial(&src->pattern, r, &v), &v);
+}
+
+void cli_source2d_exact(const cli_source2d *src, cli_exact2d *out)
+{
+    out->ctx = src;
+    out->at = exact_at;
+    out->radial = exact_radial;
+    out->scale = (double)src->k;
+}
+
+int cli_source2d_run(const char *cmd, const void *source, uint64_t seed, uint64_t stream,
+                     uint64_t first, uint64_t last, void *acc, cli_progress *progress)
+{
+    const cli_source2d *src = source;
+    double *pts = cli_alloc(cmd, 2u * src->k, sizeof *pts);
+    if (pts == NULL)
+        return CLI_EXIT_FAIL;
+    mcs_rng rng;
+    mcs_status st = mcs_rng_seed(&rng, seed, stream);
+    for (uint64_t t = first; st == MCS_OK && t < last; ++t) {
+        st = src->is_sampler ? mcs_sampler_draw(&src->sampler, &rng, src->k, pts)
+                             : mcs_pattern2d_draw(&src->pattern, &rng, src->k, pts);
+        if (st == MCS_OK)
+            st = mcs_pointset2d_add(acc, src->k, pts);
+        if (progress != NULL)
+            cli_progress_update(progress, t + 1u);
+    }
+    free(pts);
+    if (st != MCS_OK)
+        return cli_internal(cmd, "a trial failed: %s", mcs_status_str(st));
+    return 0;
+}

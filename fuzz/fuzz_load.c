@@ -1,0 +1,336 @@
+/* libFuzzer target for the record loader (mk/fuzz.mk: make fuzz, make fuzz-ci).
+ *
+ * Every input is offered to the loader of every kind, each time into a
+ * destination holding a known, different accumulator. The harness aborts
+ * (a finding) unless, for each kind, either
+ * - the load fails with one of the documented record statuses, agrees with
+ *   mcs_io_peek on framing errors, and leaves the destination byte-identical; or
+ * - the load succeeds, the loaded object saves back to exactly the input
+ *   bytes, and every read-out it offers is finite.
+ * Each input is checked twice: as given, and with its last four bytes
+ * replaced by the right CRC-32, so that mutations get past the checksum and
+ * reach the kind, shape and value checks (otherwise almost every mutant
+ * stops at MCS_ERR_CHECKSUM). ASan and UBSan (the build flags) catch reads
+ * past the input and undefined arithmetic on the way. */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "mcspec.h"
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+static mcs_spectrum spec, spec_pristine;
+static mcs_moment mom, mom_pristine;
+static mcs_autocorr ac, ac_pristine;
+static mcs_welford wf, wf_pristine;
+static mcs_pointset ps, ps_pristine;
+static mcs_pointset2d ps2, ps2_pristine;
+static mcs_spectrum2d sp2, sp2_pristine;
+static mcs_dft plan;
+static uint8_t saved[1u << 18]; /* above any record of the default capacities (85 KB) */
+static double re[MCS_MAX_N], im[MCS_MAX_N];
+static double mat_re[MCS_MAX_COV_N * MCS_MAX_COV_N], mat_im[MCS_MAX_COV_N * MCS_MAX_COV_N];
+
+static void finding(const char *kind, const char *what)
+{
+    fprintf(stderr, "fuzz_load: %s: %s\n", kind, what);
+    abort();
+}
+
+static void ok_or_die(mcs_status st, const char *kind, const char *what)
+{
+    if (st != MCS_OK) {
+        fprintf(stderr, "fuzz_load: %s: %s returned %s\n", kind, what, mcs_status_str(st));
+        abort();
+    }
+}
+
+static void finite_or_die(double v, const char *kind, const char *what)
+{
+    if (!isfinite(v)) {
+        fprintf(stderr, "fuzz_load: %s: %s is %g\n", kind, what, v);
+        abort();
+    }
+}
+
+static void setup_once(void)
+{
+    static int ready;
+    if (ready)
+        return;
+    const size_t bins[3] = {1u, 4u, 4u};
+    const double w[3] = {0.5, 2.0, 1.25};
+    ok_or_die(mcs_spectrum_init(&spec_pristine, 9u), "setup", "spectrum init");
+    ok_or_die(mcs_spectrum_add_bins(&spec_pristine, 3u, bins, w), "setup", "spectrum add");
+    ok_or_die(mcs_moment_init(&mom_pristine, 6u), "setup", "moment init");
+    ok_or_die(mcs_moment_add_bins(&mom_pristine, 3u, bins, w), "setup", "moment add");
+    ok_or_die(mcs_autocorr_init(&ac_pristine, 11u), "setup", "autocorr init");
+    ok_or_die(mcs_autocorr_add_bins(&ac_pristine, 3u, bins, w), "setup", "autocorr add");
+    ok_or_die(mcs_welford_init(&wf_pristine), "setup", "welford init");
+    ok_or_die(mcs_welford_add(&wf_pristine, 3.5), "setup", "welford add");
+    const double pts[4] = {0.125, 0.5, 0.75, 0.375};
+    ok_or_die(mcs_pointset_init(&ps_pristine, 5u), "setup", "pointset init");
+    ok_or_die(mcs_pointset_add(&ps_pristine, 4u, pts), "setup", "pointset add");
+    ok_or_die(mcs_pointset2d_init(&ps2_pristine, 3u), "setup", "pointset2d init");
+    ok_or_die(mcs_pointset2d_add(&ps2_pristine, 2u, pts), "setup", "pointset2d add");
+    ok_or_die(mcs_spectrum2d_init(&sp2_pristine, 3u, 4u), "setup", "spectrum2d init");
+    ok_or_die(mcs_spectrum2d_add_points(&sp2_pristine, 2u, pts, NULL), "setup", "spectrum2d add");
+    ready = 1;
+}
+
+static int is_record_status(mcs_status st)
+{
+    return st == MCS_ERR_MAGIC || st == MCS_ERR_TRUNCATED || st == MCS_ERR_VERSION ||
+           st == MCS_ERR_FORMAT || st == MCS_ERR_CHECKSUM || st == MCS_ERR_KIND ||
+           st == MCS_ERR_N_RANGE || st == MCS_ERR_FREQ_RANGE || st == MCS_ERR_NOT_FINITE ||
+           st == MCS_ERR_INVARIANT;
+}
+
+/* The common half of every kind's check: the status, the untouched
+ * destination, and the save that must give the input back. */
+static int loaded(const char *kind, mcs_status st, mcs_status peek_st, const void *dst,
+                  const void *pristine, size_t obj_size)
+{
+    if (st != MCS_OK) {
+        if (!is_record_status(st))
+            finding(kind, "load failed with a status no record error gives");
+        if (peek_st != MCS_OK && st != peek_st)
+            finding(kind, "load and peek disagree on a framing error");
+        if (memcmp(dst, pristine, obj_size) != 0)
+            finding(kind, "failed load changed the destination");
+        return 0;
+    }
+    if (peek_st != MCS_OK)
+        finding(kind, "load accepted what peek refused");
+    return 1;
+}
+
+static void same_bytes(const char *kind, size_t len, const uint8_t *data, size_t size)
+{
+    if (len != size || memcmp(saved, data, size) != 0)
+        finding(kind, "saving the loaded object does not give the input back");
+}
+
+static void check_spectrum(const uint8_t *data, size_t size, mcs_status peek_st)
+{
+    size_t len = 0u;
+    uint64_t count = 0u;
+    memcpy(&spec, &spec_pristine, sizeof spec);
+    mcs_status st = mcs_io_load_spectrum(&spec, size, data);
+    if (!loaded("spectrum", st, peek_st, &spec, &spec_pristine, sizeof spec))
+        return;
+    ok_or_die(mcs_io_save_spectrum(&spec, sizeof saved, saved, &len), "spectrum", "save");
+    same_bytes("spectrum", len, data, size);
+    ok_or_die(mcs_spectrum_count(&spec, &count), "spectrum", "count");
+    for (size_t f = 0; count >= 1u && f < spec.n; ++f) {
+        double a, b;
+        ok_or_die(mcs_spectrum_mean(&spec, f, &a, &b), "spectrum", "mean");
+        finite_or_die(a, "spectrum", "mean re");
+        finite_or_die(b, "spectrum", "mean im");
+        ok_or_die(mcs_spectrum_power(&spec, f, &a), "spectrum", "power");
+        finite_or_die(a, "spectrum", "power");
+        if (count < 2u)
+            continue;
+        ok_or_die(mcs_spectrum_mean_stderr(&spec, f, &a), "spectrum", "mean stderr");
+        finite_or_die(a, "spectrum", "mean stderr");
+        ok_or_die(mcs_spectrum_power_stderr(&spec, f, &a), "spectrum", "power stderr");
+        finite_or_die(a, "spectrum", "power stderr");
+    }
+}
+
+static void check_moment(const uint8_t *data, size_t size, mcs_status peek_st)
+{
+    size_t len = 0u;
+    memcpy(&mom, &mom_pristine, sizeof mom);
+    mcs_status st = mcs_io_load_moment(&mom, size, data);
+    if (!loaded("moment", st, peek_st, &mom, &mom_pristine, sizeof mom))
+        return;
+    ok_or_die(mcs_io_save_moment(&mom, sizeof saved, saved, &len), "moment", "save");
+    same_bytes("moment", len, data, size);
+    if (mom.count == 0u)
+        return;
+    const size_t n = mom.n;
+    for (size_t b = 0; b < n; ++b) {
+        double a, c;
+        ok_or_die(mcs_moment_bin_mean(&mom, b, &a), "moment", "bin mean");
+        finite_or_die(a, "moment", "bin mean");
+        ok_or_die(mcs_moment_mean(&mom, b, &a, &c), "moment", "mean");
+        finite_or_die(a, "moment", "spectrum mean re");
+        finite_or_die(c, "moment", "spectrum mean im");
+        ok_or_die(mcs_moment_power(&mom, b, &a), "moment", "power");
+        finite_or_die(a, "moment", "power");
+        for (size_t c2 = 0; c2 < n; ++c2) {
+            ok_or_die(mcs_moment_bin_second(&mom, b, c2, &a), "moment", "bin second");
+            finite_or_die(a, "moment", "second");
+        }
+    }
+    ok_or_die(mcs_moment_covariance_matrix(&mom, n, mat_re, mat_im), "moment", "covariance");
+    for (size_t j = 0; j < n * n; ++j) {
+        finite_or_die(mat_re[j], "moment", "covariance re");
+        finite_or_die(mat_im[j], "moment", "covariance im");
+    }
+    ok_or_die(mcs_moment_cross_matrix(&mom, n, mat_re, mat_im), "moment", "cross");
+    for (size_t j = 0; j < n * n; ++j) {
+        finite_or_die(mat_re[j], "moment", "cross re");
+        finite_or_die(mat_im[j], "moment", "cross im");
+    }
+}
+
+static void check_autocorr(const uint8_t *data, size_t size, mcs_status peek_st)
+{
+    size_t len = 0u;
+    memcpy(&ac, &ac_pristine, sizeof ac);
+    mcs_status st = mcs_io_load_autocorr(&ac, size, data);
+    if (!loaded("autocorr", st, peek_st, &ac, &ac_pristine, sizeof ac))
+        return;
+    ok_or_die(mcs_io_save_autocorr(&ac, sizeof saved, saved, &len), "autocorr", "save");
+    same_bytes("autocorr", len, data, size);
+    if (ac.count == 0u)
+        return;
+    const size_t n = ac.n;
+    ok_or_die(mcs_dft_init(&plan, n), "autocorr", "plan");
+    ok_or_die(mcs_autocorr_mean(&ac, &plan, n, re, im), "autocorr", "mean");
+    for (size_t f = 0; f < n; ++f) {
+        finite_or_die(re[f], "autocorr", "mean re");
+        finite_or_die(im[f], "autocorr", "mean im");
+    }
+    ok_or_die(mcs_autocorr_power(&ac, &plan, n, re), "autocorr", "power");
+    for (size_t f = 0; f < n; ++f)
+        finite_or_die(re[f], "autocorr", "power");
+}
+
+static void check_welford(const uint8_t *data, size_t size, mcs_status peek_st)
+{
+    size_t len = 0u;
+    memcpy(&wf, &wf_pristine, sizeof wf);
+    mcs_status st = mcs_io_load_welford(&wf, size, data);
+    if (!loaded("welford", st, peek_st, &wf, &wf_pristine, sizeof wf))
+        return;
+    ok_or_die(mcs_io_save_welford(&wf, sizeof saved, saved, &len), "welford", "save");
+    same_bytes("welford", len, data, size);
+    double v;
+    if (wf.count >= 1u) {
+        ok_or_die(mcs_welford_mean(&wf, &v), "welford", "mean");
+        finite_or_die(v, "welford", "mean");
+    }
+    if (wf.count >= 2u) {
+        ok_or_die(mcs_welford_variance(&wf, &v), "welford", "variance");
+        finite_or_die(v, "welford", "variance");
+        ok_or_die(mcs_welford_stderr(&wf, &v), "welford", "stderr");
+        finite_or_die(v, "welford", "stderr");
+    }
+    if (wf.count >= 4u) {
+        ok_or_die(mcs_welford_variance_stderr(&wf, &v), "welford", "variance stderr");
+        finite_or_die(v, "welford", "variance stderr");
+    }
+}
+
+/* A read-out that succeeds must be finite (one that refuses is fine). v is a
+ * pointer: the read-out writing it is another argument of the same call,
+ * and C leaves the order in which arguments are evaluated open. */
+static void finite_if_ok(mcs_status st, const double *v, const char *kind, const char *what)
+{
+    if (st == MCS_OK)
+        finite_or_die(*v, kind, what);
+}
+
+static void check_pointset(const uint8_t *data, size_t size, mcs_status peek_st)
+{
+    size_t len = 0u;
+    memcpy(&ps, &ps_pristine, sizeof ps);
+    mcs_status st = mcs_io_load_pointset(&ps, size, data);
+    if (!loaded("pointset", st, peek_st, &ps, &ps_pristine, sizeof ps))
+        return;
+    ok_or_die(mcs_io_save_pointset(&ps, sizeof saved, saved, &len), "pointset", "save");
+    same_bytes("pointset", len, data, size);
+    for (long f = -(long)ps.freq_max; f <= (long)ps.freq_max; ++f) {
+        double v = 0.0;
+        finite_if_ok(mcs_pointset_power(&ps, f, &v), &v, "pointset", "power");
+        finite_if_ok(mcs_pointset_power_stderr(&ps, f, &v), &v, "pointset", "power stderr");
+    }
+}
+
+static void check_pointset2d(const uint8_t *data, size_t size, mcs_status peek_st)
+{
+    size_t len = 0u;
+    memcpy(&ps2, &ps2_pristine, sizeof ps2);
+    mcs_status st = mcs_io_load_pointset2d(&ps2, size, data);
+    if (!loaded("pointset2d", st, peek_st, &ps2, &ps2_pristine, sizeof ps2))
+        return;
+    ok_or_die(mcs_io_save_pointset2d(&ps2, sizeof saved, saved, &len), "pointset2d", "save");
+    same_bytes("pointset2d", len, data, size);
+    const long f = (long)ps2.freq_max;
+    for (long fy = -f; fy <= f; ++fy)
+        for (long fx = -f; fx <= f; ++fx) {
+            double v = 0.0;
+            finite_if_ok(mcs_pointset2d_power(&ps2, fx, fy, &v), &v, "pointset2d", "power");
+            finite_if_ok(mcs_pointset2d_power_stderr(&ps2, fx, fy, &v), &v, "pointset2d",
+                         "power stderr");
+        }
+    for (size_t r = 0; r <= ps2.freq_max; ++r) {
+        double v = 0.0;
+        finite_if_ok(mcs_pointset2d_radial(&ps2, r, &v), &v, "pointset2d", "radial");
+        finite_if_ok(mcs_pointset2d_radial_stderr(&ps2, r, &v), &v, "pointset2d", "radial stderr");
+        finite_if_ok(mcs_pointset2d_anisotropy(&ps2, r, &v), &v, "pointset2d", "anisotropy");
+    }
+}
+
+static void check_spectrum2d(const uint8_t *data, size_t size, mcs_status peek_st)
+{
+    size_t len = 0u;
+    memcpy(&sp2, &sp2_pristine, sizeof sp2);
+    mcs_status st = mcs_io_load_spectrum2d(&sp2, size, data);
+    if (!loaded("spectrum2d", st, peek_st, &sp2, &sp2_pristine, sizeof sp2))
+        return;
+    ok_or_die(mcs_io_save_spectrum2d(&sp2, sizeof saved, saved, &len), "spectrum2d", "save");
+    same_bytes("spectrum2d", len, data, size);
+    for (size_t k2 = 0; k2 < sp2.n_y; ++k2)
+        for (size_t k1 = 0; k1 < sp2.n_x; ++k1) {
+            double a = 0.0, b = 0.0;
+            st = mcs_spectrum2d_mean(&sp2, k1, k2, &a, &b);
+            finite_if_ok(st, &a, "spectrum2d", "mean re");
+            finite_if_ok(st, &b, "spectrum2d", "mean im");
+            finite_if_ok(mcs_spectrum2d_power(&sp2, k1, k2, &a), &a, "spectrum2d", "power");
+            finite_if_ok(mcs_spectrum2d_power_stderr(&sp2, k1, k2, &a), &a, "spectrum2d",
+                         "power stderr");
+            finite_if_ok(mcs_spectrum2d_mean_stderr(&sp2, k1, k2, &a), &a, "spectrum2d",
+                         "mean stderr");
+        }
+}
+
+static void check_all(const uint8_t *data, size_t size)
+{
+    mcs_io_info info;
+    const mcs_status peek_st = mcs_io_peek(size, data, &info);
+    if (peek_st == MCS_OK && info.size != size)
+        finding("peek", "record size is not the input size");
+    check_spectrum(data, size, peek_st);
+    check_moment(data, size, peek_st);
+    check_autocorr(data, size, peek_st);
+    check_welford(data, size, peek_st);
+    check_pointset(data, size, peek_st);
+    check_pointset2d(data, size, peek_st);
+    check_spectrum2d(data, size, peek_st);
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    static const uint8_t empty[1];
+    static uint8_t fixed[1u << 16];
+    setup_once();
+    if (data == NULL) /* libFuzzer may pass NULL with size 0; the API wants a buffer */
+        data = empty;
+    check_all(data, size);
+    if (size >= (size_t)MCS_IO_HEADER_BYTES + MCS_IO_CRC_BYTES && size <= sizeof fixed) {
+        uint32_t crc = 0u;
+        memcpy(fixed, data, size);
+        ok_or_die(mcs_io_crc32(size - 4u, fixed, &crc), "harness", "crc32");
+        for (size_t i = 0; i < 4u; ++i)
+            fixed[size - 4u + i] = (uint8_t)(crc >> (8u * i));
+        check_all(fixed, size);
+    }
+    return 0;
+}

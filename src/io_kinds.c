@@ -1,0 +1,253 @@
+/* The binned 1D accumulator kinds of the record format (docs/format.md):
+ * spectrum, moment, autocorr and welford (the point-set and 2D ones are in
+ * io_points.c). For each, its layout (payload length and value rules for a
+ * shape), the emit function that lists its values in payload order, and the
+ * load that decodes them in the same order into a freshly initialised object.
+ *
+ * Adding a kind: a new mcs_io_kind number, a layout, an emit, a load and the
+ * two public wrappers, as below; the framing, checksum and value checks of
+ * io.c need no change, nor does the version. */
+#include "io_internal.h"
+
+#include <string.h>
+
+/* One shape word N, 1 <= N <= max_n. */
+static mcs_status layout_n(uint32_t kind, uint64_t n, uint64_t max_n, io_layout *lay)
+{
+    if (n == 0u || n > max_n)
+        return MCS_ERR_N_RANGE;
+    mcs_io_layout_start(lay, kind, 1u, &n);
+    return MCS_OK;
+}
+
+/* ---- spectrum: five half spectra k = 0..N/2 ---- */
+
+static mcs_status layout_spectrum(const uint64_t *shape, io_layout *lay)
+{
+    mcs_status st = layout_n(MCS_IO_KIND_SPECTRUM, shape[0], MCS_MAX_N, lay);
+    if (st != MCS_OK)
+        return st;
+    const size_t h1 = (size_t)shape[0] / 2u + 1u;
+    mcs_io_add_range(lay, 2u * h1, 0u);                          /* mean_re, mean_im */
+    mcs_io_add_range(lay, h1, IO_RULE_NONNEG | IO_RULE_SPREAD);  /* m2_s */
+    mcs_io_add_range(lay, h1, IO_RULE_NONNEG);                   /* mean_pow */
+    mcs_io_add_range(lay, h1, IO_RULE_NONNEG | IO_RULE_SPREAD);  /* m2_pow */
+    return MCS_OK;
+}
+
+static void emit_spectrum(const void *obj, io_sink *sink)
+{
+    const mcs_spectrum *acc = (const mcs_spectrum *)obj;
+    const size_t h1 = acc->n / 2u + 1u;
+    mcs_io_put_array(sink, acc->mean_re, h1);
+    mcs_io_put_array(sink, acc->mean_im, h1);
+    mcs_io_put_array(sink, acc->m2_s, h1);
+    mcs_io_put_array(sink, acc->mean_pow, h1);
+    mcs_io_put_array(sink, acc->m2_pow, h1);
+}
+
+mcs_status mcs_io_save_spectrum(const mcs_spectrum *acc, size_t cap, void *buf, size_t *len)
+{
+    uint64_t count;
+    io_layout lay;
+    if (acc == NULL || len == NULL)
+        return MCS_ERR_NULL;
+    mcs_status st = mcs_spectrum_count(acc, &count); /* MCS_ERR_UNINIT */
+    if (st != MCS_OK)
+        return st;
+    const uint64_t n = acc->n;
+    (void)layout_spectrum(&n, &lay); /* cannot fail: acc->n is in range */
+    const io_source src = {acc, emit_spectrum, count};
+    return mcs_io_save_record(&lay, &src, cap, buf, len);
+}
+
+static const io_kind kind_spectrum = {MCS_IO_KIND_SPECTRUM, 1u, layout_spectrum};
+
+mcs_status mcs_io_load_spectrum(mcs_spectrum *acc, size_t len, const void *buf)
+{
+    io_record rec;
+    if (acc == NULL || buf == NULL)
+        return MCS_ERR_NULL;
+    mcs_status st = mcs_io_load_check(&kind_spectrum, len, buf, &rec);
+    if (st != MCS_OK)
+        return st;
+    st = mcs_spectrum_init(acc, (size_t)rec.lay.shape[0]); /* leaves acc as it was on error */
+    if (st != MCS_OK)
+        return st;
+    const uint8_t *pl = rec.payload;
+    const size_t h1 = (size_t)rec.lay.shape[0] / 2u + 1u;
+    mcs_io_get_array(acc->mean_re, pl, 0u, h1);
+    mcs_io_get_array(acc->mean_im, pl, h1, h1);
+    mcs_io_get_array(acc->m2_s, pl, 2u * h1, h1);
+    mcs_io_get_array(acc->mean_pow, pl, 3u * h1, h1);
+    mcs_io_get_array(acc->m2_pow, pl, 4u * h1, h1);
+    acc->count = rec.count;
+    return MCS_OK;
+}
+
+/* ---- moment: sum_s[N], then the upper triangle of sum_ss row by row ---- */
+
+static mcs_status layout_moment(const uint64_t *shape, io_layout *lay)
+{
+    mcs_status st = layout_n(MCS_IO_KIND_MOMENT, shape[0], MCS_MAX_COV_N, lay);
+    if (st != MCS_OK)
+        return st;
+    const size_t n = (size_t)shape[0];
+    /* Weights are >= 0, so every sum of weights or of their products is too. */
+    mcs_io_add_range(lay, n + n * (n + 1u) / 2u, IO_RULE_NONNEG);
+    return MCS_OK;
+}
+
+static void emit_moment(const void *obj, io_sink *sink)
+{
+    const mcs_moment *acc = (const mcs_moment *)obj;
+    const size_t n = acc->n;
+    mcs_io_put_array(sink, acc->sum_s, n);
+    for (size_t m = 0; m < n; ++m)
+        mcs_io_put_array(sink, acc->sum_ss + m * n + m, n - m);
+}
+
+mcs_status mcs_io_save_moment(const mcs_moment *acc, size_t cap, void *buf, size_t *len)
+{
+    uint64_t count;
+    io_layout lay;
+    if (acc == NULL || len == NULL)
+        return MCS_ERR_NULL;
+    mcs_status st = mcs_moment_count(acc, &count);
+    if (st != MCS_OK)
+        return st;
+    const uint64_t n = acc->n;
+    (void)layout_moment(&n, &lay);
+    const io_source src = {acc, emit_moment, count};
+    return mcs_io_save_record(&lay, &src, cap, buf, len);
+}
+
+static const io_kind kind_moment = {MCS_IO_KIND_MOMENT, 1u, layout_moment};
+
+mcs_status mcs_io_load_moment(mcs_moment *acc, size_t len, const void *buf)
+{
+    io_record rec;
+    if (acc == NULL || buf == NULL)
+        return MCS_ERR_NULL;
+    mcs_status st = mcs_io_load_check(&kind_moment, len, buf, &rec);
+    if (st != MCS_OK)
+        return st;
+    const uint8_t *pl = rec.payload;
+    const size_t n = (size_t)rec.lay.shape[0];
+    st = mcs_moment_init(acc, n);
+    if (st != MCS_OK)
+        return st;
+    mcs_io_get_array(acc->sum_s, pl, 0u, n);
+    size_t at = n;
+    for (size_t m = 0; m < n; ++m) {
+        mcs_io_get_array(acc->sum_ss + m * n + m, pl, at, n - m);
+        at += n - m;
+    }
+    acc->count = rec.count;
+    return MCS_OK;
+}
+
+/* ---- autocorr: sum_s[N], then sum_a for lags 0..N/2 ---- */
+
+static mcs_status layout_autocorr(const uint64_t *shape, io_layout *lay)
+{
+    mcs_status st = layout_n(MCS_IO_KIND_AUTOCORR, shape[0], MCS_MAX_N, lay);
+    if (st != MCS_OK)
+        return st;
+    const size_t n = (size_t)shape[0];
+    mcs_io_add_range(lay, n + n / 2u + 1u, IO_RULE_NONNEG);
+    return MCS_OK;
+}
+
+static void emit_autocorr(const void *obj, io_sink *sink)
+{
+    const mcs_autocorr *acc = (const mcs_autocorr *)obj;
+    mcs_io_put_array(sink, acc->sum_s, acc->n);
+    mcs_io_put_array(sink, acc->sum_a, acc->n / 2u + 1u);
+}
+
+mcs_status mcs_io_save_autocorr(const mcs_autocorr *acc, size_t cap, void *buf, size_t *len)
+{
+    uint64_t count;
+    io_layout lay;
+    if (acc == NULL || len == NULL)
+        return MCS_ERR_NULL;
+    mcs_status st = mcs_autocorr_count(acc, &count);
+    if (st != MCS_OK)
+        return st;
+    const uint64_t n = acc->n;
+    (void)layout_autocorr(&n, &lay);
+    const io_source src = {acc, emit_autocorr, count};
+    return mcs_io_save_record(&lay, &src, cap, buf, len);
+}
+
+static const io_kind kind_autocorr = {MCS_IO_KIND_AUTOCORR, 1u, layout_autocorr};
+
+mcs_status mcs_io_load_autocorr(mcs_autocorr *acc, size_t len, const void *buf)
+{
+    io_record rec;
+    if (acc == NULL || buf == NULL)
+        return MCS_ERR_NULL;
+    mcs_status st = mcs_io_load_check(&kind_autocorr, len, buf, &rec);
+    if (st != MCS_OK)
+        return st;
+    const uint8_t *pl = rec.payload;
+    const size_t n = (size_t)rec.lay.shape[0];
+    st = mcs_autocorr_init(acc, n);
+    if (st != MCS_OK)
+        return st;
+    mcs_io_get_array(acc->sum_s, pl, 0u, n);
+    mcs_io_get_array(acc->sum_a, pl, n, n / 2u + 1u);
+    acc->count = rec.count;
+    return MCS_OK;
+}
+
+/* ---- welford: mean, m2, m3, m4; no shape ---- */
+
+static mcs_status layout_welford(const uint64_t *shape, io_layout *lay)
+{
+    mcs_io_layout_start(lay, MCS_IO_KIND_WELFORD, 0u, shape);
+    mcs_io_add_range(lay, 1u, 0u);                               /* mean */
+    mcs_io_add_range(lay, 1u, IO_RULE_NONNEG | IO_RULE_SPREAD);  /* m2 */
+    mcs_io_add_range(lay, 1u, IO_RULE_SPREAD);                   /* m3 */
+    mcs_io_add_range(lay, 1u, IO_RULE_NONNEG | IO_RULE_SPREAD);  /* m4 */
+    return MCS_OK;
+}
+
+static void emit_welford(const void *obj, io_sink *sink)
+{
+    const mcs_welford *acc = (const mcs_welford *)obj;
+    mcs_io_sink_put(sink, acc->mean);
+    mcs_io_sink_put(sink, acc->m2);
+    mcs_io_sink_put(sink, acc->m3);
+    mcs_io_sink_put(sink, acc->m4);
+}
+
+mcs_status mcs_io_save_welford(const mcs_welford *acc, size_t cap, void *buf, size_t *len)
+{
+    io_layout lay;
+    if (acc == NULL || len == NULL)
+        return MCS_ERR_NULL;
+    (void)layout_welford(NULL, &lay);
+    const io_source src = {acc, emit_welford, acc->count};
+    return mcs_io_save_record(&lay, &src, cap, buf, len);
+}
+
+static const io_kind kind_welford = {MCS_IO_KIND_WELFORD, 0u, layout_welford};
+
+mcs_status mcs_io_load_welford(mcs_welford *acc, size_t len, const void *buf)
+{
+    io_record rec;
+    if (acc == NULL || buf == NULL)
+        return MCS_ERR_NULL;
+    mcs_status st = mcs_io_load_check(&kind_welford, len, buf, &rec);
+    if (st != MCS_OK)
+        return st;
+    const uint8_t *pl = rec.payload;
+    acc->count = rec.count;
+    acc->mean = mcs_io_get_f64(pl, 0u);
+    acc->m2 = mcs_io_get_f64(pl, 1u);
+    acc->m3 = mcs_io_get_f64(pl, 2u);
+    acc->m4 = mcs_io_get_f64(pl, 3u);
+    return MCS_OK;
+}

@@ -1,0 +1,226 @@
+/* Exact spectra and estimator moments at any N with O(N) memory (see
+ * include/mcspec/theory.h, "Exact spectra at any N"); the covariances are in
+ * src/theory_cov.c. */
+#include "theory_internal.h"
+#include "readout.h"
+
+/* ---- set-up ---------------------------------------------------------------- */
+
+/* The bins as mcs_theory sees them (the same inline arithmetic), and <s_n> as
+ * mcs_theory_init forms it: K L_n / p_n, the uniform pattern's counts over
+ * p_n, the homogenized mean of the stratified ones. */
+static void fill_bins(mcs_theory_spectrum *ts, const mcs_pattern *pat)
+{
+    const size_t n = pat->n;
+    for (size_t b = 0; b <= n; ++b)
+        ts->edge[b] = mcs_theory_edge_(pat, b);
+    for (size_t b = 0; b < n; ++b) {
+        ts->length[b] = mcs_theory_length_(pat, b);
+        ts->inv_p[b] = mcs_theory_inv_p_(pat, b);
+        ts->mean_s[b] = (double)pat->k * ts->length[b] * ts->inv_p[b];
+    }
+    if (pat->kind == MCS_PATTERN_UNIFORM) {
+        for (size_t b = 0; b < n; ++b)
+            ts->mean_s[b] = 0.0;
+        for (size_t j = 0; j < pat->k; ++j)
+            ts->mean_s[mcs_theory_uniform_bin_(pat, j)] += 1.0;
+        for (size_t b = 0; b < n; ++b)
+            ts->mean_s[b] *= ts->inv_p[b];
+    } else if (pat->kind == MCS_PATTERN_HOMOGENIZED) {
+        double mean = 0.0;
+        for (size_t b = 0; b < n; ++b)
+            mean += ts->mean_s[b];
+        mean /= (double)n;
+        for (size_t b = 0; b < n; ++b)
+            ts->mean_s[b] = mean;
+    }
+}
+
+mcs_status mcs_theory_spectrum_init(mcs_theory_spectrum *ts, const mcs_pattern *pat)
+{
+    if (ts == NULL || pat == NULL)
+        return MCS_ERR_NULL;
+    mcs_status st = mcs_theory_check_pattern_(pat, (size_t)MCS_MAX_N);
+    if (st != MCS_OK)
+        return st;
+    ts->kind = pat->kind;
+    ts->k = pat->k;
+    ts->has_importance = pat->importance != NULL;
+    fill_bins(ts, pat);
+    mcs_twiddles_(pat->n, ts->cos_table, ts->sin_table);
+    ts->n = pat->n;
+    if (pat->kind == MCS_PATTERN_JITTER && pat->n >= 2u)
+        mcs_theory_sort_breakpoints_(ts);
+    return MCS_OK;
+}
+
+/* ---- checks ---------------------------------------------------------------- */
+
+/* Outputs given (else NULL), ts set up (else UNINIT). */
+static mcs_status check_ts(int outputs, const mcs_theory_spectrum *ts)
+{
+    if (!outputs || ts == NULL)
+        return MCS_ERR_NULL;
+    if (ts->n == 0u || ts->n > (size_t)MCS_MAX_N || ts->k == 0u || !mcs_kind_is_valid_(ts->kind))
+        return MCS_ERR_UNINIT;
+    return MCS_OK;
+}
+
+/* check_ts, then frequencies below N (else FREQ_RANGE). */
+static mcs_status check_freqs(int outputs, const mcs_theory_spectrum *ts, size_t freq_k,
+                              size_t freq_l)
+{
+    mcs_status st = check_ts(outputs, ts);
+    if (st == MCS_OK && (freq_k >= ts->n || freq_l >= ts->n))
+        st = MCS_ERR_FREQ_RANGE;
+    return st;
+}
+
+/* check_ts, then n (MISMATCH), k (K_RANGE, MISMATCH), f and g finite
+ * (NOT_FINITE); g may be NULL when not wanted. */
+static mcs_status check_integrands(int outputs, const mcs_theory_spectrum *ts, size_t n,
+                                   size_t k, const double *f, const double *g)
+{
+    mcs_status st = check_ts(outputs && f != NULL, ts);
+    if (st != MCS_OK)
+        return st;
+    if (n != ts->n)
+        return MCS_ERR_MISMATCH;
+    if (k == 0u)
+        return MCS_ERR_K_RANGE;
+    if (k != ts->k)
+        return MCS_ERR_MISMATCH;
+    if (!mcs_all_finite_(n, f) || (g != NULL && !mcs_all_finite_(n, g)))
+        return MCS_ERR_NOT_FINITE;
+    return MCS_OK;
+}
+
+/* ---- spectra ---------------------------------------------------------------- */
+
+/* Eq. 15 from <s> with the object's twiddles: the read-out shared with the
+ * N x N moments, so both give <S_k> to the last bit. */
+static void mean_at(const mcs_theory_spectrum *ts, size_t freq, double *re, double *im)
+{
+    const mcs_readout view = {ts->n, ts->k, 1.0, ts->mean_s, NULL, ts->cos_table, ts->sin_table};
+    mcs_readout_dft(&view, ts->mean_s, freq, re, im);
+}
+
+/* Cov(S_k, S_l). The homogenized covariance is circulant (a function of the
+ * lag only), so its transform is diagonal; there the variance is the
+ * stratified one, since a shift changes S_k by a phase only. */
+static void covariance_at(const mcs_theory_spectrum *ts, size_t freq_k, size_t freq_l,
+                          double *re, double *im)
+{
+    const double scale = 1.0 / sqrt((double)ts->n);
+    const mcs_theory_weight x = {NULL, freq_k, scale, 0u}, y = {NULL, freq_l, scale, 0u};
+    const mcs_theory_weight *yp = freq_k == freq_l ? &x : &y; /* the same: a variance */
+    if (ts->kind == MCS_PATTERN_HOMOGENIZED) {
+        *re = *im = 0.0;
+        if (freq_k == freq_l)
+            mcs_theory_strat_cov_(ts, &x, yp, re, im);
+    } else {
+        mcs_theory_cov_(ts, &x, yp, re, im);
+    }
+    if (freq_k == freq_l)
+        *im = 0.0; /* a variance: real (the parts cancel to rounding) */
+}
+
+static double power_at(const mcs_theory_spectrum *ts, size_t freq)
+{
+    double var, zero, mr, mi;
+    covariance_at(ts, freq, freq, &var, &zero);
+    mean_at(ts, freq, &mr, &mi);
+    return var + (mr * mr + mi * mi);
+}
+
+mcs_status mcs_theory_spectrum_mean(const mcs_theory_spectrum *ts, size_t freq, double *re,
+                                    double *im)
+{
+    mcs_status st = check_freqs(re != NULL && im != NULL, ts, freq, freq);
+    if (st == MCS_OK)
+        mean_at(ts, freq, re, im);
+    return st;
+}
+
+mcs_status mcs_theory_spectrum_power(const mcs_theory_spectrum *ts, size_t freq, double *out)
+{
+    mcs_status st = check_freqs(out != NULL, ts, freq, freq);
+    return st == MCS_OK ? mcs_set_(out, power_at(ts, freq)) : st;
+}
+
+mcs_status mcs_theory_power_spectrum(const mcs_theory_spectrum *ts, size_t n, double *power)
+{
+    mcs_status st = check_ts(power != NULL, ts);
+    if (st == MCS_OK && n != ts->n)
+        st = MCS_ERR_MISMATCH;
+    if (st != MCS_OK)
+        return st;
+    for (size_t q = 0; q < n; ++q)
+        power[q] = power_at(ts, q);
+    return MCS_OK;
+}
+
+mcs_status mcs_theory_spectrum_covariance(const mcs_theory_spectrum *ts, size_t freq_k,
+                                          size_t freq_l, double *re, double *im)
+{
+    mcs_status st = check_freqs(re != NULL && im != NULL, ts, freq_k, freq_l);
+    if (st == MCS_OK)
+        covariance_at(ts, freq_k, freq_l, re, im);
+    return st;
+}
+
+mcs_status mcs_theory_spectrum_cross(const mcs_theory_spectrum *ts, size_t freq_k,
+                                     size_t freq_l, double *re, double *im)
+{
+    mcs_status st = check_freqs(re != NULL && im != NULL, ts, freq_k, freq_l);
+    if (st != MCS_OK)
+        return st;
+    double cr, ci, kr, ki, lr, li;
+    covariance_at(ts, freq_k, freq_l, &cr, &ci);
+    mean_at(ts, freq_k, &kr, &ki);
+    mean_at(ts, freq_l, &lr, &li);
+    /* + <S_k><S_l>* = (kr + i ki)(lr - i li) */
+    *re = cr + (kr * lr + ki * li);
+    *im = ci + (ki * lr - kr * li);
+    return MCS_OK;
+}
+
+/* ---- the estimator ---------------------------------------------------------- */
+
+mcs_status mcs_theory_spectrum_estimator_mean(const mcs_theory_spectrum *ts, size_t n,
+                                              size_t k, const double *f, double *out)
+{
+    mcs_status st = check_integrands(out != NULL, ts, n, k, f, NULL);
+    if (st != MCS_OK)
+        return st;
+    double sum = 0.0;
+    for (size_t b = 0; b < n; ++b)
+        sum += f[b] * ts->mean_s[b];
+    *out = sum / (double)k;
+    return MCS_OK;
+}
+
+/* (1/K^2) Cov(sum f s, sum g s): I = (1/K) sum f s. */
+static double estimator_cov(const mcs_theory_spectrum *ts, const double *f, const double *g)
+{
+    const mcs_theory_weight x = {f, 0u, 1.0, 0u}, y = {g, 0u, 1.0, 0u};
+    double re, im;
+    mcs_theory_cov_(ts, &x, f == g ? &x : &y, &re, &im);
+    const double kd = (double)ts->k;
+    return re / (kd * kd);
+}
+
+mcs_status mcs_theory_spectrum_variance(const mcs_theory_spectrum *ts, size_t n, size_t k,
+                                        const double *f, double *out)
+{
+    mcs_status st = check_integrands(out != NULL, ts, n, k, f, NULL);
+    return st == MCS_OK ? mcs_set_(out, estimator_cov(ts, f, f)) : st;
+}
+
+mcs_status mcs_theory_spectrum_estimator_covariance(const mcs_theory_spectrum *ts, size_t n,
+                                                    size_t k, const double *f, const double *g,
+                                                    double *out)
+{
+    mcs_status st = check_integrands(out != NULL && g != NULL, ts, n, k, f, g);
+    return st == MCS_OK ? mcs_set_(out, estimator_cov(ts, f, g)) : st;
+}

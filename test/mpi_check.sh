@@ -1,0 +1,141 @@
+#!/bin/sh
+# make check-mpi: mcspec-mpi against the single-process runs (docs/scaling.md).
+#
+#   MCSPEC=build/bin/mcspec MCSPEC_MPI=build/bin/mcspec-mpi sh test/mpi_check.sh
+#
+# For P = 1, 2, 4 ranks (oversubscribed, so two cores do): the file of
+# `mpirun -np P mcspec-mpi pattern ...` against `mcspec pattern ... --streams P`
+# and against `mcspec merge` of the P files of `--stream I`, every entry of
+# `mcspec show --csv` within 1e-12 relative, and the bytes identical (the
+# three do the same merges in the same order). Then the failure paths: a rank
+# that reports a failure, a rank that dies, and bad usage, each with a
+# non-zero exit, a message and no file (an old file of that name untouched).
+# Ends with a Unity-style "N Tests N Failures 0 Ignored" line.
+set -u
+MCSPEC=${MCSPEC:-build/bin/mcspec}
+MCSPEC_MPI=${MCSPEC_MPI:-build/bin/mcspec-mpi}
+MPIRUN=${MPIRUN:-mpirun}
+TOL=${TOL:-1e-12}
+ulimit -c 0 2>/dev/null || true
+work=$(mktemp -d "${TMPDIR:-/tmp}/mcspec-mpi-check.XXXXXX")
+trap 'rm -rf "$work"' EXIT INT TERM
+
+# --oversubscribe: more ranks than cores; root needs its own flag.
+mpiflags="--oversubscribe"
+[ "$(id -u)" -eq 0 ] && mpiflags="$mpiflags --allow-run-as-root"
+mpi() { np=$1; shift; "$MPIRUN" $mpiflags -np "$np" "$@"; }
+
+tests=0
+failures=0
+pass() { tests=$((tests + 1)); echo "PASS: $1"; }
+fail() { tests=$((tests + 1)); failures=$((failures + 1)); echo "FAIL: $1"; }
+
+# Largest relative difference of two `mcspec show --csv` tables (same header,
+# same rows); empty fields must be empty in both. Prints it, or "mismatch".
+max_rel() {
+    awk -F, 'NR == FNR { a[FNR] = $0; n = FNR; next }
+        {
+            if (!(FNR in a)) { bad = 1; exit }
+            m = split(a[FNR], x, ","); if (m != NF) { bad = 1; exit }
+            for (i = 1; i <= NF; ++i) {
+                if (FNR == 1 || x[i] == $i) continue
+                if (x[i] == "" || $i == "") { bad = 1; exit }
+                d = x[i] - $i; d = d < 0 ? -d : d
+                s = x[i] < 0 ? -x[i] : x[i]; t = $i < 0 ? -$i : $i; s = s > t ? s : t
+                r = s > 0 ? d / s : d; if (r > worst) worst = r
+            }
+            rows = FNR
+        }
+        END { if (bad || rows != n) print "mismatch"; else printf "%.3g\n", worst + 0 }' "$1" "$2"
+}
+
+# compare LABEL A.rec B.rec: entries within TOL, and the same bytes.
+compare() {
+    "$MCSPEC" show "$2" --csv >"$work/a.csv" && "$MCSPEC" show "$3" --csv >"$work/b.csv" ||
+        { fail "$1: mcspec show failed"; return; }
+    rel=$(max_rel "$work/a.csv" "$work/b.csv")
+    if [ "$rel" = mismatch ] || awk -v r="$rel" -v t="$TOL" 'BEGIN { exit !(r > t) }'; then
+        fail "$1: largest relative difference $rel (allowed $TOL)"
+    else
+        pass "$1: largest relative difference $rel"
+    fi
+    if cmp -s "$2" "$3"; then pass "$1: identical bytes"; else fail "$1: the bytes differ"; fi
+}
+
+# One run configuration: KIND N K T SEED [--importance FILE].
+check_run() {
+    kind=$1 n=$2 k=$3 t=$4 seed=$5
+    shift 5
+    for p in 1 2 4; do
+        tag="$kind N=$n K=$k T=$t $* P=$p"
+        out="$work/mpi.rec"
+        rm -f "$out"
+        if ! mpi "$p" "$MCSPEC_MPI" pattern "$kind" --n "$n" --k "$k" --trials "$t" \
+            --seed "$seed" "$@" --save "$out" >"$work/mpi.out" 2>&1; then
+            fail "$tag: mcspec-mpi failed: $(head -n 3 "$work/mpi.out")"
+            continue
+        fi
+        "$MCSPEC" pattern "$kind" --n "$n" --k "$k" --trials "$t" --seed "$seed" "$@" \
+            --streams "$p" --save "$work/one.rec" --csv >/dev/null ||
+            { fail "$tag: mcspec pattern --streams failed"; continue; }
+        files=
+        i=0
+        while [ "$i" -lt "$p" ]; do
+            "$MCSPEC" pattern "$kind" --n "$n" --k "$k" --trials "$t" --seed "$seed" "$@" \
+                --streams "$p" --stream "$i" --save "$work/s$i.rec" --csv >/dev/null ||
+                fail "$tag: mcspec pattern --stream $i failed"
+            files="$files $work/s$i.rec"
+            i=$((i + 1))
+        done
+        # shellcheck disable=SC2086
+        "$MCSPEC" merge $files -o "$work/merged.rec" >/dev/null ||
+            { fail "$tag: mcspec merge failed"; continue; }
+        compare "$tag: mpi vs --streams" "$out" "$work/one.rec"
+        compare "$tag: mpi vs merge of --stream files" "$out" "$work/merged.rec"
+    done
+}
+
+# expect_failure LABEL EXPECTED-TEXT CMD...: non-zero exit, the text on
+# stderr, and the old FILE ($work/keep.rec) byte-identical.
+expect_failure() {
+    label=$1 text=$2
+    shift 2
+    printf 'an old file\n' >"$work/keep.rec"
+    cp "$work/keep.rec" "$work/keep.orig"
+    if "$@" >"$work/fail.out" 2>&1; then
+        fail "$label: exit status 0"
+    elif ! grep -q "$text" "$work/fail.out"; then
+        fail "$label: no message '$text': $(head -n 2 "$work/fail.out")"
+    elif ! cmp -s "$work/keep.rec" "$work/keep.orig"; then
+        fail "$label: the old file changed"
+    elif ls "$work"/keep.rec.part* >/dev/null 2>&1; then
+        fail "$label: a temporary file was left"
+    else
+        pass "$label"
+    fi
+}
+
+printf '0.5\n1\n2\n0.25\n1\n1\n3\n0.75\n' >"$work/g8.txt"
+check_run stratified 64 8 1001 7
+check_run random 8 5 1000 11 --importance "$work/g8.txt"
+check_run jitter 250 16 500 3
+
+save="--save $work/keep.rec"
+# shellcheck disable=SC2086
+expect_failure "a rank reporting a failure" "not written" \
+    env MCSPEC_MPI_FAIL_RANK=2 "$MPIRUN" $mpiflags -x MCSPEC_MPI_FAIL_RANK -np 4 \
+    "$MCSPEC_MPI" pattern random --n 64 --k 8 --trials 100 $save
+# shellcheck disable=SC2086
+expect_failure "a rank that dies" "" \
+    env MCSPEC_MPI_ABORT_RANK=1 "$MPIRUN" $mpiflags -x MCSPEC_MPI_ABORT_RANK -np 2 \
+    "$MCSPEC_MPI" pattern random --n 64 --k 8 --trials 100 $save
+# shellcheck disable=SC2086
+expect_failure "fewer trials than ranks" "fewer than the 4 ranks" \
+    mpi 4 "$MCSPEC_MPI" pattern random --n 64 --k 8 --trials 3 $save
+# shellcheck disable=SC2086
+expect_failure "an unknown pattern" "which pattern" \
+    mpi 2 "$MCSPEC_MPI" pattern bogus --n 64 --k 8 --trials 100 $save
+
+echo "-----------------------"
+echo "$tests Tests $failures Failures 0 Ignored"
+[ "$failures" -eq 0 ]

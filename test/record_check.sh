@@ -1,0 +1,190 @@
+#!/bin/sh
+# Checks of the mcspec command's saved accumulators (issue 14): --save on
+# spectrum, pattern and variance, mcspec merge, mcspec show, the stream rule
+# of pattern --streams / --stream, and the atomic writes.
+#
+# usage: sh test/record_check.sh   ($MCSPEC names the binary, default
+#                                   build/bin/mcspec; $GOLDEN the golden
+#                                   files, default test/golden; $CORPUS the
+#                                   fuzz seed records, default fuzz/corpus/load)
+#
+#   --help of merge and show;
+#   a saved record shows (mcspec show --csv) exactly the numbers the run
+#   printed: spectrum, pattern (its first six columns), variance (mean,
+#   stderr, variance and its stderr of the --kind row);
+#   the same seed saves the same bytes, and no temporary file stays behind;
+#   pattern --streams P equals the merge of the P --stream I files byte for
+#   byte (P = 1, 3, 4, T not a multiple of P), --streams 1 is the plain run,
+#   stream I holds floor(T/P) trials, one more for I < T mod P;
+#   merge refuses (exit 2, one line naming the file, OUT untouched) a record
+#   of another N or kind, a truncated, corrupted, empty or non-record file,
+#   a missing file, and a missing -o; show refuses the same files;
+#   show prints every kind the format knows (the fuzz seeds), moment and
+#   autocorr with the spectrum header, welford with its own;
+#   --save into a missing directory fails before any work; --save with
+#   variance needs --kind.
+# Ends with a Unity-style summary so test/run_tests.sh counts it.
+
+MCSPEC=${MCSPEC:-build/bin/mcspec}
+GOLDEN=${GOLDEN:-test/golden}
+CORPUS=${CORPUS:-fuzz/corpus/load}
+
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/record_check.XXXXXX") || exit 1
+trap 'rm -rf "$tmp"' EXIT INT TERM
+
+passed=0
+failed=0
+ok() { passed=$((passed + 1)); }
+bad() { failed=$((failed + 1)); echo "FAIL $1"; }
+
+run() { "$@" </dev/null >"$tmp/out" 2>"$tmp/err"; rc=$?; }
+
+# succeeds LABEL CMD...: exit 0, nothing on stderr.
+succeeds() {
+    label=$1
+    shift
+    run "$@"
+    if [ "$rc" -ne 0 ]; then bad "$label: exit status $rc: $(head -n 2 "$tmp/err")"; return 1; fi
+    if [ -s "$tmp/err" ]; then bad "$label: wrote to stderr: $(head -n 2 "$tmp/err")"; return 1; fi
+    ok
+}
+
+# refused LABEL PATTERN CMD...: exit 2, nothing on stdout, one line on stderr
+# matching PATTERN, and $tmp/keep (an old OUT) untouched.
+refused() {
+    label=$1 pattern=$2
+    shift 2
+    printf 'old contents\n' >"$tmp/keep"
+    run "$@"
+    if [ "$rc" -ne 2 ]; then bad "$label: exit status $rc, expected 2"
+    elif [ -s "$tmp/out" ]; then bad "$label: wrote to stdout"
+    elif [ "$(wc -l <"$tmp/err")" -ne 1 ]; then bad "$label: $(wc -l <"$tmp/err") lines on stderr"
+    elif ! grep -Eq -- "$pattern" "$tmp/err"; then bad "$label: '$(cat "$tmp/err")' lacks /$pattern/"
+    elif [ "$(cat "$tmp/keep")" != "old contents" ]; then bad "$label: the old OUT changed"
+    else ok; fi
+}
+
+same_file() { # LABEL A B
+    if cmp -s "$2" "$3"; then ok; else bad "$1: $2 and $3 differ"; fi
+}
+
+no_parts() { # LABEL: no temporary file left in $tmp
+    if ls "$tmp"/*.part* >/dev/null 2>&1; then bad "$1: a temporary file was left"; else ok; fi
+}
+
+# ------------------------------------------------------------------ --help
+for c in merge show; do
+    if succeeds "$c --help" "$MCSPEC" "$c" --help && grep -q "^usage: mcspec $c" "$tmp/out"
+    then ok; else bad "$c --help: no usage line"; fi
+done
+
+# ------------------------------------------- a saved record shows the run
+succeeds "spectrum --save" "$MCSPEC" spectrum --n 64 --csv --save "$tmp/sp.rec" \
+    "$GOLDEN/comb_k8_n64.txt" && cp "$tmp/out" "$tmp/sp.csv"
+succeeds "show spectrum" "$MCSPEC" show "$tmp/sp.rec" --csv && same_file "spectrum vs show" \
+    "$tmp/sp.csv" "$tmp/out"
+
+pattern() { "$MCSPEC" pattern stratified --n 48 --k 5 --trials "$@"; }
+succeeds "pattern --save" pattern 10 --seed 3 --csv --save "$tmp/p.rec" &&
+    cut -d, -f1-6 "$tmp/out" >"$tmp/p.csv"
+succeeds "show pattern" "$MCSPEC" show "$tmp/p.rec" --csv && same_file "pattern vs show" \
+    "$tmp/p.csv" "$tmp/out"
+succeeds "pattern --save again" pattern 10 --seed 3 --csv --save "$tmp/p2.rec"
+same_file "the same seed saves the same bytes" "$tmp/p.rec" "$tmp/p2.rec"
+no_parts "after --save"
+
+printf '0.5\n1\n2\n0.25\n1\n3\n' >"$tmp/f6.txt"
+succeeds "variance --save" "$MCSPEC" variance --k 3 --trials 50 --kind jitter --csv \
+    --save "$tmp/v.rec" "$tmp/f6.txt" &&
+    awk -F, 'NR == 2 { print $4 "," $5 "," $6 "," $7 "," $8 }' "$tmp/out" >"$tmp/v.csv"
+succeeds "show welford" "$MCSPEC" show "$tmp/v.rec" --csv &&
+    awk -F, 'NR == 2 { print $1 "," $2 "," $3 "," $4 "," $5 }' "$tmp/out" >"$tmp/v2.csv" &&
+    same_file "variance vs show" "$tmp/v.csv" "$tmp/v2.csv"
+if head -n 1 "$tmp/out" | grep -qx 'count,mean,mean_stderr,variance,variance_stderr'
+then ok; else bad "show welford: CSV header '$(head -n 1 "$tmp/out")'"; fi
+
+# ------------------------------------------------------------ stream rule
+for p in 1 3 4; do
+    t=11
+    succeeds "pattern --streams $p" pattern "$t" --seed 9 --streams "$p" --csv \
+        --save "$tmp/all$p.rec"
+    files=
+    i=0
+    while [ "$i" -lt "$p" ]; do
+        succeeds "pattern --stream $i of $p" pattern "$t" --seed 9 --streams "$p" --stream "$i" \
+            --save "$tmp/s$p-$i.rec"
+        want=$((t / p + (i < t % p ? 1 : 0)))
+        "$MCSPEC" show "$tmp/s$p-$i.rec" | head -n 1 | grep -q ", $want trials$" && ok ||
+            bad "stream $i of $p: not $want trials: $("$MCSPEC" show "$tmp/s$p-$i.rec" | head -n 1)"
+        files="$files $tmp/s$p-$i.rec"
+        i=$((i + 1))
+    done
+    # shellcheck disable=SC2086
+    succeeds "merge of $p streams" "$MCSPEC" merge $files -o "$tmp/m$p.rec"
+    same_file "--streams $p vs merge of the --stream files" "$tmp/all$p.rec" "$tmp/m$p.rec"
+done
+succeeds "plain pattern run" pattern 11 --seed 9 --csv --save "$tmp/plain.rec"
+same_file "--streams 1 is the plain run" "$tmp/plain.rec" "$tmp/all1.rec"
+refused "--stream without its P" "not one of the 1 streams" pattern 11 --stream 1
+refused "--stream P" "not one of the 3 streams" pattern 11 --streams 3 --stream 3
+refused "fewer trials than streams" "fewer than --streams" pattern 3 --streams 4
+
+# ---------------------------------------------------- merge and show refuse
+"$MCSPEC" pattern random --n 32 --k 4 --trials 5 --save "$tmp/n32.rec" >/dev/null
+head -c 100 "$tmp/p.rec" >"$tmp/trunc.rec"
+cp "$tmp/p.rec" "$tmp/flip.rec"
+printf '\001' | dd of="$tmp/flip.rec" bs=1 seek=200 conv=notrunc 2>/dev/null
+: >"$tmp/empty.rec"
+printf 'freq,power\n1,2\n' >"$tmp/text.rec"
+m() { "$MCSPEC" merge "$@" -o "$tmp/keep"; }
+refused "merge: another N" "n32.rec holds a spectrum record of N = 32.*cannot merge" \
+    m "$tmp/p.rec" "$tmp/n32.rec"
+refused "merge: another kind" "v.rec holds a welford record.*cannot merge" \
+    m "$tmp/p.rec" "$tmp/v.rec"
+refused "merge: truncated" "trunc.rec: truncated" m "$tmp/p.rec" "$tmp/trunc.rec"
+refused "merge: a changed byte" "flip.rec: checksum mismatch" m "$tmp/p.rec" "$tmp/flip.rec"
+refused "merge: empty file" "empty.rec: truncated" m "$tmp/empty.rec"
+refused "merge: not a record" "text.rec: not an mcspec record" m "$tmp/text.rec"
+refused "merge: missing file" "cannot read .*nothere.rec" m "$tmp/nothere.rec"
+refused "merge: no -o" "give -o OUT" "$MCSPEC" merge "$tmp/p.rec"
+refused "merge: no input" "give one or more FILEs" "$MCSPEC" merge -o "$tmp/keep"
+for f in trunc flip empty text; do
+    refused "show: $f" "$f.rec: " "$MCSPEC" show "$tmp/$f.rec"
+done
+refused "show: --plot of a welford record" "no plot" "$MCSPEC" show "$tmp/v.rec" --plot x.svg
+refused "show: --radial of a spectrum" "--radial is for pointset2d" \
+    "$MCSPEC" show "$tmp/p.rec" --radial
+no_parts "after the refusals"
+
+# ------------------------------------------------------ every kind shows
+for f in "$CORPUS"/*.rec; do
+    name=${f##*/}
+    case $name in
+    *-t0.rec) continue ;; # empty accumulators: nothing to show (below)
+    spectrum-* | moment-* | autocorr-*) header=freq,mean_re,mean_im,mean_stderr,power,power_stderr ;;
+    welford-*) header=count,mean,mean_stderr,variance,variance_stderr ;;
+    pointset2d-*) header=kx,ky,power,power_stderr ;;
+    pointset-*) header=freq,power,power_stderr ;;
+    spectrum2d-*) header=k1,k2,mean_re,mean_im,mean_stderr,power,power_stderr ;;
+    *) bad "unexpected seed $name"; continue ;;
+    esac
+    if succeeds "show $name" "$MCSPEC" show "$f" --csv && [ "$(head -n 1 "$tmp/out")" = "$header" ]
+    then ok; else bad "show $name: header '$(head -n 1 "$tmp/out")'"; fi
+done
+refused "show: an empty spectrum" "no trials" "$MCSPEC" show "$CORPUS/spectrum-n1-t0.rec"
+succeeds "merge of two point-set records" "$MCSPEC" merge "$CORPUS/pointset2d-f7-t5.rec" \
+    "$CORPUS/pointset2d-f7-t5.rec" -o "$tmp/ps2.rec"
+"$MCSPEC" show "$tmp/ps2.rec" | head -n 1 | grep -q ', 10 trials$' && ok ||
+    bad "merge of two 5-trial point sets: not 10 trials"
+
+# ------------------------------------------------------------ --save fails early
+refused "--save into a missing directory" "cannot write $tmp/no/such/dir/x.rec" \
+    pattern 10 --save "$tmp/no/such/dir/x.rec"
+refused "--save of a directory" "it is a directory" pattern 10 --save "$tmp"
+refused "variance --save without --kind" "choose its pattern with --kind" \
+    "$MCSPEC" variance --k 3 --save "$tmp/v3.rec" "$tmp/f6.txt"
+
+echo "-----------------------"
+echo "$((passed + failed)) Tests $failed Failures 0 Ignored"
+if [ "$failed" -eq 0 ]; then echo OK; else echo FAIL; fi
+[ "$failed" -eq 0 ]

@@ -1,0 +1,84 @@
+/* Shared by the record tests (test_io.c, test_io_corrupt.c): one accumulator
+ * of every kind filled from seeded trials, a table that drives a check over
+ * every kind, and an independent writer of record bytes (its own bitwise
+ * CRC-32 and little-endian fields) for hand-built headers. */
+#ifndef IO_FIXTURES_H
+#define IO_FIXTURES_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "mcspec.h"
+
+/* Record sizes by docs/format.md. */
+#define IO_SPECTRUM_BYTES(n) (44u + 40u * ((n) / 2u + 1u))
+#define IO_MOMENT_BYTES(n) (44u + 8u * ((n) + (n) * ((n) + 1u) / 2u))
+#define IO_AUTOCORR_BYTES(n) (44u + 8u * ((n) + (n) / 2u + 1u))
+#define IO_WELFORD_BYTES 68u
+#define IO_POINTSET_BYTES(f) (44u + 16u * ((f) + 1u))
+#define IO_POINTSET2D_BYTES(f) (44u + 32u * ((f) + 1u) * ((f) + 1u))
+#define IO_SPECTRUM2D_BYTES(n1, n2) (52u + 40u * (n1) * ((n2) / 2u + 1u))
+
+#define IO_MAX2(a, b) ((a) > (b) ? (a) : (b))
+/* Room for a record of every kind one size past this build's capacities. */
+#define IO_REC_MAX                                                                     \
+    IO_MAX2(IO_MAX2(IO_SPECTRUM_BYTES(MCS_MAX_N + 2u), IO_MOMENT_BYTES(MCS_MAX_COV_N + 1u)), \
+            IO_MAX2(IO_POINTSET2D_BYTES(MCS_MAX_FREQ + 1u),                          \
+                    IO_MAX2(IO_SPECTRUM2D_BYTES(MCS_MAX_SIDE + 1u, MCS_MAX_SIDE + 1u), \
+                            IO_POINTSET_BYTES(MCS_MAX_FREQ_1D + 1u))))
+
+/* One accumulator of each kind. */
+typedef struct {
+    mcs_spectrum spec;
+    mcs_moment mom;
+    mcs_autocorr ac;
+    mcs_welford wf;
+    mcs_pointset ps;
+    mcs_pointset2d ps2;
+    mcs_spectrum2d sp2;
+} io_set;
+
+typedef struct {
+    const char *name;
+    mcs_io_kind kind;
+    size_t offset, obj_size, shape_len;
+    mcs_status (*load)(void *dst, size_t len, const void *buf);
+    mcs_status (*save)(const void *src, size_t cap, void *buf, size_t *len);
+    mcs_status (*merge)(void *dst, const void *src);
+} io_kind_ops;
+
+#define IO_NKINDS 7u
+extern const io_kind_ops io_kinds[IO_NKINDS];
+
+/* The kind's member of s. */
+void *io_obj(io_set *s, const io_kind_ops *o);
+
+/* Fills every member of s from `trials` seeded trials: the binned kinds over
+ * n bins (moment at min(n, MCS_MAX_COV_N)), the point sets with cutoffs
+ * min(n, capacity), the 2D spectrum over min(n, MCS_MAX_SIDE) x
+ * min(n/2 + 1, MCS_MAX_SIDE) bins. Fails the test on any library error. */
+void io_fill(io_set *s, size_t n, size_t trials, uint64_t seed);
+
+/* Saves src of kind o into buf (IO_REC_MAX bytes) after checking that the
+ * size query agrees; returns the size. */
+size_t io_save(const io_kind_ops *o, const void *src, uint8_t *buf);
+
+/* Loads buf[len] into dst's member of kind o and fails the test unless the
+ * status is want and dst is byte-identical to before. */
+void io_expect_refused(const io_kind_ops *o, io_set *dst, const io_set *before, mcs_status want,
+                       size_t len, const uint8_t *buf, const char *what, size_t at);
+
+/* The independent writer. */
+uint32_t io_ref_crc(const uint8_t *p, size_t len);
+void io_put_le(uint8_t *p, uint64_t v, size_t bytes);
+void io_put_f64(uint8_t *p, double v);
+uint64_t io_get_le(const uint8_t *p, size_t bytes);
+/* Rewrites the CRC of a record of len bytes after an edit. */
+void io_recrc(uint8_t *p, size_t len);
+/* A record with this header and np values (values[] or zeros); its size. */
+size_t io_build(uint8_t *p, uint32_t version, uint32_t kind, uint32_t s, const uint64_t *shape,
+                uint64_t count, uint64_t np, const double *values);
+/* Offset of payload value i in a record of s shape words. */
+size_t io_payload_at(size_t s, size_t i);
+
+#endif /* IO_FIXTURES_H */

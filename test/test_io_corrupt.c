@@ -1,0 +1,301 @@
+/* Records (docs/format.md), the bad path: every truncation, every changed
+ * byte, wrong version, kind and shape, sizes above this build's capacities,
+ * non-finite values and broken invariants (the last ones with a valid CRC,
+ * written by the independent writer of io_fixtures.c): each refused with the
+ * status that says which, the destination byte-identical. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "io_fixtures.h"
+#include "mcspec.h"
+#include "unity.h"
+
+void setUp(void) {}
+void tearDown(void) {}
+
+static io_set set_a, set_dst, set_before;
+static uint8_t rec[IO_REC_MAX + 8u], rec2[IO_REC_MAX + 8u];
+
+/* Fresh, different destinations and their snapshot. */
+static void dirty_destinations(void)
+{
+    io_fill(&set_dst, 12u, 3u, 99u);
+    memcpy(&set_before, &set_dst, sizeof set_dst);
+}
+
+static void refused(const io_kind_ops *o, mcs_status want, size_t len, const uint8_t *buf,
+                    const char *what, size_t at)
+{
+    io_expect_refused(o, &set_dst, &set_before, want, len, buf, what, at);
+}
+
+static size_t save_a(const io_kind_ops *o, uint8_t *buf)
+{
+    return io_save(o, io_obj(&set_a, o), buf);
+}
+
+/* ---------------- truncation, changed bytes ---------------- */
+
+static void test_every_truncation_and_an_extra_byte_are_refused(void)
+{
+    io_fill(&set_a, 20u, 9u, 5u);
+    dirty_destinations();
+    for (size_t i = 0; i < IO_NKINDS; ++i) {
+        const io_kind_ops *o = &io_kinds[i];
+        size_t len = save_a(o, rec);
+        for (size_t cut = 0; cut < len; ++cut)
+            refused(o, MCS_ERR_TRUNCATED, cut, rec, "truncated to", cut);
+        rec[len] = 0u;
+        refused(o, MCS_ERR_FORMAT, len + 1u, rec, "one byte added at", len);
+    }
+}
+
+/* The status a changed byte at offset `at` must give: the magic, the version
+ * and the two length fields are read before the checksum. */
+static int flip_status_ok(size_t at, mcs_status st)
+{
+    if (at < 8u)
+        return st == MCS_ERR_MAGIC;
+    if (at < 10u)
+        return st == MCS_ERR_VERSION;
+    if ((at >= 12u && at < 16u) || (at >= 24u && at < 32u))
+        return st == MCS_ERR_FORMAT || st == MCS_ERR_TRUNCATED;
+    return st == MCS_ERR_CHECKSUM;
+}
+
+static void test_every_changed_byte_is_refused(void)
+{
+    static const uint8_t flips[] = {0x01u, 0x02u, 0x04u, 0x08u, 0x10u, 0x20u, 0x40u, 0x80u, 0xffu};
+    io_fill(&set_a, 6u, 11u, 6u); /* small records: every byte, nine ways */
+    dirty_destinations();
+    for (size_t i = 0; i < IO_NKINDS; ++i) {
+        const io_kind_ops *o = &io_kinds[i];
+        void *dst = io_obj(&set_dst, o);
+        const void *before = io_obj(&set_before, o);
+        size_t len = save_a(o, rec);
+        for (size_t at = 0; at < len; ++at) {
+            for (size_t f = 0; f < sizeof flips; ++f) {
+                rec[at] ^= flips[f];
+                mcs_status st = o->load(dst, len, rec);
+                rec[at] ^= flips[f];
+                if (!flip_status_ok(at, st) || memcmp(dst, before, o->obj_size) != 0) {
+                    char msg[160];
+                    (void)snprintf(msg, sizeof msg, "%s: byte %zu ^ 0x%02x gave %s", o->name, at,
+                                   flips[f], mcs_status_str(st));
+                    TEST_FAIL_MESSAGE(msg);
+                }
+            }
+        }
+        TEST_ASSERT_EQUAL_INT(MCS_OK, o->load(dst, len, rec)); /* restored: loads */
+        memcpy(dst, before, o->obj_size);
+    }
+}
+
+/* ---------------- hand-built headers with a valid CRC ---------------- */
+
+static void test_wrong_version_kind_and_shape_are_refused(void)
+{
+    const uint64_t sixteen = 16u, two[2] = {16u, 1u};
+    const io_kind_ops *sp = &io_kinds[0];
+    dirty_destinations();
+    static const uint32_t versions[] = {0u, 2u, 0xffffu};
+    for (size_t v = 0; v < 3u; ++v) {
+        size_t len = io_build(rec, versions[v], 1u, 1u, &sixteen, 0u, 45u, NULL);
+        refused(sp, MCS_ERR_VERSION, len, rec, "version", versions[v]);
+    }
+    /* A valid spectrum record is no other kind; unknown kinds are no kind. */
+    size_t len = io_build(rec, 1u, MCS_IO_KIND_SPECTRUM, 1u, &sixteen, 0u, 45u, NULL);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, sp->load(io_obj(&set_a, sp), len, rec));
+    for (size_t i = 1; i < IO_NKINDS; ++i)
+        refused(&io_kinds[i], MCS_ERR_KIND, len, rec, "spectrum record as kind", i + 1u);
+    static const uint32_t unknown[] = {0u, IO_NKINDS + 1u, 0xffffu};
+    for (size_t u = 0; u < 3u; ++u) {
+        len = io_build(rec, 1u, unknown[u], 1u, &sixteen, 0u, 45u, NULL);
+        refused(sp, MCS_ERR_KIND, len, rec, "kind", unknown[u]);
+    }
+    len = io_build(rec, 1u, 1u, 2u, two, 0u, 45u, NULL);
+    refused(sp, MCS_ERR_FORMAT, len, rec, "two shape words", 2u);
+    len = io_build(rec, 1u, 1u, 0u, NULL, 0u, 45u, NULL);
+    refused(sp, MCS_ERR_FORMAT, len, rec, "no shape word", 0u);
+    len = io_build(rec, 1u, 1u, 1u, &sixteen, 0u, 46u, NULL);
+    refused(sp, MCS_ERR_FORMAT, len, rec, "one value too many", 46u);
+    len = io_build(rec, 1u, 1u, 1u, &sixteen, 0u, 44u, NULL);
+    refused(sp, MCS_ERR_FORMAT, len, rec, "one value too few", 44u);
+    len = io_build(rec, 1u, 4u, 1u, &sixteen, 0u, 4u, NULL);
+    refused(&io_kinds[3], MCS_ERR_FORMAT, len, rec, "welford with a shape", 1u);
+    len = io_build(rec, 1u, 7u, 1u, &sixteen, 0u, 5u * 16u * 9u, NULL);
+    refused(&io_kinds[6], MCS_ERR_FORMAT, len, rec, "spectrum2d with one side", 1u);
+    static const uint64_t nine[9] = {16u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u};
+    len = io_build(rec, 1u, 1u, 9u, nine, 0u, 45u, NULL);
+    refused(sp, MCS_ERR_FORMAT, len, rec, "nine shape words", 9u);
+}
+
+/* A zero record of kind o with shape, and the status it must give. */
+static void shape_case(size_t kind_index, const uint64_t *shape, uint64_t np, mcs_status want)
+{
+    const io_kind_ops *o = &io_kinds[kind_index];
+    size_t len = io_build(rec, 1u, o->kind, (uint32_t)o->shape_len, shape, 0u, np, NULL);
+    if (want == MCS_OK)
+        TEST_ASSERT_EQUAL_INT(MCS_OK, o->load(io_obj(&set_a, o), len, rec));
+    else
+        refused(o, want, len, rec, "shape word", (size_t)shape[0]);
+}
+
+static void test_sizes_above_this_builds_capacities_are_refused(void)
+{
+    const uint64_t n = MCS_MAX_N, c = MCS_MAX_COV_N, f1 = MCS_MAX_FREQ_1D, f2 = MCS_MAX_FREQ;
+    const uint64_t s = MCS_MAX_SIDE, zero = 0u;
+    dirty_destinations();
+    for (uint64_t d = 0; d < 2u; ++d) { /* d = 0: the largest that fits; 1: one more */
+        const mcs_status range = d == 0u ? MCS_OK : MCS_ERR_N_RANGE;
+        const mcs_status freq = d == 0u ? MCS_OK : MCS_ERR_FREQ_RANGE;
+        const uint64_t sn = n + d, cn = c + d, p1 = f1 + d, p2 = f2 + d;
+        const uint64_t side_x[2] = {s + d, 2u}, side_y[2] = {3u, s + d};
+        shape_case(0u, &sn, 5u * (sn / 2u + 1u), range);
+        shape_case(1u, &cn, cn + cn * (cn + 1u) / 2u, range);
+        shape_case(2u, &sn, sn + sn / 2u + 1u, range);
+        shape_case(4u, &p1, 2u * (p1 + 1u), freq);
+        shape_case(5u, &p2, 2u * (2u * p2 + 1u) * (p2 + 1u) + 2u * (p2 + 1u), freq);
+        shape_case(6u, side_x, 5u * side_x[0] * 2u, range);
+        shape_case(6u, side_y, 5u * 3u * (side_y[1] / 2u + 1u), range);
+    }
+    const uint64_t zeros[2] = {0u, 4u};
+    for (size_t i = 0; i < IO_NKINDS; ++i)
+        if (i != 3u)
+            shape_case(i, i == 6u ? zeros : &zero, 5u,
+                       i == 4u || i == 5u ? MCS_ERR_FREQ_RANGE : MCS_ERR_N_RANGE);
+}
+
+/* ---------------- values: non-finite and broken invariants, valid CRC ---------------- */
+
+static void set_value(uint8_t *p, size_t len, size_t shape_len, size_t i, double v)
+{
+    io_put_f64(p + io_payload_at(shape_len, i), v);
+    io_recrc(p, len);
+}
+
+static void set_count(uint8_t *p, size_t len, uint64_t count)
+{
+    io_put_le(p + 16, count, 8u);
+    io_recrc(p, len);
+}
+
+static void test_non_finite_values_are_refused(void)
+{
+    const double bad[3] = {NAN, INFINITY, -INFINITY};
+    io_fill(&set_a, 14u, 11u, 7u);
+    dirty_destinations();
+    for (size_t i = 0; i < IO_NKINDS; ++i) {
+        const io_kind_ops *o = &io_kinds[i];
+        const size_t len = save_a(o, rec);
+        const size_t np = (size_t)io_get_le(rec + 24, 8u);
+        const size_t at[3] = {0u, np / 2u, np - 1u};
+        for (size_t a = 0; a < 3u; ++a) {
+            for (size_t b = 0; b < 3u; ++b) {
+                memcpy(rec2, rec, len);
+                set_value(rec2, len, o->shape_len, at[a], bad[b]);
+                refused(o, MCS_ERR_NOT_FINITE, len, rec2, "non-finite value", at[a]);
+            }
+        }
+        /* Non-finite outranks a broken invariant elsewhere. */
+        memcpy(rec2, rec, len);
+        io_put_f64(rec2 + io_payload_at(o->shape_len, np - 1u), -1.0);
+        set_value(rec2, len, o->shape_len, 0u, NAN);
+        refused(o, MCS_ERR_NOT_FINITE, len, rec2, "NaN and a negative", 0u);
+    }
+}
+
+/* Value i of the saved record of kind o (in rec, len bytes) set to v: want. */
+static void expect_value(size_t kind_index, size_t len, size_t i, double v, mcs_status want)
+{
+    const io_kind_ops *o = &io_kinds[kind_index];
+    memcpy(rec2, rec, len);
+    set_value(rec2, len, o->shape_len, i, v);
+    if (want == MCS_OK)
+        TEST_ASSERT_EQUAL_INT(MCS_OK, o->load(io_obj(&set_a, o), len, rec2));
+    else
+        refused(o, want, len, rec2, "edited value", i);
+}
+
+static void test_broken_invariants_are_refused(void)
+{
+    const double big = MCS_IO_MAX_MAGNITUDE;
+    const size_t h1 = 8u, f2 = 14u < MCS_MAX_FREQ ? 14u : MCS_MAX_FREQ;
+    const size_t cells2 = (2u * f2 + 1u) * (f2 + 1u);
+    io_fill(&set_a, 14u, 11u, 8u);
+    dirty_destinations();
+    size_t len = save_a(&io_kinds[0], rec);
+    expect_value(0u, len, 2u * h1 + 3u, -1.0, MCS_ERR_INVARIANT);      /* m2_s */
+    expect_value(0u, len, 3u * h1, -0.5, MCS_ERR_INVARIANT);           /* mean_pow */
+    expect_value(0u, len, 5u * h1 - 1u, -1e-300, MCS_ERR_INVARIANT);   /* m2_pow */
+    expect_value(0u, len, 2u * h1 + 3u, -0.0, MCS_OK);                 /* -0 is 0 */
+    expect_value(0u, len, h1 + 2u, -7.0, MCS_OK); /* a mean of S_k may be negative */
+    expect_value(0u, len, 1u, -big, MCS_OK);
+    expect_value(0u, len, 1u, -2.0 * big, MCS_ERR_INVARIANT);
+    expect_value(0u, len, 3u * h1 + 1u, 1.0000001 * big, MCS_ERR_INVARIANT);
+    len = save_a(&io_kinds[1], rec);
+    expect_value(1u, len, 2u, -1.0, MCS_ERR_INVARIANT);        /* sum_s */
+    expect_value(1u, len, 14u + 3u, -2.0, MCS_ERR_INVARIANT);  /* sum_ss[0][3] */
+    len = save_a(&io_kinds[2], rec);
+    expect_value(2u, len, 14u + 7u, -1.0, MCS_ERR_INVARIANT);  /* sum_a[7] */
+    len = save_a(&io_kinds[3], rec);
+    expect_value(3u, len, 1u, -1.0, MCS_ERR_INVARIANT);  /* m2 */
+    expect_value(3u, len, 3u, -1.0, MCS_ERR_INVARIANT);  /* m4 */
+    expect_value(3u, len, 2u, -5.0, MCS_OK);             /* m3 has either sign */
+    expect_value(3u, len, 0u, -5.0, MCS_OK);             /* so has the mean */
+    len = save_a(&io_kinds[4], rec);
+    expect_value(4u, len, 3u, -0.25, MCS_ERR_INVARIANT);       /* a mean periodogram */
+    expect_value(4u, len, 14u + 1u + 3u, -1.0, MCS_ERR_INVARIANT); /* m2 */
+    len = save_a(&io_kinds[5], rec);
+    expect_value(5u, len, cells2 - 1u, -1.0, MCS_ERR_INVARIANT);       /* mean P */
+    expect_value(5u, len, 2u * cells2 + f2, -1.0, MCS_ERR_INVARIANT);  /* a ring's mean */
+    len = save_a(&io_kinds[6], rec);
+    const size_t cells = set_a.sp2.n_x * (set_a.sp2.n_y / 2u + 1u);
+    expect_value(6u, len, 2u * cells, -1.0, MCS_ERR_INVARIANT);  /* m2_s */
+    expect_value(6u, len, cells, -3.0, MCS_OK);                  /* mean_im */
+}
+
+static void test_counts_that_do_not_fit_the_data_are_refused(void)
+{
+    io_fill(&set_a, 14u, 11u, 9u);
+    dirty_destinations();
+    for (size_t i = 0; i < IO_NKINDS; ++i) {
+        const io_kind_ops *o = &io_kinds[i];
+        const size_t len = save_a(o, rec);
+        memcpy(rec2, rec, len);
+        set_count(rec2, len, 0u);
+        refused(o, MCS_ERR_INVARIANT, len, rec2, "zero count with data", 0u);
+        set_count(rec2, len, MCS_IO_MAX_COUNT + 1u);
+        refused(o, MCS_ERR_INVARIANT, len, rec2, "count above 2^53", 0u);
+        set_count(rec2, len, UINT64_MAX);
+        refused(o, MCS_ERR_INVARIANT, len, rec2, "count 2^64 - 1", 0u);
+        set_count(rec2, len, MCS_IO_MAX_COUNT);
+        TEST_ASSERT_EQUAL_INT(MCS_OK, o->load(io_obj(&set_a, o), len, rec2));
+        if (o->kind == MCS_IO_KIND_MOMENT || o->kind == MCS_IO_KIND_AUTOCORR)
+            continue; /* plain sums: any count >= 1 fits */
+        /* One trial has no spread: M2 != 0 cannot be. */
+        set_count(rec2, len, 1u);
+        refused(o, MCS_ERR_INVARIANT, len, rec2, "one trial with spread", 1u);
+    }
+    size_t len = save_a(&io_kinds[3], rec);
+    set_count(rec, len, 1u);
+    set_value(rec, len, 0u, 1u, 0.0);
+    set_value(rec, len, 0u, 3u, 0.0);
+    refused(&io_kinds[3], MCS_ERR_INVARIANT, len, rec, "one value with m3", 2u);
+    set_value(rec, len, 0u, 2u, 0.0);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_io_load_welford(&set_a.wf, len, rec));
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_every_truncation_and_an_extra_byte_are_refused);
+    RUN_TEST(test_every_changed_byte_is_refused);
+    RUN_TEST(test_wrong_version_kind_and_shape_are_refused);
+    RUN_TEST(test_sizes_above_this_builds_capacities_are_refused);
+    RUN_TEST(test_non_finite_values_are_refused);
+    RUN_TEST(test_broken_invariants_are_refused);
+    RUN_TEST(test_counts_that_do_not_fit_the_data_are_refused);
+    return UNITY_END();
+}

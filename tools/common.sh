@@ -1,0 +1,24 @@
+# shellcheck shell=sh
+# Shell helpers shared by the check scripts; each sources this file with
+#   . "$(dirname "$0")/common.sh"
+# and sets USAGE to its one-line usage before calling usage_exit.
+
+# Bad usage: the usage line on stderr, exit status 2.
+usage_exit() {
+    echo "$USAGE" >&2
+    exit 2
+}
+
+# fail_exit STATUS MESSAGE...: the message on stderr, then exit STATUS.
+fail_exit() {
+    status=$1
+    shift
+    echo "$*" >&2
+    exit "$status"
+}
+
+# A scratch directory in $tmp, removed however the script ends.
+make_tmp() {
+    tmp=$(mktemp -d)
+    trap 'rm -rf "$tmp"' EXIT INT TERM
+}
