@@ -20,7 +20,7 @@
 /* Object types a slot can hold. */
 enum {
     T_NONE, T_RNG, T_IMP, T_PAT, T_SAMPLER, T_PAT2D, T_WELFORD, T_DFT, T_SPECTRUM,
-    T_MOMENT, T_AUTOCORR, T_POINTSET, T_POINTSET2D, T_SPECTRUM2D, T_THEORY, T_COUNT
+    T_MOMENT, T_AUTOCORR, T_POINTSET, T_POINTSET2D, T_SPECTRUM2D, T_THEORY, T_TSPEC, T_COUNT
 };
 
 /* Object states a row may substitute for the baseline object. */
@@ -48,7 +48,7 @@ enum {
 };
 
 /* Element types of arrays and outputs. */
-enum { E_D, E_Z, E_U32, E_U64 };
+enum { E_D, E_Z, E_U32, E_U64, E_U8 };
 
 /* Contents of input arrays and scalars, and the checks on outputs. */
 enum {
@@ -58,6 +58,7 @@ enum {
     R_F,      /* finite, any sign (an integrand, a signal) */
     R_POINT,  /* in [0, 1) */
     R_BINS,   /* size_t in [0, N) */
+    R_RECORD, /* bytes: a saved record of the baseline object of type len.a (io.h) */
     O_VAL,    /* output: finite */
     O_NN,     /* output: finite and >= 0 (a power, a variance, a standard error) */
     O_U01,    /* output: in [0, 1) */
@@ -71,7 +72,8 @@ enum {
     Z_MATCH, /* must equal the object's own size (base) */
     Z_INDEX, /* an index: valid in [lo, hi] */
     Z_LEN,   /* an array length without a maximum: >= lo, arrays follow it */
-    Z_FREE   /* any value is meaningful */
+    Z_FREE,  /* any value is meaningful */
+    Z_REC    /* must equal the size of the record of object type `type` (io.h) */
 };
 
 /* Slot flags. */
@@ -85,10 +87,11 @@ enum {
 };
 
 /* Array length: op over slot values. */
-enum { L_SLOT, L_2SLOT, L_SQ, L_HALF, L_OBJN, L_OBJNN, L_KDIM, L_PROD };
+enum { L_SLOT, L_2SLOT, L_SQ, L_HALF, L_OBJN, L_OBJNN, L_KDIM, L_PROD, L_CONST, L_REC };
 
 typedef struct {
-    uint8_t op, a, b;
+    uint8_t op, a, b; /* L_REC: a is the record's object type */
+    size_t c;         /* L_CONST */
 } adv_len;
 
 typedef struct {
@@ -169,6 +172,8 @@ extern const adv_fn adv_fns_eq[];
 extern const size_t adv_fns_eq_count;
 extern const adv_fn adv_fns_2d[];
 extern const size_t adv_fns_2d_count;
+extern const adv_fn adv_fns_io[];
+extern const size_t adv_fns_io_count;
 
 /* Objects (adv_objects.c). */
 size_t adv_type_size(int type);
@@ -183,6 +188,10 @@ size_t adv_obj_n(int type, const void *obj);
 size_t adv_state_n(int type, int ov);
 size_t adv_state_nn(int type, int ov, int v);
 int adv_has_count(int type);
+/* Bytes of the record of the baseline object of an accumulator type (io.h),
+ * and the record itself into buf (which holds that many). */
+size_t adv_record_size(int type);
+void adv_record(int type, void *buf);
 uint64_t adv_count(int type, const void *obj);
 const char *adv_variant_name(int type, int v);
 /* 0 if an object of this type and variant never draws from its rng. */

@@ -33,8 +33,8 @@ typedef struct {
     uint64_t count[ADV_MAX_SLOTS];
 } adv_call;
 
-static const size_t elem_bytes[4] = {sizeof(double), sizeof(size_t), sizeof(uint32_t),
-                                     sizeof(uint64_t)};
+static const size_t elem_bytes[5] = {sizeof(double), sizeof(size_t), sizeof(uint32_t),
+                                     sizeof(uint64_t), 1u};
 
 static double cb_ok(double x, void *ctx) { (void)ctx; return 2.0 * x - 0.3; }
 static double cb_nan(double x, void *ctx) { (void)ctx; (void)x; return NAN; }
@@ -46,6 +46,8 @@ static double cb_huge(double x, void *ctx) { (void)ctx; return 1e300 * (1.0 + x)
 static size_t slot_value(const adv_row *r, int i)
 {
     const adv_slot *s = &r->fn->slot[i];
+    if (s->role == Z_REC && !(r->slot == i && r->mk == MK_SIZE))
+        return adv_record_size(s->type);
     if (r->slot != i || r->mk != MK_SIZE)
         return (size_t)s->base;
     const size_t z = r->zval;
@@ -64,6 +66,8 @@ static size_t length_of(const adv_row *r, const adv_call *c, const adv_len *l)
     case L_OBJN: return adv_state_n(o->type, c->ov[l->a]);
     case L_OBJNN: return adv_state_nn(o->type, c->ov[l->a], r->variant);
     case L_PROD: return slot_value(r, l->a) * slot_value(r, l->b);
+    case L_CONST: return l->c;
+    case L_REC: return adv_record_size(l->a);
     default: /* L_KDIM: k times the dimension of the sampler in slot b */
         return slot_value(r, l->a) *
                (adv_state_nn(T_SAMPLER, OV_BASE, r->variant) / adv_state_n(T_SAMPLER, OV_BASE));
@@ -111,7 +115,7 @@ static void scalars_and_arrays(const adv_row *r, adv_call *c)
         const adv_slot *s = &fn->slot[i];
         const int mut = r->slot == i;
         switch (s->kind) {
-        case K_SIZE: c->a[i].z = mut && r->mk == MK_SIZE ? r->zval : (size_t)s->base; break;
+        case K_SIZE: c->a[i].z = mut && r->mk == MK_SIZE ? r->zval : slot_value(r, i); break;
         case K_DBL: c->a[i].d = adv_scalar_double(r, i); break;
         case K_U32: c->a[i].u32 = (uint32_t)(mut && r->mk == MK_INT ? (uint64_t)r->lval : s->base); break;
         case K_U64: c->a[i].u64 = mut && r->mk == MK_INT ? (uint64_t)r->lval : s->base; break;

@@ -15,7 +15,22 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-int adv_timeout_ms = 1000;
+/* The slowest honest row (eq. 14 at N = MCS_MAX_N, O(N^2) trig) takes about
+ * 0.4 s at -O2: a hang is a row well past that, with room for a loaded
+ * machine and for the sanitizers (ADVERSARIAL_TIMEOUT_MS overrides it, e.g.
+ * under valgrind). */
+#if defined(__SANITIZE_ADDRESS__)
+#define ADV_SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define ADV_SANITIZED 1
+#endif
+#endif
+#ifdef ADV_SANITIZED
+int adv_timeout_ms = 6000;
+#else
+int adv_timeout_ms = 2000;
+#endif
 
 typedef struct {
     int row, done, failed;

@@ -151,6 +151,33 @@ static int spectrum2d_bad(const mcs_spectrum2d *a)
     return 0;
 }
 
+/* Exact spectra at any N: the whole power spectrum at once (O(N^2); above
+ * N = 256 the power at 16 frequencies, O(N) each), the covariance of a few
+ * frequencies with themselves, Var[I] of a ramp. */
+static int tspec_bad(const mcs_theory_spectrum *ts)
+{
+    static double f[MCS_MAX_N], power[MCS_MAX_N];
+    const size_t n = ts->n, at[4] = {0u, 1u, n / 2u, n - 1u};
+    double re = 0.0, im = 0.0, v = 0.0;
+    for (size_t q = 0; q < n; ++q)
+        f[q] = 1.0 + 0.25 * (double)(q % 9u);
+    if (n <= 256u) {
+        const int st = mcs_theory_power_spectrum(ts, n, power);
+        for (size_t q = 0; q < n; ++q)
+            CHECK("theory_power_spectrum", q, st, power[q], 1);
+    } else {
+        for (size_t q = 0; q < n; q += n / 16u)
+            CHECK("theory_spectrum_power", q, mcs_theory_spectrum_power(ts, q, &v), v, 1);
+    }
+    for (int j = 0; j < 4; ++j) {
+        CHECK("theory_spectrum_mean re", at[j], mcs_theory_spectrum_mean(ts, at[j], &re, &im), re, 0);
+        CHECK("theory_spectrum_covariance(k,k) re", at[j],
+              mcs_theory_spectrum_covariance(ts, at[j], at[j], &re, &im), re, 1);
+    }
+    CHECK("theory_spectrum_variance", n, mcs_theory_spectrum_variance(ts, n, ts->k, f, &v), v, 1);
+    return 0;
+}
+
 /* Importance: p_n finite and > 0, the CDF monotone up to exactly 1, and the
  * harmonic mean in (0, 1] as documented. */
 static int importance_bad(const mcs_importance *imp)
@@ -187,6 +214,7 @@ const char *adv_health(int type, const void *obj, long *calls)
     case T_POINTSET2D: broke = pointset2d_bad(obj); break;
     case T_SPECTRUM2D: broke = spectrum2d_bad(obj); break;
     case T_IMP: broke = importance_bad(obj); break;
+    case T_TSPEC: broke = ((const mcs_theory_spectrum *)obj)->n > 0u && tspec_bad(obj); break;
     default: break;
     }
     return broke ? health_msg : NULL;

@@ -14,11 +14,12 @@ static const size_t type_sizes[T_COUNT] = {
     0, sizeof(mcs_rng), sizeof(mcs_importance), sizeof(mcs_pattern), sizeof(mcs_sampler),
     sizeof(mcs_pattern2d), sizeof(mcs_welford), sizeof(mcs_dft), sizeof(mcs_spectrum),
     sizeof(mcs_moment), sizeof(mcs_autocorr), sizeof(mcs_pointset), sizeof(mcs_pointset2d),
-    sizeof(mcs_spectrum2d), sizeof(mcs_theory)};
+    sizeof(mcs_spectrum2d), sizeof(mcs_theory), sizeof(mcs_theory_spectrum)};
 
 static const char *const type_names[T_COUNT] = {
     "-", "rng", "importance", "pattern", "sampler", "pattern2d", "welford", "dft",
-    "spectrum", "moment", "autocorr", "pointset", "pointset2d", "spectrum2d", "theory"};
+    "spectrum", "moment", "autocorr", "pointset", "pointset2d", "spectrum2d", "theory",
+    "theory_spectrum"};
 
 size_t adv_type_size(int type) { return type_sizes[type]; }
 const char *adv_type_name(int type) { return type_names[type]; }
@@ -41,6 +42,7 @@ const char *adv_variant_name(int type, int v)
     case T_SPECTRUM: return path_names[v % 3];
     case T_PAT:
     case T_THEORY:
+    case T_TSPEC:
         v %= 9;
         variant_buf[0] = '\0';
         strcat(variant_buf, mcs_pattern_kind_str(pat_kinds[v]));
@@ -103,11 +105,11 @@ static void pat_build(mcs_pattern *pat, int v, size_t n)
 /* N of each sized type in the states OV_BASE, OV_SMALL, OV_BIG. */
 static size_t size_of_state(int type, int ov)
 {
-    static const size_t base[T_COUNT] = {0, 0, 12, 12, 8, 6, 0, 12, 12, 12, 12, 8, 4, 6, 12};
-    static const size_t small[T_COUNT] = {0, 0, 7, 7, 4, 4, 0, 7, 7, 7, 7, 3, 2, 3, 7};
+    static const size_t base[T_COUNT] = {0, 0, 12, 12, 8, 6, 0, 12, 12, 12, 12, 8, 4, 6, 12, 12};
+    static const size_t small[T_COUNT] = {0, 0, 7, 7, 4, 4, 0, 7, 7, 7, 7, 3, 2, 3, 7, 7};
     static const size_t big[T_COUNT] = {0, 0, MCS_MAX_N, MCS_MAX_N, 64, 64, 0, MCS_MAX_N,
                                         MCS_MAX_N, MCS_MAX_COV_N, MCS_MAX_N, MCS_MAX_FREQ_1D,
-                                        MCS_MAX_FREQ, MCS_MAX_SIDE, MCS_MAX_COV_N};
+                                        MCS_MAX_FREQ, MCS_MAX_SIDE, MCS_MAX_COV_N, MCS_MAX_N};
     return ov == OV_SMALL ? small[type] : ov == OV_BIG ? big[type] : base[type];
 }
 
@@ -171,10 +173,11 @@ static void init_sized(int type, int v, size_t n, void *obj)
     case T_POINTSET: (void)mcs_pointset_init(obj, n); break;
     case T_POINTSET2D: (void)mcs_pointset2d_init(obj, n); break;
     case T_SPECTRUM2D: (void)mcs_spectrum2d_init(obj, n, n == 6u ? 4u : n == 3u ? 5u : n); break;
-    case T_THEORY: {
+    case T_THEORY:
+    case T_TSPEC: {
         mcs_pattern *pat = adv_dep_alloc(sizeof *pat);
         pat_build(pat, v, n);
-        (void)mcs_theory_init(obj, pat);
+        (void)(type == T_THEORY ? mcs_theory_init(obj, pat) : mcs_theory_spectrum_init(obj, pat));
         break;
     }
     default: break;
@@ -230,6 +233,7 @@ size_t adv_obj_n(int type, const void *obj)
     case T_POINTSET2D: return ((const mcs_pointset2d *)obj)->freq_max;
     case T_SPECTRUM2D: return ((const mcs_spectrum2d *)obj)->n_x;
     case T_THEORY: return ((const mcs_theory *)obj)->n;
+    case T_TSPEC: return ((const mcs_theory_spectrum *)obj)->n;
     default: return 0;
     }
 }
@@ -269,4 +273,41 @@ uint64_t adv_count(int type, const void *obj)
     case T_SPECTRUM2D: return ((const mcs_spectrum2d *)obj)->count;
     default: return 0;
     }
+}
+
+/* ---- records (io.h) ---- */
+
+static mcs_status save(int type, const void *o, size_t cap, void *buf, size_t *len)
+{
+    switch (type) {
+    case T_WELFORD: return mcs_io_save_welford(o, cap, buf, len);
+    case T_SPECTRUM: return mcs_io_save_spectrum(o, cap, buf, len);
+    case T_MOMENT: return mcs_io_save_moment(o, cap, buf, len);
+    case T_AUTOCORR: return mcs_io_save_autocorr(o, cap, buf, len);
+    case T_POINTSET: return mcs_io_save_pointset(o, cap, buf, len);
+    case T_POINTSET2D: return mcs_io_save_pointset2d(o, cap, buf, len);
+    default: return mcs_io_save_spectrum2d(o, cap, buf, len);
+    }
+}
+
+/* The baseline object is built in a buffer of its own (records are of
+ * accumulators, which have no dependencies in the arena). */
+static const void *record_source(int type)
+{
+    static _Alignas(64) unsigned char obj[sizeof(mcs_spectrum)];
+    (void)adv_build(type, OV_BASE, 0, obj);
+    return obj;
+}
+
+size_t adv_record_size(int type)
+{
+    size_t len = 0;
+    (void)save(type, record_source(type), 0u, NULL, &len);
+    return len;
+}
+
+void adv_record(int type, void *buf)
+{
+    size_t len = 0;
+    (void)save(type, record_source(type), adv_record_size(type), buf, &len);
 }

@@ -150,6 +150,13 @@ static void dbl_rows(row_sink *k, int i, const adv_slot *s, int is_array)
     }
 }
 
+static void record_rows(row_sink *k, int i)
+{
+    add(k, i, MK_BINS, 0, EX_ERR, "magic byte flipped");
+    add(k, i, MK_BINS, 1, EX_ERR, "middle byte flipped");
+    add(k, i, MK_BINS, 2, EX_ERR, "CRC byte flipped");
+}
+
 static void bins_rows(row_sink *k, int i)
 {
     add(k, i, MK_BINS, 0, EX_ERR, "[last] N");
@@ -162,6 +169,19 @@ static void size_rows(row_sink *k, int i, const adv_slot *s)
 {
     size_t vals[8];
     int nv = 0;
+    if (s->role == Z_REC) { /* a record's exact length: anything else is refused */
+        const size_t n = adv_record_size(s->type);
+        const size_t recs[5] = {0u, 1u, n - 1u, n + 1u, SIZE_MAX};
+        char what[32];
+        for (int a = 0; a < 5; ++a) {
+            if (a == 4)
+                snprintf(what, sizeof what, "SIZE_MAX");
+            else
+                snprintf(what, sizeof what, "%zu", recs[a]);
+            add(k, i, MK_SIZE, 0, EX_ERR, what)->zval = recs[a];
+        }
+        return;
+    }
     const int nomax = (s->flags & F_NOMAX) != 0;
     vals[nv++] = 0u;
     vals[nv++] = 1u;
@@ -287,6 +307,8 @@ size_t adv_rows(const adv_fn *fn, adv_row *rows, size_t cap)
                 dbl_rows(&k, i, s, 1);
             else if (s->kind == K_ARR_IN && s->role == R_BINS)
                 bins_rows(&k, i);
+            else if (s->kind == K_ARR_IN && s->role == R_RECORD)
+                record_rows(&k, i);
             else if (s->kind == K_DBL)
                 dbl_rows(&k, i, s, 0);
             else if (s->kind == K_SIZE)

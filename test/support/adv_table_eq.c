@@ -35,7 +35,6 @@ static int t_eq58_bound_corrected(const adv_val *a) { return mcs_eq58_bound_corr
 #define N_MATCH SZ_MATCH("n", BN, MCS_MAX_COV_N)
 #define K_MATCH SZ_MATCH("k", BK, SIZE_MAX)
 #define N_ANY SZ_DEF("n", BN, 1, MCS_MAX_N, 0)
-#define N_COV SZ_DEF("n", BN, 1, MCS_MAX_COV_N, 0)
 #define K_ANY SZ_NOMAX("k", BK)
 #define FREQ1(nm, b) SZ_INDEX(nm, b, 1, BN - 1u, 0)
 #define FREQ0(nm, b) SZ_INDEX(nm, b, 0, BN - 1u, 0)
@@ -59,10 +58,10 @@ const adv_fn adv_fns_eq[] = {
     FN(eq11_unbiased_mean, EF_NONE, 1, 0, SZ_DEF("n", BN, 1, MCS_MAX_N, F_OKIN), F_N("f", 0),
        OUT_VAL("out")),
     FN(eq13_variance, EF_NONE, 1, 0, TH, N_MATCH, K_MATCH, F_N("f", 1), OUT_VAL("out")),
-    FN(eq14_variance, EF_NONE, 1, 0, SZ_DEF("n", BN, 1, MCS_MAX_COV_N, F_OKIN), K_ANY,
+    FN(eq14_variance, EF_NONE, 1, 0, SZ_DEF("n", BN, 1, MCS_MAX_N, F_OKIN), K_ANY,
        F_N("f", 0), F_N("power", 0), OUT_VAL("out")),
     EQ_NKF(eq23_random_power, FREQ1, OUT_NN("out")),
-    FN(eq24_random_variance, EF_NONE, 1, 0, N_COV, K_ANY, F_N("f", 0), OUT_NN("out")),
+    FN(eq24_random_variance, EF_NONE, 1, 0, N_ANY, K_ANY, F_N("f", 0), OUT_NN("out")),
     FN(eq25_random_variance, EF_NONE, 1, 0, N_ANY, K_ANY, F_N("f", 0), OUT_NN("out")),
     EQ_NKFF(eq30_stratified_delta_printed, FREQ1),
     EQ_NKFF(eq30_stratified_delta_corrected, FREQ0),

@@ -81,6 +81,13 @@ void adv_fill_array(const adv_row *r, int i, void *p, size_t len, size_t n_bins)
 {
     const adv_slot *s = &r->fn->slot[i];
     const int mutated = r->slot == i;
+    if (s->role == R_RECORD) {
+        unsigned char *b = p;
+        adv_record(s->len.a, b);
+        if (mutated && r->mk == MK_BINS && len > 0u) /* a flipped bit: header, middle, CRC */
+            b[r->mv == 0 ? 0u : r->mv == 1 ? len / 2u : len - 1u] ^= 0x10u;
+        return;
+    }
     if (s->role == R_BINS) {
         size_t *b = p;
         for (size_t j = 0; j < len; ++j)
