@@ -13,7 +13,8 @@
  *   moved a count by exactly one per add and to the sum on a merge.
  * ASan and UBSan (the build flags) catch the rest.
  *
- * Findings of open items of issue 10 are tagged with the item. With
+ * Findings of open items of issue 10 are tagged with the item (101-103: the
+ * new findings N1-N3 of test/test_adversarial.c). With
  * FUZZ_API_KNOWN=skip they are counted instead of fatal, and calls known to
  * hang (an unseeded rng, huge K or radius) are not made, so the fuzzer can
  * look past them for new defects; FUZZ_API_KNOWN=<item> does the same for
@@ -108,7 +109,12 @@ static void finding(int item, const char *fn, const char *fmt, ...)
     }
     va_list ap;
     va_start(ap, fmt);
-    fprintf(stderr, "fuzz_api: [%s %d] %s: ", item ? "issue 10 item" : "new finding", item, fn);
+    if (item > 100)
+        fprintf(stderr, "fuzz_api: [finding N%d] %s: ", item - 100, fn);
+    else if (item > 0)
+        fprintf(stderr, "fuzz_api: [issue 10 item %d] %s: ", item, fn);
+    else
+        fprintf(stderr, "fuzz_api: [new finding] %s: ", fn);
     vfprintf(stderr, fmt, ap);
     fputc('\n', stderr);
     va_end(ap);
@@ -117,7 +123,7 @@ static void finding(int item, const char *fn, const char *fmt, ...)
 
 /* ---- objects: two of each type ---- */
 
-enum { RNG, IMP, PAT, SMP, P2D, WEL, DFT, SPEC, MOM, AC, PS, PS2, S2, TH, NTYPES };
+enum { RNG, IMP, PAT, SMP, P2D, WEL, DFT, SPEC, MOM, AC, PS, PS2, S2, TH, TS, NTYPES };
 static mcs_rng o_rng[2];
 static mcs_importance o_imp[2];
 static mcs_pattern o_pat[2];
@@ -132,13 +138,14 @@ static mcs_pointset o_ps[2];
 static mcs_pointset2d o_ps2[2];
 static mcs_spectrum2d o_s2[2];
 static mcs_theory o_th[2];
+static mcs_theory_spectrum o_ts[2];
 static void *const objs[NTYPES] = {o_rng, o_imp, o_pat, o_smp, o_p2d, o_wel, o_dft, o_spec, o_mom,
-                                   o_ac, o_ps, o_ps2, o_s2, o_th};
+                                   o_ac, o_ps, o_ps2, o_s2, o_th, o_ts};
 static const size_t obj_size[NTYPES] = {
     sizeof(mcs_rng), sizeof(mcs_importance), sizeof(mcs_pattern), sizeof(mcs_sampler),
     sizeof(mcs_pattern2d), sizeof(mcs_welford), sizeof(mcs_dft), sizeof(mcs_spectrum),
     sizeof(mcs_moment), sizeof(mcs_autocorr), sizeof(mcs_pointset), sizeof(mcs_pointset2d),
-    sizeof(mcs_spectrum2d), sizeof(mcs_theory)};
+    sizeof(mcs_spectrum2d), sizeof(mcs_theory), sizeof(mcs_theory_spectrum)};
 static unsigned dirty;
 
 static void *obj(int type, unsigned i)
@@ -470,7 +477,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     in_p = data;
     in_n = size;
     for (int ops = 0; in_n > 0u && ops < 64; ++ops) {
-        const unsigned op = byte() % 24u;
+        const unsigned op = byte() % 25u;
         if (op < 7u)
             op_readout(op);
         else if (op < 10u)
@@ -489,6 +496,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             case 20: op_theory_init(); break;
             case 21: byte() % 2u ? op_eq_plain() : op_eq_importance(); break;
             case 22: byte() % 2u ? op_2d() : op_misc(); break;
+            case 23: op_save_load(); break;
             default: corrupt(); break;
             }
     }

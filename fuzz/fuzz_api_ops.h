@@ -37,6 +37,10 @@ R6(moment_estimator_mean, mcs_moment) R6(moment_variance, mcs_moment)
 R6(theory_estimator_mean, mcs_theory) R6(theory_variance, mcs_theory) R6(eq13_variance, mcs_theory)
 R7(moment_estimator_covariance, mcs_moment) R7(theory_estimator_covariance, mcs_theory)
 R7(eq2_uncorrelated_variance, mcs_theory) R7(eq4_correlated_variance, mcs_theory)
+R1(theory_spectrum_power, mcs_theory_spectrum) R2(theory_spectrum_mean, mcs_theory_spectrum)
+R3(theory_spectrum_cross, mcs_theory_spectrum) R3(theory_spectrum_covariance, mcs_theory_spectrum)
+R6(theory_spectrum_estimator_mean, mcs_theory_spectrum) R6(theory_spectrum_variance, mcs_theory_spectrum)
+R7(theory_spectrum_estimator_covariance, mcs_theory_spectrum)
 
 #define E(f, type, nn) {(void (*)(void))a_##f, type, nn, "mcs_" #f}
 typedef struct {
@@ -49,23 +53,27 @@ static const readout r1s[] = {
     E(moment_bin_mean, MOM, 0), E(moment_power, MOM, 1), E(theory_bin_mean, TH, 0),
     E(theory_power, TH, 1), E(pointset2d_radial, PS2, 1), E(pointset2d_radial_stderr, PS2, 1),
     E(pointset2d_anisotropy, PS2, 0), E(pointset2d_exact_radial, P2D, 1),
-    E(pointset2d_exact_anisotropy, P2D, 0)};
+    E(pointset2d_exact_anisotropy, P2D, 0), E(theory_spectrum_power, TS, 1)};
 static const readout r2s[] = {E(spectrum_mean, SPEC, 0), E(moment_mean, MOM, 0),
-                              E(theory_mean, TH, 0), E(importance_q, IMP, 0)};
+                              E(theory_mean, TH, 0), E(importance_q, IMP, 0),
+                              E(theory_spectrum_mean, TS, 0)};
 static const readout r5s[] = {E(moment_cross_matrix, MOM, 1), E(moment_covariance_matrix, MOM, 1),
                               E(theory_cross_matrix, TH, 1), E(theory_covariance_matrix, TH, 1)};
 static const readout r3s[] = {E(moment_cross, MOM, 1), E(moment_covariance, MOM, 1),
                               E(theory_cross, TH, 1), E(theory_covariance, TH, 1),
-                              E(spectrum2d_mean, S2, 0)};
+                              E(spectrum2d_mean, S2, 0), E(theory_spectrum_cross, TS, 1),
+                              E(theory_spectrum_covariance, TS, 1)};
 static const readout r4s[] = {E(moment_bin_second, MOM, 0), E(theory_bin_second, TH, 0),
                               E(spectrum2d_power, S2, 1), E(spectrum2d_power_stderr, S2, 1),
                               E(spectrum2d_mean_stderr, S2, 1)};
 static const readout r6s[] = {E(moment_estimator_mean, MOM, 0), E(moment_variance, MOM, 1),
                               E(theory_estimator_mean, TH, 0), E(theory_variance, TH, 1),
-                              E(eq13_variance, TH, 0)};
+                              E(eq13_variance, TH, 0), E(theory_spectrum_estimator_mean, TS, 0),
+                              E(theory_spectrum_variance, TS, 1)};
 static const readout r7s[] = {E(moment_estimator_covariance, MOM, 0),
                               E(theory_estimator_covariance, TH, 0),
-                              E(eq2_uncorrelated_variance, TH, 1), E(eq4_correlated_variance, TH, 1)};
+                              E(eq2_uncorrelated_variance, TH, 1), E(eq4_correlated_variance, TH, 1),
+                              E(theory_spectrum_estimator_covariance, TS, 0)};
 #define PICK(table) (&table[byte() % (sizeof table / sizeof table[0])])
 
 /* Skipped under FUZZ_API_KNOWN=skip: calls that hang today. */
@@ -268,7 +276,7 @@ static void op_sampler_pattern2d(void)
         const uint32_t l = (uint32_t)word(byte() % 3u), p = (uint32_t)word(4);
         const uint32_t i = (uint32_t)word(byte() % 3u), v = mcs_pattern2d_permute(i, l, p);
         if ((i < l && v >= l) || (i >= l && v != 0u))
-            finding(0, "mcs_pattern2d_permute", "permute(%u, %u, %u) = %u", i, l, p, v);
+            finding(101, "mcs_pattern2d_permute", "permute(%u, %u, %u) = %u", i, l, p, v);
         return;
     }
     }
@@ -312,15 +320,84 @@ static void op_dft_autocorr(void)
         vals(st, im, which == 2 ? len / 2u + 1u : len, 0);
 }
 
+/* Exact moments (N x N) or exact spectra (any N) of a pattern; the power
+ * spectrum of the latter. */
 static void op_theory_init(void)
 {
-    mcs_theory *th = obj_or_null(TH);
+    const unsigned which = byte() % 3u;
+    void *th = obj_or_null(which == 0 ? TH : TS);
     const mcs_pattern *pat = obj_or_null(PAT);
+    const size_t n = size_any(), len = n <= MAXLEN ? n : 1u;
     if (skip_known && pat != NULL && pat->k > ((size_t)1 << 20))
         return; /* item 4: O(K) for the uniform pattern */
-    begin("mcs_theory_init");
+    begin(which == 0 ? "mcs_theory_init" : which == 1 ? "mcs_theory_spectrum_init" : "mcs_theory_power_spectrum");
+    if (which == 2) {
+        double *power = out(dout[0], len, 8);
+        reg(th, th ? sizeof(mcs_theory_spectrum) : 0u, 0u);
+        vals(end(mcs_theory_power_spectrum(th, n, power)), power, len, 1);
+        return;
+    }
     reg(pat, pat ? sizeof *pat : 0u, 0u);
-    end(mcs_theory_init(inout(TH, th), pat));
+    end(which == 0 ? mcs_theory_init(inout(TH, th), pat) : mcs_theory_spectrum_init(inout(TS, th), pat));
+}
+
+/* A probe read-out of an accumulator, to compare an object with its reload. */
+static mcs_status probe(int type, const void *o, size_t f, double *v)
+{
+    switch (type) {
+    case WEL: return mcs_welford_variance(o, v);
+    case SPEC: return mcs_spectrum_power(o, f, v);
+    case MOM: return mcs_moment_power(o, f, v);
+    case PS: return mcs_pointset_power(o, (long)f, v);
+    case PS2: return mcs_pointset2d_radial(o, f, v);
+    case S2: return mcs_spectrum2d_power(o, f, 0u, v);
+    default: *v = 0.0; return MCS_OK; /* autocorr: its read-outs need a plan */
+    }
+}
+
+/* Save an accumulator, load the record into the other object of its type:
+ * a record save writes must load, and the loaded object must read out like
+ * the saved one (io.h). */
+static void op_save_load(void)
+{
+    static unsigned char rec[(1u << 18) + GUARD];
+    const int type = acc_types[byte() % 7u];
+    const unsigned i = byte();
+    void *src = obj(type, i), *dst = obj(type, i + 1u);
+    const size_t room = 1u << 18, cap = byte() % 8u ? room : size_any() % room, f = byte() % 8u;
+    size_t *len = out(zout, 1, sizeof(size_t));
+    begin("mcs_io_save");
+    reg(src, obj_size[type], 0u);
+    mcs_status st;
+    switch (type) {
+    case WEL: st = mcs_io_save_welford(src, cap, out(rec, cap, 1), len); break;
+    case SPEC: st = mcs_io_save_spectrum(src, cap, out(rec, cap, 1), len); break;
+    case MOM: st = mcs_io_save_moment(src, cap, out(rec, cap, 1), len); break;
+    case AC: st = mcs_io_save_autocorr(src, cap, out(rec, cap, 1), len); break;
+    case PS: st = mcs_io_save_pointset(src, cap, out(rec, cap, 1), len); break;
+    case PS2: st = mcs_io_save_pointset2d(src, cap, out(rec, cap, 1), len); break;
+    default: st = mcs_io_save_spectrum2d(src, cap, out(rec, cap, 1), len); break;
+    }
+    if (end(st) != MCS_OK)
+        return;
+    begin("mcs_io_load");
+    reg(rec, *len, 0u);
+    switch (type) {
+    case WEL: st = mcs_io_load_welford(inout(type, dst), *len, rec); break;
+    case SPEC: st = mcs_io_load_spectrum(inout(type, dst), *len, rec); break;
+    case MOM: st = mcs_io_load_moment(inout(type, dst), *len, rec); break;
+    case AC: st = mcs_io_load_autocorr(inout(type, dst), *len, rec); break;
+    case PS: st = mcs_io_load_pointset(inout(type, dst), *len, rec); break;
+    case PS2: st = mcs_io_load_pointset2d(inout(type, dst), *len, rec); break;
+    default: st = mcs_io_load_spectrum2d(inout(type, dst), *len, rec); break;
+    }
+    if (end(st) != MCS_OK)
+        finding(0, cur_fn, "a record save wrote does not load (%s)", mcs_status_str(st));
+    double a = 0.0, b = 0.0;
+    const mcs_status sa = probe(type, src, f, &a), sb = probe(type, dst, f, &b);
+    if (sa != sb || (sa == MCS_OK && !(fabs(a - b) <= 1e-12 * fabs(a) + 1e-300)))
+        finding(type == MOM ? 103 : 0, cur_fn, "read-out %zu: saved %.17g (%s), loaded %.17g (%s)", f,
+                a, mcs_status_str(sa), b, mcs_status_str(sb));
 }
 
 /* Closed forms of eq.h without objects: (n, k, freq[, freq]) and (n, k, f). */
