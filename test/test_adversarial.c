@@ -9,7 +9,9 @@
  * Rows that fail today because of an open defect of issue 10 are marked with
  * the item in `known` below and run by default (they fail until the fix
  * lands); ADVERSARIAL_KNOWN=skip skips them. ADVERSARIAL_VERBOSE=1 lists
- * every failing row (default: the first 12 per function). */
+ * every failing row (default: the first 12 per function);
+ * ADVERSARIAL_TIMEOUT_MS sets the time after which a row counts as hung
+ * (2 s, 6 s under ASan; raise it under valgrind). */
 #include "adv.h"
 #include "unity.h"
 
@@ -28,7 +30,8 @@ void tearDown(void) {}
  * label and, if why is not NULL, its failure message holds why. Rows matched
  * without a message (hangs) are not even run under ADVERSARIAL_KNOWN=skip;
  * the others run and their failure is excused if it is the known one. Items
- * above 100 are new findings of this table (see the report in the commit). */
+ * above 100 are the new findings N1-N3 of this table and the fuzzer (their
+ * regression tests below say what they are). */
 
 typedef struct {
     const char *fn, *label, *why;
