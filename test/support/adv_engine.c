@@ -57,14 +57,15 @@ static size_t slot_value(const adv_row *r, int i)
 
 static size_t length_of(const adv_row *r, const adv_call *c, const adv_len *l)
 {
-    const adv_slot *o = &r->fn->slot[l->a];
+    /* L_REC and L_CONST name no slot */
+    const int t = l->op == L_OBJN || l->op == L_OBJNN ? r->fn->slot[l->a].type : T_NONE;
     switch (l->op) {
     case L_SLOT: return slot_value(r, l->a);
     case L_2SLOT: return 2u * slot_value(r, l->a);
     case L_SQ: return slot_value(r, l->a) * slot_value(r, l->a);
     case L_HALF: return slot_value(r, l->a) / 2u + 1u;
-    case L_OBJN: return adv_state_n(o->type, c->ov[l->a]);
-    case L_OBJNN: return adv_state_nn(o->type, c->ov[l->a], r->variant);
+    case L_OBJN: return adv_state_n(t, c->ov[l->a]);
+    case L_OBJNN: return adv_state_nn(t, c->ov[l->a], r->variant);
     case L_PROD: return slot_value(r, l->a) * slot_value(r, l->b);
     case L_CONST: return l->c;
     case L_REC: return adv_record_size(l->a);
