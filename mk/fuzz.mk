@@ -84,3 +84,6 @@ endef
 
 # ------------------------------------------------------------------ targets
 $(eval $(call MCS_FUZZ_TARGET,load,30))
+$(eval $(call MCS_FUZZ_TARGET,api,30))
+# fuzz_api.c includes its second half (one translation unit).
+$(FUZZ_BUILD)/fuzz_api: fuzz/fuzz_api_ops.h
