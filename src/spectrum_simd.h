@@ -1,0 +1,153 @@
+/* The vectorisable kernels of the spectrum accumulator, written once and
+ * compiled twice by spectrum_kernels.c: KERNEL(name) names this copy's
+ * functions (name_generic for the baseline ISA, name_avx2 under a target
+ * pragma on x86-64). Loops over one block of MCS_SPECTRUM_BLOCK frequencies
+ * have a fixed trip count and no branches, so the compiler vectorises them
+ * at -O2; every lane does the same IEEE operations in the same order in
+ * both copies (no contraction into FMA: ISO C mode), so the copies give the
+ * same bits and the choice between them is invisible in the results.
+ *
+ * Included only by spectrum_kernels.c, after its definitions of BLOCK,
+ * CHUNK, unit_factors, and with KERNEL defined. */
+
+/* The update of one block from its values: x = xr + i xi, power xp. A unit
+ * of weight w joining closed units of weight w_old moves each mean by f d
+ * and adds g |d|^2 to its M2 (unit_factors). */
+static inline void KERNEL(update_lanes)(mcs_spectrum *acc, size_t q0, const double *restrict xr,
+                                        const double *restrict xi, const double *restrict xp,
+                                        unit_factors u)
+{
+    double *restrict mr = acc->mean_re + q0, *restrict mi = acc->mean_im + q0;
+    double *restrict mp = acc->mean_pow + q0;
+    double *restrict m2s = acc->m2_s + q0, *restrict m2p = acc->m2_pow + q0;
+    for (size_t r = 0; r < BLOCK; ++r) {
+        const double dr = xr[r] - mr[r], di = xi[r] - mi[r], dp = xp[r] - mp[r];
+        mr[r] += u.f * dr;
+        mi[r] += u.f * di;
+        mp[r] += u.f * dp;
+        m2s[r] += u.g * (dr * dr + di * di);
+        m2p[r] += u.g * (dp * dp);
+    }
+}
+
+/* One trial's block: its power is |S_k|^2. */
+static inline void KERNEL(update_block)(mcs_spectrum *acc, size_t q0, const double *restrict xr,
+                                        const double *restrict xi, unit_factors u)
+{
+    double xp[BLOCK];
+    for (size_t r = 0; r < BLOCK; ++r)
+        xp[r] = xr[r] * xr[r] + xi[r] * xi[r];
+    KERNEL(update_lanes)(acc, q0, xr, xi, xp, u);
+}
+
+/* Every block from arrays: x = xr + i xi and power xp, or |x|^2 without xp. */
+static void KERNEL(update_all)(mcs_spectrum *acc, const double *xr, const double *xi,
+                               const double *xp, unit_factors u)
+{
+    const size_t blocks = mcs_spectrum_blocks_(acc->n);
+    for (size_t b = 0; b < blocks; ++b) {
+        const size_t q0 = b * BLOCK;
+        if (xp != NULL)
+            KERNEL(update_lanes)(acc, q0, xr + q0, xi + q0, xp + q0, u);
+        else
+            KERNEL(update_block)(acc, q0, xr + q0, xi + q0, u);
+    }
+}
+
+/* Samples [j0, j1) of t, weights scaled by N^{-1/2} (eq. 7): the twiddle
+ * index of each (k0 n_j mod N, from k0 = 0), its step BLOCK n_j mod N, and
+ * its in-block phases w e^{-2 pi i r n_j/N}, r < BLOCK, as (re[8], im[8]). */
+static void KERNEL(sparse_setup)(mcs_spectrum *acc, const mcs_spectrum_trial_ *t, size_t j0,
+                                 size_t j1)
+{
+    const size_t n = acc->n;
+    const double *ct = acc->plan.cos_table, *st = acc->plan.sin_table;
+    const double scale = 1.0 / sqrt((double)n);
+    for (size_t j = j0; j < j1; ++j) {
+        const size_t b = mcs_spectrum_trial_bin_(t, n, j);
+        const double w = scale * mcs_spectrum_trial_weight_(t, j);
+        double *pr = acc->phase + (j - j0) * 2u * BLOCK, *pi = pr + BLOCK;
+        size_t i = 0u;
+        for (size_t r = 0; r < BLOCK; ++r) {
+            pr[r] = w * ct[i];
+            pi[r] = -w * st[i];
+            i += b;
+            i = i >= n ? i - n : i;
+        }
+        acc->chunk_index[j - j0] = 0u;
+        acc->chunk_step[j - j0] = (BLOCK * b) % n; /* exact: b < N */
+    }
+}
+
+/* S_k for the next block from the samples of the current setup: the table is
+ * read once per sample (e^{-2 pi i k0 n_j/N}) and multiplied by its in-block
+ * phases, (c - i s)(pr + i pi) = (c pr + s pi) + i (c pi - s pr). The 16
+ * accumulators are named scalars so that they stay in registers. */
+#define MCS_LANE_(r)                                                                       \
+    ar##r += c * pr[r] + s * pi[r];                                                        \
+    ai##r += c * pi[r] - s * pr[r]
+static void KERNEL(sparse_block)(mcs_spectrum *acc, size_t count, double *restrict out_re,
+                                 double *restrict out_im)
+{
+    const size_t n = acc->n;
+    const double *ct = acc->plan.cos_table, *st = acc->plan.sin_table;
+    double ar0 = 0.0, ar1 = 0.0, ar2 = 0.0, ar3 = 0.0, ar4 = 0.0, ar5 = 0.0, ar6 = 0.0, ar7 = 0.0;
+    double ai0 = 0.0, ai1 = 0.0, ai2 = 0.0, ai3 = 0.0, ai4 = 0.0, ai5 = 0.0, ai6 = 0.0, ai7 = 0.0;
+    for (size_t j = 0; j < count; ++j) {
+        const size_t i = acc->chunk_index[j];
+        const double c = ct[i], s = st[i];
+        const double *restrict pr = acc->phase + j * 2u * BLOCK, *restrict pi = pr + BLOCK;
+        MCS_LANE_(0);
+        MCS_LANE_(1);
+        MCS_LANE_(2);
+        MCS_LANE_(3);
+        MCS_LANE_(4);
+        MCS_LANE_(5);
+        MCS_LANE_(6);
+        MCS_LANE_(7);
+        const size_t next = i + acc->chunk_step[j];
+        acc->chunk_index[j] = next >= n ? next - n : next;
+    }
+    out_re[0] = ar0, out_re[1] = ar1, out_re[2] = ar2, out_re[3] = ar3;
+    out_re[4] = ar4, out_re[5] = ar5, out_re[6] = ar6, out_re[7] = ar7;
+    out_im[0] = ai0, out_im[1] = ai1, out_im[2] = ai2, out_im[3] = ai3;
+    out_im[4] = ai4, out_im[5] = ai5, out_im[6] = ai6, out_im[7] = ai7;
+}
+#undef MCS_LANE_
+
+/* The SPARSE path for one trial. Up to CHUNK samples, each block is updated
+ * while in registers; more are summed chunk by chunk into acc->re, acc->im
+ * and updated once. Pad lanes k > N/2 are zeroed so the pad stays 0. */
+static void KERNEL(sparse_trial)(mcs_spectrum *acc, const mcs_spectrum_trial_ *t, unit_factors u)
+{
+    const size_t n = acc->n, h1 = n / 2u + 1u, blocks = mcs_spectrum_blocks_(n);
+    double ar[BLOCK], ai[BLOCK];
+    if (t->k <= CHUNK) {
+        KERNEL(sparse_setup)(acc, t, 0u, t->k);
+        for (size_t b = 0; b + 1u < blocks; ++b) {
+            KERNEL(sparse_block)(acc, t->k, ar, ai);
+            KERNEL(update_block)(acc, b * BLOCK, ar, ai, u);
+        }
+        KERNEL(sparse_block)(acc, t->k, ar, ai);
+        for (size_t r = h1 - (blocks - 1u) * BLOCK; r < BLOCK; ++r)
+            ar[r] = ai[r] = 0.0;
+        KERNEL(update_block)(acc, (blocks - 1u) * BLOCK, ar, ai, u);
+        return;
+    }
+    memset(acc->re, 0, blocks * BLOCK * sizeof acc->re[0]);
+    memset(acc->im, 0, blocks * BLOCK * sizeof acc->im[0]);
+    for (size_t j0 = 0; j0 < t->k; j0 += CHUNK) {
+        const size_t j1 = t->k - j0 > CHUNK ? j0 + CHUNK : t->k;
+        KERNEL(sparse_setup)(acc, t, j0, j1);
+        for (size_t b = 0; b < blocks; ++b) {
+            KERNEL(sparse_block)(acc, j1 - j0, ar, ai);
+            for (size_t r = 0; r < BLOCK; ++r) {
+                acc->re[b * BLOCK + r] += ar[r];
+                acc->im[b * BLOCK + r] += ai[r];
+            }
+        }
+    }
+    for (size_t q = h1; q < blocks * BLOCK; ++q)
+        acc->re[q] = acc->im[q] = 0.0;
+    KERNEL(update_all)(acc, acc->re, acc->im, NULL, u);
+}
