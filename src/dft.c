@@ -232,8 +232,8 @@ void mcs_dft_half_(mcs_dft *plan, const double *s, double *re, double *im)
  * ns per N log2 N plus its copy in and out. */
 double mcs_dft_cost_(const mcs_dft *plan, size_t nnz)
 {
-    const double n = (double)plan->n, nlog = n * log2(n > 2.0 ? n : 2.0);
-    const double h1 = (double)(plan->n / 2u + 1u);
+    const size_t half = plan->n / 2u + 1u; /* the frequencies computed */
+    const double n = (double)plan->n, nlog = n * log2(n > 2.0 ? n : 2.0), h1 = (double)half;
     const double used = (double)(nnz < plan->n ? nnz : plan->n);
     switch (plan->path) {
     case MCS_DFT_PATH_KISS_REAL: return 40.0 + 0.42 * nlog;
