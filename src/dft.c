@@ -7,6 +7,41 @@
 #include "dft_internal.h"
 #include "internal.h"
 #include "kiss_fft.h"
+#include "simd.h"
+
+#if MCS_AVX2_CLONES
+#include <cpuid.h>
+#endif
+
+#define KERNEL(name) name##_generic
+#include "dft_simd.h"
+#undef KERNEL
+#if MCS_AVX2_CLONES
+MCS_AVX2_BEGIN
+#define KERNEL(name) name##_avx2
+#include "dft_simd.h"
+#undef KERNEL
+MCS_AVX2_END
+#endif
+
+int mcs_cpu_avx2_(void)
+{
+#if MCS_AVX2_CLONES
+    unsigned a, b, c, d;
+    /* The OS saves YMM state (OSXSAVE, then XCR0 bits 1 and 2), and AVX2
+     * (leaf 7, EBX bit 5). */
+    if (!__get_cpuid(1u, &a, &b, &c, &d) || !(c & (1u << 27)))
+        return 0;
+    unsigned xcr0_lo, xcr0_hi;
+    __asm__("xgetbv" : "=a"(xcr0_lo), "=d"(xcr0_hi) : "c"(0u));
+    (void)xcr0_hi;
+    if ((xcr0_lo & 6u) != 6u || !__get_cpuid_count(7u, 0u, &a, &b, &c, &d))
+        return 0;
+    return (b & (1u << 5)) != 0u;
+#else
+    return 0;
+#endif
+}
 
 const char *mcs_dft_backend(void)
 {
@@ -69,6 +104,7 @@ mcs_status mcs_dft_init(mcs_dft *plan, size_t n)
     plan->n = n;
     plan->fft_len = fft_len;
     plan->path = path;
+    plan->simd = mcs_cpu_avx2_();
     mcs_twiddles_(n, plan->cos_table, plan->sin_table);
     if (fft_len > 0u) {
         size_t len = sizeof plan->kiss_state;
@@ -80,7 +116,7 @@ mcs_status mcs_dft_init(mcs_dft *plan, size_t n)
 static int plan_is_valid(const mcs_dft *plan)
 {
     if (!(plan->n >= 1u && plan->n <= (size_t)MCS_MAX_N && plan->path >= MCS_DFT_PATH_TRIVIAL &&
-          plan->path <= MCS_DFT_PATH_FFTW))
+          plan->path <= MCS_DFT_PATH_FFTW && (plan->simd == 0 || plan->simd == 1)))
         return 0;
     if (plan->path == MCS_DFT_PATH_FFTW)
         return plan->fft_len == 0u && plan->n >= 3u && mcs_dft_fftw_is_ready_(plan->n);
@@ -145,45 +181,21 @@ static void half_kiss_complex(mcs_dft *plan, const double *s, double *re, double
 }
 
 /* A prime factor above 5. Bluestein would need scratch several times N; this
- * instead sums over the non-zero s_n only, stepping the twiddle index by n
- * (mod N) so every root is an exact table entry: O(N * nnz), cheap for the
- * sparse patterns this library transforms and for small N. Without im only
- * the real parts are summed. */
-static void direct_sums(mcs_dft *plan, const double *s, double *acc_re, double *acc_im)
-{
-    const size_t n = plan->n, h = n / 2u;
-    const double *ct = plan->cos_table, *st = plan->sin_table;
-    for (size_t b = 0; b < n; ++b) {
-        const double w = s[b];
-        if (w == 0.0)
-            continue;
-        size_t idx = 0u;
-        if (acc_im == NULL) {
-            for (size_t k = 0; k <= h; ++k) {
-                acc_re[k] += w * ct[idx];
-                idx += b;
-                idx = idx >= n ? idx - n : idx;
-            }
-            continue;
-        }
-        for (size_t k = 0; k <= h; ++k) {
-            acc_re[k] += w * ct[idx];
-            acc_im[k] -= w * st[idx];
-            idx += b;
-            idx = idx >= n ? idx - n : idx;
-        }
-    }
-}
-
+ * instead sums over the non-zero s_n only (dft_simd.h), with exact twiddle
+ * indices: O(N * nnz), cheap for the sparse patterns this library
+ * transforms and for small N. Without im only the real parts are summed.
+ * The sums go to the work area, padded to whole blocks of 8 frequencies. */
 static void half_direct(mcs_dft *plan, const double *s, double *re, double *im, double scale)
 {
-    const size_t n = plan->n, h = n / 2u;
-    double *acc_re = plan->work, *acc_im = plan->work + (h + 1u);
-    for (size_t k = 0; k <= h; ++k) {
-        acc_re[k] = 0.0;
-        acc_im[k] = 0.0;
-    }
-    direct_sums(plan, s, acc_re, im != NULL ? acc_im : NULL);
+    const size_t n = plan->n, h = n / 2u, padded = (n / 2u + 8u) / 8u * 8u;
+    double *acc_re = plan->work, *acc_im = plan->work + padded;
+    memset(plan->work, 0, 2u * padded * sizeof plan->work[0]);
+#if MCS_AVX2_CLONES
+    if (plan->simd)
+        direct_sums_avx2(plan, s, acc_re, im != NULL ? acc_im : NULL);
+    else
+#endif
+        direct_sums_generic(plan, s, acc_re, im != NULL ? acc_im : NULL);
     for (size_t k = 0; k <= h; ++k)
         re[k] = scale * acc_re[k];
     if (im != NULL) {
@@ -227,18 +239,19 @@ void mcs_dft_half_(mcs_dft *plan, const double *s, double *re, double *im)
 /* Per-call time in nanoseconds, fitted to build/bench/spectrum_costs (see
  * src/spectrum_cost.c) on the bench machine, gcc 12 -O2: KissFFT costs about
  * 0.42 ns per N log2 N on the packed real path and 0.84 on the odd complex
- * one; the direct sum 0.79 ns per (non-zero bin, frequency) pair (half
- * that without im, which the model leaves to its caller); FFTW's r2c 0.11
- * ns per N log2 N plus its copy in and out. */
+ * one; the direct sum C_DIRECT ns per (non-zero bin, frequency) pair for its
+ * block-phase kernel (half that without im, which the model leaves to its
+ * caller); FFTW's r2c 0.11 ns per N log2 N plus its copy in and out. */
 double mcs_dft_cost_(const mcs_dft *plan, size_t nnz)
 {
+    static const double c_direct[2] = {0.36, 0.24}; /* baseline, AVX2 */
     const size_t half = plan->n / 2u + 1u; /* the frequencies computed */
     const double n = (double)plan->n, nlog = n * log2(n > 2.0 ? n : 2.0), h1 = (double)half;
     const double used = (double)(nnz < plan->n ? nnz : plan->n);
     switch (plan->path) {
     case MCS_DFT_PATH_KISS_REAL: return 40.0 + 0.42 * nlog;
     case MCS_DFT_PATH_KISS_COMPLEX: return 40.0 + 0.84 * nlog;
-    case MCS_DFT_PATH_DIRECT: return 40.0 + 0.3 * n + 0.79 * used * h1;
+    case MCS_DFT_PATH_DIRECT: return 40.0 + 0.5 * n + c_direct[plan->simd != 0] * used * h1;
     case MCS_DFT_PATH_FFTW: return 40.0 + 0.11 * nlog + 0.3 * n;
     default: return 5.0;
     }

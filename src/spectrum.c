@@ -44,7 +44,7 @@ mcs_status mcs_spectrum_init(mcs_spectrum *acc, size_t n)
            sizeof *acc - plan_offset - sizeof acc->plan);
     acc->n = n;
     acc->path = MCS_SPECTRUM_PATH_AUTO;
-    acc->simd = mcs_spectrum_simd_();
+    acc->simd = acc->plan.simd; /* the CPU's answer, asked once by the plan */
     mcs_spectrum_cost_init_(acc);
     return MCS_OK;
 }

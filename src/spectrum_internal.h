@@ -45,9 +45,6 @@ static inline uint64_t mcs_spectrum_closed_(const mcs_spectrum *acc)
 
 /* ---- kernels (spectrum_kernels.c) ---- */
 
-/* 1 when this CPU and OS run the AVX2 copy of the kernels (x86-64 only). */
-int mcs_spectrum_simd_(void);
-
 /* The SPARSE path for one trial: S_k by block phases, each block's update
  * fused (one unit of weight 1). */
 void mcs_spectrum_sparse_(mcs_spectrum *acc, const mcs_spectrum_trial_ *t);

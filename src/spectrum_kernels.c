@@ -2,11 +2,11 @@
  * block-phase sparse DFT fused with the update, the FFT path, the pair
  * histogram and the batch close, and the weighted Welford update they share.
  *
- * The vectorisable ones (spectrum_simd.h) are compiled twice: for the
- * baseline ISA and, on x86-64 with GCC or Clang, for AVX2, which doubles
+ * The vectorisable ones (spectrum_simd.h) are compiled twice (simd.h): for
+ * the baseline ISA and, on x86-64 with GCC or Clang, for AVX2, which doubles
  * their vector width. mcs_spectrum_init picks the AVX2 copy when the CPU
- * and the OS support it (cpuid, no library call); both copies compute the
- * same bits. */
+ * and the OS support it (as its plan found); both copies compute the same
+ * bits. */
 #include <math.h>
 #include <string.h>
 
@@ -16,12 +16,7 @@
 #define BLOCK MCS_SPECTRUM_BLOCK
 #define CHUNK MCS_SPECTRUM_CHUNK
 
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__)) && !defined(MCS_NO_AVX2)
-#define MCS_AVX2_CLONES 1
-#include <cpuid.h>
-#else
-#define MCS_AVX2_CLONES 0
-#endif
+#include "simd.h"
 
 /* A unit of weight w joining closed units of total weight w_old moves each
  * mean by f d and adds g |d|^2 to its M2, d = x - old mean, with
@@ -44,40 +39,12 @@ static unit_factors factors(double w, double w_old)
 #undef KERNEL
 
 #if MCS_AVX2_CLONES
-#if defined(__clang__)
-#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
-#else
-#pragma GCC push_options
-#pragma GCC target("avx2")
-#endif
+MCS_AVX2_BEGIN
 #define KERNEL(name) name##_avx2
 #include "spectrum_simd.h"
 #undef KERNEL
-#if defined(__clang__)
-#pragma clang attribute pop
-#else
-#pragma GCC pop_options
+MCS_AVX2_END
 #endif
-#endif
-
-int mcs_spectrum_simd_(void)
-{
-#if MCS_AVX2_CLONES
-    unsigned a, b, c, d;
-    /* AVX2 (leaf 7, EBX bit 5), and the OS saves YMM state (OSXSAVE, then
-     * XCR0 bits 1 and 2). */
-    if (!__get_cpuid(1u, &a, &b, &c, &d) || !(c & (1u << 27)))
-        return 0;
-    unsigned xcr0_lo, xcr0_hi;
-    __asm__("xgetbv" : "=a"(xcr0_lo), "=d"(xcr0_hi) : "c"(0u));
-    (void)xcr0_hi;
-    if ((xcr0_lo & 6u) != 6u || !__get_cpuid_count(7u, 0u, &a, &b, &c, &d))
-        return 0;
-    return (b & (1u << 5)) != 0u;
-#else
-    return 0;
-#endif
-}
 
 /* The update of every stored frequency, by the object's kernels. */
 static void update_all(mcs_spectrum *acc, const double *xr, const double *xi, const double *xp,

@@ -10,6 +10,10 @@
  * Included only by spectrum_kernels.c, after its definitions of BLOCK,
  * CHUNK, unit_factors, and with KERNEL defined. */
 
+#define MCS_PHASE_BLOCK_ BLOCK
+#include "phase_block.h"
+#undef MCS_PHASE_BLOCK_
+
 /* The update of one block from its values: x = xr + i xi, power xp. A unit
  * of weight w joining closed units of weight w_old moves each mean by f d
  * and adds g |d|^2 to its M2 (unit_factors). */
@@ -79,41 +83,13 @@ static void KERNEL(sparse_setup)(mcs_spectrum *acc, const mcs_spectrum_trial_ *t
     }
 }
 
-/* S_k for the next block from the samples of the current setup: the table is
- * read once per sample (e^{-2 pi i k0 n_j/N}) and multiplied by its in-block
- * phases, (c - i s)(pr + i pi) = (c pr + s pi) + i (c pi - s pr). The 16
- * accumulators are named scalars so that they stay in registers. */
-#define MCS_LANE_(r)                                                                       \
-    ar##r += c * pr[r] + s * pi[r];                                                        \
-    ai##r += c * pi[r] - s * pr[r]
+/* S_k for the next block from the samples of the current setup. */
 static void KERNEL(sparse_block)(mcs_spectrum *acc, size_t count, double *restrict out_re,
                                  double *restrict out_im)
 {
-    const size_t n = acc->n;
-    const double *ct = acc->plan.cos_table, *st = acc->plan.sin_table;
-    double ar0 = 0.0, ar1 = 0.0, ar2 = 0.0, ar3 = 0.0, ar4 = 0.0, ar5 = 0.0, ar6 = 0.0, ar7 = 0.0;
-    double ai0 = 0.0, ai1 = 0.0, ai2 = 0.0, ai3 = 0.0, ai4 = 0.0, ai5 = 0.0, ai6 = 0.0, ai7 = 0.0;
-    for (size_t j = 0; j < count; ++j) {
-        const size_t i = acc->chunk_index[j];
-        const double c = ct[i], s = st[i];
-        const double *restrict pr = acc->phase + j * 2u * BLOCK, *restrict pi = pr + BLOCK;
-        MCS_LANE_(0);
-        MCS_LANE_(1);
-        MCS_LANE_(2);
-        MCS_LANE_(3);
-        MCS_LANE_(4);
-        MCS_LANE_(5);
-        MCS_LANE_(6);
-        MCS_LANE_(7);
-        const size_t next = i + acc->chunk_step[j];
-        acc->chunk_index[j] = next >= n ? next - n : next;
-    }
-    out_re[0] = ar0, out_re[1] = ar1, out_re[2] = ar2, out_re[3] = ar3;
-    out_re[4] = ar4, out_re[5] = ar5, out_re[6] = ar6, out_re[7] = ar7;
-    out_im[0] = ai0, out_im[1] = ai1, out_im[2] = ai2, out_im[3] = ai3;
-    out_im[4] = ai4, out_im[5] = ai5, out_im[6] = ai6, out_im[7] = ai7;
+    KERNEL(phase_block)(acc->n, acc->plan.cos_table, acc->plan.sin_table, acc->phase,
+                        acc->chunk_index, acc->chunk_step, count, out_re, out_im);
 }
-#undef MCS_LANE_
 
 /* The SPARSE path for one trial. Up to CHUNK samples, each block is updated
  * while in registers; more are summed chunk by chunk into acc->re, acc->im

@@ -12,7 +12,8 @@
  *   the factors 3, 5 runs the complex KissFFT of size N; any N with a prime
  *   factor above 5 (where KissFFT would allocate scratch) uses a direct sum
  *   over the non-zero s_n with a twiddle table: O(N * nnz), exact index
- *   reduction.
+ *   reduction, by the block-phase kernel (one table read per non-zero bin
+ *   and block of 8 frequencies; baseline and AVX2 copies, same bits).
  *
  * - FFTW 3 (hosted builds only: `make FFT=fftw`, or -DMCSPEC_FFT=fftw with
  *   CMake; link -lfftw3): every N >= 3 runs FFTW's r2c transform. FFTW
@@ -28,10 +29,11 @@
  *
  * Either way an mcs_dft holds no pointers: a copy is a working plan.
  *
- * Size: sizeof(mcs_dft) is about 64 * MCS_MAX_N bytes (262 680 at the default
- * 4096 on x86-64, 16 920 at MCS_MAX_N = 256): the twiddle table (2 * MCS_MAX_N
- * doubles), KissFFT's state (MCS_DFT_KISS_DOUBLES) and complex scratch
- * (4 * MCS_MAX_N doubles, all of it needed by odd N). */
+ * Size: sizeof(mcs_dft) is about 64 * MCS_MAX_N bytes (271 904 at the default
+ * 4096 on x86-64, 19 224 at MCS_MAX_N = 256): the twiddle table (2 * MCS_MAX_N
+ * doubles), KissFFT's state (MCS_DFT_KISS_DOUBLES), complex scratch
+ * (4 * MCS_MAX_N doubles, all of it needed by odd N) and the direct path's
+ * block-phase scratch (18 * MCS_DFT_CHUNK words). */
 #ifndef MCSPEC_DFT_H
 #define MCSPEC_DFT_H
 
@@ -58,6 +60,9 @@ typedef enum {
  * per point. mcs_dft_init checks it against KissFFT's own size query. */
 #define MCS_DFT_KISS_DOUBLES (64 + 2 * (MCS_MAX_N))
 
+/* Non-zero bins the direct path takes per pass of its block-phase kernel. */
+#define MCS_DFT_CHUNK ((MCS_MAX_N) >= 1024 ? 64 : 16)
+
 /* Largest accepted sum of |s_n| over one input (2^1020, about 1.12e307): no
  * partial sum of the transform can then overflow, so a finite input always
  * gives a finite output. */
@@ -69,10 +74,15 @@ typedef struct {
     size_t n;                                /* N, 1..MCS_MAX_N; 0 before init */
     size_t fft_len;                          /* length of the KissFFT transform (0 if none) */
     mcs_dft_path path;                       /* algorithm for this N */
+    int simd;                                /* kernels: 0 baseline, 1 AVX2 (x86-64, set by init;
+                                                both give the same bits) */
     double cos_table[MCS_MAX_N];             /* cos(2 pi j / N), j < N */
     double sin_table[MCS_MAX_N];             /* sin(2 pi j / N), j < N */
     double kiss_state[MCS_DFT_KISS_DOUBLES]; /* KissFFT cfg, placed by the two-call size query */
     double work[4 * (MCS_MAX_N)];            /* complex scratch: input and output buffers */
+    double direct_phase[16 * MCS_DFT_CHUNK]; /* direct path scratch: in-block phases ... */
+    size_t direct_index[MCS_DFT_CHUNK];      /* ... twiddle index per bin ... */
+    size_t direct_step[MCS_DFT_CHUNK];       /* ... and its step per block */
 } mcs_dft;
 
 /* The back end this library was built with: "kissfft" or "fftw3" (a static
