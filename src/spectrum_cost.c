@@ -17,25 +17,31 @@
  * path shares (argument checks, the call) are left out: they do not move
  * the choice.
  *
- * The constants were fitted to build/bench/spectrum_costs, which times each
- * forced path on pre-drawn trials over a grid of N and K and prints a least
- * squares fit; see the values below for the machine. Only ratios matter,
- * and only near the crossovers, where the paths cost about the same anyway;
- * make bench checks that AUTO stays within 1.15x of the best forced path in
- * every cell of its grid. */
+ * The constants were fitted to `make spectrum-costs` (test/bench/
+ * spectrum_costs.c), which times each forced path on pre-drawn trials over
+ * a grid of N in {64, 256, 1024, 4096, 1000, 3375, 4093} and K from 1 to 256
+ * and prints least-squares fits, with --generic for the baseline kernels.
+ * On the bench machine (AMD EPYC with AVX-512, 2 shared cores, gcc 12 -O2)
+ * it gave C_PAIR 0.30-0.31, C_SINGLE 2-3, C_SCATTER 1.9, C_TERM 0.30 (AVX2)
+ * and 0.45 (baseline), C_UPDATE 0.8-0.9 (AVX2) and 1.2-1.5 (baseline),
+ * C_FOLD 1.4, rounded below; the DFT's own constants are in dft.c. The fits
+ * are noisy on a shared machine, but only ratios matter, and only near the
+ * crossovers, where the paths cost about the same anyway; make bench checks
+ * that AUTO stays within 1.15x of the best forced path in every cell of its
+ * grid. */
 #include <math.h>
 
 #include "dft_internal.h"
 #include "spectrum_internal.h"
 
 /* The two vectorised kernels, baseline and AVX2 (acc->simd). */
-static const double C_TERM[2] = {0.42, 0.30};   /* one sample at one frequency, block phases */
-static const double C_UPDATE[2] = {1.05, 0.70}; /* one frequency's weighted Welford step */
+static const double C_TERM[2] = {0.45, 0.30};   /* one sample at one frequency, block phases */
+static const double C_UPDATE[2] = {1.20, 0.80}; /* one frequency's weighted Welford step */
 #define C_PHASE 2.0    /* one sample's in-block phases */
-#define C_SCATTER 2.5  /* one sample scattered into s and cleared again */
-#define C_PAIR 0.29    /* one sample pair into the histogram */
-#define C_SINGLE 5.0   /* one sample's sum and self term */
-#define C_FOLD 0.8     /* one bin of the batch close's fold, scaling and clearing */
+#define C_SCATTER 2.0  /* one sample scattered into s and cleared again */
+#define C_PAIR 0.31    /* one sample pair into the histogram */
+#define C_SINGLE 2.0   /* one sample's sum and self term */
+#define C_FOLD 1.4     /* one bin of the batch close's fold, scaling and clearing */
 
 /* acc->cost[]: the parts that depend on N only. */
 enum { SPARSE_FIXED, SPARSE_PER_K, FFT_FIXED, DFT_PER_NNZ, CLOSE_FIXED };

@@ -60,7 +60,8 @@ static void KERNEL(update_all)(mcs_spectrum *acc, const double *xr, const double
 
 /* Samples [j0, j1) of t, weights scaled by N^{-1/2} (eq. 7): the twiddle
  * index of each (k0 n_j mod N, from k0 = 0), its step BLOCK n_j mod N, and
- * its in-block phases w e^{-2 pi i r n_j/N}, r < BLOCK, as (re[8], im[8]). */
+ * its in-block phases w e^{-2 pi i r n_j/N}, r < BLOCK, as (re[8], im[8]),
+ * in the plan's direct-path scratch (no transform runs meanwhile). */
 static void KERNEL(sparse_setup)(mcs_spectrum *acc, const mcs_spectrum_trial_ *t, size_t j0,
                                  size_t j1)
 {
@@ -70,7 +71,7 @@ static void KERNEL(sparse_setup)(mcs_spectrum *acc, const mcs_spectrum_trial_ *t
     for (size_t j = j0; j < j1; ++j) {
         const size_t b = mcs_spectrum_trial_bin_(t, n, j);
         const double w = scale * mcs_spectrum_trial_weight_(t, j);
-        double *pr = acc->phase + (j - j0) * 2u * BLOCK, *pi = pr + BLOCK;
+        double *pr = acc->plan.direct_phase + (j - j0) * 2u * BLOCK, *pi = pr + BLOCK;
         size_t i = 0u;
         for (size_t r = 0; r < BLOCK; ++r) {
             pr[r] = w * ct[i];
@@ -78,8 +79,8 @@ static void KERNEL(sparse_setup)(mcs_spectrum *acc, const mcs_spectrum_trial_ *t
             i += b;
             i = i >= n ? i - n : i;
         }
-        acc->chunk_index[j - j0] = 0u;
-        acc->chunk_step[j - j0] = (BLOCK * b) % n; /* exact: b < N */
+        acc->plan.direct_index[j - j0] = 0u;
+        acc->plan.direct_step[j - j0] = (BLOCK * b) % n; /* exact: b < N */
     }
 }
 
@@ -87,8 +88,8 @@ static void KERNEL(sparse_setup)(mcs_spectrum *acc, const mcs_spectrum_trial_ *t
 static void KERNEL(sparse_block)(mcs_spectrum *acc, size_t count, double *restrict out_re,
                                  double *restrict out_im)
 {
-    KERNEL(phase_block)(acc->n, acc->plan.cos_table, acc->plan.sin_table, acc->phase,
-                        acc->chunk_index, acc->chunk_step, count, out_re, out_im);
+    KERNEL(phase_block)(acc->n, acc->plan.cos_table, acc->plan.sin_table, acc->plan.direct_phase,
+                        acc->plan.direct_index, acc->plan.direct_step, count, out_re, out_im);
 }
 
 /* The SPARSE path for one trial. Up to CHUNK samples, each block is updated

@@ -29,8 +29,8 @@
  *
  * Either way an mcs_dft holds no pointers: a copy is a working plan.
  *
- * Size: sizeof(mcs_dft) is about 64 * MCS_MAX_N bytes (271 904 at the default
- * 4096 on x86-64, 19 224 at MCS_MAX_N = 256): the twiddle table (2 * MCS_MAX_N
+ * Size: sizeof(mcs_dft) is about 64 * MCS_MAX_N bytes (271 896 at the default
+ * 4096 on x86-64, 19 088 at MCS_MAX_N = 256 on Cortex-M): the twiddle table (2 * MCS_MAX_N
  * doubles), KissFFT's state (MCS_DFT_KISS_DOUBLES), complex scratch
  * (4 * MCS_MAX_N doubles, all of it needed by odd N) and the direct path's
  * block-phase scratch (18 * MCS_DFT_CHUNK words). */

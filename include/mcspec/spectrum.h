@@ -65,12 +65,13 @@
  * accumulator (MCS_ERR_MISMATCH). merge accepts dst == src; any other
  * overlap of the two is MCS_ERR_MISMATCH.
  *
- * Size: sizeof(mcs_spectrum) is the embedded mcs_dft (about 64 * MCS_MAX_N
+ * Size: sizeof(mcs_spectrum) is the embedded mcs_dft (about 66 * MCS_MAX_N
  * bytes) plus, in doubles, 8 * MCS_SPECTRUM_HALF of statistics and scratch,
  * 3 * MCS_MAX_N for the open pair batch, MCS_MAX_N of dense scratch and
- * 20 * MCS_SPECTRUM_CHUNK for the kernels: about 125 * MCS_MAX_N bytes
- * in all (see docs/embedded.md for exact figures; shrink it with
- * -DMCS_MAX_N=...). It holds no pointers, so it may be copied. */
+ * 2 * MCS_SPECTRUM_CHUNK for binned points: about 130 * MCS_MAX_N bytes in
+ * all (535 704 at the default 4096 on x86-64, 36 304 at MCS_MAX_N = 256 on
+ * Cortex-M; shrink it with -DMCS_MAX_N=...). It holds no pointers, so it
+ * may be copied. */
 #ifndef MCSPEC_SPECTRUM_H
 #define MCSPEC_SPECTRUM_H
 
@@ -93,8 +94,9 @@ extern "C" {
     (((MCS_MAX_N) / 2 + MCS_SPECTRUM_BLOCK) / MCS_SPECTRUM_BLOCK * MCS_SPECTRUM_BLOCK)
 
 /* Samples the sparse kernel keeps in-block phases for (more are taken in
- * chunks of this many), and that points are binned in at a time. */
-#define MCS_SPECTRUM_CHUNK ((MCS_MAX_N) >= 1024 ? 64 : 16)
+ * chunks of this many; the phases live in the plan's direct-path scratch),
+ * and that points are binned in at a time. */
+#define MCS_SPECTRUM_CHUNK MCS_DFT_CHUNK
 
 /* Largest sum of one trial's weights (2^100). */
 #define MCS_SPECTRUM_MAX_SUM 0x1p100
@@ -143,11 +145,8 @@ typedef struct {
     double re[MCS_SPECTRUM_HALF];        /* scratch: S_k (or a batch's means) */
     double im[MCS_SPECTRUM_HALF];
     double pw[MCS_SPECTRUM_HALF];        /* scratch: a batch's mean |S_k|^2 */
-    double phase[2 * MCS_SPECTRUM_BLOCK * MCS_SPECTRUM_CHUNK]; /* scratch: in-block phases */
     size_t chunk_bins[MCS_SPECTRUM_CHUNK];   /* scratch: bins of binned points */
     double chunk_weights[MCS_SPECTRUM_CHUNK];
-    size_t chunk_index[MCS_SPECTRUM_CHUNK];  /* scratch: twiddle index k0 n_j mod N per sample */
-    size_t chunk_step[MCS_SPECTRUM_CHUNK];   /* scratch: its step BLOCK n_j mod N */
 } mcs_spectrum;
 
 /* Empties the accumulator and builds its plan for n bins.
