@@ -112,67 +112,102 @@ void mcs_spectrum_dense_(mcs_spectrum *acc, const double *s)
 
 /* ------------------------------------------------------------------ PAIR */
 
+/* Adds w_j w_q for the pair (j, q), j < q, at open_pairs[N + n_q - n_j]:
+ * the signed difference, offset so that no index wraps. hj = open_pairs + N
+ * - n_j, so the add is hj[n_q]. */
+#define MCS_PAIR_(hj, wj, bq, wq) ((hj)[bq] += (wj) * (wq))
+
+/* Every pair of a trial given as arrays. Four rows share each column's
+ * loads, which halves the memory traffic per pair; the triangle inside a
+ * group of four is written out. */
+static void pair_arrays(mcs_spectrum *acc, size_t k, const size_t *restrict b,
+                        const double *restrict w)
+{
+    const size_t n = acc->n;
+    double *restrict hist = acc->open_pairs;
+    size_t j = 0;
+    for (; j + 4u <= k; j += 4u) {
+        const size_t b1 = b[j + 1u], b2 = b[j + 2u], b3 = b[j + 3u];
+        const double w0 = w[j], w1 = w[j + 1u], w2 = w[j + 2u], w3 = w[j + 3u];
+        double *h0 = hist + n - b[j], *h1 = hist + n - b1, *h2 = hist + n - b2, *h3 = hist + n - b3;
+        MCS_PAIR_(h0, w0, b1, w1);
+        MCS_PAIR_(h0, w0, b2, w2);
+        MCS_PAIR_(h0, w0, b3, w3);
+        MCS_PAIR_(h1, w1, b2, w2);
+        MCS_PAIR_(h1, w1, b3, w3);
+        MCS_PAIR_(h2, w2, b3, w3);
+        for (size_t q = j + 4u; q < k; ++q) {
+            const size_t bq = b[q];
+            const double wq = w[q];
+            MCS_PAIR_(h0, w0, bq, wq);
+            MCS_PAIR_(h1, w1, bq, wq);
+            MCS_PAIR_(h2, w2, bq, wq);
+            MCS_PAIR_(h3, w3, bq, wq);
+        }
+    }
+    for (; j + 1u < k; ++j) {
+        double *hj = hist + n - b[j];
+        for (size_t q = j + 1u; q < k; ++q)
+            MCS_PAIR_(hj, w[j], b[q], w[q]);
+    }
+}
+
 /* Pairs (j, q), j < q, for the columns q in [c0, c1), whose bins and
- * weights are cb[q - c0], cw[q - c0]; the rows j come from t. A pair adds
- * w_j w_q at open_pairs[N + n_q - n_j] (the signed difference, offset so
- * no index wraps). Four rows share each column's loads, which halves the
- * memory traffic per pair. */
+ * weights are cb[q - c0], cw[q - c0] (binned points); the rows j come from
+ * t, four at a time as in pair_arrays. */
 static void pair_columns(mcs_spectrum *acc, const mcs_spectrum_trial_ *t, size_t c0, size_t c1,
                          const size_t *restrict cb, const double *restrict cw)
 {
     const size_t n = acc->n;
     double *restrict hist = acc->open_pairs;
     size_t j = 0;
-    for (; j + 4u <= c1; j += 4u) {
-        const size_t b0 = mcs_spectrum_trial_bin_(t, n, j), b1 = mcs_spectrum_trial_bin_(t, n, j + 1u);
-        const size_t b2 = mcs_spectrum_trial_bin_(t, n, j + 2u), b3 = mcs_spectrum_trial_bin_(t, n, j + 3u);
-        const double w0 = mcs_spectrum_trial_weight_(t, j), w1 = mcs_spectrum_trial_weight_(t, j + 1u);
-        const double w2 = mcs_spectrum_trial_weight_(t, j + 2u), w3 = mcs_spectrum_trial_weight_(t, j + 3u);
-        double *h0 = hist + n - b0, *h1 = hist + n - b1, *h2 = hist + n - b2, *h3 = hist + n - b3;
-        const size_t full = j + 4u > c0 ? j + 4u : c0;
-        for (size_t q = j + 1u > c0 ? j + 1u : c0; q < full && q < c1; ++q) { /* the triangle */
-            const size_t bq = cb[q - c0];
-            const double wq = cw[q - c0];
-            h0[bq] += w0 * wq;
-            if (q > j + 1u)
-                h1[bq] += w1 * wq;
-            if (q > j + 2u)
-                h2[bq] += w2 * wq;
+    for (; j + 4u <= c0; j += 4u) { /* rows before the chunk: every column is later */
+        double *h[4];
+        double wr[4];
+        for (size_t r = 0; r < 4u; ++r) {
+            h[r] = hist + n - mcs_spectrum_trial_bin_(t, n, j + r);
+            wr[r] = mcs_spectrum_trial_weight_(t, j + r);
         }
-        for (size_t q = full; q < c1; ++q) {
-            const size_t bq = cb[q - c0];
-            const double wq = cw[q - c0];
-            h0[bq] += w0 * wq;
-            h1[bq] += w1 * wq;
-            h2[bq] += w2 * wq;
-            h3[bq] += w3 * wq;
+        for (size_t q = 0; q < c1 - c0; ++q) {
+            MCS_PAIR_(h[0], wr[0], cb[q], cw[q]);
+            MCS_PAIR_(h[1], wr[1], cb[q], cw[q]);
+            MCS_PAIR_(h[2], wr[2], cb[q], cw[q]);
+            MCS_PAIR_(h[3], wr[3], cb[q], cw[q]);
         }
     }
     for (; j + 1u < c1; ++j) {
-        const double wj = mcs_spectrum_trial_weight_(t, j);
         double *hj = hist + n - mcs_spectrum_trial_bin_(t, n, j);
+        const double wj = mcs_spectrum_trial_weight_(t, j);
         for (size_t q = j + 1u > c0 ? j + 1u : c0; q < c1; ++q)
-            hj[cb[q - c0]] += wj * cw[q - c0];
+            MCS_PAIR_(hj, wj, cb[q - c0], cw[q - c0]);
     }
 }
 
 /* Each sample once: s_n into the open sums, and half of w^2 at lag 0
- * (open_pairs[N]), so that h(0) + h(-0) counts w^2 once. */
+ * (open_pairs[N]), so that h(0) + h(-0) counts w^2 once. Two partial sums
+ * keep the adds from waiting on each other. */
 static void pair_singles(mcs_spectrum *acc, size_t count, const size_t *b, const double *w)
 {
-    double self = 0.0;
-    for (size_t j = 0; j < count; ++j) {
+    double self0 = 0.0, self1 = 0.0;
+    size_t j = 0;
+    for (; j + 2u <= count; j += 2u) {
         acc->open_sum[b[j]] += w[j];
-        self += w[j] * w[j];
+        acc->open_sum[b[j + 1u]] += w[j + 1u];
+        self0 += w[j] * w[j];
+        self1 += w[j + 1u] * w[j + 1u];
     }
-    acc->open_pairs[acc->n] += 0.5 * self;
+    if (j < count) {
+        acc->open_sum[b[j]] += w[j];
+        self0 += w[j] * w[j];
+    }
+    acc->open_pairs[acc->n] += 0.5 * (self0 + self1);
 }
 
 void mcs_spectrum_pairs_(mcs_spectrum *acc, const mcs_spectrum_trial_ *t)
 {
     if (t->points == NULL && t->weights != NULL) { /* bins and weights as given */
         pair_singles(acc, t->k, t->bins, t->weights);
-        pair_columns(acc, t, 0u, t->k, t->bins, t->weights);
+        pair_arrays(acc, t->k, t->bins, t->weights);
     } else { /* bin the points chunk by chunk into the column scratch */
         for (size_t c0 = 0; c0 < t->k; c0 += CHUNK) {
             const size_t c1 = t->k - c0 > CHUNK ? c0 + CHUNK : t->k;
