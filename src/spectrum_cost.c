@@ -59,17 +59,18 @@ void mcs_spectrum_cost_init_(mcs_spectrum *acc)
     /* Batch rule (a): a batch pays for its close once its pairs cost
      * MCS_SPECTRUM_BATCH_RATIO times as much (the close of a full
      * histogram, the most it can cost). */
-    const double dense = acc->cost[CLOSE_FIXED] + 1.5 * acc->cost[DFT_PER_NNZ] * (double)acc->n;
+    const double dense = acc->cost[CLOSE_FIXED] + 1.25 * acc->cost[DFT_PER_NNZ] * (double)acc->n;
     acc->close_work = MCS_SPECTRUM_BATCH_RATIO * dense / C_PAIR;
 }
 
 /* Modelled cost of closing a batch of b trials of k samples: on the direct
  * DFT path it grows with the non-zero entries of the two sums (the pair
- * histogram's costs half: only its real part is summed). */
+ * histogram, folded onto lags up to N/2, costs half per entry: only its
+ * real part is summed). */
 static double close_cost(const mcs_spectrum *acc, double b, double k)
 {
     const double n = (double)acc->n;
-    const double pairs = fmin(n, b * 0.5 * k * (k - 1.0) + 1.0), bins = fmin(n, b * k);
+    const double pairs = fmin(0.5 * n + 1.0, b * 0.5 * k * (k - 1.0) + 1.0), bins = fmin(n, b * k);
     return acc->cost[CLOSE_FIXED] + acc->cost[DFT_PER_NNZ] * (0.5 * pairs + bins);
 }
 
