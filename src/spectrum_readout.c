@@ -63,6 +63,14 @@ static double stderr_of(const mcs_spectrum *acc, const freq_stats *fs, double m2
     return sqrt(m2 / (fs->units - 1.0) / (double)acc->count);
 }
 
+/* Writes a read-out that is finite. Accepted input cannot make one that is
+ * not (spectrum.h), but an object whose bytes were overwritten can: then
+ * MCS_ERR_NOT_FINITE and the output is left alone, never a NaN with MCS_OK. */
+static mcs_status set_finite(double *out, double value)
+{
+    return isfinite(value) ? mcs_set_(out, value) : MCS_ERR_NOT_FINITE;
+}
+
 mcs_status mcs_spectrum_mean(const mcs_spectrum *acc, size_t freq, double *re, double *im)
 {
     freq_stats fs;
@@ -70,6 +78,8 @@ mcs_status mcs_spectrum_mean(const mcs_spectrum *acc, size_t freq, double *re, d
     mcs_status st = readout(re != NULL && im != NULL, acc, freq, 0, &fs, &conj);
     if (st != MCS_OK)
         return st;
+    if (!isfinite(fs.mean_re) || !isfinite(fs.mean_im))
+        return MCS_ERR_NOT_FINITE;
     *re = fs.mean_re;
     *im = conj ? -fs.mean_im : fs.mean_im;
     return MCS_OK;
@@ -80,7 +90,7 @@ mcs_status mcs_spectrum_mean_stderr(const mcs_spectrum *acc, size_t freq, double
     freq_stats fs;
     int conj;
     mcs_status st = readout(stderr_out != NULL, acc, freq, 1, &fs, &conj);
-    return st == MCS_OK ? mcs_set_(stderr_out, stderr_of(acc, &fs, fs.m2_s)) : st;
+    return st == MCS_OK ? set_finite(stderr_out, stderr_of(acc, &fs, fs.m2_s)) : st;
 }
 
 mcs_status mcs_spectrum_power(const mcs_spectrum *acc, size_t freq, double *power)
@@ -88,7 +98,7 @@ mcs_status mcs_spectrum_power(const mcs_spectrum *acc, size_t freq, double *powe
     freq_stats fs;
     int conj;
     mcs_status st = readout(power != NULL, acc, freq, 0, &fs, &conj);
-    return st == MCS_OK ? mcs_set_(power, fs.mean_pow) : st;
+    return st == MCS_OK ? set_finite(power, fs.mean_pow) : st;
 }
 
 mcs_status mcs_spectrum_power_stderr(const mcs_spectrum *acc, size_t freq, double *stderr_out)
@@ -96,5 +106,5 @@ mcs_status mcs_spectrum_power_stderr(const mcs_spectrum *acc, size_t freq, doubl
     freq_stats fs;
     int conj;
     mcs_status st = readout(stderr_out != NULL, acc, freq, 1, &fs, &conj);
-    return st == MCS_OK ? mcs_set_(stderr_out, stderr_of(acc, &fs, fs.m2_pow)) : st;
+    return st == MCS_OK ? set_finite(stderr_out, stderr_of(acc, &fs, fs.m2_pow)) : st;
 }

@@ -657,11 +657,22 @@ static void test_bad_read_outs_return_an_error_and_leave_the_outputs_alone(void)
     EXPECT_UNCHANGED(MCS_ERR_UNINIT, mcs_spectrum_merge(&acc, &acc2));
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc, 20u));
     run(&acc, MCS_PATTERN_RANDOM, 20u, 4u, NULL, 1u, 5u);
+    const uint64_t open = acc.open_count;
     acc.open_count = acc.count + 1u;
     EXPECT_UNCHANGED(MCS_ERR_UNINIT, mcs_spectrum_power(&acc, 0u, &v));
-    acc.open_count = 0u;
+    acc.open_count = open;
     acc.simd = 2;
     EXPECT_UNCHANGED(MCS_ERR_UNINIT, mcs_spectrum_add_bins(&acc, 4u, b, w));
+    init_with(&acc, 20u, MCS_SPECTRUM_PATH_FFT, 0u);
+    run(&acc, MCS_PATTERN_RANDOM, 20u, 4u, NULL, 1u, 5u);
+    acc.mean_pow[3] = NAN; /* overwritten statistics: refused, not returned */
+    acc.m2_s[3] = -1.0;
+    acc.m2_pow[3] = -1.0;
+    v = 7.0;
+    EXPECT_UNCHANGED(MCS_ERR_NOT_FINITE, mcs_spectrum_power(&acc, 3u, &v));
+    EXPECT_UNCHANGED(MCS_ERR_NOT_FINITE, mcs_spectrum_power_stderr(&acc, 17u, &v));
+    EXPECT_UNCHANGED(MCS_ERR_NOT_FINITE, mcs_spectrum_mean_stderr(&acc, 3u, &v));
+    TEST_ASSERT_EQUAL_DOUBLE(7.0, v);
     TEST_ASSERT_EQUAL_UINT64(7u, c);
 }
 

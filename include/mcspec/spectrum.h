@@ -210,7 +210,9 @@ mcs_status mcs_spectrum_count(const mcs_spectrum *acc, uint64_t *count);
 mcs_status mcs_spectrum_units(const mcs_spectrum *acc, uint64_t *units);
 
 /* <S_k> for freq in [0, N) (eq. 15 measured). MCS_ERR_NULL, MCS_ERR_UNINIT,
- * MCS_ERR_FREQ_RANGE, MCS_ERR_EMPTY (no trials). Outputs untouched on error. */
+ * MCS_ERR_FREQ_RANGE, MCS_ERR_EMPTY (no trials), MCS_ERR_NOT_FINITE (only
+ * for an object whose bytes were overwritten: accepted input keeps every
+ * read-out finite). Outputs untouched on error. */
 mcs_status mcs_spectrum_mean(const mcs_spectrum *acc, size_t freq, double *re, double *im);
 
 /* Standard error of <S_k>: sqrt(M2 / (U - 1) / T) with M2 the weighted
