@@ -110,34 +110,35 @@ static mcs_status first_bad_sample(size_t n, const mcs_spectrum_trial_ *t)
     return t->weights == NULL || sum <= MCS_SPECTRUM_MAX_SUM ? MCS_OK : MCS_ERR_NOT_FINITE;
 }
 
-/* The common case, bins and weights, without a branch per sample: the
- * largest bin, the smallest weight and the sum (NaN and infinities poison
- * it; four partial sums keep the adds apart). Only a trial that fails goes
- * through first_bad_sample, for the status of its first bad sample. */
+/* The common case, bins and weights, without a branch per sample: a flag
+ * for any bin out of range or negative weight, and the sum (NaN and
+ * infinities poison it; four partial sums keep the adds apart). Only a
+ * trial that fails goes through first_bad_sample, for the status of its
+ * first bad sample. */
 static mcs_status check_samples(size_t n, const mcs_spectrum_trial_ *t)
 {
     if (t->bins == NULL || t->weights == NULL)
         return first_bad_sample(n, t);
-    size_t top = 0u;
-    double low = 0.0, s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
-    size_t j = 0;
+    const size_t *b = t->bins;
+    const double *w = t->weights;
+    size_t bad = 0u, j = 0;
+    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
     for (; j + 4u <= t->k; j += 4u) {
-        for (size_t r = 0; r < 4u; ++r) {
-            top = t->bins[j + r] > top ? t->bins[j + r] : top;
-            low = t->weights[j + r] < low ? t->weights[j + r] : low;
-        }
-        s0 += t->weights[j];
-        s1 += t->weights[j + 1u];
-        s2 += t->weights[j + 2u];
-        s3 += t->weights[j + 3u];
+        bad |= (size_t)(b[j] >= n) | (size_t)(b[j + 1u] >= n) | (size_t)(b[j + 2u] >= n) |
+               (size_t)(b[j + 3u] >= n);
+        bad |= (size_t)(w[j] < 0.0) | (size_t)(w[j + 1u] < 0.0) | (size_t)(w[j + 2u] < 0.0) |
+               (size_t)(w[j + 3u] < 0.0);
+        s0 += w[j];
+        s1 += w[j + 1u];
+        s2 += w[j + 2u];
+        s3 += w[j + 3u];
     }
     for (; j < t->k; ++j) {
-        top = t->bins[j] > top ? t->bins[j] : top;
-        low = t->weights[j] < low ? t->weights[j] : low;
-        s0 += t->weights[j];
+        bad |= (size_t)(b[j] >= n) | (size_t)(w[j] < 0.0);
+        s0 += w[j];
     }
     const double sum = (s0 + s1) + (s2 + s3);
-    return top < n && low >= 0.0 && sum <= MCS_SPECTRUM_MAX_SUM ? MCS_OK : first_bad_sample(n, t);
+    return bad == 0u && sum <= MCS_SPECTRUM_MAX_SUM ? MCS_OK : first_bad_sample(n, t);
 }
 
 static mcs_status check_trial(const mcs_spectrum *acc, const mcs_spectrum_trial_ *t)

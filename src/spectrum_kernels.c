@@ -96,12 +96,22 @@ void mcs_spectrum_sparse_(mcs_spectrum *acc, const mcs_spectrum_trial_ *t)
 void mcs_spectrum_fft_(mcs_spectrum *acc, const mcs_spectrum_trial_ *t)
 {
     const size_t n = acc->n;
-    for (size_t j = 0; j < t->k; ++j)
-        acc->s[mcs_spectrum_trial_bin_(t, n, j)] += mcs_spectrum_trial_weight_(t, j);
+    if (t->bins != NULL) { /* weights given with bins */
+        for (size_t j = 0; j < t->k; ++j)
+            acc->s[t->bins[j]] += t->weights[j];
+    } else {
+        for (size_t j = 0; j < t->k; ++j)
+            acc->s[mcs_point_bin_(t->points[j], n)] += mcs_spectrum_trial_weight_(t, j);
+    }
     mcs_dft_half_(&acc->plan, acc->s, acc->re, acc->im);
     update_trial(acc);
-    for (size_t j = 0; j < t->k; ++j) /* only the touched bins: s is 0 again */
-        acc->s[mcs_spectrum_trial_bin_(t, n, j)] = 0.0;
+    if (t->bins != NULL) { /* only the touched bins: s is 0 again */
+        for (size_t j = 0; j < t->k; ++j)
+            acc->s[t->bins[j]] = 0.0;
+    } else {
+        for (size_t j = 0; j < t->k; ++j)
+            acc->s[mcs_point_bin_(t->points[j], n)] = 0.0;
+    }
 }
 
 void mcs_spectrum_dense_(mcs_spectrum *acc, const double *s)
