@@ -20,6 +20,24 @@ void mcs_dft_half_(mcs_dft *plan, const double *s, double *re, double *im);
  * constants come from the bench; see the definition. */
 double mcs_dft_cost_(const mcs_dft *plan, size_t nnz);
 
+/* The block-phase kernel's view of a plan (phase_block.h): its N, twiddle
+ * table and direct-path scratch. One pointer, so that the kernel's
+ * arguments fit in registers (stack arguments make a frame dynamic). */
+typedef struct {
+    size_t n;
+    const double *cos_table, *sin_table;
+    double *phase;
+    size_t *index;
+    const size_t *step;
+} mcs_phase_ctx_;
+
+static inline mcs_phase_ctx_ mcs_phase_ctx_of_(mcs_dft *plan)
+{
+    mcs_phase_ctx_ c = {plan->n, plan->cos_table, plan->sin_table, plan->direct_phase,
+                        plan->direct_index, plan->direct_step};
+    return c;
+}
+
 /* 1 when [p, p + bytes) and [q, q + bytes_q) share a byte. Addresses are
  * compared as integers, which is what aliasing means here. */
 int mcs_overlap_(const void *p, size_t bytes, const void *q, size_t bytes_q);

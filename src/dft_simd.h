@@ -3,7 +3,9 @@
  * Included only by dft.c, with KERNEL defined. */
 
 #define MCS_PHASE_BLOCK_ 8u
+#define MCS_PHASE_BLOCK_RE_
 #include "phase_block.h"
+#undef MCS_PHASE_BLOCK_RE_
 #undef MCS_PHASE_BLOCK_
 
 /* acc_re[k] (+ i acc_im[k]) = sum_n s_n e^{-2 pi i k n/N} for k < 8 blocks,
@@ -13,7 +15,7 @@ static void KERNEL(direct_sums)(mcs_dft *plan, const double *s, double *acc_re, 
 {
     const size_t n = plan->n, blocks = (n / 2u + 8u) / 8u;
     const double *ct = plan->cos_table, *st = plan->sin_table;
-    double out_re[8], out_im[8];
+    const mcs_phase_ctx_ ctx = mcs_phase_ctx_of_(plan);
     size_t b = 0;
     for (;;) {
         size_t count = 0;
@@ -35,19 +37,9 @@ static void KERNEL(direct_sums)(mcs_dft *plan, const double *s, double *acc_re, 
         }
         if (count == 0u)
             return;
-        for (size_t k = 0; k < blocks; ++k) {
-            double *re = acc_re + 8u * k;
-            if (acc_im == NULL) {
-                KERNEL(phase_block_re)(n, ct, st, plan->direct_phase, plan->direct_index,
-                                       plan->direct_step, count, out_re);
-            } else {
-                KERNEL(phase_block)(n, ct, st, plan->direct_phase, plan->direct_index,
-                                    plan->direct_step, count, out_re, out_im);
-                for (size_t r = 0; r < 8u; ++r)
-                    acc_im[8u * k + r] += out_im[r];
-            }
-            for (size_t r = 0; r < 8u; ++r)
-                re[r] += out_re[r];
-        }
+        if (acc_im == NULL)
+            KERNEL(phase_block_re)(&ctx, count, blocks, acc_re);
+        else
+            KERNEL(phase_block)(&ctx, count, blocks, 1, acc_re, acc_im);
     }
 }

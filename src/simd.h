@@ -25,6 +25,15 @@
 #define MCS_AVX2_CLONES 0
 #endif
 
+/* Keeps a kernel out of its callers: an AVX2 function that inlines a
+ * register-hungry kernel spills 32-byte values, for which the compiler
+ * realigns the stack (a dynamic frame that make stack refuses). */
+#if defined(__GNUC__) || defined(__clang__)
+#define MCS_NOINLINE __attribute__((noinline))
+#else
+#define MCS_NOINLINE
+#endif
+
 /* 1 when this CPU and its OS run AVX2 code (cpuid and xgetbv, no library
  * call; x86-64 only, 0 elsewhere). Slow in a virtual machine (cpuid traps),
  * so it is asked once per object, at init. */

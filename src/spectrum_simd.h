@@ -34,19 +34,19 @@ static inline void KERNEL(update_lanes)(mcs_spectrum *acc, size_t q0, const doub
     }
 }
 
-/* One trial's block: its power is |S_k|^2. */
+/* One trial's block: its power is |S_k|^2 (in acc->pw, not on the stack). */
 static inline void KERNEL(update_block)(mcs_spectrum *acc, size_t q0, const double *restrict xr,
                                         const double *restrict xi, unit_factors u)
 {
-    double xp[BLOCK];
+    double *restrict xp = acc->pw + q0;
     for (size_t r = 0; r < BLOCK; ++r)
         xp[r] = xr[r] * xr[r] + xi[r] * xi[r];
     KERNEL(update_lanes)(acc, q0, xr, xi, xp, u);
 }
 
 /* Every block from arrays: x = xr + i xi and power xp, or |x|^2 without xp. */
-static void KERNEL(update_all)(mcs_spectrum *acc, const double *xr, const double *xi,
-                               const double *xp, unit_factors u)
+MCS_NOINLINE static void KERNEL(update_all)(mcs_spectrum *acc, const double *xr, const double *xi,
+                                            const double *xp, unit_factors u)
 {
     const size_t blocks = mcs_spectrum_blocks_(acc->n);
     for (size_t b = 0; b < blocks; ++b) {
@@ -84,45 +84,17 @@ static void KERNEL(sparse_setup)(mcs_spectrum *acc, const mcs_spectrum_trial_ *t
     }
 }
 
-/* S_k for the next block from the samples of the current setup. */
-static void KERNEL(sparse_block)(mcs_spectrum *acc, size_t count, double *restrict out_re,
-                                 double *restrict out_im)
-{
-    KERNEL(phase_block)(acc->n, acc->plan.cos_table, acc->plan.sin_table, acc->plan.direct_phase,
-                        acc->plan.direct_index, acc->plan.direct_step, count, out_re, out_im);
-}
-
-/* The SPARSE path for one trial. Up to CHUNK samples, each block is updated
- * while in registers; more are summed chunk by chunk into acc->re, acc->im
- * and updated once. Pad lanes k > N/2 are zeroed so the pad stays 0. */
+/* The SPARSE path for one trial: the in-block phases of a chunk of samples,
+ * every block's S_k into acc->re, acc->im (the first chunk stores, later
+ * ones add), and one update. Pad lanes k > N/2 are zeroed so the pad stays 0. */
 static void KERNEL(sparse_trial)(mcs_spectrum *acc, const mcs_spectrum_trial_ *t, unit_factors u)
 {
     const size_t n = acc->n, h1 = n / 2u + 1u, blocks = mcs_spectrum_blocks_(n);
-    double ar[BLOCK], ai[BLOCK];
-    if (t->k <= CHUNK) {
-        KERNEL(sparse_setup)(acc, t, 0u, t->k);
-        for (size_t b = 0; b + 1u < blocks; ++b) {
-            KERNEL(sparse_block)(acc, t->k, ar, ai);
-            KERNEL(update_block)(acc, b * BLOCK, ar, ai, u);
-        }
-        KERNEL(sparse_block)(acc, t->k, ar, ai);
-        for (size_t r = h1 - (blocks - 1u) * BLOCK; r < BLOCK; ++r)
-            ar[r] = ai[r] = 0.0;
-        KERNEL(update_block)(acc, (blocks - 1u) * BLOCK, ar, ai, u);
-        return;
-    }
-    memset(acc->re, 0, blocks * BLOCK * sizeof acc->re[0]);
-    memset(acc->im, 0, blocks * BLOCK * sizeof acc->im[0]);
+    const mcs_phase_ctx_ ctx = mcs_phase_ctx_of_(&acc->plan);
     for (size_t j0 = 0; j0 < t->k; j0 += CHUNK) {
         const size_t j1 = t->k - j0 > CHUNK ? j0 + CHUNK : t->k;
         KERNEL(sparse_setup)(acc, t, j0, j1);
-        for (size_t b = 0; b < blocks; ++b) {
-            KERNEL(sparse_block)(acc, j1 - j0, ar, ai);
-            for (size_t r = 0; r < BLOCK; ++r) {
-                acc->re[b * BLOCK + r] += ar[r];
-                acc->im[b * BLOCK + r] += ai[r];
-            }
-        }
+        KERNEL(phase_block)(&ctx, j1 - j0, blocks, j0 > 0u, acc->re, acc->im);
     }
     for (size_t q = h1; q < blocks * BLOCK; ++q)
         acc->re[q] = acc->im[q] = 0.0;
