@@ -46,17 +46,18 @@ MCS_AVX2_BEGIN
 MCS_AVX2_END
 #endif
 
-/* The update of every stored frequency, by the object's kernels. */
-static void update_all(mcs_spectrum *acc, const double *xr, const double *xi, const double *xp,
-                       unit_factors u)
+/* The update of every stored frequency from acc->re, acc->im (and the power
+ * xp, or |S_k|^2 without it), by the object's kernels. */
+static void update_all(mcs_spectrum *acc, const double *xp, unit_factors u)
 {
+    const size_t blocks = mcs_spectrum_blocks_(acc->n);
 #if MCS_AVX2_CLONES
     if (acc->simd) {
-        update_all_avx2(acc, xr, xi, xp, u);
+        update_range_avx2(acc, 0u, blocks, xp, u);
         return;
     }
 #endif
-    update_all_generic(acc, xr, xi, xp, u);
+    update_range_generic(acc, 0u, blocks, xp, u);
 }
 
 /* Zeroes the pad entries k > N/2 of x, so the pad statistics stay 0. */
@@ -71,7 +72,7 @@ static void update_trial(mcs_spectrum *acc)
 {
     clear_pad(acc->n, acc->re);
     clear_pad(acc->n, acc->im);
-    update_all(acc, acc->re, acc->im, NULL, factors(1.0, (double)mcs_spectrum_closed_(acc)));
+    update_all(acc, NULL, factors(1.0, (double)mcs_spectrum_closed_(acc)));
     acc->count += 1u;
     acc->units += 1u;
 }
@@ -265,7 +266,7 @@ void mcs_spectrum_close_(mcs_spectrum *acc)
     }
     for (size_t q = n / 2u + 1u; q < hpad; ++q)
         acc->pw[q] = acc->re[q] = acc->im[q] = 0.0;
-    update_all(acc, acc->re, acc->im, acc->pw, factors(b, (double)mcs_spectrum_closed_(acc)));
+    update_all(acc, acc->pw, factors(b, (double)mcs_spectrum_closed_(acc)));
     memset(acc->open_pairs, 0, 2u * n * sizeof acc->open_pairs[0]);
     memset(acc->open_sum, 0, n * sizeof acc->open_sum[0]);
     acc->units += 1u;

@@ -44,17 +44,17 @@ static inline void KERNEL(update_block)(mcs_spectrum *acc, size_t q0, const doub
     KERNEL(update_lanes)(acc, q0, xr, xi, xp, u);
 }
 
-/* Every block from arrays: x = xr + i xi and power xp, or |x|^2 without xp. */
-MCS_NOINLINE static void KERNEL(update_all)(mcs_spectrum *acc, const double *xr, const double *xi,
-                                            const double *xp, unit_factors u)
+/* Blocks [b0, b1) from acc->re, acc->im (x = re + i im) and power xp, or
+ * |x|^2 without xp. A leaf: no vector value lives across a call. */
+MCS_NOINLINE static void KERNEL(update_range)(mcs_spectrum *acc, size_t b0, size_t b1,
+                                              const double *xp, unit_factors u)
 {
-    const size_t blocks = mcs_spectrum_blocks_(acc->n);
-    for (size_t b = 0; b < blocks; ++b) {
+    for (size_t b = b0; b < b1; ++b) {
         const size_t q0 = b * BLOCK;
         if (xp != NULL)
-            KERNEL(update_lanes)(acc, q0, xr + q0, xi + q0, xp + q0, u);
+            KERNEL(update_lanes)(acc, q0, acc->re + q0, acc->im + q0, xp + q0, u);
         else
-            KERNEL(update_block)(acc, q0, xr + q0, xi + q0, u);
+            KERNEL(update_block)(acc, q0, acc->re + q0, acc->im + q0, u);
     }
 }
 
@@ -84,13 +84,33 @@ static void KERNEL(sparse_setup)(mcs_spectrum *acc, const mcs_spectrum_trial_ *t
     }
 }
 
-/* The SPARSE path for one trial: the in-block phases of a chunk of samples,
- * every block's S_k into acc->re, acc->im (the first chunk stores, later
- * ones add), and one update. Pad lanes k > N/2 are zeroed so the pad stays 0. */
+/* Blocks the fused SPARSE path sums before it updates them (64
+ * frequencies: their values are still in L1 when the update reads them). */
+#define MCS_FUSED_BLOCKS_ 8u
+
+/* The SPARSE path for one trial. Up to CHUNK samples, fused: the S_k of a
+ * group of blocks by block phases (one twiddle-table read per sample and
+ * block, times its in-block phases), then that group's update. More samples
+ * are summed chunk by chunk into acc->re, acc->im (the first chunk stores,
+ * later ones add) and updated once. Pad lanes k > N/2 are zeroed so the pad
+ * stays 0. */
 static void KERNEL(sparse_trial)(mcs_spectrum *acc, const mcs_spectrum_trial_ *t, unit_factors u)
 {
     const size_t n = acc->n, h1 = n / 2u + 1u, blocks = mcs_spectrum_blocks_(n);
     const mcs_phase_ctx_ ctx = mcs_phase_ctx_of_(&acc->plan);
+    if (t->k <= CHUNK) {
+        KERNEL(sparse_setup)(acc, t, 0u, t->k);
+        for (size_t b0 = 0; b0 < blocks; b0 += MCS_FUSED_BLOCKS_) {
+            const size_t b1 = blocks - b0 > MCS_FUSED_BLOCKS_ ? b0 + MCS_FUSED_BLOCKS_ : blocks;
+            KERNEL(phase_block)(&ctx, t->k, b1 - b0, 0, acc->re + b0 * BLOCK,
+                                acc->im + b0 * BLOCK);
+            if (b1 == blocks)
+                for (size_t q = h1; q < blocks * BLOCK; ++q)
+                    acc->re[q] = acc->im[q] = 0.0;
+            KERNEL(update_range)(acc, b0, b1, NULL, u);
+        }
+        return;
+    }
     for (size_t j0 = 0; j0 < t->k; j0 += CHUNK) {
         const size_t j1 = t->k - j0 > CHUNK ? j0 + CHUNK : t->k;
         KERNEL(sparse_setup)(acc, t, j0, j1);
@@ -98,5 +118,5 @@ static void KERNEL(sparse_trial)(mcs_spectrum *acc, const mcs_spectrum_trial_ *t
     }
     for (size_t q = h1; q < blocks * BLOCK; ++q)
         acc->re[q] = acc->im[q] = 0.0;
-    KERNEL(update_all)(acc, acc->re, acc->im, NULL, u);
+    KERNEL(update_range)(acc, 0u, blocks, NULL, u);
 }

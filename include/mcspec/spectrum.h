@@ -13,8 +13,10 @@
  * quantities:
  * - SPARSE: S_k = N^{-1/2} sum_j w_j e^{-2 pi i k n_j/N} for every k, O(K N),
  *   in blocks of MCS_SPECTRUM_BLOCK frequencies (one twiddle-table read per
- *   sample and block, times the sample's in-block phases), each block's
- *   Welford update done while it is in registers.
+ *   sample and block, times the sample's in-block phases), fused with the
+ *   update: each group of 8 blocks is updated right after it is summed,
+ *   while its values are in L1 (up to MCS_SPECTRUM_CHUNK samples; more are
+ *   summed chunk by chunk, then updated once).
  * - FFT: scatter into a dense s, one real DFT (dft.h), O(N log N).
  * - PAIR: no transform per trial. The trials of a batch add up
  *   sum_s_n and the pair histogram h(d) = sum over sample pairs j < j' with
