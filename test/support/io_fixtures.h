@@ -11,7 +11,7 @@
 #include "mcspec.h"
 
 /* Record sizes by docs/format.md. */
-#define IO_SPECTRUM_BYTES(n) (44u + 40u * ((n) / 2u + 1u))
+#define IO_SPECTRUM_BYTES(n) (60u + 40u * ((n) / 2u + 1u) + 24u * (n))
 #define IO_MOMENT_BYTES(n) (44u + 8u * ((n) + (n) * ((n) + 1u) / 2u))
 #define IO_AUTOCORR_BYTES(n) (44u + 8u * ((n) + (n) / 2u + 1u))
 #define IO_WELFORD_BYTES 68u
