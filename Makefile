@@ -19,6 +19,10 @@ ifeq ($(SAN),1)
 BUILD   := build/san
 SANFLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 endif
+# FFT=fftw: the FFTW back end (mk/fft.mk), built apart from the default.
+ifeq ($(FFT),fftw)
+BUILD   := $(BUILD)/fftw
+endif
 
 OPT      ?= -O2 -g
 WARN     := -std=c11 -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes \
@@ -159,7 +163,7 @@ $(API_MAP): $(API_LIST)
 $(SHLIB): $(PIC_OBJ) $(API_MAP)
 	@echo "LD $@"
 	$(Q)$(CC) $(SANFLAGS) -shared -Wl,-soname,$(SONAME) -Wl,--version-script=$(API_MAP) \
-	    -Wl,--no-undefined $(LDFLAGS) -o $@ $(PIC_OBJ) -lm
+	    -Wl,--no-undefined $(LDFLAGS) -o $@ $(PIC_OBJ) $(LIB_LIBS) -lm
 
 $(BUILD)/libmcspec.so: $(SHLIB)
 	@echo "LN $@"

@@ -42,7 +42,13 @@ static mcs_status save_spectrum2d(const void *o, size_t c, void *b, size_t *l) {
 static mcs_status merge_pointset(void *d, const void *s) { return mcs_pointset_merge(d, s); }
 static mcs_status merge_pointset2d(void *d, const void *s) { return mcs_pointset2d_merge(d, s); }
 static mcs_status merge_spectrum2d(void *d, const void *s) { return mcs_spectrum2d_merge(d, s); }
-static mcs_status init_spectrum(void *o, const size_t *s) { return mcs_spectrum_init(o, s[0]); }
+/* Point files: every set is its own unit (batch 1), so the standard errors
+ * are the set-to-set spread from two sets on, whatever path AUTO takes. */
+static mcs_status init_spectrum(void *o, const size_t *s)
+{
+    mcs_status st = mcs_spectrum_init(o, s[0]);
+    return st == MCS_OK ? mcs_spectrum_set_batch(o, 1u) : st;
+}
 static mcs_status init_pointset(void *o, const size_t *s) { return mcs_pointset_init(o, s[0]); }
 static mcs_status init_pointset2d(void *o, const size_t *s) { return mcs_pointset2d_init(o, s[0]); }
 static mcs_status init_spectrum2d(void *o, const size_t *s) { return mcs_spectrum2d_init(o, s[0], s[1]); }

@@ -117,7 +117,7 @@ static void same_bytes(const char *kind, size_t len, const uint8_t *data, size_t
 static void check_spectrum(const uint8_t *data, size_t size, mcs_status peek_st)
 {
     size_t len = 0u;
-    uint64_t count = 0u;
+    uint64_t count = 0u, units = 0u;
     memcpy(&spec, &spec_pristine, sizeof spec);
     mcs_status st = mcs_io_load_spectrum(&spec, size, data);
     if (!loaded("spectrum", st, peek_st, &spec, &spec_pristine, sizeof spec))
@@ -125,6 +125,7 @@ static void check_spectrum(const uint8_t *data, size_t size, mcs_status peek_st)
     ok_or_die(mcs_io_save_spectrum(&spec, sizeof saved, saved, &len), "spectrum", "save");
     same_bytes("spectrum", len, data, size);
     ok_or_die(mcs_spectrum_count(&spec, &count), "spectrum", "count");
+    ok_or_die(mcs_spectrum_units(&spec, &units), "spectrum", "units");
     for (size_t f = 0; count >= 1u && f < spec.n; ++f) {
         double a, b;
         ok_or_die(mcs_spectrum_mean(&spec, f, &a, &b), "spectrum", "mean");
@@ -132,7 +133,7 @@ static void check_spectrum(const uint8_t *data, size_t size, mcs_status peek_st)
         finite_or_die(b, "spectrum", "mean im");
         ok_or_die(mcs_spectrum_power(&spec, f, &a), "spectrum", "power");
         finite_or_die(a, "spectrum", "power");
-        if (count < 2u)
+        if (units < 2u) /* standard errors rest on units, not trials */
             continue;
         ok_or_die(mcs_spectrum_mean_stderr(&spec, f, &a), "spectrum", "mean stderr");
         finite_or_die(a, "spectrum", "mean stderr");

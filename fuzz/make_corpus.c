@@ -97,5 +97,8 @@ int main(int argc, char **argv)
     bad |= one_case(argv[1], 2u, 3u, 1u, 2u);
     bad |= one_case(argv[1], 7u, 4u, 5u, 3u);
     bad |= one_case(argv[1], 16u, 6u, 20u, 4u);
+    /* AUTO takes the PAIR path here: 2 closed batches of 16 and an open one
+     * of 8, so the spectrum record has units with spread and open sums. */
+    bad |= one_case(argv[1], 16u, 6u, 40u, 5u);
     return bad;
 }

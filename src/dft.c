@@ -1,10 +1,52 @@
 #include "mcspec/dft.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 
+#include "dft_internal.h"
 #include "internal.h"
 #include "kiss_fft.h"
+#include "simd.h"
+
+#if MCS_AVX2_CLONES
+#include <cpuid.h>
+#endif
+
+#define KERNEL(name) name##_generic
+#include "dft_simd.h"
+#undef KERNEL
+#if MCS_AVX2_CLONES
+MCS_AVX2_BEGIN
+#define KERNEL(name) name##_avx2
+#include "dft_simd.h"
+#undef KERNEL
+MCS_AVX2_END
+#endif
+
+int mcs_cpu_avx2_(void)
+{
+#if MCS_AVX2_CLONES
+    unsigned a, b, c, d;
+    /* The OS saves YMM state (OSXSAVE, then XCR0 bits 1 and 2), and AVX2
+     * (leaf 7, EBX bit 5). */
+    if (!__get_cpuid(1u, &a, &b, &c, &d) || !(c & (1u << 27)))
+        return 0;
+    unsigned xcr0_lo, xcr0_hi;
+    __asm__("xgetbv" : "=a"(xcr0_lo), "=d"(xcr0_hi) : "c"(0u));
+    (void)xcr0_hi;
+    if ((xcr0_lo & 6u) != 6u || !__get_cpuid_count(7u, 0u, &a, &b, &c, &d))
+        return 0;
+    return (b & (1u << 5)) != 0u;
+#else
+    return 0;
+#endif
+}
+
+const char *mcs_dft_backend(void)
+{
+    return mcs_dft_fftw_name_();
+}
 
 /* Only the factors 2, 3 and 5: KissFFT has butterflies for them (radix 2, 3,
  * 4, 5); any other prime sends it to kf_bfly_generic, which asks for scratch. */
@@ -19,29 +61,33 @@ static int is_kiss_smooth(size_t n)
     return n == 1u;
 }
 
+/* The KissFFT-side path for n and its transform length (0 if none). KissFFT
+ * of size 1 also reaches the generic butterfly (its factor is 1), so N = 2
+ * (half-size 1) and N = 1 are done by hand. */
+static mcs_dft_path kiss_path(size_t n, size_t *fft_len)
+{
+    *fft_len = 0u;
+    if (n <= 2u)
+        return MCS_DFT_PATH_TRIVIAL;
+    if (n % 2u == 0u && is_kiss_smooth(n / 2u)) {
+        *fft_len = n / 2u;
+        return MCS_DFT_PATH_KISS_REAL;
+    }
+    if (n % 2u == 1u && is_kiss_smooth(n)) {
+        *fft_len = n;
+        return MCS_DFT_PATH_KISS_COMPLEX;
+    }
+    return MCS_DFT_PATH_DIRECT;
+}
+
 mcs_status mcs_dft_init(mcs_dft *plan, size_t n)
 {
     if (plan == NULL)
         return MCS_ERR_NULL;
     if (n == 0u || n > (size_t)MCS_MAX_N)
         return MCS_ERR_N_RANGE;
-
-    /* KissFFT of size 1 also reaches the generic butterfly (its factor is 1),
-     * so N = 2 (half-size 1) and N = 1 are done by hand. */
-    mcs_dft_path path;
-    size_t fft_len = 0u;
-    if (n <= 2u) {
-        path = MCS_DFT_PATH_TRIVIAL;
-    } else if (n % 2u == 0u && is_kiss_smooth(n / 2u)) {
-        path = MCS_DFT_PATH_KISS_REAL;
-        fft_len = n / 2u;
-    } else if (n % 2u == 1u && is_kiss_smooth(n)) {
-        path = MCS_DFT_PATH_KISS_COMPLEX;
-        fft_len = n;
-    } else {
-        path = MCS_DFT_PATH_DIRECT;
-    }
-
+    size_t fft_len;
+    mcs_dft_path path = kiss_path(n, &fft_len);
     /* First call of the two-call size query: the reserved state must hold it. */
     if (fft_len > 0u) {
         size_t need = 0u;
@@ -49,10 +95,16 @@ mcs_status mcs_dft_init(mcs_dft *plan, size_t n)
         if (need > sizeof plan->kiss_state)
             return MCS_ERR_N_RANGE;
     }
-
+    /* FFTW's planner works on its own arrays: nothing of *plan is touched
+     * before this point, and nothing can fail after it. */
+    if (n >= 3u && mcs_dft_fftw_prepare_(plan, n)) {
+        path = MCS_DFT_PATH_FFTW;
+        fft_len = 0u;
+    }
     plan->n = n;
     plan->fft_len = fft_len;
     plan->path = path;
+    plan->simd = mcs_cpu_avx2_();
     mcs_twiddles_(n, plan->cos_table, plan->sin_table);
     if (fft_len > 0u) {
         size_t len = sizeof plan->kiss_state;
@@ -64,8 +116,10 @@ mcs_status mcs_dft_init(mcs_dft *plan, size_t n)
 static int plan_is_valid(const mcs_dft *plan)
 {
     if (!(plan->n >= 1u && plan->n <= (size_t)MCS_MAX_N && plan->path >= MCS_DFT_PATH_TRIVIAL &&
-          plan->path <= MCS_DFT_PATH_DIRECT))
+          plan->path <= MCS_DFT_PATH_FFTW && (plan->simd == 0 || plan->simd == 1)))
         return 0;
+    if (plan->path == MCS_DFT_PATH_FFTW)
+        return plan->fft_len == 0u && plan->n >= 3u && mcs_dft_fftw_is_ready_(plan->n);
     if (plan->fft_len == 0u)
         return plan->path == MCS_DFT_PATH_TRIVIAL || plan->path == MCS_DFT_PATH_DIRECT;
     /* KissFFT's state starts with its nfft: a cheap check that it was placed. */
@@ -127,30 +181,21 @@ static void half_kiss_complex(mcs_dft *plan, const double *s, double *re, double
 }
 
 /* A prime factor above 5. Bluestein would need scratch several times N; this
- * instead sums over the non-zero s_n only, stepping the twiddle index by n
- * (mod N) so every root is an exact table entry: O(N * nnz), cheap for the
- * sparse patterns this library transforms and for small N. */
+ * instead sums over the non-zero s_n only (dft_simd.h), with exact twiddle
+ * indices: O(N * nnz), cheap for the sparse patterns this library
+ * transforms and for small N. Without im only the real parts are summed.
+ * The sums go to the work area, padded to whole blocks of 8 frequencies. */
 static void half_direct(mcs_dft *plan, const double *s, double *re, double *im, double scale)
 {
-    const size_t n = plan->n, h = n / 2u;
-    double *acc_re = plan->work, *acc_im = plan->work + (h + 1u);
-    for (size_t k = 0; k <= h; ++k) {
-        acc_re[k] = 0.0;
-        acc_im[k] = 0.0;
-    }
-    for (size_t b = 0; b < n; ++b) {
-        const double w = s[b];
-        if (w == 0.0)
-            continue;
-        size_t idx = 0u;
-        for (size_t k = 0; k <= h; ++k) {
-            acc_re[k] += w * plan->cos_table[idx];
-            acc_im[k] -= w * plan->sin_table[idx];
-            idx += b;
-            if (idx >= n)
-                idx -= n;
-        }
-    }
+    const size_t n = plan->n, h = n / 2u, padded = (n / 2u + 8u) / 8u * 8u;
+    double *acc_re = plan->work, *acc_im = plan->work + padded;
+    memset(plan->work, 0, 2u * padded * sizeof plan->work[0]);
+#if MCS_AVX2_CLONES
+    if (plan->simd)
+        direct_sums_avx2(plan, s, acc_re, im != NULL ? acc_im : NULL);
+    else
+#endif
+        direct_sums_generic(plan, s, acc_re, im != NULL ? acc_im : NULL);
     for (size_t k = 0; k <= h; ++k)
         re[k] = scale * acc_re[k];
     if (im != NULL) {
@@ -179,6 +224,39 @@ static void half_trivial(size_t n, const double *s, double *re, double *im)
     }
 }
 
+void mcs_dft_half_(mcs_dft *plan, const double *s, double *re, double *im)
+{
+    const double scale = 1.0 / sqrt((double)plan->n); /* eq. 7's normalisation */
+    switch (plan->path) {
+    case MCS_DFT_PATH_KISS_REAL: half_kiss_real(plan, s, re, im, scale); break;
+    case MCS_DFT_PATH_KISS_COMPLEX: half_kiss_complex(plan, s, re, im, scale); break;
+    case MCS_DFT_PATH_DIRECT: half_direct(plan, s, re, im, scale); break;
+    case MCS_DFT_PATH_FFTW: mcs_dft_fftw_half_(plan, s, re, im, scale); break;
+    default: half_trivial(plan->n, s, re, im); break;
+    }
+}
+
+/* Per-call time in nanoseconds, fitted to build/bench/spectrum_costs (see
+ * src/spectrum_cost.c) on the bench machine, gcc 12 -O2: KissFFT costs about
+ * 0.42 ns per N log2 N on the packed real path and 0.84 on the odd complex
+ * one; the direct sum C_DIRECT ns per (non-zero bin, frequency) pair for its
+ * block-phase kernel (half that without im, which the model leaves to its
+ * caller); FFTW's r2c 0.11 ns per N log2 N plus its copy in and out. */
+double mcs_dft_cost_(const mcs_dft *plan, size_t nnz)
+{
+    static const double c_direct[2] = {0.36, 0.24}; /* baseline, AVX2 */
+    const size_t half = plan->n / 2u + 1u; /* the frequencies computed */
+    const double n = (double)plan->n, nlog = n * log2(n > 2.0 ? n : 2.0), h1 = (double)half;
+    const double used = (double)(nnz < plan->n ? nnz : plan->n);
+    switch (plan->path) {
+    case MCS_DFT_PATH_KISS_REAL: return 40.0 + 0.42 * nlog;
+    case MCS_DFT_PATH_KISS_COMPLEX: return 40.0 + 0.84 * nlog;
+    case MCS_DFT_PATH_DIRECT: return 40.0 + 0.5 * n + c_direct[plan->simd != 0] * used * h1;
+    case MCS_DFT_PATH_FFTW: return 40.0 + 0.11 * nlog + 0.3 * n;
+    default: return 5.0;
+    }
+}
+
 mcs_status mcs_dft_check(const mcs_dft *plan, size_t n)
 {
     if (plan == NULL)
@@ -190,44 +268,60 @@ mcs_status mcs_dft_check(const mcs_dft *plan, size_t n)
     return MCS_OK;
 }
 
-static mcs_status check(const mcs_dft *plan, size_t n, const double *s, const double *re)
+/* The sum of |x_j| is finite and at most MCS_DFT_MAX_ABS_SUM exactly when
+ * every x_j is finite (NaN and infinity poison the sum) and the transform's
+ * partial sums stay below overflow. Four partial sums keep the adds from
+ * waiting on each other. */
+static int abs_sum_ok(size_t n, const double *x)
+{
+    double z0 = 0.0, z1 = 0.0, z2 = 0.0, z3 = 0.0;
+    size_t j = 0;
+    for (; j + 4u <= n; j += 4u) {
+        z0 += fabs(x[j]);
+        z1 += fabs(x[j + 1u]);
+        z2 += fabs(x[j + 2u]);
+        z3 += fabs(x[j + 3u]);
+    }
+    for (; j < n; ++j)
+        z0 += fabs(x[j]);
+    return (z0 + z1) + (z2 + z3) <= MCS_DFT_MAX_ABS_SUM;
+}
+
+/* Arguments of mcs_dft_real(_half) with outputs of `len` entries each. */
+static mcs_status check(const mcs_dft *plan, size_t n, const double *s, const double *re,
+                        const double *im, size_t len)
 {
     if (plan == NULL || s == NULL || re == NULL)
         return MCS_ERR_NULL;
     mcs_status st = mcs_dft_check(plan, n);
     if (st != MCS_OK)
         return st;
-    if (!mcs_all_finite_(n, s))
+    const size_t bytes = len * sizeof(double);
+    if (mcs_overlap_(s, n * sizeof(double), plan, sizeof *plan) ||
+        mcs_overlap_(re, bytes, plan, sizeof *plan) ||
+        (im != NULL && (mcs_overlap_(im, bytes, plan, sizeof *plan) ||
+                        mcs_overlap_(re, bytes, im, bytes))))
+        return MCS_ERR_MISMATCH;
+    if (!abs_sum_ok(n, s))
         return MCS_ERR_NOT_FINITE;
     return MCS_OK;
 }
 
-static void transform_half(mcs_dft *plan, const double *s, double *re, double *im)
-{
-    const double scale = 1.0 / sqrt((double)plan->n); /* eq. 7's normalisation */
-    switch (plan->path) {
-    case MCS_DFT_PATH_KISS_REAL: half_kiss_real(plan, s, re, im, scale); break;
-    case MCS_DFT_PATH_KISS_COMPLEX: half_kiss_complex(plan, s, re, im, scale); break;
-    case MCS_DFT_PATH_DIRECT: half_direct(plan, s, re, im, scale); break;
-    default: half_trivial(plan->n, s, re, im); break;
-    }
-}
-
 mcs_status mcs_dft_real_half(mcs_dft *plan, size_t n, const double *s, double *re, double *im)
 {
-    mcs_status st = check(plan, n, s, re);
+    mcs_status st = check(plan, n, s, re, im, n / 2u + 1u);
     if (st != MCS_OK)
         return st;
-    transform_half(plan, s, re, im);
+    mcs_dft_half_(plan, s, re, im);
     return MCS_OK;
 }
 
 mcs_status mcs_dft_real(mcs_dft *plan, size_t n, const double *s, double *re, double *im)
 {
-    mcs_status st = check(plan, n, s, re);
+    mcs_status st = check(plan, n, s, re, im, n);
     if (st != MCS_OK)
         return st;
-    transform_half(plan, s, re, im);
+    mcs_dft_half_(plan, s, re, im);
     /* s is real: S_{N-k} = conj(S_k). */
     const size_t h = n / 2u;
     for (size_t k = h + 1u; k < n; ++k)

@@ -17,7 +17,7 @@
 #define IO_RULE_NONNEG 1u /* >= 0: a sum of (products of) weights, a mean power, an M2 */
 #define IO_RULE_SPREAD 2u /* a sum of deviations from the mean: 0 with fewer than 2 trials */
 
-#define IO_MAX_RANGES 4u
+#define IO_MAX_RANGES 8u
 
 typedef struct {
     size_t first, len;

@@ -9,6 +9,7 @@
  * io.c need no change, nor does the version. */
 #include "io_internal.h"
 
+#include <math.h>
 #include <string.h>
 
 /* One shape word N, 1 <= N <= max_n. */
@@ -20,36 +21,112 @@ static mcs_status layout_n(uint32_t kind, uint64_t n, uint64_t max_n, io_layout 
     return MCS_OK;
 }
 
-/* ---- spectrum: five half spectra k = 0..N/2 ---- */
+/* ---- spectrum: counts, five half spectra k = 0..N/2, the open PAIR batch ----
+ *
+ * Payload: units, open_count, open_work (integers exact in a double: each is
+ * at most the count, 2^53, or a sum of K (K + 1) / 2), then mean_re, mean_im,
+ * m2_s, mean_pow, m2_pow over k = 0..N/2, then the open batch's open_sum[N]
+ * and open_pairs[1 .. 2N) (entry 0 stands for a difference of -N, which no
+ * pair has). With the open batch a loaded spectrum is the saved one: the same
+ * read-outs, merges and later adds, to the bit. */
+
+enum { SP_UNITS, SP_OPEN, SP_WORK, SP_SCALARS };
 
 static mcs_status layout_spectrum(const uint64_t *shape, io_layout *lay)
 {
     mcs_status st = layout_n(MCS_IO_KIND_SPECTRUM, shape[0], MCS_MAX_N, lay);
     if (st != MCS_OK)
         return st;
-    const size_t h1 = (size_t)shape[0] / 2u + 1u;
+    const size_t n = (size_t)shape[0], h1 = n / 2u + 1u;
+    mcs_io_add_range(lay, SP_SCALARS, IO_RULE_NONNEG);           /* units, open_count, open_work */
     mcs_io_add_range(lay, 2u * h1, 0u);                          /* mean_re, mean_im */
     mcs_io_add_range(lay, h1, IO_RULE_NONNEG | IO_RULE_SPREAD);  /* m2_s */
     mcs_io_add_range(lay, h1, IO_RULE_NONNEG);                   /* mean_pow */
     mcs_io_add_range(lay, h1, IO_RULE_NONNEG | IO_RULE_SPREAD);  /* m2_pow */
+    mcs_io_add_range(lay, 3u * n - 1u, IO_RULE_NONNEG);          /* open_sum, open_pairs */
     return MCS_OK;
+}
+
+/* Payload value i of a spectrum, read from the object or from a payload. */
+typedef double (*sp_get_fn)(const void *src, size_t n, size_t i);
+
+static double sp_get_acc(const void *src, size_t n, size_t i)
+{
+    const mcs_spectrum *acc = (const mcs_spectrum *)src;
+    const size_t h1 = n / 2u + 1u;
+    if (i < SP_SCALARS)
+        return i == SP_UNITS ? (double)acc->units
+               : i == SP_OPEN ? (double)acc->open_count : acc->open_work;
+    i -= SP_SCALARS;
+    const double *const half[5] = {acc->mean_re, acc->mean_im, acc->m2_s, acc->mean_pow,
+                                   acc->m2_pow};
+    if (i < 5u * h1)
+        return half[i / h1][i % h1];
+    i -= 5u * h1;
+    return i < n ? acc->open_sum[i] : acc->open_pairs[1u + i - n];
+}
+
+static double sp_get_payload(const void *src, size_t n, size_t i)
+{
+    (void)n;
+    return mcs_io_get_f64((const uint8_t *)src, i);
+}
+
+static int sp_zero(sp_get_fn get, const void *src, size_t n, size_t first, size_t len)
+{
+    for (size_t i = first; i < first + len; ++i)
+        if (get(src, n, i) != 0.0)
+            return 0;
+    return 1;
+}
+
+/* The spectrum's own invariants (spectrum.c, spectrum_check), beyond the
+ * rules every kind shares: whole unit and open counts with
+ * units <= count - open_count and units = 0 exactly when every trial is in
+ * the open batch; an open batch's work at least one pair per trial, and no
+ * open batch leaving its work and sums 0; the closed statistics 0 with no
+ * unit and the M2s 0 with fewer than 2 (a spread needs 2 units, not 2
+ * trials). Values are finite and >= 0 here (checked first). */
+static int spectrum_ok(sp_get_fn get, const void *src, size_t n, uint64_t count)
+{
+    const size_t h1 = n / 2u + 1u;
+    const double units = get(src, n, SP_UNITS), open = get(src, n, SP_OPEN);
+    const double work = get(src, n, SP_WORK);
+    if (units != floor(units) || open != floor(open) || open > (double)count)
+        return 0;
+    const double closed = (double)count - open; /* exact: both at most 2^53 */
+    if (units > closed || (units == 0.0) != (closed == 0.0))
+        return 0;
+    if (open == 0.0 ? (work != 0.0 || !sp_zero(get, src, n, SP_SCALARS + 5u * h1, 3u * n - 1u))
+                    : work < open)
+        return 0;
+    if (units == 0.0 && !sp_zero(get, src, n, SP_SCALARS, 5u * h1))
+        return 0;
+    return units >= 2.0 || (sp_zero(get, src, n, SP_SCALARS + 2u * h1, h1) &&
+                            sp_zero(get, src, n, SP_SCALARS + 4u * h1, h1));
 }
 
 static void emit_spectrum(const void *obj, io_sink *sink)
 {
     const mcs_spectrum *acc = (const mcs_spectrum *)obj;
-    const size_t h1 = acc->n / 2u + 1u;
+    const size_t n = acc->n, h1 = n / 2u + 1u;
+    mcs_io_sink_put(sink, (double)acc->units);
+    mcs_io_sink_put(sink, (double)acc->open_count);
+    mcs_io_sink_put(sink, acc->open_work);
     mcs_io_put_array(sink, acc->mean_re, h1);
     mcs_io_put_array(sink, acc->mean_im, h1);
     mcs_io_put_array(sink, acc->m2_s, h1);
     mcs_io_put_array(sink, acc->mean_pow, h1);
     mcs_io_put_array(sink, acc->m2_pow, h1);
+    mcs_io_put_array(sink, acc->open_sum, n);
+    mcs_io_put_array(sink, acc->open_pairs + 1, 2u * n - 1u);
 }
 
 mcs_status mcs_io_save_spectrum(const mcs_spectrum *acc, size_t cap, void *buf, size_t *len)
 {
     uint64_t count;
     io_layout lay;
+    size_t size;
     if (acc == NULL || len == NULL)
         return MCS_ERR_NULL;
     mcs_status st = mcs_spectrum_count(acc, &count); /* MCS_ERR_UNINIT */
@@ -58,6 +135,11 @@ mcs_status mcs_io_save_spectrum(const mcs_spectrum *acc, size_t cap, void *buf, 
     const uint64_t n = acc->n;
     (void)layout_spectrum(&n, &lay); /* cannot fail: acc->n is in range */
     const io_source src = {acc, emit_spectrum, count};
+    st = mcs_io_save_record(&lay, &src, 0u, NULL, &size); /* the shared rules first */
+    if (st != MCS_OK)
+        return st;
+    if (!spectrum_ok(sp_get_acc, acc, acc->n, count))
+        return MCS_ERR_INVARIANT;
     return mcs_io_save_record(&lay, &src, cap, buf, len);
 }
 
@@ -71,17 +153,22 @@ mcs_status mcs_io_load_spectrum(mcs_spectrum *acc, size_t len, const void *buf)
     mcs_status st = mcs_io_load_check(&kind_spectrum, len, buf, &rec);
     if (st != MCS_OK)
         return st;
-    st = mcs_spectrum_init(acc, (size_t)rec.lay.shape[0]); /* leaves acc as it was on error */
+    const uint8_t *pl = rec.payload;
+    const size_t n = (size_t)rec.lay.shape[0], h1 = n / 2u + 1u;
+    if (!spectrum_ok(sp_get_payload, pl, n, rec.count))
+        return MCS_ERR_INVARIANT;
+    st = mcs_spectrum_init(acc, n); /* leaves acc as it was on error */
     if (st != MCS_OK)
         return st;
-    const uint8_t *pl = rec.payload;
-    const size_t h1 = (size_t)rec.lay.shape[0] / 2u + 1u;
-    mcs_io_get_array(acc->mean_re, pl, 0u, h1);
-    mcs_io_get_array(acc->mean_im, pl, h1, h1);
-    mcs_io_get_array(acc->m2_s, pl, 2u * h1, h1);
-    mcs_io_get_array(acc->mean_pow, pl, 3u * h1, h1);
-    mcs_io_get_array(acc->m2_pow, pl, 4u * h1, h1);
     acc->count = rec.count;
+    acc->units = (uint64_t)mcs_io_get_f64(pl, SP_UNITS);
+    acc->open_count = (uint64_t)mcs_io_get_f64(pl, SP_OPEN);
+    acc->open_work = mcs_io_get_f64(pl, SP_WORK);
+    double *const half[5] = {acc->mean_re, acc->mean_im, acc->m2_s, acc->mean_pow, acc->m2_pow};
+    for (size_t a = 0; a < 5u; ++a)
+        mcs_io_get_array(half[a], pl, SP_SCALARS + a * h1, h1);
+    mcs_io_get_array(acc->open_sum, pl, SP_SCALARS + 5u * h1, n);
+    mcs_io_get_array(acc->open_pairs + 1, pl, SP_SCALARS + 5u * h1 + n, 2u * n - 1u);
     return MCS_OK;
 }
 

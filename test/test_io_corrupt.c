@@ -94,6 +94,8 @@ static void test_every_changed_byte_is_refused(void)
 
 /* ---------------- hand-built headers with a valid CRC ---------------- */
 
+#define SP16 IO_SPECTRUM_VALUES(16u)
+
 static void test_wrong_version_kind_and_shape_are_refused(void)
 {
     const uint64_t sixteen = 16u, two[2] = {16u, 1u};
@@ -101,33 +103,33 @@ static void test_wrong_version_kind_and_shape_are_refused(void)
     dirty_destinations();
     static const uint32_t versions[] = {0u, 2u, 0xffffu};
     for (size_t v = 0; v < 3u; ++v) {
-        size_t len = io_build(rec, versions[v], 1u, 1u, &sixteen, 0u, 45u, NULL);
+        size_t len = io_build(rec, versions[v], 1u, 1u, &sixteen, 0u, SP16, NULL);
         refused(sp, MCS_ERR_VERSION, len, rec, "version", versions[v]);
     }
     /* A valid spectrum record is no other kind; unknown kinds are no kind. */
-    size_t len = io_build(rec, 1u, MCS_IO_KIND_SPECTRUM, 1u, &sixteen, 0u, 45u, NULL);
+    size_t len = io_build(rec, 1u, MCS_IO_KIND_SPECTRUM, 1u, &sixteen, 0u, SP16, NULL);
     TEST_ASSERT_EQUAL_INT(MCS_OK, sp->load(io_obj(&set_a, sp), len, rec));
     for (size_t i = 1; i < IO_NKINDS; ++i)
         refused(&io_kinds[i], MCS_ERR_KIND, len, rec, "spectrum record as kind", i + 1u);
     static const uint32_t unknown[] = {0u, IO_NKINDS + 1u, 0xffffu};
     for (size_t u = 0; u < 3u; ++u) {
-        len = io_build(rec, 1u, unknown[u], 1u, &sixteen, 0u, 45u, NULL);
+        len = io_build(rec, 1u, unknown[u], 1u, &sixteen, 0u, SP16, NULL);
         refused(sp, MCS_ERR_KIND, len, rec, "kind", unknown[u]);
     }
-    len = io_build(rec, 1u, 1u, 2u, two, 0u, 45u, NULL);
+    len = io_build(rec, 1u, 1u, 2u, two, 0u, SP16, NULL);
     refused(sp, MCS_ERR_FORMAT, len, rec, "two shape words", 2u);
-    len = io_build(rec, 1u, 1u, 0u, NULL, 0u, 45u, NULL);
+    len = io_build(rec, 1u, 1u, 0u, NULL, 0u, SP16, NULL);
     refused(sp, MCS_ERR_FORMAT, len, rec, "no shape word", 0u);
-    len = io_build(rec, 1u, 1u, 1u, &sixteen, 0u, 46u, NULL);
-    refused(sp, MCS_ERR_FORMAT, len, rec, "one value too many", 46u);
-    len = io_build(rec, 1u, 1u, 1u, &sixteen, 0u, 44u, NULL);
-    refused(sp, MCS_ERR_FORMAT, len, rec, "one value too few", 44u);
+    len = io_build(rec, 1u, 1u, 1u, &sixteen, 0u, SP16 + 1u, NULL);
+    refused(sp, MCS_ERR_FORMAT, len, rec, "one value too many", SP16 + 1u);
+    len = io_build(rec, 1u, 1u, 1u, &sixteen, 0u, SP16 - 1u, NULL);
+    refused(sp, MCS_ERR_FORMAT, len, rec, "one value too few", SP16 - 1u);
     len = io_build(rec, 1u, 4u, 1u, &sixteen, 0u, 4u, NULL);
     refused(&io_kinds[3], MCS_ERR_FORMAT, len, rec, "welford with a shape", 1u);
     len = io_build(rec, 1u, 7u, 1u, &sixteen, 0u, 5u * 16u * 9u, NULL);
     refused(&io_kinds[6], MCS_ERR_FORMAT, len, rec, "spectrum2d with one side", 1u);
     static const uint64_t nine[9] = {16u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u};
-    len = io_build(rec, 1u, 1u, 9u, nine, 0u, 45u, NULL);
+    len = io_build(rec, 1u, 1u, 9u, nine, 0u, SP16, NULL);
     refused(sp, MCS_ERR_FORMAT, len, rec, "nine shape words", 9u);
 }
 
@@ -152,7 +154,7 @@ static void test_sizes_above_this_builds_capacities_are_refused(void)
         const mcs_status freq = d == 0u ? MCS_OK : MCS_ERR_FREQ_RANGE;
         const uint64_t sn = n + d, cn = c + d, p1 = f1 + d, p2 = f2 + d;
         const uint64_t side_x[2] = {s + d, 2u}, side_y[2] = {3u, s + d};
-        shape_case(0u, &sn, 5u * (sn / 2u + 1u), range);
+        shape_case(0u, &sn, IO_SPECTRUM_VALUES(sn), range);
         shape_case(1u, &cn, 3u * cn + cn * (cn + 1u), range);
         shape_case(2u, &sn, 2u * sn + 2u * (sn / 2u + 1u) + 2u, range);
         shape_case(4u, &p1, 2u * (p1 + 1u), freq);
@@ -223,17 +225,20 @@ static void test_broken_invariants_are_refused(void)
     const double big = MCS_IO_MAX_MAGNITUDE;
     const size_t h1 = 8u, f2 = 14u < MCS_MAX_FREQ ? 14u : MCS_MAX_FREQ;
     const size_t cells2 = (2u * f2 + 1u) * (f2 + 1u);
-    io_fill(&set_a, 14u, 11u, 8u);
+    io_fill(&set_a, 14u, 40u, 8u); /* closed units and an open batch (AUTO picks PAIR) */
     dirty_destinations();
+    TEST_ASSERT_TRUE(set_a.spec.units >= 2u && set_a.spec.open_count > 0u);
     size_t len = save_a(&io_kinds[0], rec);
-    expect_value(0u, len, 2u * h1 + 3u, -1.0, MCS_ERR_INVARIANT);      /* m2_s */
-    expect_value(0u, len, 3u * h1, -0.5, MCS_ERR_INVARIANT);           /* mean_pow */
-    expect_value(0u, len, 5u * h1 - 1u, -1e-300, MCS_ERR_INVARIANT);   /* m2_pow */
-    expect_value(0u, len, 2u * h1 + 3u, -0.0, MCS_OK);                 /* -0 is 0 */
-    expect_value(0u, len, h1 + 2u, -7.0, MCS_OK); /* a mean of S_k may be negative */
-    expect_value(0u, len, 1u, -big, MCS_OK);
-    expect_value(0u, len, 1u, -2.0 * big, MCS_ERR_INVARIANT);
-    expect_value(0u, len, 3u * h1 + 1u, 1.0000001 * big, MCS_ERR_INVARIANT);
+    const size_t h0 = 3u; /* units, open_count, open_work come first */
+    expect_value(0u, len, h0 + 2u * h1 + 3u, -1.0, MCS_ERR_INVARIANT);      /* m2_s */
+    expect_value(0u, len, h0 + 3u * h1, -0.5, MCS_ERR_INVARIANT);           /* mean_pow */
+    expect_value(0u, len, h0 + 5u * h1 - 1u, -1e-300, MCS_ERR_INVARIANT);   /* m2_pow */
+    expect_value(0u, len, h0 + 2u * h1 + 3u, -0.0, MCS_OK);                 /* -0 is 0 */
+    expect_value(0u, len, h0 + h1 + 2u, -7.0, MCS_OK); /* a mean of S_k may be negative */
+    expect_value(0u, len, h0 + 1u, -big, MCS_OK);
+    expect_value(0u, len, h0 + 1u, -2.0 * big, MCS_ERR_INVARIANT);
+    expect_value(0u, len, h0 + 3u * h1 + 1u, 1.0000001 * big, MCS_ERR_INVARIANT);
+    expect_value(0u, len, h0 + 5u * h1 + 3u * 14u - 2u, -1.0, MCS_ERR_INVARIANT); /* open_pairs */
     len = save_a(&io_kinds[1], rec);
     expect_value(1u, len, 2u, -1.0, MCS_ERR_INVARIANT);  /* shift: a trial's s */
     expect_value(1u, len, 14u + 3u, -2.0, MCS_OK);       /* sum_d: deviations, either sign */
@@ -258,6 +263,36 @@ static void test_broken_invariants_are_refused(void)
     expect_value(6u, len, cells, -3.0, MCS_OK);                  /* mean_im */
 }
 
+/* The spectrum's counts and open batch (docs/format.md, kind 1). */
+static void test_spectrum_units_and_open_batch_that_do_not_fit_are_refused(void)
+{
+    const size_t h1 = 8u, sums = 3u + 5u * h1, m2 = 3u + 2u * h1;
+    io_fill(&set_a, 14u, 40u, 8u);
+    dirty_destinations();
+    const double units = (double)set_a.spec.units, open = (double)set_a.spec.open_count;
+    TEST_ASSERT_TRUE(units >= 2.0 && open > 0.0);
+    size_t len = save_a(&io_kinds[0], rec);
+    expect_value(0u, len, 0u, units + 0.5, MCS_ERR_INVARIANT);          /* not whole */
+    expect_value(0u, len, 0u, 40.0 - open + 1.0, MCS_ERR_INVARIANT);   /* more units than trials */
+    expect_value(0u, len, 0u, 40.0 - open, MCS_OK);                    /* one trial per unit */
+    expect_value(0u, len, 1u, 41.0, MCS_ERR_INVARIANT);                /* open above count */
+    expect_value(0u, len, 2u, open - 1.0, MCS_ERR_INVARIANT);          /* < 1 pair a trial */
+    /* Without units the closed statistics are 0, with 1 unit the M2s. */
+    memcpy(rec2, rec, len);
+    set_value(rec2, len, 1u, 0u, 0.0);
+    refused(&io_kinds[0], MCS_ERR_INVARIANT, len, rec2, "no units, closed data", 0u);
+    memcpy(rec2, rec, len);
+    set_value(rec2, len, 1u, 0u, 1.0);
+    refused(&io_kinds[0], MCS_ERR_INVARIANT, len, rec2, "one unit with spread", m2);
+    /* Without an open batch its work and sums are 0. */
+    memcpy(rec2, rec, len);
+    set_value(rec2, len, 1u, 0u, 40.0);
+    set_value(rec2, len, 1u, 1u, 0.0);
+    refused(&io_kinds[0], MCS_ERR_INVARIANT, len, rec2, "no open batch, open work", 2u);
+    set_value(rec2, len, 1u, 2u, 0.0);
+    refused(&io_kinds[0], MCS_ERR_INVARIANT, len, rec2, "no open batch, open sums", sums);
+}
+
 static void test_counts_that_do_not_fit_the_data_are_refused(void)
 {
     io_fill(&set_a, 14u, 11u, 9u);
@@ -273,6 +308,9 @@ static void test_counts_that_do_not_fit_the_data_are_refused(void)
         set_count(rec2, len, UINT64_MAX);
         refused(o, MCS_ERR_INVARIANT, len, rec2, "count 2^64 - 1", 0u);
         set_count(rec2, len, MCS_IO_MAX_COUNT);
+        if (o->kind == MCS_IO_KIND_SPECTRUM) /* the closed units take the new trials */
+            set_value(rec2, len, 1u, 0u,
+                      (double)(MCS_IO_MAX_COUNT - set_a.spec.open_count));
         TEST_ASSERT_EQUAL_INT(MCS_OK, o->load(io_obj(&set_a, o), len, rec2));
         if (o->kind == MCS_IO_KIND_AUTOCORR)
             continue; /* its sums are of s: any count >= 1 fits */
@@ -298,6 +336,7 @@ int main(void)
     RUN_TEST(test_sizes_above_this_builds_capacities_are_refused);
     RUN_TEST(test_non_finite_values_are_refused);
     RUN_TEST(test_broken_invariants_are_refused);
+    RUN_TEST(test_spectrum_units_and_open_batch_that_do_not_fit_are_refused);
     RUN_TEST(test_counts_that_do_not_fit_the_data_are_refused);
     return UNITY_END();
 }

@@ -1,3 +1,7 @@
+/* The spectrum accumulator: its paths agree to rounding, merges and the open
+ * PAIR batch keep the statistics of one pass, and bad input (including the
+ * overflowing, aliased and full-count cases of issue 10) returns an error
+ * and changes nothing. The statistical claims are in test_spectrum_stats.c. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -9,12 +13,14 @@
 void setUp(void) {}
 void tearDown(void) {}
 
-#define PI 3.14159265358979323846
-
 static mcs_spectrum acc, acc2, acc3, before;
 static mcs_importance imp;
 static size_t bins[256];
 static double weights[256], points[256], dense[MCS_MAX_N];
+
+static const mcs_spectrum_path every_path[] = {MCS_SPECTRUM_PATH_SPARSE, MCS_SPECTRUM_PATH_FFT,
+                                               MCS_SPECTRUM_PATH_PAIR, MCS_SPECTRUM_PATH_AUTO};
+#define PATHS (sizeof every_path / sizeof every_path[0])
 
 /* |a - b| <= tol * (|b| + scale) */
 static void assert_close(double expected, double actual, double tol, double scale,
@@ -28,32 +34,37 @@ static void assert_close(double expected, double actual, double tol, double scal
     }
 }
 
-/* Every read-out of a and b agrees to tol, relative to the natural scale of
- * each frequency (sqrt of its power for S_k, its power for |S_k|^2). */
-static void assert_same_statistics(const mcs_spectrum *a, const mcs_spectrum *b, double tol)
+/* Every read-out of a and b agrees to tol on the scale of the spectrum (its
+ * mean power: rounding is relative to that, not to one frequency, whose
+ * power may be 0). Standard errors too when `spread` (both must rest on the
+ * same units; for a deterministic S_k they are differences of nearby
+ * quantities, so they get 1e3 tol). */
+static void assert_same_statistics(const mcs_spectrum *a, const mcs_spectrum *b, double tol,
+                                   int spread)
 {
     uint64_t ca, cb;
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_count(a, &ca));
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_count(b, &cb));
     TEST_ASSERT_EQUAL_UINT64(ca, cb);
+    const double level = spectra_mean_power(b), amp = sqrt(level);
     for (size_t k = 0; k < a->n; ++k) {
-        double ar, ai, br, bi, ap, bp, as, bs, aps, bps;
+        double ar, ai, br, bi, ap, bp;
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_mean(a, k, &ar, &ai));
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_mean(b, k, &br, &bi));
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_power(a, k, &ap));
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_power(b, k, &bp));
+        assert_close(br, ar, tol, amp, "Re <S_k>", k);
+        assert_close(bi, ai, tol, amp, "Im <S_k>", k);
+        assert_close(bp, ap, tol, level, "<|S_k|^2>", k);
+        if (!spread)
+            continue;
+        double as, bs, aps, bps;
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_mean_stderr(a, k, &as));
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_mean_stderr(b, k, &bs));
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_power_stderr(a, k, &aps));
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_power_stderr(b, k, &bps));
-        const double amp = sqrt(bp);
-        assert_close(br, ar, tol, amp, "Re <S_k>", k);
-        assert_close(bi, ai, tol, amp, "Im <S_k>", k);
-        assert_close(bp, ap, tol, 0.0, "<|S_k|^2>", k);
-        /* Standard errors come from M2, a difference of nearby quantities for
-         * a deterministic S_k; compare them on the scale of the value. */
         assert_close(bs, as, 1e3 * tol, amp, "stderr <S_k>", k);
-        assert_close(bps, aps, 1e3 * tol, bp, "stderr <|S_k|^2>", k);
+        assert_close(bps, aps, 1e3 * tol, level, "stderr <|S_k|^2>", k);
     }
 }
 
@@ -65,7 +76,7 @@ static void stream_draw(spectra_stream *st)
     spectra_stream_draw(st, bins, weights, points);
 }
 
-/* Feeds `trials` trials of a pattern to acc. */
+/* Feeds `trials` trials of a pattern to a. */
 static void run(mcs_spectrum *a, mcs_pattern_kind kind, size_t n, size_t k,
                 const mcs_importance *importance, uint64_t seed, size_t trials)
 {
@@ -85,87 +96,126 @@ static void make_importance(size_t n)
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_init(&imp, n, g));
 }
 
-/* ---------------- identities to rounding ---------------- */
+static void init_with(mcs_spectrum *a, size_t n, mcs_spectrum_path path, uint64_t batch)
+{
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(a, n));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_set_path(a, path));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_set_batch(a, batch));
+}
 
-static void test_sparse_and_fft_paths_give_the_same_statistics(void)
+/* ---------------- the paths agree ---------------- */
+
+static void test_every_path_gives_the_same_means_to_rounding(void)
 {
     static const struct {
         size_t n, k;
         int importance;
-    } cases[] = {{1u, 3u, 0}, {2u, 5u, 0}, {7u, 5u, 1},  {16u, 4u, 0},
-                 {45u, 9u, 1}, {64u, 13u, 0}, {100u, 30u, 1}, {1024u, 6u, 0},
-                 {13u, 40u, 1}, {26u, 20u, 0}};
+    } cases[] = {{1u, 3u, 0},   {2u, 5u, 0},     {7u, 5u, 1},    {16u, 4u, 0},
+                 {45u, 9u, 1},  {64u, 13u, 0},   {100u, 30u, 1}, {1024u, 6u, 0},
+                 {13u, 40u, 1}, {26u, 20u, 0},   {64u, 100u, 1}, {4093u, 3u, 0}};
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
-        size_t n = cases[i].n, k = cases[i].k;
+        const size_t n = cases[i].n, k = cases[i].k, trials = n > 1000u ? 40u : 200u;
         const mcs_importance *ip = NULL;
         if (cases[i].importance) {
             make_importance(n);
             ip = &imp;
         }
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc, n));
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc2, n));
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc3, n));
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_set_path(&acc, MCS_SPECTRUM_PATH_SPARSE));
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_set_path(&acc2, MCS_SPECTRUM_PATH_FFT));
-        spectra_stream st;
-        spectra_stream_init(&st, MCS_PATTERN_STRATIFIED, n, k, ip, 100u + i, STREAM_SEQ);
-        for (size_t t = 0; t < 200u; ++t) {
-            stream_draw(&st);
-            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_bins(&acc, k, bins, weights));
-            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_bins(&acc2, k, bins, weights));
-            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_bins(&acc3, k, bins, weights));
+        init_with(&acc, n, MCS_SPECTRUM_PATH_FFT, 0u); /* the reference */
+        run(&acc, MCS_PATTERN_STRATIFIED, n, k, ip, 100u + i, trials);
+        for (size_t p = 0; p < PATHS; ++p) {
+            init_with(&acc2, n, every_path[p], 0u);
+            run(&acc2, MCS_PATTERN_STRATIFIED, n, k, ip, 100u + i, trials);
+            /* per-trial units: the standard errors agree too */
+            assert_same_statistics(&acc2, &acc, 1e-12, every_path[p] == MCS_SPECTRUM_PATH_SPARSE);
         }
-        assert_same_statistics(&acc, &acc2, 1e-12);
-        assert_same_statistics(&acc3, &acc2, 1e-12);
     }
+}
+
+static void test_pair_batches_of_one_give_the_per_trial_standard_errors(void)
+{
+    static const size_t ns[] = {9u, 64u, 101u};
+    for (size_t i = 0; i < sizeof ns / sizeof ns[0]; ++i) {
+        make_importance(ns[i]);
+        init_with(&acc, ns[i], MCS_SPECTRUM_PATH_SPARSE, 0u);
+        init_with(&acc2, ns[i], MCS_SPECTRUM_PATH_PAIR, 1u);
+        run(&acc, MCS_PATTERN_RANDOM, ns[i], 6u, &imp, 60u + i, 150u);
+        run(&acc2, MCS_PATTERN_RANDOM, ns[i], 6u, &imp, 60u + i, 150u);
+        TEST_ASSERT_EQUAL_UINT64(150u, acc2.units);
+        assert_same_statistics(&acc2, &acc, 1e-12, 1);
+    }
+}
+
+static void test_baseline_and_avx2_kernels_give_the_same_bits(void)
+{
+    /* Without AVX2 both runs take the baseline kernels and agree trivially. */
+    static const size_t ns[] = {64u, 90u, 1024u};
+    for (size_t i = 0; i < sizeof ns / sizeof ns[0]; ++i)
+        for (size_t p = 0; p < PATHS; ++p) {
+            init_with(&acc, ns[i], every_path[p], 0u);
+            init_with(&acc2, ns[i], every_path[p], 0u);
+            acc2.simd = 0;
+            run(&acc, MCS_PATTERN_JITTER, ns[i], 70u, NULL, 5u, 100u);
+            run(&acc2, MCS_PATTERN_JITTER, ns[i], 70u, NULL, 5u, 100u);
+            run(&acc, MCS_PATTERN_RANDOM, ns[i], 9u, NULL, 6u, 100u);
+            run(&acc2, MCS_PATTERN_RANDOM, ns[i], 9u, NULL, 6u, 100u);
+            const size_t bytes = MCS_SPECTRUM_HALF * sizeof(double);
+            TEST_ASSERT_EQUAL_MEMORY(acc2.mean_re, acc.mean_re, bytes);
+            TEST_ASSERT_EQUAL_MEMORY(acc2.mean_im, acc.mean_im, bytes);
+            TEST_ASSERT_EQUAL_MEMORY(acc2.m2_s, acc.m2_s, bytes);
+            TEST_ASSERT_EQUAL_MEMORY(acc2.mean_pow, acc.mean_pow, bytes);
+            TEST_ASSERT_EQUAL_MEMORY(acc2.m2_pow, acc.m2_pow, bytes);
+        }
 }
 
 static void test_bins_dense_and_points_give_the_same_statistics(void)
 {
     static const size_t ns[] = {7u, 32u, 90u};
-    for (size_t i = 0; i < sizeof ns / sizeof ns[0]; ++i) {
-        size_t n = ns[i], k = 11u;
-        make_importance(n);
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc, n));
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc2, n));
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc3, n));
-        spectra_stream st;
-        spectra_stream_init(&st, MCS_PATTERN_RANDOM, n, k, &imp, 7u + i, STREAM_SEQ);
-        for (size_t t = 0; t < 100u; ++t) {
-            stream_draw(&st);
-            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_bins(&acc, k, bins, weights));
-            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_dense(n, k, bins, weights, dense));
-            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_dense(&acc2, n, dense));
-            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_points(&acc3, k, points, weights));
+    for (size_t i = 0; i < sizeof ns / sizeof ns[0]; ++i)
+        for (size_t p = 0; p < PATHS; ++p) {
+            const size_t n = ns[i], k = 11u;
+            make_importance(n);
+            init_with(&acc, n, every_path[p], 0u);
+            init_with(&acc2, n, every_path[p], 0u);
+            init_with(&acc3, n, every_path[p], 0u);
+            spectra_stream st;
+            spectra_stream_init(&st, MCS_PATTERN_RANDOM, n, k, &imp, 7u + i, STREAM_SEQ);
+            for (size_t t = 0; t < 100u; ++t) {
+                stream_draw(&st);
+                TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_bins(&acc, k, bins, weights));
+                TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_dense(n, k, bins, weights, dense));
+                TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_dense(&acc2, n, dense));
+                TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_points(&acc3, k, points, weights));
+            }
+            /* dense trials always take the FFT path; points the same as bins */
+            assert_same_statistics(&acc2, &acc, 1e-12, every_path[p] == MCS_SPECTRUM_PATH_SPARSE);
+            assert_same_statistics(&acc3, &acc, 1e-12, 1);
         }
-        assert_same_statistics(&acc2, &acc, 1e-12);
-        assert_same_statistics(&acc3, &acc, 1e-12);
-    }
 }
 
 static void test_points_without_weights_count_as_weight_one(void)
 {
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc, 20u));
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc2, 20u));
-    spectra_stream st;
-    spectra_stream_init(&st, MCS_PATTERN_JITTER, 20u, 6u, NULL, 3u, STREAM_SEQ);
-    for (size_t t = 0; t < 50u; ++t) {
-        stream_draw(&st);
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_points(&acc, 6u, points, NULL));
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_bins(&acc2, 6u, bins, weights));
+    for (size_t p = 0; p < PATHS; ++p) {
+        init_with(&acc, 20u, every_path[p], 0u);
+        init_with(&acc2, 20u, every_path[p], 0u);
+        spectra_stream st;
+        spectra_stream_init(&st, MCS_PATTERN_JITTER, 20u, 80u, NULL, 3u, STREAM_SEQ);
+        for (size_t t = 0; t < 50u; ++t) {
+            stream_draw(&st);
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_points(&acc, 80u, points, NULL));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_bins(&acc2, 80u, bins, weights));
+        }
+        assert_same_statistics(&acc, &acc2, 1e-12, 1);
     }
-    assert_same_statistics(&acc, &acc2, 1e-12);
 }
 
-static void test_one_trial_matches_the_naive_dft(void)
+static void test_one_trial_matches_the_naive_dft_on_every_path(void)
 {
     static double re[MCS_MAX_N], im[MCS_MAX_N];
     static const size_t ns[] = {5u, 64u, 97u};
-    for (size_t i = 0; i < sizeof ns / sizeof ns[0]; ++i) {
-        size_t n = ns[i];
-        for (int path = 1; path <= 2; ++path) {
-            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc, n));
-            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_set_path(&acc, (mcs_spectrum_path)path));
+    for (size_t i = 0; i < sizeof ns / sizeof ns[0]; ++i)
+        for (size_t p = 0; p < PATHS; ++p) {
+            const size_t n = ns[i];
+            init_with(&acc, n, every_path[p], 0u);
             spectra_stream st;
             spectra_stream_init(&st, MCS_PATTERN_RANDOM, n, 9u, NULL, 5u, STREAM_SEQ);
             stream_draw(&st);
@@ -173,237 +223,216 @@ static void test_one_trial_matches_the_naive_dft(void)
             TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_dense(n, 9u, bins, weights, dense));
             spectra_naive_dft(n, dense, n, re, im);
             for (size_t k = 0; k < n; ++k) {
-                double mr, mi, p;
+                double mr, mi, pw;
                 TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_mean(&acc, k, &mr, &mi));
-                TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_power(&acc, k, &p));
+                TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_power(&acc, k, &pw));
                 assert_close(re[k], mr, 1e-13, 1.0, "Re S_k", k);
                 assert_close(im[k], mi, 1e-13, 1.0, "Im S_k", k);
-                assert_close(re[k] * re[k] + im[k] * im[k], p, 1e-13, 1.0, "|S_k|^2", k);
+                assert_close(re[k] * re[k] + im[k] * im[k], pw, 1e-13, 1.0, "|S_k|^2", k);
             }
         }
-    }
 }
 
 static void test_s0_is_k_over_root_n_in_every_trial_without_importance(void)
 {
     static const size_t ns[] = {16u, 30u, 256u};
-    for (size_t i = 0; i < sizeof ns / sizeof ns[0]; ++i) {
-        size_t n = ns[i];
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc, n));
-        run(&acc, MCS_PATTERN_RANDOM, n, 12u, NULL, 1u, 300u);
-        double re, im, se, p, pse;
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_mean(&acc, 0u, &re, &im));
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_mean_stderr(&acc, 0u, &se));
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_power(&acc, 0u, &p));
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_power_stderr(&acc, 0u, &pse));
-        const double s0 = 12.0 / sqrt((double)n);
-        TEST_ASSERT_DOUBLE_WITHIN(1e-13 * s0, s0, re);
-        TEST_ASSERT_EQUAL_DOUBLE(0.0, im);
-        TEST_ASSERT_DOUBLE_WITHIN(1e-13 * s0 * s0, s0 * s0, p);
-        /* Welford: a constant has no spread, not a cancellation residue. */
-        TEST_ASSERT_TRUE(se < 1e-13 * s0);
-        TEST_ASSERT_TRUE(pse < 1e-13 * s0 * s0);
-    }
+    for (size_t i = 0; i < sizeof ns / sizeof ns[0]; ++i)
+        for (size_t p = 0; p < PATHS; ++p) {
+            const size_t n = ns[i];
+            init_with(&acc, n, every_path[p], 0u);
+            run(&acc, MCS_PATTERN_RANDOM, n, 12u, NULL, 1u, 300u);
+            double re, im, se, pw, pse;
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_mean(&acc, 0u, &re, &im));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_mean_stderr(&acc, 0u, &se));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_power(&acc, 0u, &pw));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_power_stderr(&acc, 0u, &pse));
+            const double s0 = 12.0 / sqrt((double)n);
+            TEST_ASSERT_DOUBLE_WITHIN(1e-13 * s0, s0, re);
+            TEST_ASSERT_EQUAL_DOUBLE(0.0, im);
+            TEST_ASSERT_DOUBLE_WITHIN(1e-13 * s0 * s0, s0 * s0, pw);
+            /* Welford: a constant has no spread, not a cancellation residue. */
+            TEST_ASSERT_TRUE(se < 1e-13 * s0);
+            TEST_ASSERT_TRUE(pse < 1e-13 * s0 * s0);
+        }
 }
 
 static void test_parseval_holds_for_every_trial(void)
 {
     /* One trial: sum_k |S_k|^2 = sum_n s_n^2, read back through the symmetric half. */
     static const size_t ns[] = {9u, 64u, 77u};
-    for (size_t i = 0; i < sizeof ns / sizeof ns[0]; ++i) {
-        size_t n = ns[i];
-        make_importance(n);
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc, n));
-        run(&acc, MCS_PATTERN_STRATIFIED, n, 7u, &imp, 2u, 1u);
-        double energy = 0.0, total = 0.0;
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_dense(n, 7u, bins, weights, dense));
-        for (size_t b = 0; b < n; ++b)
-            energy += dense[b] * dense[b];
-        for (size_t k = 0; k < n; ++k) {
-            double p;
-            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_power(&acc, k, &p));
-            total += p;
+    for (size_t i = 0; i < sizeof ns / sizeof ns[0]; ++i)
+        for (size_t p = 0; p < PATHS; ++p) {
+            const size_t n = ns[i];
+            make_importance(n);
+            init_with(&acc, n, every_path[p], 0u);
+            run(&acc, MCS_PATTERN_STRATIFIED, n, 7u, &imp, 2u, 1u);
+            double energy = 0.0, total = 0.0;
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_dense(n, 7u, bins, weights, dense));
+            for (size_t b = 0; b < n; ++b)
+                energy += dense[b] * dense[b];
+            for (size_t k = 0; k < n; ++k) {
+                double pw;
+                TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_power(&acc, k, &pw));
+                total += pw;
+            }
+            TEST_ASSERT_DOUBLE_WITHIN(1e-13 * energy, energy, total);
         }
-        TEST_ASSERT_DOUBLE_WITHIN(1e-13 * energy, energy, total);
+}
+
+/* ---------------- the PAIR path's batches ---------------- */
+
+static void test_the_batch_rule_gives_32_batches_of_16_then_up_to_1024(void)
+{
+    /* K = 1: one pair per trial never pays for a close at N = 4096 (rule
+     * (a)), so after the first 32 units of 16 (rule (b)) batches hold 1024
+     * (rule (c)). */
+    init_with(&acc, 4096u, MCS_SPECTRUM_PATH_PAIR, 0u);
+    uint64_t units;
+    run(&acc, MCS_PATTERN_RANDOM, 4096u, 1u, NULL, 3u, 16u * 31u + 15u);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_units(&acc, &units));
+    TEST_ASSERT_EQUAL_UINT64(32u, units); /* 31 closed and the open batch */
+    TEST_ASSERT_EQUAL_UINT64(15u, acc.open_count);
+    run(&acc, MCS_PATTERN_RANDOM, 4096u, 1u, NULL, 4u, 1u + 1023u);
+    TEST_ASSERT_EQUAL_UINT64(32u, acc.units);
+    TEST_ASSERT_EQUAL_UINT64(1023u, acc.open_count);
+    run(&acc, MCS_PATTERN_RANDOM, 4096u, 1u, NULL, 5u, 1u);
+    TEST_ASSERT_EQUAL_UINT64(33u, acc.units);
+    TEST_ASSERT_EQUAL_UINT64(0u, acc.open_count);
+    TEST_ASSERT_EQUAL_UINT64(16u * 32u + 1024u, acc.count);
+}
+
+static void test_read_outs_with_an_open_batch_equal_those_after_a_flush(void)
+{
+    static const size_t ns[] = {12u, 64u, 101u};
+    for (size_t i = 0; i < sizeof ns / sizeof ns[0]; ++i) {
+        make_importance(ns[i]);
+        init_with(&acc, ns[i], MCS_SPECTRUM_PATH_PAIR, 40u);
+        run(&acc, MCS_PATTERN_STRATIFIED, ns[i], 9u, &imp, 8u + i, 100u); /* 2 closed, 20 open */
+        TEST_ASSERT_EQUAL_UINT64(20u, acc.open_count);
+        memcpy(&acc2, &acc, sizeof acc);
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_flush(&acc2));
+        TEST_ASSERT_EQUAL_UINT64(0u, acc2.open_count);
+        TEST_ASSERT_EQUAL_UINT64(3u, acc2.units);
+        assert_same_statistics(&acc, &acc2, 1e-12, 1);
     }
 }
+
+static void test_a_standard_error_needs_two_units(void)
+{
+    init_with(&acc, 32u, MCS_SPECTRUM_PATH_PAIR, 0u);
+    run(&acc, MCS_PATTERN_RANDOM, 32u, 4u, NULL, 2u, 15u); /* one open batch */
+    double v = 7.0;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_power(&acc, 3u, &v));
+    memcpy(&before, &acc, sizeof acc);
+    v = 7.0;
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_EMPTY, mcs_spectrum_power_stderr(&acc, 3u, &v));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_EMPTY, mcs_spectrum_mean_stderr(&acc, 3u, &v));
+    TEST_ASSERT_EQUAL_DOUBLE(7.0, v);
+    run(&acc, MCS_PATTERN_RANDOM, 32u, 4u, NULL, 3u, 2u); /* a closed batch and an open one */
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_power_stderr(&acc, 3u, &v));
+    TEST_ASSERT_TRUE(v > 0.0);
+}
+
+/* ---------------- merges ---------------- */
 
 static void test_merge_of_halves_equals_one_pass(void)
 {
     static const size_t ns[] = {12u, 64u, 101u};
-    for (size_t i = 0; i < sizeof ns / sizeof ns[0]; ++i) {
-        size_t n = ns[i], k = 5u;
-        make_importance(n);
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc, n));
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc2, n));
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc3, n));
-        spectra_stream st;
-        spectra_stream_init(&st, MCS_PATTERN_RANDOM, n, k, &imp, 40u + i, STREAM_SEQ);
-        for (size_t t = 0; t < 700u; ++t) {
-            stream_draw(&st);
-            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_bins(&acc, k, bins, weights));
-            mcs_spectrum *half = t < 300u ? &acc2 : &acc3;
-            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_bins(half, k, bins, weights));
+    for (size_t i = 0; i < sizeof ns / sizeof ns[0]; ++i)
+        for (size_t p = 0; p < PATHS; ++p) {
+            /* PAIR with batches of 25: the halves (300 and 400 trials) split at a
+             * batch boundary, so even the units agree. */
+            const size_t n = ns[i], k = 5u;
+            const uint64_t batch = every_path[p] == MCS_SPECTRUM_PATH_PAIR ? 25u : 0u;
+            make_importance(n);
+            init_with(&acc, n, every_path[p], batch);
+            init_with(&acc2, n, every_path[p], batch);
+            init_with(&acc3, n, every_path[p], batch);
+            spectra_stream st;
+            spectra_stream_init(&st, MCS_PATTERN_RANDOM, n, k, &imp, 40u + i, STREAM_SEQ);
+            for (size_t t = 0; t < 700u; ++t) {
+                stream_draw(&st);
+                TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_bins(&acc, k, bins, weights));
+                mcs_spectrum *half = t < 300u ? &acc2 : &acc3;
+                TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_bins(half, k, bins, weights));
+            }
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_merge(&acc2, &acc3));
+            /* AUTO's batches follow the rule, which the split moves */
+            const int same_units = every_path[p] != MCS_SPECTRUM_PATH_AUTO;
+            if (same_units)
+                TEST_ASSERT_EQUAL_UINT64(acc.units, acc2.units);
+            assert_same_statistics(&acc2, &acc, 1e-12, same_units);
         }
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_merge(&acc2, &acc3));
-        assert_same_statistics(&acc2, &acc, 1e-12);
+}
+
+static void test_merging_open_batches_keeps_every_trial(void)
+{
+    /* Two accumulators with open batches of 7 and 9: the merge sums them into
+     * one open batch of 16, which is then due (batch 16) and closes. */
+    init_with(&acc, 40u, MCS_SPECTRUM_PATH_PAIR, 16u);
+    init_with(&acc2, 40u, MCS_SPECTRUM_PATH_PAIR, 16u);
+    init_with(&acc3, 40u, MCS_SPECTRUM_PATH_PAIR, 16u);
+    spectra_stream st;
+    spectra_stream_init(&st, MCS_PATTERN_STRATIFIED, 40u, 6u, NULL, 77u, STREAM_SEQ);
+    for (size_t t = 0; t < 48u; ++t) {
+        stream_draw(&st);
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_bins(&acc, 6u, bins, weights));
+        mcs_spectrum *part = t < 16u + 7u ? &acc2 : &acc3;
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_bins(part, 6u, bins, weights));
     }
+    TEST_ASSERT_EQUAL_UINT64(7u, acc2.open_count);
+    TEST_ASSERT_EQUAL_UINT64(9u, acc3.open_count);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_merge(&acc2, &acc3));
+    TEST_ASSERT_EQUAL_UINT64(48u, acc2.count);
+    TEST_ASSERT_EQUAL_UINT64(0u, acc2.open_count);
+    TEST_ASSERT_EQUAL_UINT64(3u, acc2.units);
+    assert_same_statistics(&acc2, &acc, 1e-12, 0);
 }
 
 static void test_merge_with_an_empty_side_copies_or_keeps(void)
 {
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc, 24u));
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc2, 24u));
-    run(&acc, MCS_PATTERN_JITTER, 24u, 4u, NULL, 9u, 50u);
-    memcpy(&before, &acc, sizeof acc);
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_merge(&acc, &acc2)); /* empty src */
-    TEST_ASSERT_EQUAL_MEMORY(&before, &acc, sizeof acc);
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_merge(&acc2, &acc)); /* empty dst */
-    assert_same_statistics(&acc2, &acc, 0.0);
+    for (size_t p = 0; p < PATHS; ++p) {
+        init_with(&acc, 24u, every_path[p], 0u);
+        init_with(&acc2, 24u, every_path[p], 0u);
+        run(&acc, MCS_PATTERN_JITTER, 24u, 4u, NULL, 9u, 50u);
+        memcpy(&before, &acc, sizeof acc);
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_merge(&acc, &acc2)); /* empty src */
+        TEST_ASSERT_EQUAL_MEMORY(&before, &acc, sizeof acc);
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_merge(&acc2, &acc)); /* empty dst */
+        assert_same_statistics(&acc2, &acc, 0.0, 1);
+    }
 }
 
 static void test_merge_with_itself_doubles_the_count_and_keeps_the_means(void)
 {
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc, 10u));
-    run(&acc, MCS_PATTERN_RANDOM, 10u, 3u, NULL, 4u, 40u);
-    memcpy(&before, &acc, sizeof acc);
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_merge(&acc, &acc));
-    TEST_ASSERT_EQUAL_UINT64(80u, acc.count);
-    for (size_t k = 0; k < 10u; ++k) {
-        double a, b;
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_power(&acc, k, &a));
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_power(&before, k, &b));
-        TEST_ASSERT_EQUAL_DOUBLE(b, a);
+    for (size_t p = 0; p < PATHS; ++p) {
+        init_with(&acc, 10u, every_path[p], 0u);
+        run(&acc, MCS_PATTERN_RANDOM, 10u, 3u, NULL, 4u, 40u);
+        memcpy(&before, &acc, sizeof acc);
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_merge(&acc, &acc));
+        TEST_ASSERT_EQUAL_UINT64(80u, acc.count);
+        for (size_t k = 0; k < 10u; ++k) {
+            double a, b;
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_power(&acc, k, &a));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_power(&before, k, &b));
+            TEST_ASSERT_DOUBLE_WITHIN(1e-15 * (b + 1.0), b, a);
+        }
     }
 }
 
 static void test_a_copied_accumulator_keeps_working(void)
 {
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc, 48u));
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc2, 48u));
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_set_path(&acc, MCS_SPECTRUM_PATH_FFT));
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_set_path(&acc2, MCS_SPECTRUM_PATH_FFT));
-    run(&acc, MCS_PATTERN_RANDOM, 48u, 5u, NULL, 8u, 10u);
-    run(&acc2, MCS_PATTERN_RANDOM, 48u, 5u, NULL, 8u, 10u);
-    memcpy(&acc3, &acc, sizeof acc);
-    memset(&acc, 0x5a, sizeof acc);
-    run(&acc3, MCS_PATTERN_RANDOM, 48u, 5u, NULL, 18u, 10u);
-    run(&acc2, MCS_PATTERN_RANDOM, 48u, 5u, NULL, 18u, 10u);
-    assert_same_statistics(&acc3, &acc2, 0.0);
-}
-
-/* ---------------- the note's spectra, measured ---------------- */
-
-/* Asserts |measured - predicted| < 5 stderr (or 1e-12 of the scale when the
- * quantity is deterministic) for <|S_k|^2> at every frequency selected by
- * `predict` (returns 0 to skip), and <S_k> = 0 for k != 0 unless skip_mean. */
-typedef double (*power_fn)(size_t n, size_t k, size_t freq, double h, int *use);
-
-static void assert_spectrum(const mcs_spectrum *a, size_t k, double h, power_fn predict,
-                            int check_mean)
-{
-    const size_t n = a->n;
-    for (size_t f = 0; f < n; ++f) {
-        int use = 1;
-        const double want = predict(n, k, f, h, &use);
-        double p, pse;
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_power(a, f, &p));
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_power_stderr(a, f, &pse));
-        const double scale = (double)(k * k) / (double)n;
-        if (use && !(fabs(p - want) <= 5.0 * pse + 1e-12 * scale)) {
-            char msg[160];
-            (void)snprintf(msg, sizeof msg,
-                           "<|S_%zu|^2>: measured %.6g +- %.2g, predicted %.6g (%.1f se)", f,
-                           p, pse, want, fabs(p - want) / pse);
-            TEST_FAIL_MESSAGE(msg);
-        }
-        if (check_mean && f != 0u) {
-            double re, im, se;
-            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_mean(a, f, &re, &im));
-            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_mean_stderr(a, f, &se));
-            const double mag = sqrt(re * re + im * im);
-            /* |<S_k>| of a zero-mean complex estimate: 5 se on the modulus */
-            if (!(mag <= 5.0 * se + 1e-12 * sqrt(scale))) {
-                char msg[128];
-                (void)snprintf(msg, sizeof msg, "<S_%zu> = %.3g + %.3gi, stderr %.3g", f, re,
-                               im, se);
-                TEST_FAIL_MESSAGE(msg);
-            }
-        }
+    for (size_t p = 0; p < PATHS; ++p) {
+        init_with(&acc, 48u, every_path[p], 0u);
+        init_with(&acc2, 48u, every_path[p], 0u);
+        run(&acc, MCS_PATTERN_RANDOM, 48u, 5u, NULL, 8u, 10u);
+        run(&acc2, MCS_PATTERN_RANDOM, 48u, 5u, NULL, 8u, 10u);
+        memcpy(&acc3, &acc, sizeof acc);
+        memset(&acc, 0x5a, sizeof acc);
+        run(&acc3, MCS_PATTERN_RANDOM, 48u, 5u, NULL, 18u, 30u);
+        run(&acc2, MCS_PATTERN_RANDOM, 48u, 5u, NULL, 18u, 30u);
+        assert_same_statistics(&acc3, &acc2, 0.0, 1);
     }
-}
-
-static double random_power(size_t n, size_t k, size_t f, double h, int *use)
-{
-    (void)h;
-    *use = f != 0u;
-    return (double)k / (double)n; /* eq. 23 */
-}
-
-static double stratified_power(size_t n, size_t k, size_t f, double h, int *use)
-{
-    (void)h;
-    *use = f != 0u;
-    const double kn = (double)k / (double)n;
-    const double a = sin(PI * (double)f / (double)k), b = sin(PI * (double)f / (double)n);
-    return kn - kn * kn * kn * (a * a) / (b * b); /* exact finite-N form of eq. 33 */
-}
-
-static double jitter_power(size_t n, size_t k, size_t f, double h, int *use)
-{
-    (void)h;
-    *use = f != 0u;
-    return f % k == 0u ? (double)(k * k) / (double)n : 0.0; /* eq. 37 */
-}
-
-static double importance_power(size_t n, size_t k, size_t f, double h, int *use)
-{
-    *use = 1;
-    const double kn = (double)k / (double)n;
-    if (f == 0u)
-        return (double)(k * k) / (double)n + kn * (1.0 / h - 1.0); /* eq. 46 */
-    return kn / h;                                                  /* eq. 45 */
-}
-
-static void test_random_power_is_k_over_n_and_mean_is_zero(void)
-{
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc, 16u));
-    run(&acc, MCS_PATTERN_RANDOM, 16u, 4u, NULL, 23u, 200000u);
-    assert_spectrum(&acc, 4u, 1.0, random_power, 1);
-}
-
-static void test_stratified_power_follows_the_exact_finite_n_form(void)
-{
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc, 32u));
-    run(&acc, MCS_PATTERN_STRATIFIED, 32u, 4u, NULL, 29u, 400000u);
-    assert_spectrum(&acc, 4u, 1.0, stratified_power, 1);
-}
-
-static void test_jitter_power_is_k2_over_n_at_multiples_of_k_and_zero_elsewhere(void)
-{
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc, 24u));
-    run(&acc, MCS_PATTERN_JITTER, 24u, 4u, NULL, 31u, 20000u);
-    assert_spectrum(&acc, 4u, 1.0, jitter_power, 1);
-}
-
-static void test_uniform_is_biased_at_multiples_of_k(void)
-{
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc, 24u));
-    run(&acc, MCS_PATTERN_UNIFORM, 24u, 4u, NULL, 37u, 10u);
-    for (size_t f = 0; f < 24u; ++f) {
-        double re, im;
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_mean(&acc, f, &re, &im));
-        const double mag = sqrt(re * re + im * im);
-        TEST_ASSERT_DOUBLE_WITHIN(1e-12, f % 4u == 0u ? 4.0 / sqrt(24.0) : 0.0, mag);
-    }
-}
-
-static void test_importance_sampled_random_power_is_k_over_n_h(void)
-{
-    make_importance(12u);
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc, 12u));
-    run(&acc, MCS_PATTERN_RANDOM, 12u, 3u, &imp, 41u, 200000u);
-    assert_spectrum(&acc, 3u, imp.harmonic_mean, importance_power, 1);
 }
 
 /* ---------------- bad input ---------------- */
@@ -429,6 +458,9 @@ static void test_bad_input_returns_an_error_and_changes_nothing(void)
 
     EXPECT_UNCHANGED(MCS_ERR_NULL, mcs_spectrum_set_path(NULL, MCS_SPECTRUM_PATH_FFT));
     EXPECT_UNCHANGED(MCS_ERR_KIND, mcs_spectrum_set_path(&acc, (mcs_spectrum_path)7));
+    EXPECT_UNCHANGED(MCS_ERR_NULL, mcs_spectrum_set_batch(NULL, 4u));
+    EXPECT_UNCHANGED(MCS_ERR_K_RANGE, mcs_spectrum_set_batch(&acc, MCS_SPECTRUM_BATCH_LIMIT + 1u));
+    EXPECT_UNCHANGED(MCS_ERR_NULL, mcs_spectrum_flush(NULL));
 
     EXPECT_UNCHANGED(MCS_ERR_NULL, mcs_spectrum_add_bins(&acc, 4u, NULL, w));
     EXPECT_UNCHANGED(MCS_ERR_NULL, mcs_spectrum_add_bins(&acc, 4u, b, NULL));
@@ -475,6 +507,109 @@ static void test_bad_input_returns_an_error_and_changes_nothing(void)
     EXPECT_UNCHANGED(MCS_ERR_NULL, mcs_spectrum_merge(NULL, &acc));
 }
 
+/* Issue 10, item 1: finite weights whose sum overflows in one bin made the
+ * FFT path's DFT fail; the add still returned MCS_OK, counted the trial and
+ * took the previous trial's spectrum. Item 5: the largest accepted input is
+ * documented (a trial's weights sum to at most MCS_SPECTRUM_MAX_SUM) and
+ * larger is refused, so no square or fourth power can overflow. */
+static void test_a_trial_whose_weights_overflow_is_refused_on_every_path(void)
+{
+    size_t b[3] = {4u, 4u, 9u};
+    double x[3] = {0.2, 0.21, 0.5};
+    for (size_t p = 0; p < PATHS; ++p) {
+        double w[3] = {1e308, 1e308, 1.0};
+        init_with(&acc, 20u, every_path[p], 0u);
+        run(&acc, MCS_PATTERN_RANDOM, 20u, 4u, NULL, 1u, 3u);
+        EXPECT_UNCHANGED(MCS_ERR_NOT_FINITE, mcs_spectrum_add_bins(&acc, 3u, b, w));
+        EXPECT_UNCHANGED(MCS_ERR_NOT_FINITE, mcs_spectrum_add_points(&acc, 3u, x, w));
+        for (size_t j = 0; j < 20u; ++j)
+            dense[j] = j == 4u ? 1e308 : 0.0;
+        dense[5] = 1e308;
+        EXPECT_UNCHANGED(MCS_ERR_NOT_FINITE, mcs_spectrum_add_dense(&acc, 20u, dense));
+        /* the bound itself: 2^100 accepted, the next double above refused */
+        w[0] = MCS_SPECTRUM_MAX_SUM / 2.0;
+        w[1] = MCS_SPECTRUM_MAX_SUM / 2.0;
+        w[2] = nextafter(0.0, 1.0) * 0x1p60; /* lost in the sum's rounding: still the bound */
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_bins(&acc, 3u, b, w));
+        w[2] = MCS_SPECTRUM_MAX_SUM * 0x1p-52;
+        EXPECT_UNCHANGED(MCS_ERR_NOT_FINITE, mcs_spectrum_add_bins(&acc, 3u, b, w));
+    }
+}
+
+static void test_read_outs_stay_finite_at_the_largest_accepted_input(void)
+{
+    /* Trials at the bound alternating with tiny ones: the largest spread of
+     * |S_k|^2 the accumulator can meet, over many units. */
+    size_t b[2] = {0u, 3u};
+    double big[2] = {MCS_SPECTRUM_MAX_SUM / 2.0, MCS_SPECTRUM_MAX_SUM / 2.0}, small[2] = {0.0, 1.0};
+    for (size_t p = 0; p < PATHS; ++p) {
+        init_with(&acc, 16u, every_path[p], every_path[p] == MCS_SPECTRUM_PATH_PAIR ? 4u : 0u);
+        for (size_t t = 0; t < 200u; ++t)
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_bins(&acc, 2u, b, t % 3u ? small : big));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_merge(&acc, &acc));
+        for (size_t k = 0; k < 16u; ++k) {
+            double re, im, pw, se, pse;
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_mean(&acc, k, &re, &im));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_power(&acc, k, &pw));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_mean_stderr(&acc, k, &se));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_power_stderr(&acc, k, &pse));
+            TEST_ASSERT_TRUE(isfinite(re) && isfinite(im) && isfinite(pw) && isfinite(se) &&
+                             isfinite(pse) && pw >= 0.0 && se >= 0.0 && pse >= 0.0);
+        }
+    }
+}
+
+/* Issue 10, item 10: input arrays inside the accumulator are refused (the
+ * paths write its scratch while they read them), as is a merge of two
+ * overlapping accumulators that are not the same object. */
+static void test_aliasing_the_accumulator_is_refused(void)
+{
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc, 20u));
+    run(&acc, MCS_PATTERN_RANDOM, 20u, 4u, NULL, 1u, 5u);
+    size_t b[2] = {1u, 2u};
+    double w[2] = {1.0, 1.0};
+    for (size_t j = 0; j < 20u; ++j)
+        acc.s[j] = 0.0; /* scratch, 0 between calls, so a valid dense trial */
+    acc.chunk_bins[0] = 1u;
+    acc.chunk_bins[1] = 2u;
+    acc.chunk_weights[0] = acc.chunk_weights[1] = 0.25;
+    EXPECT_UNCHANGED(MCS_ERR_MISMATCH, mcs_spectrum_add_dense(&acc, 20u, acc.s));
+    EXPECT_UNCHANGED(MCS_ERR_MISMATCH, mcs_spectrum_add_bins(&acc, 2u, acc.chunk_bins, w));
+    EXPECT_UNCHANGED(MCS_ERR_MISMATCH, mcs_spectrum_add_bins(&acc, 2u, b, acc.chunk_weights));
+    EXPECT_UNCHANGED(MCS_ERR_MISMATCH, mcs_spectrum_add_points(&acc, 2u, acc.chunk_weights, NULL));
+
+    /* Two set-up accumulators that overlap: src starts at dst's scratch. */
+    static union {
+        mcs_spectrum align;
+        unsigned char bytes[2u * sizeof(mcs_spectrum)];
+    } arena;
+    mcs_spectrum *dst = &arena.align;
+    mcs_spectrum *src = (mcs_spectrum *)(void *)(arena.bytes + offsetof(mcs_spectrum, s));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(dst, 20u));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(src, 20u));
+    run(src, MCS_PATTERN_RANDOM, 20u, 4u, NULL, 1u, 5u);
+    memcpy(&before, dst, offsetof(mcs_spectrum, s));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_MISMATCH, mcs_spectrum_merge(dst, src));
+    TEST_ASSERT_EQUAL_MEMORY(&before, dst, offsetof(mcs_spectrum, s));
+}
+
+static void test_counts_stop_at_the_largest_count(void)
+{
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc, 8u));
+    run(&acc, MCS_PATTERN_RANDOM, 8u, 2u, NULL, 1u, 3u);
+    /* The same statistics, counted as if 2^53 trials had come in 2^53 units. */
+    acc.count = MCS_SPECTRUM_MAX_COUNT;
+    acc.units = MCS_SPECTRUM_MAX_COUNT - acc.open_count;
+    acc.count = acc.units + acc.open_count;
+    size_t b[2] = {1u, 2u};
+    double w[2] = {1.0, 1.0};
+    EXPECT_UNCHANGED(MCS_ERR_K_RANGE, mcs_spectrum_add_bins(&acc, 2u, b, w));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc2, 8u));
+    run(&acc2, MCS_PATTERN_RANDOM, 8u, 2u, NULL, 2u, 1u);
+    EXPECT_UNCHANGED(MCS_ERR_K_RANGE, mcs_spectrum_merge(&acc, &acc2));
+    EXPECT_UNCHANGED(MCS_ERR_K_RANGE, mcs_spectrum_merge(&acc, &acc));
+}
+
 static void test_bad_read_outs_return_an_error_and_leave_the_outputs_alone(void)
 {
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc, 20u));
@@ -495,12 +630,13 @@ static void test_bad_read_outs_return_an_error_and_leave_the_outputs_alone(void)
     EXPECT_UNCHANGED(MCS_ERR_FREQ_RANGE, mcs_spectrum_power_stderr(&acc, 20u, &v));
     EXPECT_UNCHANGED(MCS_ERR_NULL, mcs_spectrum_power(&acc, 1u, NULL));
     EXPECT_UNCHANGED(MCS_ERR_NULL, mcs_spectrum_count(&acc, NULL));
+    EXPECT_UNCHANGED(MCS_ERR_NULL, mcs_spectrum_units(&acc, NULL));
     TEST_ASSERT_EQUAL_DOUBLE(7.0, re);
     TEST_ASSERT_EQUAL_DOUBLE(7.0, im);
     TEST_ASSERT_EQUAL_DOUBLE(7.0, v);
 
     /* an empty accumulator has no mean; one trial has no standard error */
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc, 20u));
+    init_with(&acc, 20u, MCS_SPECTRUM_PATH_FFT, 0u);
     EXPECT_UNCHANGED(MCS_ERR_EMPTY, mcs_spectrum_mean(&acc, 1u, &re, &im));
     EXPECT_UNCHANGED(MCS_ERR_EMPTY, mcs_spectrum_power(&acc, 1u, &v));
     run(&acc, MCS_PATTERN_RANDOM, 20u, 4u, NULL, 1u, 1u);
@@ -508,37 +644,62 @@ static void test_bad_read_outs_return_an_error_and_leave_the_outputs_alone(void)
     EXPECT_UNCHANGED(MCS_ERR_EMPTY, mcs_spectrum_power_stderr(&acc, 1u, &v));
     TEST_ASSERT_EQUAL_DOUBLE(7.0, v);
 
-    /* an accumulator that was never initialised */
+    /* an accumulator that was never initialised, or whose counts disagree */
     memset(&acc, 0, sizeof acc);
     EXPECT_UNCHANGED(MCS_ERR_UNINIT, mcs_spectrum_add_bins(&acc, 4u, b, w));
     EXPECT_UNCHANGED(MCS_ERR_UNINIT, mcs_spectrum_add_points(&acc, 4u, x, w));
     EXPECT_UNCHANGED(MCS_ERR_UNINIT, mcs_spectrum_add_dense(&acc, 20u, dense));
     EXPECT_UNCHANGED(MCS_ERR_UNINIT, mcs_spectrum_set_path(&acc, MCS_SPECTRUM_PATH_FFT));
+    EXPECT_UNCHANGED(MCS_ERR_UNINIT, mcs_spectrum_set_batch(&acc, 3u));
+    EXPECT_UNCHANGED(MCS_ERR_UNINIT, mcs_spectrum_flush(&acc));
     EXPECT_UNCHANGED(MCS_ERR_UNINIT, mcs_spectrum_count(&acc, &c));
     EXPECT_UNCHANGED(MCS_ERR_UNINIT, mcs_spectrum_power(&acc, 0u, &v));
     EXPECT_UNCHANGED(MCS_ERR_UNINIT, mcs_spectrum_merge(&acc, &acc2));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc, 20u));
+    run(&acc, MCS_PATTERN_RANDOM, 20u, 4u, NULL, 1u, 5u);
+    const uint64_t open = acc.open_count;
+    acc.open_count = acc.count + 1u;
+    EXPECT_UNCHANGED(MCS_ERR_UNINIT, mcs_spectrum_power(&acc, 0u, &v));
+    acc.open_count = open;
+    acc.simd = 2;
+    EXPECT_UNCHANGED(MCS_ERR_UNINIT, mcs_spectrum_add_bins(&acc, 4u, b, w));
+    init_with(&acc, 20u, MCS_SPECTRUM_PATH_FFT, 0u);
+    run(&acc, MCS_PATTERN_RANDOM, 20u, 4u, NULL, 1u, 5u);
+    acc.mean_pow[3] = NAN; /* overwritten statistics: refused, not returned */
+    acc.m2_s[3] = -1.0;
+    acc.m2_pow[3] = -1.0;
+    v = 7.0;
+    EXPECT_UNCHANGED(MCS_ERR_NOT_FINITE, mcs_spectrum_power(&acc, 3u, &v));
+    EXPECT_UNCHANGED(MCS_ERR_NOT_FINITE, mcs_spectrum_power_stderr(&acc, 17u, &v));
+    EXPECT_UNCHANGED(MCS_ERR_NOT_FINITE, mcs_spectrum_mean_stderr(&acc, 3u, &v));
+    TEST_ASSERT_EQUAL_DOUBLE(7.0, v);
     TEST_ASSERT_EQUAL_UINT64(7u, c);
 }
 
 int main(void)
 {
     UNITY_BEGIN();
-    RUN_TEST(test_sparse_and_fft_paths_give_the_same_statistics);
+    RUN_TEST(test_every_path_gives_the_same_means_to_rounding);
+    RUN_TEST(test_pair_batches_of_one_give_the_per_trial_standard_errors);
+    RUN_TEST(test_baseline_and_avx2_kernels_give_the_same_bits);
     RUN_TEST(test_bins_dense_and_points_give_the_same_statistics);
     RUN_TEST(test_points_without_weights_count_as_weight_one);
-    RUN_TEST(test_one_trial_matches_the_naive_dft);
+    RUN_TEST(test_one_trial_matches_the_naive_dft_on_every_path);
     RUN_TEST(test_s0_is_k_over_root_n_in_every_trial_without_importance);
     RUN_TEST(test_parseval_holds_for_every_trial);
+    RUN_TEST(test_the_batch_rule_gives_32_batches_of_16_then_up_to_1024);
+    RUN_TEST(test_read_outs_with_an_open_batch_equal_those_after_a_flush);
+    RUN_TEST(test_a_standard_error_needs_two_units);
     RUN_TEST(test_merge_of_halves_equals_one_pass);
+    RUN_TEST(test_merging_open_batches_keeps_every_trial);
     RUN_TEST(test_merge_with_an_empty_side_copies_or_keeps);
     RUN_TEST(test_merge_with_itself_doubles_the_count_and_keeps_the_means);
     RUN_TEST(test_a_copied_accumulator_keeps_working);
-    RUN_TEST(test_random_power_is_k_over_n_and_mean_is_zero);
-    RUN_TEST(test_stratified_power_follows_the_exact_finite_n_form);
-    RUN_TEST(test_jitter_power_is_k2_over_n_at_multiples_of_k_and_zero_elsewhere);
-    RUN_TEST(test_uniform_is_biased_at_multiples_of_k);
-    RUN_TEST(test_importance_sampled_random_power_is_k_over_n_h);
     RUN_TEST(test_bad_input_returns_an_error_and_changes_nothing);
+    RUN_TEST(test_a_trial_whose_weights_overflow_is_refused_on_every_path);
+    RUN_TEST(test_read_outs_stay_finite_at_the_largest_accepted_input);
+    RUN_TEST(test_aliasing_the_accumulator_is_refused);
+    RUN_TEST(test_counts_stop_at_the_largest_count);
     RUN_TEST(test_bad_read_outs_return_an_error_and_leave_the_outputs_alone);
     return UNITY_END();
 }

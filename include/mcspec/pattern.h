@@ -80,6 +80,10 @@ mcs_status mcs_pattern_draw(const mcs_pattern *pat, mcs_rng *rng, size_t k, size
 mcs_status mcs_pattern_bin_points(size_t n, size_t k, const mcs_importance *importance,
                                   const double *points, size_t *bins, double *weights);
 
+/* Largest total weight of one trial mcs_pattern_dense accepts: 2^220, so no
+ * s_n overflows (MCS_ERR_MAGNITUDE beyond it). */
+#define MCS_PATTERN_MAX_DENSE 1.684996666696915e+66
+
 /* Dense s_n = r_n / p_n (eq. 38) from a trial's k (bin, weight) pairs:
  * s[bin] is the sum of the weights of the samples in that bin.
  * bins[k] in [0,n), weights[k] finite and >= 0, s[n] written; s must not

@@ -109,10 +109,13 @@ static uint64_t cell_seed(size_t n, size_t k, int kind)
 }
 
 /* Largest |z| between a contender's <|S_1|^2> and AUTO's (contender 0). The
- * small absolute term keeps a deterministic spectrum (stratified with N | K:
- * zero variance) from dividing rounding by zero. */
-static double zmax_against_auto(const bench_contender *list, size_t count, const bench_run *run)
+ * small absolute term, rounding on the scale of the spectrum (K^2/N, the
+ * power at k = 0), keeps a deterministic spectrum (stratified with N | K:
+ * zero variance, <|S_1|^2> = 0 to rounding) from dividing rounding by zero. */
+static double zmax_against_auto(const bench_contender *list, size_t count, const bench_run *run,
+                                const bench_cell *cell)
 {
+    const double scale = (double)cell->k * (double)cell->k / (double)cell->n;
     double p0, s0, worst = 0.0;
     if (list[0].readout(list[0].ctx, 1u, &p0, &s0) != BENCH_OK)
         return (double)NAN;
@@ -122,7 +125,7 @@ static double zmax_against_auto(const bench_contender *list, size_t count, const
             continue;
         if (list[c].readout(list[c].ctx, 1u, &p, &s) != BENCH_OK)
             return (double)NAN;
-        double z = fabs(p - p0) / (sqrt(s * s + s0 * s0) + 1e-9 * (fabs(p0) + 1e-12));
+        double z = fabs(p - p0) / (sqrt(s * s + s0 * s0) + 1e-9 * fabs(p0) + 1e-12 * scale);
         worst = z > worst ? z : worst;
     }
     return worst;
@@ -167,7 +170,7 @@ static int run_grid(const bench_options *opt, bench_tally *tally)
                 if (bench_interleave(list, count, &cell, opt->rounds, opt->slice_seconds,
                                      &res->run) != BENCH_OK)
                     return 1;
-                res->zmax = zmax_against_auto(list, count, &res->run);
+                res->zmax = zmax_against_auto(list, count, &res->run, &cell);
                 res->numpy_batch = res->run.available[lay.numpy] ? bench_numpy_batch() : 0u;
                 report_grid_row(res, list, &lay, tally);
             }

@@ -124,7 +124,10 @@ static void fill_trials(int type, void *obj, int trials)
         trial_points(t, 2 * BASE_K, pts);
         switch (type) {
         case T_WELFORD: (void)mcs_welford_add(obj, 1.0 + 0.3 * t * t); break;
-        case T_SPECTRUM: (void)mcs_spectrum_add_bins(obj, 5u, bins, w); break;
+        case T_SPECTRUM: /* batch 1: every trial a unit, so 3 trials have standard errors */
+            (void)mcs_spectrum_set_batch(obj, 1u);
+            (void)mcs_spectrum_add_bins(obj, 5u, bins, w);
+            break;
         case T_MOMENT: (void)mcs_moment_add_bins(obj, 5u, bins, w); break;
         case T_AUTOCORR: (void)mcs_autocorr_add_bins(obj, 5u, bins, w); break;
         case T_POINTSET: (void)mcs_pointset_add(obj, BASE_K, pts); break;

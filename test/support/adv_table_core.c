@@ -143,7 +143,7 @@ const adv_fn adv_fns_core[] = {
        AIN("s", E_D, R_F, LEN(L_SLOT, 1), 0), AOUT("re", E_D, O_VAL, LEN(L_HALF, 1), 0),
        AOUT("im", E_D, O_VAL, LEN(L_HALF, 1), F_NULLOK)),
     FN(spectrum_init, EF_INIT, 1, 1, OBJ_OUT("acc", T_SPECTRUM), SZ_DEF("n", BN, 1, MCS_MAX_N, F_OKIN)),
-    FN(spectrum_set_path, EF_NONE, 1, 0, OBJ_IO("acc", T_SPECTRUM, 0), ENM("path", 2, 0, 2, F_OKIN)),
+    FN(spectrum_set_path, EF_NONE, 1, 0, OBJ_IO("acc", T_SPECTRUM, 0), ENM("path", 2, 0, 3, F_OKIN)),
     FNV(spectrum_add_bins, EF_ADD, path_vars, 0, OBJ_IO("acc", T_SPECTRUM, 0), SZ_LEN("k", BT),
         AIN("bins", E_Z, R_BINS, LEN(L_SLOT, 1), 0), AIN("weights", E_D, R_WEIGHT, LEN(L_SLOT, 1), 0)),
     FN(spectrum_add_dense, EF_ADD, 1, 0, OBJ_IO("acc", T_SPECTRUM, F_SIZED),

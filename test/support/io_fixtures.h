@@ -10,8 +10,12 @@
 
 #include "mcspec.h"
 
+/* Payload values of a spectrum record (docs/format.md): units, open_count,
+ * open_work, five half spectra, open_sum[N], open_pairs[1 .. 2N). */
+#define IO_SPECTRUM_VALUES(n) (3u + 5u * ((n) / 2u + 1u) + 3u * (n) - 1u)
+
 /* Record sizes by docs/format.md. */
-#define IO_SPECTRUM_BYTES(n) (44u + 40u * ((n) / 2u + 1u))
+#define IO_SPECTRUM_BYTES(n) (60u + 40u * ((n) / 2u + 1u) + 24u * (n))
 #define IO_MOMENT_BYTES(n) (44u + 8u * (3u * (n) + (n) * ((n) + 1u)))
 #define IO_AUTOCORR_BYTES(n) (44u + 8u * (2u * (n) + 2u * ((n) / 2u + 1u) + 2u))
 #define IO_WELFORD_BYTES 68u

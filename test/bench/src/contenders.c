@@ -13,6 +13,7 @@ static const struct {
     {"AUTO", MCS_SPECTRUM_PATH_AUTO},
     {"SPARSE", MCS_SPECTRUM_PATH_SPARSE},
     {"FFT", MCS_SPECTRUM_PATH_FFT},
+    {"PAIR", MCS_SPECTRUM_PATH_PAIR},
 };
 
 #define PATH_COUNT (sizeof spectrum_paths / sizeof spectrum_paths[0])

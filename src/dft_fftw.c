@@ -1,0 +1,135 @@
+/* The FFTW back end of the dft module (dft.h), compiled in with
+ * -DMCS_DFT_FFTW (make FFT=fftw; CMake -DMCSPEC_FFT=fftw) and linked with
+ * -lfftw3. Without that define this file only provides the stubs that make
+ * every plan a KissFFT one, so the default build neither includes nor links
+ * FFTW.
+ *
+ * An mcs_dft holds no pointers, so FFTW's plans cannot live in it. They live
+ * here instead, one r2c plan per N, made on the first mcs_dft_init for that N
+ * and kept for the life of the process: FFTW allocates then, and never when a
+ * trial is transformed (fftw_execute_dft_r2c on the new-array interface does
+ * not allocate). The plans are made on 64-byte aligned arrays, and the
+ * transform runs on the 64-byte aligned window of the plan's work area, so the
+ * alignment FFTW planned for always holds, whatever address a (copied) mcs_dft
+ * has. This table is the one piece of global state of the library, and exists
+ * only in FFTW builds. */
+#include "dft_internal.h"
+
+#if defined(MCS_DFT_FFTW)
+
+#include <fftw3.h>
+#include <stdint.h>
+#include <string.h>
+#include <threads.h>
+
+static fftw_plan plans[MCS_MAX_N + 1];
+static once_flag lock_once = ONCE_FLAG_INIT;
+static mtx_t lock;
+static int lock_ok;
+
+static void lock_init(void)
+{
+    lock_ok = mtx_init(&lock, mtx_plain) == thrd_success;
+}
+
+/* The window: in[n] from the first 64-byte boundary of plan->work, the
+ * n/2 + 1 complex outputs from the next one after it. */
+static double *aligned(double *p)
+{
+    const uintptr_t a = (uintptr_t)p, mis = a % 64u;
+    return mis == 0u ? p : p + (64u - mis) / sizeof(double);
+}
+
+/* Doubles of the window: in, then out, each after up to 7 pad doubles. */
+static size_t window_doubles(size_t n)
+{
+    return (n + 7u) + (2u * (n / 2u + 1u) + 7u);
+}
+
+int mcs_dft_fftw_is_ready_(size_t n)
+{
+    return n >= 3u && n <= (size_t)MCS_MAX_N && plans[n] != NULL;
+}
+
+/* Plans on FFTW's own (SIMD-aligned) arrays with FFTW_MEASURE, then frees
+ * them: the plan is for any arrays of the same alignment. */
+static fftw_plan make_plan(size_t n)
+{
+    double *in = fftw_alloc_real(n);
+    fftw_complex *out = fftw_alloc_complex(n / 2u + 1u);
+    fftw_plan p = NULL;
+    if (in != NULL && out != NULL)
+        p = fftw_plan_dft_r2c_1d((int)n, in, out, FFTW_MEASURE);
+    fftw_free(in);
+    fftw_free(out);
+    return p;
+}
+
+int mcs_dft_fftw_prepare_(mcs_dft *plan, size_t n)
+{
+    (void)plan;
+    if (n < 3u || n > (size_t)MCS_MAX_N || window_doubles(n) > 4u * (size_t)MCS_MAX_N)
+        return 0;
+    call_once(&lock_once, lock_init);
+    if (!lock_ok || mtx_lock(&lock) != thrd_success)
+        return 0;
+    if (plans[n] == NULL)
+        plans[n] = make_plan(n);
+    const int ready = plans[n] != NULL;
+    (void)mtx_unlock(&lock);
+    return ready;
+}
+
+void mcs_dft_fftw_half_(mcs_dft *plan, const double *s, double *re, double *im, double scale)
+{
+    const size_t n = plan->n, h = n / 2u;
+    double *in = aligned(plan->work);
+    double *out = aligned(in + n);
+    memcpy(in, s, n * sizeof in[0]); /* s is read in full first: it may alias re or im */
+    fftw_execute_dft_r2c(plans[n], in, (fftw_complex *)out);
+    for (size_t k = 0; k <= h; ++k)
+        re[k] = scale * out[2u * k];
+    if (im != NULL) {
+        for (size_t k = 1; k <= h; ++k)
+            im[k] = scale * out[2u * k + 1u];
+        im[0] = 0.0; /* exactly real, as on the KissFFT paths */
+        if (n % 2u == 0u)
+            im[h] = 0.0;
+    }
+}
+
+const char *mcs_dft_fftw_name_(void)
+{
+    return "fftw3";
+}
+
+#else /* the default build: KissFFT only */
+
+int mcs_dft_fftw_prepare_(mcs_dft *plan, size_t n)
+{
+    (void)plan;
+    (void)n;
+    return 0;
+}
+
+void mcs_dft_fftw_half_(mcs_dft *plan, const double *s, double *re, double *im, double scale)
+{
+    (void)plan;
+    (void)s;
+    (void)re;
+    (void)im;
+    (void)scale;
+}
+
+int mcs_dft_fftw_is_ready_(size_t n)
+{
+    (void)n;
+    return 0;
+}
+
+const char *mcs_dft_fftw_name_(void)
+{
+    return "kissfft";
+}
+
+#endif

@@ -1,0 +1,299 @@
+/* The kernels of the spectrum accumulator's three paths (spectrum.h): the
+ * block-phase sparse DFT fused with the update, the FFT path, the pair
+ * histogram and the batch close, and the weighted Welford update they share.
+ *
+ * The vectorisable ones (spectrum_simd.h) are compiled twice (simd.h): for
+ * the baseline ISA and, on x86-64 with GCC or Clang, for AVX2, which doubles
+ * their vector width. mcs_spectrum_init picks the AVX2 copy when the CPU
+ * and the OS support it (as its plan found); both copies compute the same
+ * bits. */
+#include <math.h>
+#include <string.h>
+
+#include "dft_internal.h"
+#include "spectrum_internal.h"
+
+#define BLOCK MCS_SPECTRUM_BLOCK
+#define CHUNK MCS_SPECTRUM_CHUNK
+
+#include "simd.h"
+
+/* A unit of weight w joining closed units of total weight w_old moves each
+ * mean by f d and adds g |d|^2 to its M2, d = x - old mean, with
+ * f = w / (w_old + w) and g = w w_old / (w_old + w) (West 1979; for w = 1
+ * this is Welford's step, M2 += d (x - new mean)). g |d|^2 >= 0: M2 never
+ * decreases, so no variance can come out negative. */
+typedef struct {
+    double f, g;
+} unit_factors;
+
+static unit_factors factors(double w, double w_old)
+{
+    const double total = w_old + w;
+    unit_factors u = {w / total, w * w_old / total};
+    return u;
+}
+
+#define KERNEL(name) name##_generic
+#include "spectrum_simd.h"
+#undef KERNEL
+
+#if MCS_AVX2_CLONES
+MCS_AVX2_BEGIN
+#define KERNEL(name) name##_avx2
+#include "spectrum_simd.h"
+#undef KERNEL
+MCS_AVX2_END
+#endif
+
+/* The update of every stored frequency from acc->re, acc->im (and the power
+ * xp, or |S_k|^2 without it), by the object's kernels. */
+static void update_all(mcs_spectrum *acc, const double *xp, unit_factors u)
+{
+    const size_t blocks = mcs_spectrum_blocks_(acc->n);
+#if MCS_AVX2_CLONES
+    if (acc->simd) {
+        update_range_avx2(acc, 0u, blocks, xp, u);
+        return;
+    }
+#endif
+    update_range_generic(acc, 0u, blocks, xp, u);
+}
+
+/* Zeroes the pad entries k > N/2 of x, so the pad statistics stay 0. */
+static void clear_pad(size_t n, double *x)
+{
+    for (size_t q = n / 2u + 1u; q < mcs_spectrum_blocks_(n) * BLOCK; ++q)
+        x[q] = 0.0;
+}
+
+/* One per-trial unit (weight 1) from the half spectrum in acc->re, acc->im. */
+static void update_trial(mcs_spectrum *acc)
+{
+    clear_pad(acc->n, acc->re);
+    clear_pad(acc->n, acc->im);
+    update_all(acc, NULL, factors(1.0, (double)mcs_spectrum_closed_(acc)));
+    acc->count += 1u;
+    acc->units += 1u;
+}
+
+/* ---------------------------------------------------------------- SPARSE */
+
+void mcs_spectrum_sparse_(mcs_spectrum *acc, const mcs_spectrum_trial_ *t)
+{
+    const unit_factors u = factors(1.0, (double)mcs_spectrum_closed_(acc));
+#if MCS_AVX2_CLONES
+    if (acc->simd)
+        sparse_trial_avx2(acc, t, u);
+    else
+#endif
+        sparse_trial_generic(acc, t, u);
+    acc->count += 1u;
+    acc->units += 1u;
+}
+
+/* ------------------------------------------------------------------- FFT */
+
+void mcs_spectrum_fft_(mcs_spectrum *acc, const mcs_spectrum_trial_ *t)
+{
+    const size_t n = acc->n;
+    if (t->bins != NULL) { /* weights given with bins */
+        for (size_t j = 0; j < t->k; ++j)
+            acc->s[t->bins[j]] += t->weights[j];
+    } else {
+        for (size_t j = 0; j < t->k; ++j)
+            acc->s[mcs_point_bin_(t->points[j], n)] += mcs_spectrum_trial_weight_(t, j);
+    }
+    mcs_dft_half_(&acc->plan, acc->s, acc->re, acc->im);
+    update_trial(acc);
+    if (t->bins != NULL) { /* only the touched bins: s is 0 again */
+        for (size_t j = 0; j < t->k; ++j)
+            acc->s[t->bins[j]] = 0.0;
+    } else {
+        for (size_t j = 0; j < t->k; ++j)
+            acc->s[mcs_point_bin_(t->points[j], n)] = 0.0;
+    }
+}
+
+void mcs_spectrum_dense_(mcs_spectrum *acc, const double *s)
+{
+    mcs_dft_half_(&acc->plan, s, acc->re, acc->im);
+    update_trial(acc);
+}
+
+/* ------------------------------------------------------------------ PAIR */
+
+/* Adds w_j w_q for the pair (j, q), j < q, at open_pairs[N + n_q - n_j]:
+ * the signed difference, offset so that no index wraps. hj = open_pairs + N
+ * - n_j, so the add is hj[n_q]. */
+#define MCS_PAIR_(hj, wj, bq, wq) ((hj)[bq] += (wj) * (wq))
+
+/* Every pair of a trial given as arrays. Four rows share each column's
+ * loads, which halves the memory traffic per pair; the triangle inside a
+ * group of four is written out. */
+static void pair_arrays(mcs_spectrum *acc, size_t k, const size_t *restrict b,
+                        const double *restrict w)
+{
+    const size_t n = acc->n;
+    double *restrict hist = acc->open_pairs;
+    size_t j = 0;
+    for (; j + 4u <= k; j += 4u) {
+        const size_t b1 = b[j + 1u], b2 = b[j + 2u], b3 = b[j + 3u];
+        const double w0 = w[j], w1 = w[j + 1u], w2 = w[j + 2u], w3 = w[j + 3u];
+        double *h0 = hist + n - b[j], *h1 = hist + n - b1, *h2 = hist + n - b2, *h3 = hist + n - b3;
+        MCS_PAIR_(h0, w0, b1, w1);
+        MCS_PAIR_(h0, w0, b2, w2);
+        MCS_PAIR_(h0, w0, b3, w3);
+        MCS_PAIR_(h1, w1, b2, w2);
+        MCS_PAIR_(h1, w1, b3, w3);
+        MCS_PAIR_(h2, w2, b3, w3);
+        for (size_t q = j + 4u; q < k; ++q) {
+            const size_t bq = b[q];
+            const double wq = w[q];
+            MCS_PAIR_(h0, w0, bq, wq);
+            MCS_PAIR_(h1, w1, bq, wq);
+            MCS_PAIR_(h2, w2, bq, wq);
+            MCS_PAIR_(h3, w3, bq, wq);
+        }
+    }
+    for (; j + 1u < k; ++j) {
+        double *hj = hist + n - b[j];
+        for (size_t q = j + 1u; q < k; ++q)
+            MCS_PAIR_(hj, w[j], b[q], w[q]);
+    }
+}
+
+/* Pairs (j, q), j < q, for the columns q in [c0, c1), whose bins and
+ * weights are cb[q - c0], cw[q - c0] (binned points); the rows j come from
+ * t, four at a time as in pair_arrays. */
+static void pair_columns(mcs_spectrum *acc, const mcs_spectrum_trial_ *t, size_t c0, size_t c1,
+                         const size_t *restrict cb, const double *restrict cw)
+{
+    const size_t n = acc->n;
+    double *restrict hist = acc->open_pairs;
+    size_t j = 0;
+    for (; j + 4u <= c0; j += 4u) { /* rows before the chunk: every column is later */
+        double *h[4];
+        double wr[4];
+        for (size_t r = 0; r < 4u; ++r) {
+            h[r] = hist + n - mcs_spectrum_trial_bin_(t, n, j + r);
+            wr[r] = mcs_spectrum_trial_weight_(t, j + r);
+        }
+        for (size_t q = 0; q < c1 - c0; ++q) {
+            MCS_PAIR_(h[0], wr[0], cb[q], cw[q]);
+            MCS_PAIR_(h[1], wr[1], cb[q], cw[q]);
+            MCS_PAIR_(h[2], wr[2], cb[q], cw[q]);
+            MCS_PAIR_(h[3], wr[3], cb[q], cw[q]);
+        }
+    }
+    for (; j + 1u < c1; ++j) {
+        double *hj = hist + n - mcs_spectrum_trial_bin_(t, n, j);
+        const double wj = mcs_spectrum_trial_weight_(t, j);
+        for (size_t q = j + 1u > c0 ? j + 1u : c0; q < c1; ++q)
+            MCS_PAIR_(hj, wj, cb[q - c0], cw[q - c0]);
+    }
+}
+
+/* Each sample once: s_n into the open sums, and half of w^2 at lag 0
+ * (open_pairs[N]), so that h(0) + h(-0) counts w^2 once. Two partial sums
+ * keep the adds from waiting on each other. */
+static void pair_singles(mcs_spectrum *acc, size_t count, const size_t *b, const double *w)
+{
+    double self0 = 0.0, self1 = 0.0;
+    size_t j = 0;
+    for (; j + 2u <= count; j += 2u) {
+        acc->open_sum[b[j]] += w[j];
+        acc->open_sum[b[j + 1u]] += w[j + 1u];
+        self0 += w[j] * w[j];
+        self1 += w[j + 1u] * w[j + 1u];
+    }
+    if (j < count) {
+        acc->open_sum[b[j]] += w[j];
+        self0 += w[j] * w[j];
+    }
+    acc->open_pairs[acc->n] += 0.5 * (self0 + self1);
+}
+
+void mcs_spectrum_pairs_(mcs_spectrum *acc, const mcs_spectrum_trial_ *t)
+{
+    if (t->points == NULL && t->weights != NULL) { /* bins and weights as given */
+        pair_singles(acc, t->k, t->bins, t->weights);
+        pair_arrays(acc, t->k, t->bins, t->weights);
+    } else { /* bin the points chunk by chunk into the column scratch */
+        for (size_t c0 = 0; c0 < t->k; c0 += CHUNK) {
+            const size_t c1 = t->k - c0 > CHUNK ? c0 + CHUNK : t->k;
+            for (size_t q = c0; q < c1; ++q) {
+                acc->chunk_bins[q - c0] = mcs_spectrum_trial_bin_(t, acc->n, q);
+                acc->chunk_weights[q - c0] = mcs_spectrum_trial_weight_(t, q);
+            }
+            pair_singles(acc, c1 - c0, acc->chunk_bins, acc->chunk_weights);
+            pair_columns(acc, t, c0, c1, acc->chunk_bins, acc->chunk_weights);
+        }
+    }
+    acc->count += 1u;
+    acc->open_count += 1u;
+    acc->open_work += mcs_spectrum_pair_count_(t->k);
+}
+
+/* Closes the open batch of B trials. Folding the two halves of open_pairs
+ * gives h(d), d in [0, N); the batch's sum of |S_k|^2 is
+ * (1/N) sum_d (h(d) + h(-d)) e^{-2 pi i k d/N} = 2 N^{-1/2} Re DFT(h)_k
+ * (Wiener-Khinchin with eq. 7), and its sum of S_k is DFT(open_sum)_k. */
+void mcs_spectrum_close_(mcs_spectrum *acc)
+{
+    const size_t n = acc->n, hpad = mcs_spectrum_blocks_(n) * BLOCK;
+    const double b = (double)acc->open_count;
+    double *hist = acc->open_pairs;
+    for (size_t d = 0; d < n; ++d)
+        hist[d] += hist[n + d];
+    /* Lags d and N - d have the same cosine: fold them onto d < N/2, which
+     * halves the non-zero entries the direct sum (prime factors above 5)
+     * goes through, and changes nothing else. */
+    for (size_t d = 1; 2u * d < n; ++d) {
+        hist[d] += hist[n - d];
+        hist[n - d] = 0.0;
+    }
+    mcs_dft_half_(&acc->plan, hist, acc->pw, NULL);
+    mcs_dft_half_(&acc->plan, acc->open_sum, acc->re, acc->im);
+    /* Means over the batch. A mean of |S_k|^2 is >= 0; where it is 0 the
+     * cosine sum may round to -1e-17, so it is clamped (a change within
+     * rounding). */
+    const double pscale = 2.0 / (sqrt((double)n) * b);
+    for (size_t q = 0; q <= n / 2u; ++q) {
+        acc->pw[q] = fmax(0.0, pscale * acc->pw[q]);
+        acc->re[q] /= b;
+        acc->im[q] /= b;
+    }
+    for (size_t q = n / 2u + 1u; q < hpad; ++q)
+        acc->pw[q] = acc->re[q] = acc->im[q] = 0.0;
+    update_all(acc, acc->pw, factors(b, (double)mcs_spectrum_closed_(acc)));
+    memset(acc->open_pairs, 0, 2u * n * sizeof acc->open_pairs[0]);
+    memset(acc->open_sum, 0, n * sizeof acc->open_sum[0]);
+    acc->units += 1u;
+    acc->open_count = 0u;
+    acc->open_work = 0.0;
+}
+
+/* The same two sums for one frequency q straight from the open sums, with
+ * exact twiddle indices (q d mod N). h(d) is the sum of the two halves of
+ * open_pairs (entry i < N stands for d = i - N, which is d = i mod N). */
+void mcs_spectrum_open_values_(const mcs_spectrum *acc, size_t q, double *re, double *im,
+                               double *power)
+{
+    const size_t n = acc->n;
+    const double *ct = acc->plan.cos_table, *st = acc->plan.sin_table;
+    const double b = (double)acc->open_count;
+    double sr = 0.0, si = 0.0, p = 0.0;
+    size_t i = 0u;
+    for (size_t d = 0; d < n; ++d) {
+        sr += acc->open_sum[d] * ct[i];
+        si -= acc->open_sum[d] * st[i];
+        p += (acc->open_pairs[d] + acc->open_pairs[n + d]) * ct[i];
+        i += q;
+        i = i >= n ? i - n : i;
+    }
+    const double scale = 1.0 / sqrt((double)n);
+    *re = scale * sr / b;
+    *im = (q == 0u || 2u * q == n) ? 0.0 : scale * si / b;
+    *power = fmax(0.0, 2.0 * p / ((double)n * b)); /* >= 0, as in mcs_spectrum_close_ */
+}
