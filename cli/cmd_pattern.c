@@ -407,7 +407,9 @@ int cli_cmd_pattern(int argc, char **argv)
         rc = make_pattern(&o, imp, &pat);
     if (rc == 0)
         rc = cli_predict_power(CMD, &pat, pred);
-    if (rc == 0 && mcs_spectrum_init(acc, o.n) != MCS_OK)
+    /* Batch 1 (every trial its own unit): per-trial standard errors that a
+     * split into streams, files or ranks reproduces exactly on merge. */
+    if (rc == 0 && (mcs_spectrum_init(acc, o.n) != MCS_OK || mcs_spectrum_set_batch(acc, 1u) != MCS_OK))
         rc = cli_internal(CMD, "mcs_spectrum_init failed");
     if (rc == 0)
         rc = measure_and_report(&o, &pat, pred, acc, rows);
