@@ -230,6 +230,7 @@ run: all
 # The adversarial table excuses the rows of issue 10's items that are still
 # open (test/test_adversarial.c lists them); ADVERSARIAL_KNOWN= runs them too.
 ADVERSARIAL_KNOWN ?= skip
+export ADVERSARIAL_KNOWN
 
 # Every Unity runner, then the command-line and CSV checks of the section
 # examples (test/examples_check.sh prints a Unity-style summary too).
