@@ -268,11 +268,11 @@ mcs_status mcs_dft_check(const mcs_dft *plan, size_t n)
     return MCS_OK;
 }
 
-/* The sum of |x_j| is finite and at most MCS_DFT_MAX_ABS_SUM exactly when
- * every x_j is finite (NaN and infinity poison the sum) and the transform's
- * partial sums stay below overflow. Four partial sums keep the adds from
- * waiting on each other. */
-static int abs_sum_ok(size_t n, const double *x)
+/* MCS_OK when the sum of |x_j| is at most MCS_DFT_MAX_ABS_SUM, so that the
+ * transform's partial sums stay below overflow; MCS_ERR_NOT_FINITE for a NaN
+ * or infinity (they poison the sum), MCS_ERR_MAGNITUDE for finite values
+ * too large. Four partial sums keep the adds from waiting on each other. */
+static mcs_status abs_sum_status(size_t n, const double *x)
 {
     double z0 = 0.0, z1 = 0.0, z2 = 0.0, z3 = 0.0;
     size_t j = 0;
@@ -284,7 +284,9 @@ static int abs_sum_ok(size_t n, const double *x)
     }
     for (; j < n; ++j)
         z0 += fabs(x[j]);
-    return (z0 + z1) + (z2 + z3) <= MCS_DFT_MAX_ABS_SUM;
+    if ((z0 + z1) + (z2 + z3) <= MCS_DFT_MAX_ABS_SUM)
+        return MCS_OK;
+    return mcs_all_finite_(n, x) ? MCS_ERR_MAGNITUDE : MCS_ERR_NOT_FINITE;
 }
 
 /* Arguments of mcs_dft_real(_half) with outputs of `len` entries each. */
@@ -301,10 +303,8 @@ static mcs_status check(const mcs_dft *plan, size_t n, const double *s, const do
         mcs_overlap_(re, bytes, plan, sizeof *plan) ||
         (im != NULL && (mcs_overlap_(im, bytes, plan, sizeof *plan) ||
                         mcs_overlap_(re, bytes, im, bytes))))
-        return MCS_ERR_MISMATCH;
-    if (!abs_sum_ok(n, s))
-        return MCS_ERR_NOT_FINITE;
-    return MCS_OK;
+        return MCS_ERR_ALIAS;
+    return abs_sum_status(n, s);
 }
 
 mcs_status mcs_dft_real_half(mcs_dft *plan, size_t n, const double *s, double *re, double *im)

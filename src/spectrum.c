@@ -107,7 +107,7 @@ static mcs_status first_bad_sample(size_t n, const mcs_spectrum_trial_ *t)
             sum += w;
         }
     }
-    return t->weights == NULL || sum <= MCS_SPECTRUM_MAX_SUM ? MCS_OK : MCS_ERR_NOT_FINITE;
+    return t->weights == NULL || sum <= MCS_SPECTRUM_MAX_SUM ? MCS_OK : MCS_ERR_MAGNITUDE;
 }
 
 /* The common case, bins and weights, without a branch per sample: a flag
@@ -146,12 +146,14 @@ static mcs_status check_trial(const mcs_spectrum *acc, const mcs_spectrum_trial_
     mcs_status st = spectrum_check(acc);
     if (st != MCS_OK)
         return st;
-    if (t->k == 0u || acc->count >= MCS_SPECTRUM_MAX_COUNT)
+    if (t->k == 0u)
         return MCS_ERR_K_RANGE;
+    if (acc->count >= MCS_SPECTRUM_MAX_COUNT)
+        return MCS_ERR_COUNT;
     if (inside(acc, t->bins, t->k, sizeof t->bins[0]) ||
         inside(acc, t->points, t->k, sizeof t->points[0]) ||
         inside(acc, t->weights, t->k, sizeof t->weights[0]))
-        return MCS_ERR_MISMATCH;
+        return MCS_ERR_ALIAS;
     return check_samples(acc->n, t);
 }
 
@@ -202,10 +204,12 @@ mcs_status mcs_spectrum_add_dense(mcs_spectrum *acc, size_t n, const double *s)
     mcs_status st = spectrum_check(acc);
     if (st != MCS_OK)
         return st;
-    if (n != acc->n || inside(acc, s, n, sizeof s[0]))
+    if (n != acc->n)
         return MCS_ERR_MISMATCH;
+    if (inside(acc, s, n, sizeof s[0]))
+        return MCS_ERR_ALIAS;
     if (acc->count >= MCS_SPECTRUM_MAX_COUNT)
-        return MCS_ERR_K_RANGE;
+        return MCS_ERR_COUNT;
     double sum = 0.0;
     for (size_t j = 0; j < n; ++j) {
         if (!isfinite(s[j]))
@@ -215,7 +219,7 @@ mcs_status mcs_spectrum_add_dense(mcs_spectrum *acc, size_t n, const double *s)
         sum += s[j];
     }
     if (!(sum <= MCS_SPECTRUM_MAX_SUM))
-        return MCS_ERR_NOT_FINITE;
+        return MCS_ERR_MAGNITUDE;
     mcs_spectrum_dense_(acc, s);
     return MCS_OK;
 }
@@ -257,9 +261,11 @@ static mcs_status merge_check(const mcs_spectrum *dst, const mcs_spectrum *src)
         st = spectrum_check(src);
     if (st != MCS_OK)
         return st;
-    if (dst->n != src->n || (dst != src && mcs_overlap_(dst, sizeof *dst, src, sizeof *src)))
+    if (dst->n != src->n)
         return MCS_ERR_MISMATCH;
-    return src->count > MCS_SPECTRUM_MAX_COUNT - dst->count ? MCS_ERR_K_RANGE : MCS_OK;
+    if (dst != src && mcs_overlap_(dst, sizeof *dst, src, sizeof *src))
+        return MCS_ERR_ALIAS;
+    return src->count > MCS_SPECTRUM_MAX_COUNT - dst->count ? MCS_ERR_COUNT : MCS_OK;
 }
 
 mcs_status mcs_spectrum_merge(mcs_spectrum *dst, const mcs_spectrum *src)

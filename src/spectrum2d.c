@@ -1,4 +1,5 @@
 #include "mcspec/spectrum2d.h"
+#include "mcspec/spectrum.h"
 #include "pointset_internal.h"
 
 #include <math.h>
@@ -107,7 +108,9 @@ static void update_statistics(mcs_spectrum2d *acc)
 }
 
 /* The checks of a trial: K >= 1, points[2 k] in [0,1), weights[k] (if any)
- * finite and >= 0, in that order. */
+ * finite and >= 0, in that order, then their sum at most
+ * MCS_SPECTRUM_MAX_SUM: |S_k| <= 2^100 then, so no square or fourth power
+ * of the statistics can overflow (as for the 1D accumulator, spectrum.h). */
 static mcs_status check_trial(size_t k, const double *points, const double *weights)
 {
     if (k == 0u)
@@ -115,15 +118,20 @@ static mcs_status check_trial(size_t k, const double *points, const double *weig
     if (k > SIZE_MAX / 2u)
         return MCS_ERR_POINT_RANGE;
     mcs_status st = mcs_check_points_(2u * k, points, NULL);
-    for (size_t j = 0; st == MCS_OK && weights != NULL && j < k; ++j)
+    double sum = 0.0;
+    for (size_t j = 0; st == MCS_OK && weights != NULL && j < k; ++j) {
         st = mcs_check_weight_(weights[j]);
-    return st;
+        sum += weights[j];
+    }
+    return st == MCS_OK && !(sum <= MCS_SPECTRUM_MAX_SUM) ? MCS_ERR_MAGNITUDE : st;
 }
 
 mcs_status mcs_spectrum2d_add_points(mcs_spectrum2d *acc, size_t k, const double *points,
                                      const double *weights)
 {
     mcs_status st = points == NULL ? MCS_ERR_NULL : check_acc(acc);
+    if (st == MCS_OK && acc->count >= MCS_SPECTRUM_MAX_COUNT)
+        st = MCS_ERR_COUNT;
     if (st == MCS_OK)
         st = check_trial(k, points, weights);
     if (st != MCS_OK)
@@ -143,6 +151,9 @@ mcs_status mcs_spectrum2d_merge(mcs_spectrum2d *dst, const mcs_spectrum2d *src)
     mcs_status st = mcs_ps_pair_status(check_acc(dst), check_acc(src));
     if (st == MCS_OK && (dst->n_x != src->n_x || dst->n_y != src->n_y))
         st = MCS_ERR_MISMATCH;
+    if (st == MCS_OK && (dst->count > MCS_SPECTRUM_MAX_COUNT ||
+                         src->count > MCS_SPECTRUM_MAX_COUNT - dst->count))
+        st = MCS_ERR_COUNT; /* the merged count would not be exact in a double */
     if (st != MCS_OK || src->count == 0u)
         return st;
     const uint64_t na = dst->count, nb = src->count;
@@ -195,6 +206,8 @@ mcs_status mcs_spectrum2d_mean(const mcs_spectrum2d *acc, size_t freq_k, size_t 
     size_t i = 0u;
     int conj = 0;
     mcs_status st = im == NULL ? MCS_ERR_NULL : lookup(acc, freq_k, freq_l, re, &i, &conj);
+    if (st == MCS_OK && re == im)
+        st = MCS_ERR_ALIAS; /* one place cannot hold both parts */
     if (st == MCS_OK)
         st = mcs_ps_read(acc->mean_re[i], 0.0, acc->count, 0, re);
     if (st == MCS_OK)
@@ -242,9 +255,16 @@ mcs_status mcs_spectrum2d_transform(const mcs_spectrum2d *acc, const double *s, 
     mcs_status st = s == NULL || re == NULL || im == NULL ? MCS_ERR_NULL : check_acc(acc);
     if (st != MCS_OK)
         return st;
-    const size_t n1 = acc->n_x, n2 = acc->n_y, n = n1 * n2;
-    if (!mcs_all_finite_(n, s))
-        return MCS_ERR_NOT_FINITE;
+    const size_t n1 = acc->n_x, n2 = acc->n_y, n = n1 * n2, bytes = n * sizeof(double);
+    /* The outputs are written while s is read: no two may overlap. */
+    if (mcs_overlap_(s, bytes, re, bytes) || mcs_overlap_(s, bytes, im, bytes) ||
+        mcs_overlap_(re, bytes, im, bytes))
+        return MCS_ERR_ALIAS;
+    double total = 0.0; /* sum |s_n| bounds every partial sum (dft.h) */
+    for (size_t j = 0; j < n; ++j)
+        total += fabs(s[j]);
+    if (!(total <= MCS_DFT_MAX_ABS_SUM))
+        return mcs_all_finite_(n, s) ? MCS_ERR_MAGNITUDE : MCS_ERR_NOT_FINITE;
     memset(re, 0, n * sizeof *re);
     memset(im, 0, n * sizeof *im);
     for (size_t b2 = 0; b2 < n2; ++b2)
@@ -298,6 +318,7 @@ mcs_status mcs_spectrum2d_variance14(const mcs_spectrum2d *acc, size_t k, const 
             size_t i = k2 * n1 + k1;
             sum += (f_re[i] * f_re[i] + f_im[i] * f_im[i]) * p;
         }
-    *out = sum / ((double)k * (double)k);
-    return MCS_OK;
+    /* |F_k|^2 of a finite f can overflow: refused, never returned as inf. */
+    const double v = sum / ((double)k * (double)k);
+    return isfinite(v) ? mcs_set_(out, v) : MCS_ERR_MAGNITUDE;
 }

@@ -147,6 +147,8 @@ mcs_status mcs_spectrum2d_exact_covariance(const mcs_pattern2d *pat, size_t n_x,
     mcs_status st = check_at(pat, n_x, n_y, k, l, out);
     if (st != MCS_OK)
         return st;
+    if (re == im)
+        return MCS_ERR_ALIAS; /* one place cannot hold both parts */
     const grid g = {pat, n_x, n_y};
     double c[2];
     covariance(&g, k, l, c);
@@ -217,8 +219,9 @@ mcs_status mcs_spectrum2d_exact_variance(const mcs_pattern2d *pat, size_t n_x, s
     for (size_t i = 0; i < n_x * n_y; ++i)
         diag += f_re[i] * f_re[i] + f_im[i] * f_im[i];
     const grid g = {pat, n_x, n_y};
-    *out = (kn * diag - jittered_cross(&g, f_re, f_im)) / (kd * kd);
-    return MCS_OK;
+    /* |F_k|^2 of a finite f can overflow: refused, never returned as inf. */
+    const double v = (kn * diag - jittered_cross(&g, f_re, f_im)) / (kd * kd);
+    return isfinite(v) ? mcs_set_(out, v) : MCS_ERR_MAGNITUDE;
 }
 
 mcs_status mcs_spectrum2d_exact_variance14(const mcs_pattern2d *pat, size_t n_x, size_t n_y,
@@ -239,7 +242,6 @@ mcs_status mcs_spectrum2d_exact_variance14(const mcs_pattern2d *pat, size_t n_x,
             size_t i = k2 * n_x + k1;
             sum += (f_re[i] * f_re[i] + f_im[i] * f_im[i]) * c[0];
         }
-    const double kd = (double)pat->k;
-    *out = sum / (kd * kd);
-    return MCS_OK;
+    const double kd = (double)pat->k, v = sum / (kd * kd);
+    return isfinite(v) ? mcs_set_(out, v) : MCS_ERR_MAGNITUDE;
 }

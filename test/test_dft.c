@@ -355,15 +355,15 @@ static void test_aliased_outputs_and_arrays_inside_the_plan_are_refused(void)
             mcs_status (*fn)(mcs_dft *, size_t, const double *, double *, double *) =
                 half ? mcs_dft_real_half : mcs_dft_real;
             memcpy(&before, &plan, sizeof plan);
-            TEST_ASSERT_EQUAL_INT(MCS_ERR_MISMATCH, fn(&plan, n, s, re, re));
-            TEST_ASSERT_EQUAL_INT(MCS_ERR_MISMATCH, fn(&plan, n, s, re, re + 1));
+            TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, fn(&plan, n, s, re, re));
+            TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, fn(&plan, n, s, re, re + 1));
             TEST_ASSERT_EQUAL_MEMORY(re_before, re, sizeof re);
             memcpy(plan.work + 7, s, n * sizeof s[0]);
             memcpy(&before, &plan, sizeof plan);
-            TEST_ASSERT_EQUAL_INT(MCS_ERR_MISMATCH, fn(&plan, n, plan.work + 7, re, im));
-            TEST_ASSERT_EQUAL_INT(MCS_ERR_MISMATCH, fn(&plan, n, plan.cos_table, re, im));
-            TEST_ASSERT_EQUAL_INT(MCS_ERR_MISMATCH, fn(&plan, n, s, plan.work, NULL));
-            TEST_ASSERT_EQUAL_INT(MCS_ERR_MISMATCH, fn(&plan, n, s, re, plan.sin_table));
+            TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, fn(&plan, n, plan.work + 7, re, im));
+            TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, fn(&plan, n, plan.cos_table, re, im));
+            TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, fn(&plan, n, s, plan.work, NULL));
+            TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, fn(&plan, n, s, re, plan.sin_table));
             TEST_ASSERT_EQUAL_MEMORY(&before, &plan, sizeof plan);
             TEST_ASSERT_EQUAL_MEMORY(re_before, re, sizeof re);
         }
@@ -387,15 +387,15 @@ static void test_finite_input_gives_finite_output_or_is_refused(void)
         s[0] = 2.0 * s[0] + 1e300; /* now above the bound */
         for (size_t k = 0; k < n; ++k)
             re[k] = im[k] = -3.0;
-        TEST_ASSERT_EQUAL_INT(MCS_ERR_NOT_FINITE, mcs_dft_real(&plan, n, s, re, im));
-        TEST_ASSERT_EQUAL_INT(MCS_ERR_NOT_FINITE, mcs_dft_real_half(&plan, n, s, re, im));
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_MAGNITUDE, mcs_dft_real(&plan, n, s, re, im));
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_MAGNITUDE, mcs_dft_real_half(&plan, n, s, re, im));
         for (size_t k = 0; k < n; ++k)
             TEST_ASSERT_TRUE(re[k] == -3.0 && im[k] == -3.0);
     }
     s[0] = 1e308;
     s[1] = 1e308;
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_dft_init(&plan, 2u));
-    TEST_ASSERT_EQUAL_INT(MCS_ERR_NOT_FINITE, mcs_dft_real(&plan, 2u, s, re, im));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_MAGNITUDE, mcs_dft_real(&plan, 2u, s, re, im));
 }
 
 int main(void)

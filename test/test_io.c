@@ -261,7 +261,9 @@ static void test_save_refuses_a_short_buffer_and_bad_objects_writing_nothing(voi
     TEST_ASSERT_EQUAL_INT(MCS_ERR_MAGNITUDE, mcs_autocorr_add_bins(&set_a.ac, 2u, bb, huge));
     set_a.mom.sum_dd[1] = INFINITY;
     set_a.ac.sum_lag[1] = INFINITY;
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_add_points(&set_a.sp2, 2u, pts, huge));
+    /* The 2D spectrum refuses them too (its weights' sum bound): overwritten. */
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_MAGNITUDE, mcs_spectrum2d_add_points(&set_a.sp2, 2u, pts, huge));
+    set_a.sp2.mean_pow[1] = INFINITY;
     set_a.wf.count = MCS_IO_MAX_COUNT + 1u;
     set_a.ps.count = MCS_IO_MAX_COUNT + 1u;
     set_a.ps2.m2[0] = -1.0;

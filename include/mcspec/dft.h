@@ -107,11 +107,11 @@ mcs_status mcs_dft_check(const mcs_dft *plan, size_t n);
  * Aliasing: s is read in full before anything is written, so s may be re or
  * im, or overlap them anyhow. re and im must not overlap each other, and no
  * array may lie inside *plan (its scratch and tables): both are rejected
- * with MCS_ERR_MISMATCH.
- * MCS_ERR_NULL (plan, s, re), MCS_ERR_UNINIT, MCS_ERR_MISMATCH (n != plan n,
- * or aliasing as above), MCS_ERR_NOT_FINITE (a NaN or infinity in s, or the
- * sum of |s_n| above MCS_DFT_MAX_ABS_SUM). On error neither outputs nor the
- * plan change. */
+ * with MCS_ERR_ALIAS.
+ * MCS_ERR_NULL (plan, s, re), MCS_ERR_UNINIT, MCS_ERR_MISMATCH (n != plan n),
+ * MCS_ERR_ALIAS (as above), MCS_ERR_NOT_FINITE (a NaN or infinity in s),
+ * MCS_ERR_MAGNITUDE (the sum of |s_n| above MCS_DFT_MAX_ABS_SUM). On error
+ * neither outputs nor the plan change. */
 mcs_status mcs_dft_real(mcs_dft *plan, size_t n, const double *s, double *re, double *im);
 
 /* The non-redundant half: S_k for k = 0..n/2 (integer division), the rest

@@ -64,8 +64,8 @@
  * transform and no read-out can overflow.
  *
  * Aliasing: input arrays (bins, weights, points, s) must not lie inside the
- * accumulator (MCS_ERR_MISMATCH). merge accepts dst == src; any other
- * overlap of the two is MCS_ERR_MISMATCH.
+ * accumulator (MCS_ERR_ALIAS). merge accepts dst == src; any other overlap
+ * of the two is MCS_ERR_ALIAS.
  *
  * Size: sizeof(mcs_spectrum) is the embedded mcs_dft (about 66 * MCS_MAX_N
  * bytes) plus, in doubles, 8 * MCS_SPECTRUM_HALF of statistics and scratch,
@@ -103,8 +103,9 @@ extern "C" {
 /* Largest sum of one trial's weights (2^100). */
 #define MCS_SPECTRUM_MAX_SUM 0x1p100
 
-/* Largest trial count (2^53: every count is then exact as a double). */
-#define MCS_SPECTRUM_MAX_COUNT (UINT64_C(1) << 53)
+/* Largest trial count: the library's MCS_MAX_COUNT (2^53, config.h: every
+ * count is then exact as a double). */
+#define MCS_SPECTRUM_MAX_COUNT ((uint64_t)MCS_MAX_COUNT)
 
 /* The batch rule of the PAIR path (above). */
 #define MCS_SPECTRUM_BATCH_MIN 16u
@@ -173,35 +174,36 @@ mcs_status mcs_spectrum_flush(mcs_spectrum *acc);
 /* Adds one trial in sparse form, e.g. from mcs_pattern_draw: s_n is the sum
  * of weights[j] over the j with bins[j] = n (eq. 38). bins[k] in [0, N),
  * weights[k] finite and >= 0, summing to at most MCS_SPECTRUM_MAX_SUM.
- * MCS_ERR_NULL, MCS_ERR_UNINIT, MCS_ERR_K_RANGE (k = 0, or the count at
- * MCS_SPECTRUM_MAX_COUNT), MCS_ERR_BIN_RANGE, MCS_ERR_NOT_FINITE (a weight
- * not finite, or their sum above MCS_SPECTRUM_MAX_SUM), MCS_ERR_NEGATIVE,
- * MCS_ERR_MISMATCH (an array inside *acc). *acc untouched on error. */
+ * MCS_ERR_NULL, MCS_ERR_UNINIT, MCS_ERR_K_RANGE (k = 0), MCS_ERR_COUNT (the
+ * count at MCS_SPECTRUM_MAX_COUNT), MCS_ERR_BIN_RANGE, MCS_ERR_NOT_FINITE,
+ * MCS_ERR_NEGATIVE, MCS_ERR_MAGNITUDE (the weights' sum above
+ * MCS_SPECTRUM_MAX_SUM), MCS_ERR_ALIAS (an array inside *acc).
+ * *acc untouched on error. */
 mcs_status mcs_spectrum_add_bins(mcs_spectrum *acc, size_t k, const size_t *bins,
                                  const double *weights);
 
 /* Adds one trial given densely: s[n], n equal to the accumulator's N, values
  * finite and >= 0 with sum at most MCS_SPECTRUM_MAX_SUM. Always the FFT path.
- * MCS_ERR_NULL, MCS_ERR_UNINIT, MCS_ERR_MISMATCH (n, or s inside *acc),
- * MCS_ERR_K_RANGE (count full), MCS_ERR_NOT_FINITE, MCS_ERR_NEGATIVE.
- * *acc untouched on error. */
+ * MCS_ERR_NULL, MCS_ERR_UNINIT, MCS_ERR_MISMATCH (n), MCS_ERR_ALIAS (s inside
+ * *acc), MCS_ERR_COUNT (count full), MCS_ERR_NOT_FINITE, MCS_ERR_NEGATIVE,
+ * MCS_ERR_MAGNITUDE. *acc untouched on error. */
 mcs_status mcs_spectrum_add_dense(mcs_spectrum *acc, size_t n, const double *s);
 
 /* Adds one trial of caller points (a renderer's own samples): points[k] in
  * [0,1) land in bin floor(N x); weights[k] finite and >= 0, or NULL for all 1
  * (pass 1/p of the bin under importance sampling); the sum as for
  * mcs_spectrum_add_bins. MCS_ERR_NULL, MCS_ERR_UNINIT, MCS_ERR_K_RANGE,
- * MCS_ERR_POINT_RANGE, MCS_ERR_NOT_FINITE, MCS_ERR_NEGATIVE, MCS_ERR_MISMATCH.
- * *acc untouched on error. */
+ * MCS_ERR_COUNT, MCS_ERR_POINT_RANGE, MCS_ERR_NOT_FINITE, MCS_ERR_NEGATIVE,
+ * MCS_ERR_MAGNITUDE, MCS_ERR_ALIAS. *acc untouched on error. */
 mcs_status mcs_spectrum_add_points(mcs_spectrum *acc, size_t k, const double *points,
                                    const double *weights);
 
 /* dst <- dst union src (Chan et al. on the units, open batches summed): the
  * same means as one pass over both trial streams, to rounding, and standard
  * errors over the units of both. src unchanged; dst == src is allowed.
- * MCS_ERR_NULL, MCS_ERR_UNINIT, MCS_ERR_MISMATCH (different N, or src and
- * dst overlapping without being the same object), MCS_ERR_K_RANGE (the
- * counts would pass MCS_SPECTRUM_MAX_COUNT). dst untouched on error. */
+ * MCS_ERR_NULL, MCS_ERR_UNINIT, MCS_ERR_MISMATCH (different N), MCS_ERR_ALIAS
+ * (src and dst overlapping without being the same object), MCS_ERR_COUNT
+ * (the counts would pass MCS_SPECTRUM_MAX_COUNT). dst untouched on error. */
 mcs_status mcs_spectrum_merge(mcs_spectrum *dst, const mcs_spectrum *src);
 
 /* Number of trials added. MCS_ERR_NULL, MCS_ERR_UNINIT. */

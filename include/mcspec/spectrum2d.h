@@ -70,22 +70,26 @@ mcs_status mcs_spectrum2d_init(mcs_spectrum2d *acc, size_t n_x, size_t n_y);
 
 /* Adds one trial of points[2 k] (x_0, y_0, ...) in [0,1)^2, binned at
  * (floor(N1 x), floor(N2 y)); weights[k] finite and >= 0 (1/p of the bin
- * under importance sampling), or NULL for all 1. MCS_ERR_NULL,
- * MCS_ERR_UNINIT, MCS_ERR_K_RANGE (k = 0), MCS_ERR_POINT_RANGE,
- * MCS_ERR_NOT_FINITE, MCS_ERR_NEGATIVE. *acc untouched on error. */
+ * under importance sampling), or NULL for all 1, summing to at most
+ * MCS_SPECTRUM_MAX_SUM (2^100, as in spectrum.h: no square or fourth power
+ * of the statistics can then overflow). MCS_ERR_NULL, MCS_ERR_UNINIT,
+ * MCS_ERR_K_RANGE (k = 0), MCS_ERR_COUNT (the count at MCS_MAX_COUNT),
+ * MCS_ERR_POINT_RANGE, MCS_ERR_NOT_FINITE, MCS_ERR_NEGATIVE,
+ * MCS_ERR_MAGNITUDE (a sum above the bound). *acc untouched on error. */
 mcs_status mcs_spectrum2d_add_points(mcs_spectrum2d *acc, size_t k, const double *points,
                                      const double *weights);
 
 /* dst <- dst union src (Chan et al.). MCS_ERR_NULL, MCS_ERR_UNINIT,
- * MCS_ERR_MISMATCH (different N1 or N2). dst untouched on error. */
+ * MCS_ERR_MISMATCH (different N1 or N2), MCS_ERR_COUNT (the counts would
+ * pass MCS_MAX_COUNT). dst untouched on error. */
 mcs_status mcs_spectrum2d_merge(mcs_spectrum2d *dst, const mcs_spectrum2d *src);
 
 /* Trials added. MCS_ERR_NULL, MCS_ERR_UNINIT. */
 mcs_status mcs_spectrum2d_count(const mcs_spectrum2d *acc, uint64_t *count);
 
 /* <S_k> at k = (freq_k, freq_l), freq_k in [0, N1), freq_l in [0, N2).
- * MCS_ERR_NULL, MCS_ERR_UNINIT, MCS_ERR_FREQ_RANGE, MCS_ERR_EMPTY.
- * Outputs untouched on error. */
+ * MCS_ERR_NULL, MCS_ERR_UNINIT, MCS_ERR_FREQ_RANGE, MCS_ERR_EMPTY,
+ * MCS_ERR_ALIAS (re == im). Outputs untouched on error. */
 mcs_status mcs_spectrum2d_mean(const mcs_spectrum2d *acc, size_t freq_k, size_t freq_l,
                                double *re, double *im);
 
@@ -100,9 +104,10 @@ mcs_status mcs_spectrum2d_mean_stderr(const mcs_spectrum2d *acc, size_t freq_k, 
 
 /* The 2D eq. 7 of a real caller array: s[N1 N2] over bins [n2 N1 + n1] in,
  * re[N1 N2], im[N1 N2] over wave vectors [k2 N1 + k1] out (im may not be
- * NULL). Uses acc's twiddles only (acc is not changed). s must not overlap
- * the outputs. MCS_ERR_NULL, MCS_ERR_UNINIT, MCS_ERR_NOT_FINITE.
- * Outputs untouched on error. */
+ * NULL). Uses acc's twiddles only (acc is not changed). s, re and im must not
+ * overlap (MCS_ERR_ALIAS), and the |s_n| sum to at most MCS_DFT_MAX_ABS_SUM
+ * (else MCS_ERR_MAGNITUDE), so the outputs are finite. MCS_ERR_NULL,
+ * MCS_ERR_UNINIT, MCS_ERR_NOT_FINITE. Outputs untouched on error. */
 mcs_status mcs_spectrum2d_transform(const mcs_spectrum2d *acc, const double *s, double *re,
                                     double *im);
 
@@ -110,7 +115,9 @@ mcs_status mcs_spectrum2d_transform(const mcs_spectrum2d *acc, const double *s, 
  * (1/K^2) sum_{k != 0} |F_k|^2 <|S_k|^2>, F = f_re + i f_im the transform of
  * the caller's f (full planes, as from mcs_spectrum2d_transform). Exact for
  * stationary patterns only. MCS_ERR_NULL, MCS_ERR_UNINIT, MCS_ERR_K_RANGE
- * (k = 0), MCS_ERR_EMPTY, MCS_ERR_NOT_FINITE. */
+ * (k = 0), MCS_ERR_EMPTY, MCS_ERR_NOT_FINITE (f not finite),
+ * MCS_ERR_MAGNITUDE (F so large that the result overflows: refused, never
+ * returned as infinity). */
 mcs_status mcs_spectrum2d_variance14(const mcs_spectrum2d *acc, size_t k, const double *f_re,
                                      const double *f_im, double *out);
 
@@ -124,7 +131,7 @@ mcs_status mcs_spectrum2d_exact_power(const mcs_pattern2d *pat, size_t n_x, size
                                       size_t freq_k, size_t freq_l, double *out);
 
 /* Exact Cov(S_k, S_l) = <S_k S_l^*> - <S_k><S_l>^*, k = (k1, k2), l = (l1, l2).
- * Statuses as mcs_spectrum2d_exact_power. */
+ * Statuses as mcs_spectrum2d_exact_power, and MCS_ERR_ALIAS (re == im). */
 mcs_status mcs_spectrum2d_exact_covariance(const mcs_pattern2d *pat, size_t n_x, size_t n_y,
                                            size_t k1, size_t k2, size_t l1, size_t l2,
                                            double *re, double *im);
@@ -132,7 +139,8 @@ mcs_status mcs_spectrum2d_exact_covariance(const mcs_pattern2d *pat, size_t n_x,
 /* Exact Var[I] of I = (1/K) sum_n f_n s_n from the spectrum, the 2D eq. 13
  * with every k, l: (1/K^2) sum_{k,l} F_k^* F_l Cov(S_k, S_l), in O(N) by the
  * structure above. f_re, f_im: full planes (mcs_spectrum2d_transform of f).
- * Statuses as mcs_spectrum2d_exact_power, and MCS_ERR_NOT_FINITE. */
+ * Statuses as mcs_spectrum2d_exact_power, MCS_ERR_NOT_FINITE (f not
+ * finite) and MCS_ERR_MAGNITUDE (f so large that the result overflows). */
 mcs_status mcs_spectrum2d_exact_variance(const mcs_pattern2d *pat, size_t n_x, size_t n_y,
                                          const double *f_re, const double *f_im, double *out);
 
