@@ -82,9 +82,8 @@ mcs_status mcs_spectrum_flush(mcs_spectrum *acc)
 
 /* An input array of `bytes` must not lie inside the accumulator: the paths
  * write its scratch while they read the trial. */
-static int inside(const mcs_spectrum *acc, const void *p, size_t count, size_t size)
+static int inside(const mcs_spectrum *acc, const void *p, size_t bytes)
 {
-    const size_t bytes = count <= SIZE_MAX / size ? count * size : SIZE_MAX;
     return p != NULL && mcs_overlap_(p, bytes, acc, sizeof *acc);
 }
 
@@ -96,7 +95,8 @@ static mcs_status first_bad_sample(size_t n, const mcs_spectrum_trial_ *t)
 {
     double sum = 0.0;
     for (size_t j = 0; j < t->k; ++j) {
-        if (t->bins != NULL ? t->bins[j] >= n : !(t->points[j] >= 0.0 && t->points[j] < 1.0))
+        const double x = t->bins != NULL ? 0.0 : mcs_point_(t->points, j);
+        if (t->bins != NULL ? t->bins[j] >= n : !(x >= 0.0 && x < 1.0))
             return t->bins != NULL ? MCS_ERR_BIN_RANGE : MCS_ERR_POINT_RANGE;
         if (t->weights != NULL) {
             const double w = t->weights[j];
@@ -150,9 +150,9 @@ static mcs_status check_trial(const mcs_spectrum *acc, const mcs_spectrum_trial_
         return MCS_ERR_K_RANGE;
     if (acc->count >= MCS_SPECTRUM_MAX_COUNT)
         return MCS_ERR_COUNT;
-    if (inside(acc, t->bins, t->k, sizeof t->bins[0]) ||
-        inside(acc, t->points, t->k, sizeof t->points[0]) ||
-        inside(acc, t->weights, t->k, sizeof t->weights[0]))
+    if (inside(acc, t->bins, mcs_bytes_(t->k, sizeof t->bins[0])) ||
+        inside(acc, mcs_points_addr_(t->points), mcs_points_bytes_(t->points, t->k)) ||
+        inside(acc, t->weights, mcs_bytes_(t->k, sizeof t->weights[0])))
         return MCS_ERR_ALIAS;
     return check_samples(acc->n, t);
 }
@@ -178,7 +178,23 @@ mcs_status mcs_spectrum_add_bins(mcs_spectrum *acc, size_t k, const size_t *bins
 {
     if (bins == NULL || weights == NULL)
         return MCS_ERR_NULL;
-    const mcs_spectrum_trial_ t = {k, bins, NULL, weights};
+    const mcs_spectrum_trial_ t = {k, bins, {NULL, NULL}, weights};
+    mcs_status st = check_trial(acc, &t);
+    if (st == MCS_OK)
+        add_trial(acc, &t);
+    return st;
+}
+
+/* Both point calls: the trial carries the points as given (double, or float
+ * read in place and widened exactly where a path reads them, internal.h),
+ * so every path gives the same bits for float points as for the widened
+ * double ones. */
+static mcs_status add_points(mcs_spectrum *acc, size_t k, mcs_points_ points,
+                             const double *weights)
+{
+    if (mcs_points_addr_(points) == NULL)
+        return MCS_ERR_NULL;
+    const mcs_spectrum_trial_ t = {k, NULL, points, weights};
     mcs_status st = check_trial(acc, &t);
     if (st == MCS_OK)
         add_trial(acc, &t);
@@ -188,13 +204,13 @@ mcs_status mcs_spectrum_add_bins(mcs_spectrum *acc, size_t k, const size_t *bins
 mcs_status mcs_spectrum_add_points(mcs_spectrum *acc, size_t k, const double *points,
                                    const double *weights)
 {
-    if (points == NULL)
-        return MCS_ERR_NULL;
-    const mcs_spectrum_trial_ t = {k, NULL, points, weights};
-    mcs_status st = check_trial(acc, &t);
-    if (st == MCS_OK)
-        add_trial(acc, &t);
-    return st;
+    return add_points(acc, k, mcs_points_d_(points), weights);
+}
+
+mcs_status mcs_spectrum_add_points_f(mcs_spectrum *acc, size_t k, const float *points,
+                                     const double *weights)
+{
+    return add_points(acc, k, mcs_points_f_(points), weights);
 }
 
 mcs_status mcs_spectrum_add_dense(mcs_spectrum *acc, size_t n, const double *s)
@@ -206,7 +222,7 @@ mcs_status mcs_spectrum_add_dense(mcs_spectrum *acc, size_t n, const double *s)
         return st;
     if (n != acc->n)
         return MCS_ERR_MISMATCH;
-    if (inside(acc, s, n, sizeof s[0]))
+    if (inside(acc, s, mcs_bytes_(n, sizeof s[0])))
         return MCS_ERR_ALIAS;
     if (acc->count >= MCS_SPECTRUM_MAX_COUNT)
         return MCS_ERR_COUNT;

@@ -102,7 +102,7 @@ void mcs_spectrum_fft_(mcs_spectrum *acc, const mcs_spectrum_trial_ *t)
             acc->s[t->bins[j]] += t->weights[j];
     } else {
         for (size_t j = 0; j < t->k; ++j)
-            acc->s[mcs_point_bin_(t->points[j], n)] += mcs_spectrum_trial_weight_(t, j);
+            acc->s[mcs_spectrum_point_bin_(t, n, j)] += mcs_spectrum_trial_weight_(t, j);
     }
     mcs_dft_half_(&acc->plan, acc->s, acc->re, acc->im);
     update_trial(acc);
@@ -111,7 +111,7 @@ void mcs_spectrum_fft_(mcs_spectrum *acc, const mcs_spectrum_trial_ *t)
             acc->s[t->bins[j]] = 0.0;
     } else {
         for (size_t j = 0; j < t->k; ++j)
-            acc->s[mcs_point_bin_(t->points[j], n)] = 0.0;
+            acc->s[mcs_spectrum_point_bin_(t, n, j)] = 0.0;
     }
 }
 
@@ -216,7 +216,7 @@ static void pair_singles(mcs_spectrum *acc, size_t count, const size_t *b, const
 
 void mcs_spectrum_pairs_(mcs_spectrum *acc, const mcs_spectrum_trial_ *t)
 {
-    if (t->points == NULL && t->weights != NULL) { /* bins and weights as given */
+    if (t->bins != NULL) { /* bins and weights as given */
         pair_singles(acc, t->k, t->bins, t->weights);
         pair_arrays(acc, t->k, t->bins, t->weights);
     } else { /* bin the points chunk by chunk into the column scratch */
