@@ -87,43 +87,27 @@ static int inside(const mcs_spectrum *acc, const void *p, size_t bytes)
     return p != NULL && mcs_overlap_(p, bytes, acc, sizeof *acc);
 }
 
-/* The first bad sample of t, in order (a bin or point out of range, then a
- * weight not finite, then a negative one), or the weights' sum above
- * MCS_SPECTRUM_MAX_SUM (spectrum.h: nothing can then overflow, so no later
- * step can fail). */
-static mcs_status first_bad_sample(size_t n, const mcs_spectrum_trial_ *t)
+/* MCS_ERR_MAGNITUDE when the weights (NULL: all 1, a sum of at most
+ * MCS_MAX_K) sum above MCS_SPECTRUM_MAX_SUM (spectrum.h: nothing can then
+ * overflow, so no later step can fail); the weights are checked already. */
+static mcs_status check_sum(size_t k, const double *w)
 {
     double sum = 0.0;
-    for (size_t j = 0; j < t->k; ++j) {
-        const double x = t->bins != NULL ? 0.0 : mcs_point_(t->points, j);
-        if (t->bins != NULL ? t->bins[j] >= n : !(x >= 0.0 && x < 1.0))
-            return t->bins != NULL ? MCS_ERR_BIN_RANGE : MCS_ERR_POINT_RANGE;
-        if (t->weights != NULL) {
-            const double w = t->weights[j];
-            if (!isfinite(w))
-                return MCS_ERR_NOT_FINITE;
-            if (w < 0.0)
-                return MCS_ERR_NEGATIVE;
-            sum += w;
-        }
-    }
-    return t->weights == NULL || sum <= MCS_SPECTRUM_MAX_SUM ? MCS_OK : MCS_ERR_MAGNITUDE;
+    for (size_t j = 0; w != NULL && j < k; ++j)
+        sum += w[j];
+    return sum <= MCS_SPECTRUM_MAX_SUM ? MCS_OK : MCS_ERR_MAGNITUDE;
 }
 
-/* The common case, bins and weights, without a branch per sample: a flag
- * for any bin out of range or negative weight, and the sum (NaN and
- * infinities poison it; four partial sums keep the adds apart). Only a
- * trial that fails goes through first_bad_sample, for the status of its
- * first bad sample. */
-static mcs_status check_samples(size_t n, const mcs_spectrum_trial_ *t)
+/* Bins and weights without a branch per sample: a flag for any bin out of
+ * range or negative weight, and the sum (NaN and infinities poison it; four
+ * partial sums keep the adds apart). Only a trial that fails is checked
+ * again sample by sample, for the status of its first bad sample (a bin out
+ * of range, then a weight not finite, then a negative one). */
+static mcs_status check_bins(size_t n, size_t k, const size_t *b, const double *w)
 {
-    if (t->bins == NULL || t->weights == NULL)
-        return first_bad_sample(n, t);
-    const size_t *b = t->bins;
-    const double *w = t->weights;
     size_t bad = 0u, j = 0;
     double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
-    for (; j + 4u <= t->k; j += 4u) {
+    for (; j + 4u <= k; j += 4u) {
         bad |= (size_t)(b[j] >= n) | (size_t)(b[j + 1u] >= n) | (size_t)(b[j + 2u] >= n) |
                (size_t)(b[j + 3u] >= n);
         bad |= (size_t)(w[j] < 0.0) | (size_t)(w[j + 1u] < 0.0) | (size_t)(w[j + 2u] < 0.0) |
@@ -133,14 +117,19 @@ static mcs_status check_samples(size_t n, const mcs_spectrum_trial_ *t)
         s2 += w[j + 2u];
         s3 += w[j + 3u];
     }
-    for (; j < t->k; ++j) {
+    for (; j < k; ++j) {
         bad |= (size_t)(b[j] >= n) | (size_t)(w[j] < 0.0);
         s0 += w[j];
     }
     const double sum = (s0 + s1) + (s2 + s3);
-    return bad == 0u && sum <= MCS_SPECTRUM_MAX_SUM ? MCS_OK : first_bad_sample(n, t);
+    if (bad == 0u && sum <= MCS_SPECTRUM_MAX_SUM)
+        return MCS_OK;
+    mcs_status st = mcs_check_sparse_(n, k, b, w);
+    return st != MCS_OK ? st : check_sum(k, w);
 }
 
+/* The checks before a trial's samples are read: the object, K, the count
+ * and no input array inside the accumulator. */
 static mcs_status check_trial(const mcs_spectrum *acc, const mcs_spectrum_trial_ *t)
 {
     mcs_status st = spectrum_check(acc);
@@ -154,7 +143,7 @@ static mcs_status check_trial(const mcs_spectrum *acc, const mcs_spectrum_trial_
         inside(acc, mcs_points_addr_(t->points), mcs_points_bytes_(t->points, t->k)) ||
         inside(acc, t->weights, mcs_bytes_(t->k, sizeof t->weights[0])))
         return MCS_ERR_ALIAS;
-    return check_samples(acc->n, t);
+    return MCS_OK;
 }
 
 /* One checked trial down the path the policy gives it. */
@@ -181,6 +170,8 @@ mcs_status mcs_spectrum_add_bins(mcs_spectrum *acc, size_t k, const size_t *bins
     const mcs_spectrum_trial_ t = {k, bins, {NULL, NULL}, weights};
     mcs_status st = check_trial(acc, &t);
     if (st == MCS_OK)
+        st = check_bins(acc->n, k, bins, weights);
+    if (st == MCS_OK)
         add_trial(acc, &t);
     return st;
 }
@@ -188,14 +179,18 @@ mcs_status mcs_spectrum_add_bins(mcs_spectrum *acc, size_t k, const size_t *bins
 /* Both point calls: the trial carries the points as given (double, or float
  * read in place and widened exactly where a path reads them, internal.h),
  * so every path gives the same bits for float points as for the widened
- * double ones. */
-static mcs_status add_points(mcs_spectrum *acc, size_t k, mcs_points_ points,
-                             const double *weights)
+ * double ones. The point checks are inlined into each caller, for its kind. */
+static MCS_ALWAYS_INLINE mcs_status add_points(mcs_spectrum *acc, size_t k, mcs_points_ points,
+                                               const double *weights)
 {
     if (mcs_points_addr_(points) == NULL)
         return MCS_ERR_NULL;
     const mcs_spectrum_trial_ t = {k, NULL, points, weights};
     mcs_status st = check_trial(acc, &t);
+    if (st == MCS_OK)
+        st = mcs_check_points_(k, points, weights);
+    if (st == MCS_OK)
+        st = check_sum(k, weights);
     if (st == MCS_OK)
         add_trial(acc, &t);
     return st;
