@@ -128,8 +128,18 @@ static mcs_status check_bins(size_t n, size_t k, const size_t *b, const double *
     return st != MCS_OK ? st : check_sum(k, w);
 }
 
-/* The checks before a trial's samples are read: the object, K, the count
- * and no input array inside the accumulator. */
+/* The samples of a trial of points (mcs_check_points_, then the weights'
+ * sum), one copy of the loop per kind of point (internal.h). */
+static mcs_status check_points(const mcs_spectrum_trial_ *t)
+{
+    const mcs_points_ p = t->points;
+    mcs_status st = p.f != NULL ? mcs_check_points_(t->k, mcs_points_f_(p.f), t->weights)
+                                : mcs_check_points_(t->k, mcs_points_d_(p.d), t->weights);
+    return st != MCS_OK ? st : check_sum(t->k, t->weights);
+}
+
+/* The checks of a trial: the object, K, the count, no input array inside
+ * the accumulator, then its samples. */
 static mcs_status check_trial(const mcs_spectrum *acc, const mcs_spectrum_trial_ *t)
 {
     mcs_status st = spectrum_check(acc);
@@ -143,7 +153,7 @@ static mcs_status check_trial(const mcs_spectrum *acc, const mcs_spectrum_trial_
         inside(acc, mcs_points_addr_(t->points), mcs_points_bytes_(t->points, t->k)) ||
         inside(acc, t->weights, mcs_bytes_(t->k, sizeof t->weights[0])))
         return MCS_ERR_ALIAS;
-    return MCS_OK;
+    return t->bins != NULL ? check_bins(acc->n, t->k, t->bins, t->weights) : check_points(t);
 }
 
 /* One checked trial down the path the policy gives it. */
@@ -170,8 +180,6 @@ mcs_status mcs_spectrum_add_bins(mcs_spectrum *acc, size_t k, const size_t *bins
     const mcs_spectrum_trial_ t = {k, bins, {NULL, NULL}, weights};
     mcs_status st = check_trial(acc, &t);
     if (st == MCS_OK)
-        st = check_bins(acc->n, k, bins, weights);
-    if (st == MCS_OK)
         add_trial(acc, &t);
     return st;
 }
@@ -179,18 +187,14 @@ mcs_status mcs_spectrum_add_bins(mcs_spectrum *acc, size_t k, const size_t *bins
 /* Both point calls: the trial carries the points as given (double, or float
  * read in place and widened exactly where a path reads them, internal.h),
  * so every path gives the same bits for float points as for the widened
- * double ones. The point checks are inlined into each caller, for its kind. */
-static MCS_ALWAYS_INLINE mcs_status add_points(mcs_spectrum *acc, size_t k, mcs_points_ points,
-                                               const double *weights)
+ * double ones. */
+static mcs_status add_points(mcs_spectrum *acc, size_t k, mcs_points_ points,
+                             const double *weights)
 {
     if (mcs_points_addr_(points) == NULL)
         return MCS_ERR_NULL;
     const mcs_spectrum_trial_ t = {k, NULL, points, weights};
     mcs_status st = check_trial(acc, &t);
-    if (st == MCS_OK)
-        st = mcs_check_points_(k, points, weights);
-    if (st == MCS_OK)
-        st = check_sum(k, weights);
     if (st == MCS_OK)
         add_trial(acc, &t);
     return st;

@@ -127,9 +127,11 @@ static mcs_status check_trial(size_t k, mcs_points_ points, const double *weight
 }
 
 /* The body of mcs_spectrum2d_add_points and its _f twin, over double or
- * float points (internal.h): the same bits from the widened points. */
-static MCS_ALWAYS_INLINE mcs_status add_points(mcs_spectrum2d *acc, size_t k, mcs_points_ points,
-                                               const double *weights)
+ * float points (internal.h): the same bits from the widened points. Not
+ * inlined: a point costs O(N1 + N2) here, far more than the test of its
+ * kind, and the inlined copies would realign their frames. */
+static mcs_status add_points(mcs_spectrum2d *acc, size_t k, mcs_points_ points,
+                             const double *weights)
 {
     mcs_status st = mcs_points_addr_(points) == NULL ? MCS_ERR_NULL : check_acc(acc);
     if (st == MCS_OK && acc->count >= MCS_SPECTRUM_MAX_COUNT)
