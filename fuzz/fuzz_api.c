@@ -227,7 +227,7 @@ static double *darray(int which, size_t len)
 
 /* The values of d[len] as floats for the _f calls (beyond the float range:
  * an infinity of its sign, since that conversion is undefined in C). */
-static float fin[MAXLEN];
+static float fin[2u * MAXLEN]; /* the 2D calls read 2 k values */
 static float *as_floats(const double *d, size_t len)
 {
     for (size_t j = 0; j < len; ++j)
