@@ -34,17 +34,8 @@ static unit_factors factors(double w, double w_old)
     return u;
 }
 
-#define KERNEL(name) name##_generic
-#include "spectrum_simd.h"
-#undef KERNEL
-
-#if MCS_AVX2_CLONES
-MCS_AVX2_BEGIN
-#define KERNEL(name) name##_avx2
-#include "spectrum_simd.h"
-#undef KERNEL
-MCS_AVX2_END
-#endif
+#define MCS_SIMD_BODY "spectrum_simd.h"
+#include "simd_clones.h"
 
 /* The update of every stored frequency from acc->re, acc->im (and the power
  * xp, or |S_k|^2 without it), by the object's kernels. */
