@@ -79,44 +79,50 @@ static double plain_point(size_t n, size_t b, double u, double t)
     return mcs_importance_point_in_bin(n, b, frac < 1.0 ? frac : nextafter(1.0, 0.0));
 }
 
-/* Sample j's v: vs[j] when the pattern draws one per sample (random,
- * stratified, homogenized), else the trial's beta (uniform 1/2, jitter). */
-static double sample_v(const double *vs, size_t j, double beta)
+/* The largest double below 1: where u would round up to 1, it stays inside. */
+#define MCS_BELOW_ONE 0x1.fffffffffffffp-1
+
+/* Bin floor(t) (t in [0, N]: the signed conversion is exact and one
+ * instruction, where one to size_t is a compare and two on x86-64), clamped
+ * to N - 1; weight 1; the point if asked. */
+static inline void place_plain(size_t n, size_t j, double u, double t, size_t *bins, double *vw,
+                               double *points)
 {
-    return vs != NULL ? vs[j] : beta;
+    size_t b = (size_t)(int64_t)t;
+    b = b < n ? b : n - 1u;
+    bins[j] = b;
+    vw[j] = 1.0;
+    if (points != NULL)
+        points[j] = plain_point(n, b, u, t);
 }
 
 /* The samples without importance. Random: u = v, t = u N. Strata: u = (j +
  * v)/K and t = (j + v) N / K, each by one rounding from exact; when K is a
  * power of two the division is a multiplication by 1/K, exact and bit for
- * bit the same, and several times cheaper. vw holds the v's on entry
- * (nothing for uniform and jitter) and the weights on return. */
+ * bit the same, and several times cheaper. v is each sample's own (random,
+ * stratified, homogenized: vw holds them on entry) or the trial's beta
+ * (uniform 1/2, jitter); vw holds the weights on return. One loop per case,
+ * so none tests the case per sample. */
 static void draw_plain(const mcs_pattern *pat, size_t k, double beta, size_t *bins, double *vw,
                        double *points)
 {
     const size_t n = pat->n;
     const double nd = (double)n, kd = (double)k, inv_k = 1.0 / kd;
-    const int pow2 = (k & (k - 1u)) == 0u, random = pat->kind == MCS_PATTERN_RANDOM;
-    const double *vs = pat->kind == MCS_PATTERN_UNIFORM || pat->kind == MCS_PATTERN_JITTER ? NULL : vw;
-    for (size_t j = 0; j < k; ++j) {
-        double v = sample_v(vs, j, beta), u, t;
-        if (random) {
-            u = v;
-            t = u * nd;
-        } else {
-            double jv = (double)j + v, jvn = jv * nd;
-            u = pow2 ? jv * inv_k : jv / kd;
-            u = u < 1.0 ? u : nextafter(1.0, 0.0);
-            t = pow2 ? jvn * inv_k : jvn / kd;
+    const int pow2 = (k & (k - 1u)) == 0u;
+    const int own_v = pat->kind != MCS_PATTERN_UNIFORM && pat->kind != MCS_PATTERN_JITTER;
+    if (pat->kind == MCS_PATTERN_RANDOM) {
+        for (size_t j = 0; j < k; ++j)
+            place_plain(n, j, vw[j], vw[j] * nd, bins, vw, points);
+    } else if (own_v && pow2) {
+        for (size_t j = 0; j < k; ++j) {
+            double jv = (double)j + vw[j], u = jv * inv_k;
+            place_plain(n, j, u < 1.0 ? u : MCS_BELOW_ONE, jv * nd * inv_k, bins, vw, points);
         }
-        /* 0 <= t <= N: the signed conversion is exact and one instruction,
-         * where one to size_t is a compare and two on x86-64. */
-        size_t b = (size_t)(int64_t)t;
-        b = b < n ? b : n - 1u;
-        bins[j] = b;
-        vw[j] = 1.0;
-        if (points != NULL)
-            points[j] = plain_point(n, b, u, t);
+    } else {
+        for (size_t j = 0; j < k; ++j) {
+            double jv = (double)j + (own_v ? vw[j] : beta), u = jv / kd;
+            place_plain(n, j, u < 1.0 ? u : MCS_BELOW_ONE, jv * nd / kd, bins, vw, points);
+        }
     }
 }
 
@@ -124,9 +130,9 @@ static void draw_plain(const mcs_pattern *pat, size_t k, double beta, size_t *bi
 static void draw_warped(const mcs_pattern *pat, size_t k, double beta, size_t *bins, double *vw,
                         double *points)
 {
-    const double *vs = pat->kind == MCS_PATTERN_UNIFORM || pat->kind == MCS_PATTERN_JITTER ? NULL : vw;
+    const int own_v = pat->kind != MCS_PATTERN_UNIFORM && pat->kind != MCS_PATTERN_JITTER;
     for (size_t j = 0; j < k; ++j) {
-        double v = sample_v(vs, j, beta);
+        double v = own_v ? vw[j] : beta;
         double u = pat->kind == MCS_PATTERN_RANDOM ? v : stratum_point(j, v, k);
         double x;
         mcs_importance_warp_unchecked(pat->importance, u, &x, &bins[j]);
