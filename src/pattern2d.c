@@ -210,7 +210,9 @@ mcs_status mcs_pattern2d_draw(const mcs_pattern2d *pat, mcs_rng *rng, size_t k, 
 {
     if (pat == NULL || rng == NULL || points == NULL)
         return MCS_ERR_NULL;
-    if (!mcs_pattern2d_is_valid_(pat))
+    /* A never-seeded rng outputs only zeros, on which the bounded draws of
+     * n-rooks and multi-jittered never return (rng_inline.h). */
+    if (!mcs_pattern2d_is_valid_(pat) || !mcs_rng_is_seeded_(rng))
         return MCS_ERR_UNINIT;
     if (k != pat->k)
         return MCS_ERR_MISMATCH;

@@ -205,6 +205,9 @@ mcs_status mcs_sampler_base_points(const mcs_sampler *s, size_t k, double *point
 mcs_status mcs_sampler_draw(const mcs_sampler *s, mcs_rng *rng, size_t k, double *points)
 {
     mcs_status st = rng == NULL ? MCS_ERR_NULL : check(s, k, points);
+    /* A never-seeded rng outputs only zeros: every trial the same set. */
+    if (st != MCS_ERR_NULL && st != MCS_ERR_UNINIT && !mcs_rng_is_seeded_(rng))
+        st = MCS_ERR_UNINIT;
     if (st != MCS_OK)
         return st;
     const size_t dim = s->dim;

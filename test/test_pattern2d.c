@@ -213,6 +213,25 @@ static void test_bad_draw_writes_nothing_and_does_not_advance_the_rng(void)
     TEST_ASSERT_EQUAL_MEMORY(&rng0, &rng, sizeof rng);
 }
 
+/* A never-seeded (zeroed) generator outputs only zeros: n-rooks and
+ * multi-jittered would loop for ever in its bounded draws, the other kinds
+ * would return a fixed set as if random. Every kind refuses it, as
+ * mcs_pattern_draw does, even the grid that draws nothing from it. */
+static void test_draw_with_a_never_seeded_rng_is_refused_and_writes_nothing(void)
+{
+    mcs_rng rng, rng0;
+    memset(&rng, 0, sizeof rng);
+    rng0 = rng;
+    for (int c = 0; c < MCS_PATTERN2D_KIND_COUNT; ++c) {
+        mcs_pattern2d p = points_pattern2d(all_kinds[c], 12u, 4u, 3u);
+        points_guard_fill(pts, 26u, GUARD);
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_UNINIT, mcs_pattern2d_draw(&p, &rng, 12u, pts));
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_UNINIT, mcs_pattern2d_draw(&p, &rng, 11u, pts));
+        points_guard_check(pts, 26u, GUARD);
+        TEST_ASSERT_EQUAL_MEMORY(&rng0, &rng, sizeof rng);
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -224,5 +243,6 @@ int main(void)
     RUN_TEST(test_every_randomised_kind_puts_k_times_area_points_in_a_box_on_average);
     RUN_TEST(test_bad_configuration_returns_an_error_and_changes_nothing);
     RUN_TEST(test_bad_draw_writes_nothing_and_does_not_advance_the_rng);
+    RUN_TEST(test_draw_with_a_never_seeded_rng_is_refused_and_writes_nothing);
     return UNITY_END();
 }

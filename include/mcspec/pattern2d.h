@@ -70,8 +70,9 @@ mcs_status mcs_pattern2d_init(mcs_pattern2d *pat, mcs_pattern2d_kind kind, size_
                               size_t strata_x, size_t strata_y);
 
 /* One trial: points[2 k] written; k must equal pat->k. The grid kind draws
- * nothing from rng; cmj draws one 32-bit seed per trial.
- * MCS_ERR_NULL, MCS_ERR_UNINIT, MCS_ERR_MISMATCH (k != pat->k).
+ * nothing from rng (it must still be seeded); cmj draws one 32-bit seed per
+ * trial. MCS_ERR_NULL, MCS_ERR_UNINIT (pat not from mcs_pattern2d_init, or
+ * rng never seeded), MCS_ERR_MISMATCH (k != pat->k).
  * On error nothing is written and rng is not advanced. */
 mcs_status mcs_pattern2d_draw(const mcs_pattern2d *pat, mcs_rng *rng, size_t k, double *points);
 
