@@ -109,6 +109,8 @@ mcs_status mcs_pointset2d_add(mcs_pointset2d *acc, size_t k, const double *point
         st = MCS_ERR_K_RANGE;
     if (st == MCS_OK)
         st = k > SIZE_MAX / 2u ? MCS_ERR_POINT_RANGE : mcs_check_points_(2u * k, points, NULL);
+    if (st == MCS_OK)
+        st = mcs_check_count_(acc->count, 1u);
     if (st != MCS_OK)
         return st;
     mcs_ps_clear(cells_of(acc->freq_max), acc->re, acc->im);
@@ -124,8 +126,8 @@ mcs_status mcs_pointset2d_add(mcs_pointset2d *acc, size_t k, const double *point
 mcs_status mcs_pointset2d_merge(mcs_pointset2d *dst, const mcs_pointset2d *src)
 {
     mcs_status st = mcs_ps_pair_status(check_acc(dst), check_acc(src));
-    if (st == MCS_OK && dst->freq_max != src->freq_max)
-        st = MCS_ERR_MISMATCH;
+    if (st == MCS_OK)
+        st = mcs_ps_merge_check(dst->freq_max == src->freq_max, dst->count, src->count);
     if (st != MCS_OK || src->count == 0u)
         return st;
     const uint64_t na = dst->count, nb = src->count;
@@ -140,9 +142,7 @@ mcs_status mcs_pointset2d_merge(mcs_pointset2d *dst, const mcs_pointset2d *src)
 mcs_status mcs_pointset2d_count(const mcs_pointset2d *acc, uint64_t *count)
 {
     mcs_status st = count == NULL ? MCS_ERR_NULL : check_acc(acc);
-    if (st == MCS_OK)
-        *count = acc->count;
-    return st;
+    return mcs_ps_count_out(st, st == MCS_OK ? acc->count : 0u, count);
 }
 
 /* <P(fx, fy)> (want_stderr 0) or its standard error (1), read at the stored

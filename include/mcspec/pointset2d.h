@@ -61,13 +61,14 @@ mcs_status mcs_pointset2d_init(mcs_pointset2d *acc, size_t freq_max);
 
 /* Adds one trial: points[2 k] interleaved (x_0, y_0, x_1, ...), each in
  * [0, 1); any k >= 1. MCS_ERR_NULL, MCS_ERR_UNINIT, MCS_ERR_K_RANGE (k = 0),
- * MCS_ERR_POINT_RANGE (a coordinate outside [0,1) or NaN). *acc untouched on
- * error. */
+ * MCS_ERR_POINT_RANGE (a coordinate outside [0,1) or NaN), MCS_ERR_COUNT (the
+ * count at MCS_MAX_COUNT). *acc untouched on error. */
 mcs_status mcs_pointset2d_add(mcs_pointset2d *acc, size_t k, const double *points);
 
 /* dst <- dst union src (Chan et al.), to rounding one pass over both trial
  * streams. src unchanged; dst == src allowed. MCS_ERR_NULL, MCS_ERR_UNINIT,
- * MCS_ERR_MISMATCH (different F). dst untouched on error. */
+ * MCS_ERR_MISMATCH (different F), MCS_ERR_COUNT (the counts would pass
+ * MCS_MAX_COUNT). dst untouched on error. */
 mcs_status mcs_pointset2d_merge(mcs_pointset2d *dst, const mcs_pointset2d *src);
 
 /* Trials added. MCS_ERR_NULL, MCS_ERR_UNINIT. */
