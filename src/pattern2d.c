@@ -168,7 +168,9 @@ uint32_t mcs_pattern2d_permute(uint32_t i, uint32_t l, uint32_t p)
         i &= w;
         i ^= i >> 5;
     } while (i >= l);
-    return (i + p) % l;
+    /* Kensler's final rotation (i + p) mod l, summed in 64 bits: the 32-bit
+     * sum wraps for p near 2^32, and the images are then no permutation. */
+    return (uint32_t)(((uint64_t)i + p) % l);
 }
 
 /* Kensler's randfloat, as a double: all 32 hashed bits over 2^32, in [0, 1). */

@@ -78,8 +78,11 @@ mcs_status mcs_pattern2d_draw(const mcs_pattern2d *pat, mcs_rng *rng, size_t k, 
 
 /* Kensler's keyed permutation: the image of i in a pseudo-random permutation
  * of [0, l) chosen by key p (cycle-walking a hash over the next power of 2).
- * i < l required; returns 0 for l = 0 or i >= l. Exposed for tests and for
- * renderers that want the same shuffles. */
+ * i < l required; returns 0 for l = 0 or i >= l. A permutation for every
+ * key: the final (i + p) mod l is summed in 64 bits, so for p + i >= 2^32 it
+ * differs from the paper's 32-bit code, whose sum wraps there and then maps
+ * two i to one image. Exposed for tests and for renderers that want the same
+ * shuffles. */
 uint32_t mcs_pattern2d_permute(uint32_t i, uint32_t l, uint32_t p);
 
 #ifdef __cplusplus
