@@ -219,15 +219,22 @@ mcs_status mcs_pointset2d_anisotropy(const mcs_pointset2d *acc, size_t radius, d
     return mcs_ps_ring_db(&g, RING_ZERO, 0.0, out_db);
 }
 
+/* Integer wave vectors of the whole plane with |f|^2 < q: row fy (and -fy),
+ * fy^2 < q, holds the fx with fx^2 <= q - fy^2 - 1. O(sqrt q) steps. */
+static size_t disc_size(size_t q)
+{
+    size_t n = 0u;
+    for (size_t fy = 0; fy * fy < q; ++fy)
+        n += (fy > 0u ? 2u : 1u) * (2u * mcs_ps_isqrt(q - fy * fy - 1u) + 1u);
+    return n;
+}
+
 mcs_status mcs_pointset2d_ring_size(size_t radius, size_t *out)
 {
     if (out == NULL)
         return MCS_ERR_NULL;
-    const size_t lim = radius + 1u;
-    size_t n = 0u;
-    for (size_t ay = 0; ay < lim; ++ay)
-        for (size_t ax = 0; ax < lim; ++ax)
-            n += (size_t)mcs_ps_ring_weight(ax, ay, radius);
-    *out = n;
+    if (radius > (size_t)MCS_MAX_FREQ)
+        return MCS_ERR_FREQ_RANGE;
+    *out = disc_size((radius + 1u) * (radius + 1u)) - disc_size(radius * radius);
     return MCS_OK;
 }
