@@ -20,10 +20,7 @@ static void fill_bins(mcs_theory_spectrum *ts, const mcs_pattern *pat)
         ts->mean_s[b] = (double)pat->k * ts->length[b] * ts->inv_p[b];
     }
     if (pat->kind == MCS_PATTERN_UNIFORM) {
-        for (size_t b = 0; b < n; ++b)
-            ts->mean_s[b] = 0.0;
-        for (size_t j = 0; j < pat->k; ++j)
-            ts->mean_s[mcs_theory_uniform_bin_(pat, j)] += 1.0;
+        mcs_theory_uniform_counts_(pat, ts->mean_s);
         for (size_t b = 0; b < n; ++b)
             ts->mean_s[b] *= ts->inv_p[b];
     } else if (pat->kind == MCS_PATTERN_HOMOGENIZED) {

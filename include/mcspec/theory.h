@@ -32,8 +32,9 @@
  *   r_n(beta) = ceil(B_n - beta) - ceil(A_n - beta), a step function with at
  *   most two steps in [0,1); <r_m r_n> is the exact integral of the product
  *   of two such step functions.
- * Each kind costs O(N^2) (O(N^3) for homogenized, O(K + N^2) for uniform)
- * whatever K is.
+ * Each kind costs O(N^2) (O(N^3) for homogenized, O(N log K + N^2) for
+ * uniform, whose bin counts are found by bisection on j, not by a walk over
+ * the K samples): well under a second at every K up to MCS_MAX_K.
  *
  * The read-out is the same, call for call, as that of the measured moments
  * in moment.h (and runs the same code): <S_k> (eq. 15), <S_k S_l*> (eq. 16),
@@ -75,10 +76,10 @@ typedef struct {
 } mcs_theory;
 
 /* Computes the exact <s_n> and <s_m s_n> of pat (any kind, with or without
- * importance, any K >= 1, pat->n <= MCS_MAX_COV_N). pat is read, not kept.
- * MCS_ERR_NULL, MCS_ERR_N_RANGE (pat->n > MCS_MAX_COV_N), MCS_ERR_UNINIT
- * (pat->n == 0, pat->k == 0, unknown kind, or an importance function of the
- * wrong n), MCS_ERR_KIND (homogenized with importance). *th untouched on error. */
+ * importance, any K in [1, MCS_MAX_K], pat->n <= MCS_MAX_COV_N). pat is read,
+ * not kept. MCS_ERR_NULL, MCS_ERR_N_RANGE (pat->n > MCS_MAX_COV_N),
+ * MCS_ERR_UNINIT (pat->n == 0, pat->k == 0 or above MCS_MAX_K, unknown kind,
+ * or an importance function of the wrong n), MCS_ERR_KIND (homogenized with importance). *th untouched on error. */
 mcs_status mcs_theory_init(mcs_theory *th, const mcs_pattern *pat);
 
 /* ---- Read-out: the expectations. Every call returns MCS_ERR_NULL,
@@ -202,12 +203,12 @@ typedef struct {
     double sin_table[MCS_MAX_N];  /* sin(2 pi j / N) */
 } mcs_theory_spectrum;
 
-/* Sets up ts for pat (any kind, with or without importance, any K >= 1,
- * 1 <= pat->n <= MCS_MAX_N): <s_n> and the bins (O(N), O(K) more for
- * uniform) and, for jitter, the sorted bin edges (O(N log N)). pat is read,
- * not kept. MCS_ERR_NULL,
- * MCS_ERR_UNINIT (pat->n == 0, pat->k == 0, unknown kind, an importance
- * function not initialised or of another n), MCS_ERR_N_RANGE (pat->n >
+/* Sets up ts for pat (any kind, with or without importance, any K in
+ * [1, MCS_MAX_K], 1 <= pat->n <= MCS_MAX_N): <s_n> and the bins (O(N),
+ * O(N log K) for uniform) and, for jitter, the sorted bin edges
+ * (O(N log N)). pat is read, not kept. MCS_ERR_NULL,
+ * MCS_ERR_UNINIT (pat->n == 0, pat->k == 0 or above MCS_MAX_K, unknown kind,
+ * an importance function not initialised or of another n), MCS_ERR_N_RANGE (pat->n >
  * MCS_MAX_N), MCS_ERR_KIND (homogenized with importance). *ts untouched on
  * error. */
 mcs_status mcs_theory_spectrum_init(mcs_theory_spectrum *ts, const mcs_pattern *pat);
