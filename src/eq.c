@@ -38,6 +38,13 @@ mcs_status mcs_eq_check_pair(int outputs, size_t n, size_t k, size_t freq_k, siz
     return MCS_OK;
 }
 
+mcs_status mcs_eq_check_complex(mcs_status st, const double *re, const double *im)
+{
+    if (st == MCS_OK && mcs_overlap_(re, sizeof *re, im, sizeof *im))
+        return MCS_ERR_ALIAS;
+    return st;
+}
+
 void mcs_eq_dft_at(size_t n, const double *x, size_t freq, double *re, double *im)
 {
     double r = 0.0, i = 0.0;
@@ -296,6 +303,7 @@ mcs_status mcs_eq30_stratified_delta_printed(size_t n, size_t k, size_t freq_k, 
     mcs_status st = mcs_eq_check_pair(re != NULL && im != NULL, n, k, freq_k, freq_l);
     if (st == MCS_OK && (freq_k == 0u || freq_l == 0u)) /* the ratios are 0/0 there */
         st = MCS_ERR_DOMAIN;
+    st = mcs_eq_check_complex(st, re, im);
     if (st == MCS_OK)
         mcs_eq_delta_printed(n, k, freq_k, freq_l, re, im);
     return st;
@@ -320,6 +328,7 @@ mcs_status mcs_eq30_stratified_delta_corrected(size_t n, size_t k, size_t freq_k
                                                size_t freq_l, double *re, double *im)
 {
     mcs_status st = mcs_eq_check_pair(re != NULL && im != NULL, n, k, freq_k, freq_l);
+    st = mcs_eq_check_complex(st, re, im);
     if (st == MCS_OK)
         eq30_corrected(n, k, freq_k, freq_l, re, im);
     return st;
@@ -329,6 +338,7 @@ mcs_status mcs_eq30_stratified_cross(size_t n, size_t k, size_t freq_k, size_t f
                                      double *re, double *im)
 {
     mcs_status st = mcs_eq_check_pair(re != NULL && im != NULL, n, k, freq_k, freq_l);
+    st = mcs_eq_check_complex(st, re, im);
     if (st != MCS_OK)
         return st;
     double dr, di;
@@ -406,6 +416,7 @@ mcs_status mcs_eq34_uniform_spectrum(size_t n, size_t k, size_t freq, double *re
     mcs_status st = check_freq(re != NULL && im != NULL, n, k, freq, 0, 1);
     if (st == MCS_OK && (n / k) % 2u != 0u) /* (alpha + 1/2) N/K must be a whole bin */
         st = MCS_ERR_DOMAIN;
+    st = mcs_eq_check_complex(st, re, im);
     if (st != MCS_OK)
         return st;
     *re = 0.0;
@@ -419,7 +430,8 @@ mcs_status mcs_eq34_uniform_spectrum(size_t n, size_t k, size_t freq, double *re
 
 mcs_status mcs_eq35_jitter_mean(size_t n, size_t k, size_t freq, double *re, double *im)
 {
-    mcs_status st = check_freq(re != NULL && im != NULL, n, k, freq, 0, 1);
+    mcs_status st = mcs_eq_check_complex(check_freq(re != NULL && im != NULL, n, k, freq, 0, 1),
+                                         re, im);
     if (st != MCS_OK)
         return st;
     *re = freq == 0u ? (double)k / sqrt((double)n) : 0.0;

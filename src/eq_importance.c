@@ -86,6 +86,7 @@ mcs_status mcs_eq43_importance_cross(const mcs_importance *imp, size_t k, size_t
         st = MCS_ERR_FREQ_RANGE;
     if (st == MCS_OK && freq_k == 0u && freq_l == 0u) /* the constant (K^2 - K)/N^2 adds there */
         st = MCS_ERR_DOMAIN;
+    st = mcs_eq_check_complex(st, re, im);
     if (st == MCS_OK)
         q_term(imp, k, freq_k, freq_l, re, im);
     return st;
@@ -117,6 +118,7 @@ mcs_status mcs_eq49_importance_stratified_cross(const mcs_importance *imp, size_
         st = mcs_eq_check_pair(1, imp->n, k, freq_k, freq_l);
     if (st == MCS_OK && (freq_k == 0u || freq_l == 0u))
         st = MCS_ERR_DOMAIN;
+    st = mcs_eq_check_complex(st, re, im);
     if (st != MCS_OK)
         return st;
     double qr, qi, dr, di;

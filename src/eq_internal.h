@@ -19,6 +19,10 @@ int mcs_eq_k_divides_n(size_t n, size_t k);
  * (DOMAIN). */
 mcs_status mcs_eq_check_pair(int outputs, size_t n, size_t k, size_t freq_k, size_t freq_l);
 
+/* A complex result's last check: st if it is an error, else MCS_ERR_ALIAS
+ * when re and im overlap (one double cannot hold both parts), else MCS_OK. */
+mcs_status mcs_eq_check_complex(mcs_status st, const double *re, const double *im);
+
 /* Eq. 7 at one frequency with the twiddle computed per term from the reduced
  * index (freq t mod N): no table, so any N. */
 void mcs_eq_dft_at(size_t n, const double *x, size_t freq, double *re, double *im);

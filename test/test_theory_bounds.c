@@ -120,11 +120,47 @@ static void test_a_pattern_k_above_the_largest_is_refused_by_both_inits(void)
         }
 }
 
+/* ---- item 10: one double for both parts of a complex result --------------- */
+
+static void test_a_complex_result_into_one_double_is_refused_and_elsewhere_is_written(void)
+{
+    /* re == im gave MCS_OK with the real part overwritten by the imaginary
+     * one. Refused now, the double untouched; any two doubles work, even
+     * two inside the object itself (the result is written last). */
+    theory_lumpy_importance(&imp, 12u);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_init(&pat, MCS_PATTERN_STRATIFIED, 12u, 5u, &imp));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_theory_spectrum_init(&ts, &pat));
+    mcs_status (*const pair[2])(const mcs_theory_spectrum *, size_t, size_t, double *,
+                                double *) = {mcs_theory_spectrum_cross,
+                                             mcs_theory_spectrum_covariance};
+    for (int c = 0; c < 3; ++c) {
+        double both = SENTINEL, re = SENTINEL, im = SENTINEL;
+        memcpy(&ts_copy, &ts, sizeof ts);
+        const mcs_status st = c == 2 ? mcs_theory_spectrum_mean(&ts, 3u, &both, &both)
+                                     : pair[c](&ts, 3u, 4u, &both, &both);
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, st);
+        TEST_ASSERT_EQUAL_DOUBLE(SENTINEL, both);
+        TEST_ASSERT_EQUAL_MEMORY(&ts_copy, &ts, sizeof ts);
+        /* into the object's own table of sines, entries the call reads */
+        const mcs_status sep = c == 2 ? mcs_theory_spectrum_mean(&ts, 3u, &re, &im)
+                                      : pair[c](&ts, 3u, 4u, &re, &im);
+        TEST_ASSERT_EQUAL_INT(MCS_OK, sep);
+        const mcs_status in = c == 2 ? mcs_theory_spectrum_mean(&ts, 3u, &ts.sin_table[1],
+                                                               &ts.sin_table[3])
+                                     : pair[c](&ts, 3u, 4u, &ts.sin_table[1], &ts.sin_table[3]);
+        TEST_ASSERT_EQUAL_INT(MCS_OK, in);
+        TEST_ASSERT_EQUAL_DOUBLE(re, ts.sin_table[1]);
+        TEST_ASSERT_EQUAL_DOUBLE(im, ts.sin_table[3]);
+        memcpy(&ts, &ts_copy, sizeof ts);
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_uniform_counts_are_the_generators_for_every_small_n_and_k);
     RUN_TEST(test_uniform_theory_at_the_largest_k_is_quick_and_exact);
     RUN_TEST(test_a_pattern_k_above_the_largest_is_refused_by_both_inits);
+    RUN_TEST(test_a_complex_result_into_one_double_is_refused_and_elsewhere_is_written);
     return UNITY_END();
 }

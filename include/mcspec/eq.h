@@ -12,7 +12,10 @@
  * [0, n); S_k = N^{-1/2} sum_n e^{-2 pi i k n / N} s_n (eq. 7); F is the same
  * transform of f; Q is the same transform of 1/p_n (eq. 43, mcs_importance_q).
  * Every function validates all inputs before writing anything: on error every
- * output is byte-for-byte unchanged. Nothing allocates, and no work arrays
+ * output is byte-for-byte unchanged. A complex result (re, im) is written
+ * last, after every input is read, so re and im may be any two doubles; the
+ * same double for both is MCS_ERR_ALIAS (it cannot hold both parts), checked
+ * after every other status. Nothing allocates, and no work arrays
  * live on the stack: transforms are taken one coefficient at a time (with
  * trig per term), at the costs noted per function. */
 #ifndef MCSPEC_EQ_H
@@ -70,7 +73,8 @@ mcs_status mcs_eq14_variance(size_t n, size_t k, const double *f, const double *
 /* ---- Section 3: random, stratified, uniform, jitter --------------------- */
 /* Shared statuses: MCS_ERR_NULL, MCS_ERR_N_RANGE (n = 0 or > MCS_MAX_N),
  * MCS_ERR_K_RANGE (k = 0), MCS_ERR_FREQ_RANGE
- * (freq >= n), MCS_ERR_DOMAIN as stated per function, MCS_ERR_NOT_FINITE (f). */
+ * (freq >= n), MCS_ERR_DOMAIN as stated per function, MCS_ERR_NOT_FINITE (f),
+ * MCS_ERR_ALIAS (re == im, where the result is complex). */
 
 /* Eq. 23: random power spectrum <|S_freq|^2> = K/N, freq in [1, N) (exact at
  * finite N). freq 0: MCS_ERR_DOMAIN. */
@@ -148,7 +152,8 @@ mcs_status mcs_eq37_jitter_power(size_t n, size_t k, size_t freq, double *out);
  * (eq. 44: N^{-1/2} Q_0 = 1/H). imp NULL means "no importance function" and
  * gives MCS_ERR_DOMAIN; imp not initialised (n out of range) gives
  * MCS_ERR_UNINIT. Also MCS_ERR_NULL (outputs), MCS_ERR_K_RANGE (k = 0),
- * MCS_ERR_FREQ_RANGE (freq >= N), MCS_ERR_NOT_FINITE (f). */
+ * MCS_ERR_FREQ_RANGE (freq >= N), MCS_ERR_NOT_FINITE (f), MCS_ERR_ALIAS
+ * (re == im, where the result is complex). */
 
 /* Eq. 41: random with importance, <s_m s_n> = (K^2 - K)/N^2 + (K/N) delta_mn / p_n
  * (exact) for bins bin_m, bin_n of imp: MCS_ERR_BIN_RANGE. */

@@ -83,7 +83,9 @@ typedef struct {
 mcs_status mcs_theory_init(mcs_theory *th, const mcs_pattern *pat);
 
 /* ---- Read-out: the expectations. Every call returns MCS_ERR_NULL,
- * MCS_ERR_UNINIT, and as stated; outputs are untouched on error. ---- */
+ * MCS_ERR_UNINIT, and as stated; outputs are untouched on error, and a
+ * complex result's re and im must be two different doubles (MCS_ERR_ALIAS),
+ * as for the measured moments (moment.h). ---- */
 
 /* <s_bin>. MCS_ERR_BIN_RANGE (bin >= N). */
 mcs_status mcs_theory_bin_mean(const mcs_theory *th, size_t bin, double *out);
@@ -111,7 +113,8 @@ mcs_status mcs_theory_covariance(const mcs_theory *th, size_t freq_k, size_t fre
 
 /* Every <S_k S_l*> at once, O(N^3): re[k * n + l] + i im[k * n + l], caller
  * arrays of n * n (exactly n * n entries are written), n equal to th->n, else
- * MCS_ERR_MISMATCH. */
+ * MCS_ERR_MISMATCH. re and im must overlap neither each other nor *th (they
+ * are written while it is read): MCS_ERR_ALIAS. */
 mcs_status mcs_theory_cross_matrix(const mcs_theory *th, size_t n, double *re, double *im);
 
 /* Every Cov(S_k, S_l) at once, O(N^3), laid out as mcs_theory_cross_matrix. */
@@ -213,7 +216,11 @@ typedef struct {
  * error. */
 mcs_status mcs_theory_spectrum_init(mcs_theory_spectrum *ts, const mcs_pattern *pat);
 
-/* <S_freq> (eq. 15). O(N). MCS_ERR_FREQ_RANGE (freq >= N). */
+/* The three calls with a complex result (re, im) below compute it first and
+ * write it last, so re and im may be any two doubles, even inside ts; the
+ * same double for both is MCS_ERR_ALIAS (it cannot hold both parts). */
+
+/* <S_freq> (eq. 15). O(N). MCS_ERR_FREQ_RANGE (freq >= N), MCS_ERR_ALIAS. */
 mcs_status mcs_theory_spectrum_mean(const mcs_theory_spectrum *ts, size_t freq, double *re,
                                     double *im);
 
@@ -227,12 +234,12 @@ mcs_status mcs_theory_power_spectrum(const mcs_theory_spectrum *ts, size_t n, do
 
 /* <S_k S_l*> (eq. 16) for k = freq_k, l = freq_l. O(N) (homogenized: its
  * covariance is circulant, so Cov(S_k, S_l) = 0 for k != l).
- * MCS_ERR_FREQ_RANGE. */
+ * MCS_ERR_FREQ_RANGE, MCS_ERR_ALIAS. */
 mcs_status mcs_theory_spectrum_cross(const mcs_theory_spectrum *ts, size_t freq_k,
                                      size_t freq_l, double *re, double *im);
 
 /* Cov(S_k, S_l) = <S_k S_l*> - <S_k><S_l>*, formed directly (no difference).
- * O(N). MCS_ERR_FREQ_RANGE. */
+ * O(N). MCS_ERR_FREQ_RANGE, MCS_ERR_ALIAS. */
 mcs_status mcs_theory_spectrum_covariance(const mcs_theory_spectrum *ts, size_t freq_k,
                                           size_t freq_l, double *re, double *im);
 
