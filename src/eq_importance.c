@@ -38,16 +38,16 @@ static mcs_status check_imp_freq(int outputs, const mcs_importance *imp, size_t 
     return MCS_OK;
 }
 
-/* check_imp for the forms of f[imp->n] (finite), imp->n <= cap (N_RANGE). */
+/* check_imp for the forms of f[imp->n] (finite, within MCS_ESTIMATE_MAX_ABS),
+ * imp->n <= cap (N_RANGE). With 1/p_n < 2^32 (MCS_IMPORTANCE_MIN_G) every
+ * F_k* F_l Q_{k-l} and p (f/p - fbar)^2 stays below 2^300. */
 static mcs_status check_imp_f(const mcs_importance *imp, size_t k, const double *f,
                               const double *out, size_t cap)
 {
     mcs_status st = check_imp(f != NULL && out != NULL, imp, k);
     if (st == MCS_OK && imp->n > cap)
         st = MCS_ERR_N_RANGE;
-    if (st == MCS_OK && !mcs_all_finite_(imp->n, f))
-        st = MCS_ERR_NOT_FINITE;
-    return st;
+    return st == MCS_OK ? mcs_check_integrand_(imp->n, f) : st;
 }
 
 mcs_status mcs_eq41_importance_second(const mcs_importance *imp, size_t k, size_t bin_m,

@@ -94,7 +94,8 @@ static mcs_status set_complex(double *re, double *im, double r, double i)
 }
 
 /* check_ts, then n (MISMATCH), k (K_RANGE, MISMATCH), f and g finite
- * (NOT_FINITE); g may be NULL when not wanted. */
+ * (NOT_FINITE) and within MCS_ESTIMATE_MAX_ABS (MAGNITUDE); g may be NULL
+ * when not wanted. */
 static mcs_status check_integrands(int outputs, const mcs_theory_spectrum *ts, size_t n,
                                    size_t k, const double *f, const double *g)
 {
@@ -107,9 +108,8 @@ static mcs_status check_integrands(int outputs, const mcs_theory_spectrum *ts, s
         return MCS_ERR_K_RANGE;
     if (k != ts->k)
         return MCS_ERR_MISMATCH;
-    if (!mcs_all_finite_(n, f) || (g != NULL && !mcs_all_finite_(n, g)))
-        return MCS_ERR_NOT_FINITE;
-    return MCS_OK;
+    st = mcs_check_integrand_(n, f);
+    return st == MCS_OK && g != NULL ? mcs_check_integrand_(n, g) : st;
 }
 
 /* ---- spectra ---------------------------------------------------------------- */

@@ -17,6 +17,14 @@ void tearDown(void) {}
 
 static mcs_importance imp, imp_copy;
 
+/* The call is made before its output is looked at (the evaluation order of
+ * a function's arguments is unspecified, so the two are kept apart). */
+#define EXPECT(check, call, ...)            \
+    do {                                    \
+        const mcs_status st_ = (call);      \
+        check(st_, __VA_ARGS__);            \
+    } while (0)
+
 /* ---- item 10: one double for both parts of a complex result --------------- */
 
 typedef mcs_status (*pair_fn)(size_t, size_t, size_t, size_t, double *, double *);
@@ -37,13 +45,13 @@ static void test_a_complex_result_into_one_double_is_refused_and_elsewhere_is_wr
                               mcs_eq30_stratified_delta_corrected, mcs_eq30_stratified_cross};
     for (int i = 0; i < 3; ++i) {
         double both = SENTINEL, re = SENTINEL, im = SENTINEL;
-        expect_alias_refused(pairs[i](12u, 4u, 1u, 5u, &both, &both), both);
+        EXPECT(expect_alias_refused, pairs[i](12u, 4u, 1u, 5u, &both, &both), both);
         TEST_ASSERT_EQUAL_INT(MCS_OK, pairs[i](12u, 4u, 1u, 5u, &re, &im));
         TEST_ASSERT_TRUE(im != 0.0); /* so re == im would have lost a part */
     }
     double both = SENTINEL;
-    expect_alias_refused(mcs_eq34_uniform_spectrum(8u, 4u, 4u, &both, &both), both);
-    expect_alias_refused(mcs_eq35_jitter_mean(8u, 4u, 0u, &both, &both), both);
+    EXPECT(expect_alias_refused, mcs_eq34_uniform_spectrum(8u, 4u, 4u, &both, &both), both);
+    EXPECT(expect_alias_refused, mcs_eq35_jitter_mean(8u, 4u, 0u, &both, &both), both);
     /* a bad argument keeps its own status: ALIAS is the last check */
     TEST_ASSERT_EQUAL_INT(MCS_ERR_DOMAIN, mcs_eq30_stratified_cross(12u, 5u, 1u, 5u, &both, &both));
 
@@ -54,7 +62,7 @@ static void test_a_complex_result_into_one_double_is_refused_and_elsewhere_is_wr
         double re = SENTINEL, im = SENTINEL;
         both = SENTINEL;
         memcpy(&imp_copy, &imp, sizeof imp);
-        expect_alias_refused(ipairs[i](&imp, 4u, 1u, 6u, &both, &both), both);
+        EXPECT(expect_alias_refused, ipairs[i](&imp, 4u, 1u, 6u, &both, &both), both);
         TEST_ASSERT_EQUAL_MEMORY(&imp_copy, &imp, sizeof imp);
         TEST_ASSERT_EQUAL_INT(MCS_OK, ipairs[i](&imp, 4u, 1u, 6u, &re, &im));
         TEST_ASSERT_TRUE(im != 0.0);
@@ -66,9 +74,117 @@ static void test_a_complex_result_into_one_double_is_refused_and_elsewhere_is_wr
     }
 }
 
+/* ---- item 5: magnitudes ------------------------------------------------------ */
+
+#define NBIG (MCS_MAX_COV_N + 8)
+static double f_max[MCS_MAX_N], f_over[MCS_MAX_N], power_max[MCS_MAX_N];
+static mcs_theory th;
+static mcs_pattern pat;
+
+/* An importance function as lumpy as accepted: g_0 just above
+ * MCS_IMPORTANCE_MIN_G, so 1/p_0 is near 2^32 / N. */
+static void steep_importance(size_t n)
+{
+    static double w[MCS_MAX_N];
+    double rest = 0.0;
+    for (size_t b = 1; b < n; ++b)
+        rest += w[b] = 1.0 + (double)(b % 3u);
+    w[0] = 1.01 * MCS_IMPORTANCE_MIN_G * rest;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_init(&imp, n, w));
+}
+
+/* f at the bound, alternating in sign (the largest squares and
+ * differences), and the same with one entry one ulp beyond it. */
+static void make_extreme_f(size_t n)
+{
+    for (size_t b = 0; b < n; ++b) {
+        f_max[b] = b % 2u ? -MCS_ESTIMATE_MAX_ABS : MCS_ESTIMATE_MAX_ABS;
+        f_over[b] = f_max[b];
+        power_max[b] = b % 3u ? MCS_EQ_MAX_POWER : -MCS_EQ_MAX_POWER;
+    }
+    f_over[n - 1u] = nextafter(MCS_ESTIMATE_MAX_ABS, INFINITY);
+}
+
+static void expect_finite(mcs_status st, double v, int nonneg)
+{
+    TEST_ASSERT_EQUAL_INT(MCS_OK, st);
+    TEST_ASSERT_TRUE(isfinite(v));
+    if (nonneg) {
+        TEST_ASSERT_TRUE(v >= 0.0);
+    }
+}
+
+static void expect_magnitude(mcs_status st, double v)
+{
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_MAGNITUDE, st);
+    TEST_ASSERT_EQUAL_DOUBLE(SENTINEL, v);
+}
+
+static void test_integrands_up_to_the_bound_give_finite_forms_and_beyond_are_refused(void)
+{
+    /* f = 1e200 gave eq. 25 = inf with MCS_OK, 1e300 NaN in eq. 52 and 55.
+     * Every f-form at the bound, at N up to the covariance size (term by
+     * term) and above it (Parseval), with the steepest importance. */
+    typedef mcs_status (*imp_f_fn)(const mcs_importance *, size_t, const double *, double *);
+    const imp_f_fn imp_forms[5] = {mcs_eq52_variance_printed, mcs_eq52_variance_corrected,
+                                   mcs_eq55_variance_convolution, mcs_eq58_bound_printed,
+                                   mcs_eq58_bound_corrected};
+    const size_t sizes[2] = {MCS_MAX_COV_N, NBIG};
+    for (int s = 0; s < 2; ++s) {
+        const size_t n = sizes[s];
+        make_extreme_f(n);
+        steep_importance(n);
+        double v = SENTINEL;
+        EXPECT(expect_finite, mcs_eq11_unbiased_mean(n, f_max, &v), v, 0);
+        EXPECT(expect_finite, mcs_eq24_random_variance(n, 1u, f_max, &v), v, 1);
+        EXPECT(expect_finite, mcs_eq25_random_variance(n, 1u, f_max, &v), v, 1);
+        EXPECT(expect_finite, mcs_eq14_variance(n, 1u, f_max, power_max, &v), v, 0);
+        for (int i = 0; i < 5; ++i)
+            EXPECT(expect_finite, imp_forms[i](&imp, 1u, f_max, &v), v, i != 2);
+        v = SENTINEL;
+        EXPECT(expect_magnitude, mcs_eq11_unbiased_mean(n, f_over, &v), v);
+        EXPECT(expect_magnitude, mcs_eq24_random_variance(n, 1u, f_over, &v), v);
+        EXPECT(expect_magnitude, mcs_eq25_random_variance(n, 1u, f_over, &v), v);
+        EXPECT(expect_magnitude, mcs_eq14_variance(n, 1u, f_over, power_max, &v), v);
+        power_max[1] = nextafter(MCS_EQ_MAX_POWER, INFINITY);
+        EXPECT(expect_magnitude, mcs_eq14_variance(n, 1u, f_max, power_max, &v), v);
+        for (int i = 0; i < 5; ++i)
+            EXPECT(expect_magnitude, imp_forms[i](&imp, 1u, f_over, &v), v);
+    }
+}
+
+static void test_section_1_forms_at_the_bound_are_finite_for_the_heaviest_pattern(void)
+{
+    /* The exact moments at their largest: K = MCS_MAX_K samples through the
+     * steepest importance function. f and g at the bound give finite,
+     * non-negative variances; one ulp beyond is refused. */
+    const size_t n = MCS_MAX_COV_N;
+    steep_importance(n);
+    make_extreme_f(n);
+    static double g_max[MCS_MAX_COV_N];
+    for (size_t b = 0; b < n; ++b)
+        g_max[b] = f_max[(b + 1u) % n]; /* f - g = +-2^111 */
+    for (int kind = 0; kind < MCS_PATTERN_KIND_COUNT; ++kind) {
+        const mcs_importance *im = kind == MCS_PATTERN_HOMOGENIZED ? NULL : &imp;
+        const size_t k = (size_t)MCS_MAX_K;
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_init(&pat, (mcs_pattern_kind)kind, n, k, im));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_theory_init(&th, &pat));
+        double v = SENTINEL;
+        EXPECT(expect_finite, mcs_eq2_uncorrelated_variance(&th, n, k, f_max, g_max, &v), v, 1);
+        EXPECT(expect_finite, mcs_eq4_correlated_variance(&th, n, k, f_max, g_max, &v), v, 1);
+        EXPECT(expect_finite, mcs_eq13_variance(&th, n, k, f_max, &v), v, 0);
+        v = SENTINEL;
+        EXPECT(expect_magnitude, mcs_eq2_uncorrelated_variance(&th, n, k, f_max, f_over, &v), v);
+        EXPECT(expect_magnitude, mcs_eq4_correlated_variance(&th, n, k, f_over, g_max, &v), v);
+        EXPECT(expect_magnitude, mcs_eq13_variance(&th, n, k, f_over, &v), v);
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_a_complex_result_into_one_double_is_refused_and_elsewhere_is_written);
+    RUN_TEST(test_integrands_up_to_the_bound_give_finite_forms_and_beyond_are_refused);
+    RUN_TEST(test_section_1_forms_at_the_bound_are_finite_for_the_heaviest_pattern);
     return UNITY_END();
 }

@@ -1,7 +1,7 @@
 /* Tests for the limits of the exact moments (issue 10): the uniform pattern's
  * set-up at the largest K in bounded time with the generator's own counts,
- * a pattern K above MCS_MAX_K refused, re == im refused, and integrands above
- * MCS_ESTIMATE_MAX_ABS refused rather than read out as inf or NaN. The
+ * a pattern K above MCS_MAX_K refused, integrands above MCS_ESTIMATE_MAX_ABS
+ * refused rather than read out as inf or NaN, and re == im refused. The
  * theory itself is tested in test_theory.c and test_theory_spectrum.c. */
 #include "mcspec.h"
 #include "theory_ref.h"
@@ -120,6 +120,54 @@ static void test_a_pattern_k_above_the_largest_is_refused_by_both_inits(void)
         }
 }
 
+/* ---- item 5: integrands up to the bound ----------------------------------- */
+
+static double f_max[MCS_MAX_N], g_max[MCS_MAX_N], f_over[MCS_MAX_N];
+
+static void test_integrands_up_to_the_bound_read_out_finite_for_the_heaviest_pattern(void)
+{
+    /* f of 1e300 gave an infinite Var[I] with MCS_OK. At the bound, with
+     * K = MCS_MAX_K samples through the steepest importance function
+     * accepted (1/p_0 near 2^32 / N), every estimator read-out is finite and
+     * the variance >= 0; one ulp beyond is MCS_ERR_MAGNITUDE, nothing written. */
+    const size_t n = 256u, k = (size_t)MCS_MAX_K;
+    static double w[256];
+    double rest = 0.0;
+    for (size_t b = 1; b < n; ++b)
+        rest += w[b] = 1.0 + (double)(b % 5u);
+    w[0] = 1.01 * MCS_IMPORTANCE_MIN_G * rest;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_init(&imp, n, w));
+    for (size_t b = 0; b < n; ++b) {
+        f_max[b] = b % 2u ? -MCS_ESTIMATE_MAX_ABS : MCS_ESTIMATE_MAX_ABS;
+        g_max[b] = b % 3u ? MCS_ESTIMATE_MAX_ABS : -MCS_ESTIMATE_MAX_ABS;
+        f_over[b] = f_max[b];
+    }
+    f_over[7] = -nextafter(MCS_ESTIMATE_MAX_ABS, INFINITY);
+    for (int j = 0; j < 2 * MCS_PATTERN_KIND_COUNT; ++j) {
+        const mcs_pattern_kind kind = (mcs_pattern_kind)(j / 2);
+        const mcs_importance *im = j % 2 ? &imp : NULL;
+        if (im != NULL && kind == MCS_PATTERN_HOMOGENIZED)
+            continue;
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_init(&pat, kind, n, k, im));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_theory_spectrum_init(&ts, &pat));
+        double v[3] = {SENTINEL, SENTINEL, SENTINEL};
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_theory_spectrum_estimator_mean(&ts, n, k, f_max, &v[0]));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_theory_spectrum_variance(&ts, n, k, f_max, &v[1]));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_theory_spectrum_estimator_covariance(&ts, n, k, f_max,
+                                                                               g_max, &v[2]));
+        TEST_ASSERT_TRUE(isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]) && v[1] >= 0.0);
+        double o = SENTINEL;
+        memcpy(&ts_copy, &ts, sizeof ts);
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_MAGNITUDE,
+                              mcs_theory_spectrum_estimator_mean(&ts, n, k, f_over, &o));
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_MAGNITUDE, mcs_theory_spectrum_variance(&ts, n, k, f_over, &o));
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_MAGNITUDE, mcs_theory_spectrum_estimator_covariance(
+                                                     &ts, n, k, f_max, f_over, &o));
+        TEST_ASSERT_EQUAL_DOUBLE(SENTINEL, o);
+        TEST_ASSERT_EQUAL_MEMORY(&ts_copy, &ts, sizeof ts);
+    }
+}
+
 /* ---- item 10: one double for both parts of a complex result --------------- */
 
 static void test_a_complex_result_into_one_double_is_refused_and_elsewhere_is_written(void)
@@ -161,6 +209,7 @@ int main(void)
     RUN_TEST(test_uniform_counts_are_the_generators_for_every_small_n_and_k);
     RUN_TEST(test_uniform_theory_at_the_largest_k_is_quick_and_exact);
     RUN_TEST(test_a_pattern_k_above_the_largest_is_refused_by_both_inits);
+    RUN_TEST(test_integrands_up_to_the_bound_read_out_finite_for_the_heaviest_pattern);
     RUN_TEST(test_a_complex_result_into_one_double_is_refused_and_elsewhere_is_written);
     return UNITY_END();
 }

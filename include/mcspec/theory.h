@@ -52,6 +52,7 @@
 
 #include <stddef.h>
 #include "config.h"
+#include "estimate.h"
 #include "status.h"
 #include "pattern.h"
 
@@ -245,7 +246,11 @@ mcs_status mcs_theory_spectrum_covariance(const mcs_theory_spectrum *ts, size_t 
 
 /* <I> = (1/K) sum_n f_n <s_n>. f[n], n equal to the pattern's N, else
  * MCS_ERR_MISMATCH; k the pattern's K: MCS_ERR_K_RANGE (k = 0),
- * MCS_ERR_MISMATCH (k != K); f finite, else MCS_ERR_NOT_FINITE. O(N). */
+ * MCS_ERR_MISMATCH (k != K); f finite, else MCS_ERR_NOT_FINITE, and |f_n| <=
+ * MCS_ESTIMATE_MAX_ABS (estimate.h: 2^110, the largest term the estimator
+ * takes), else MCS_ERR_MAGNITUDE: within it no square or product of f with
+ * the moments (below 2^124 at K <= MCS_MAX_K, 1/p_n < 2^32) can overflow,
+ * so this and the two calls below return finite values. O(N). */
 mcs_status mcs_theory_spectrum_estimator_mean(const mcs_theory_spectrum *ts, size_t n,
                                               size_t k, const double *f, double *out);
 
