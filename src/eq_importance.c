@@ -5,6 +5,7 @@
 #include "importance_internal.h"
 #include "internal.h"
 
+#include <float.h>
 #include <math.h>
 
 /* imp NULL is "no importance function": the importance formulas are not
@@ -190,6 +191,27 @@ static double fq_variance_parseval(const mcs_importance *imp, size_t k, const do
     return sum / ((double)n * (double)k);
 }
 
+/* Eq. 52 printed and corrected are, by Parseval, (1/K)(1/N) sum_n q_n
+ * (f_n - fbar)^2 and (1/K)(1/N) sum_n p_n (f_n q_n - fbar)^2 (see above):
+ * sums of squares, so never negative, and a negative value of the term-by-
+ * term double sum is its rounding. That rounding is below (N^2 + 4N + 16) eps
+ * times the sum of the terms' magnitudes (three N-term transforms per term,
+ * then N^2 terms), which |F_k| <= N^{-1/2} sum |f| and |Q_j| <= N^{1/2} / H
+ * bound by (sum_n |f_n|)^2 / (H K). A value in [-bound, 0) reads 0; one below
+ * is returned as it is (no rounding makes it). Eq. 55 can be negative. */
+static double nonnegative_form(const mcs_importance *imp, size_t k, const double *f, double v)
+{
+    if (!(v < 0.0))
+        return v;
+    const double nd = (double)imp->n;
+    double abs_sum = 0.0;
+    for (size_t b = 0; b < imp->n; ++b)
+        abs_sum += fabs(f[b]);
+    const double bound = (nd * nd + 4.0 * nd + 16.0) * DBL_EPSILON * abs_sum * abs_sum /
+                         (imp->harmonic_mean * (double)k);
+    return -v <= bound ? 0.0 : v;
+}
+
 /* The double sums of eq. 52 as printed and corrected and eq. 55, checked:
  * (1/K) N^{-3/2} sum_{k >= k0, l >= l0} F_k* F_l Q_{k-l} (less |F_0|^2/N K
  * when k0 = 0, eq. 52 corrected), term by term up to MCS_MAX_COV_N. */
@@ -201,14 +223,17 @@ static mcs_status fq_form(const mcs_importance *imp, size_t k, const double *f, 
         return st;
     if (imp->n > (size_t)MCS_MAX_COV_N)
         return mcs_set_(out, fq_variance_parseval(imp, k, f, k0, l0));
-    if (k0 != 0u)
-        return mcs_set_(out, fq_variance(imp, k, f, k0, l0));
+    if (k0 != 0u) {
+        const double v = fq_variance(imp, k, f, k0, l0);
+        return mcs_set_(out, l0 != 0u ? nonnegative_form(imp, k, f, v) : v);
+    }
     const double nd = (double)imp->n;
     double sum = 0.0;
     for (size_t b = 0; b < imp->n; ++b)
         sum += f[b];
     const double f0_sq = sum * sum / nd; /* |F_0|^2 */
-    return mcs_set_(out, (fq_variance(imp, 1u, f, 0u, 0u) - f0_sq / nd) / (double)k);
+    const double v = (fq_variance(imp, 1u, f, 0u, 0u) - f0_sq / nd) / (double)k;
+    return mcs_set_(out, nonnegative_form(imp, k, f, v));
 }
 
 mcs_status mcs_eq52_variance_printed(const mcs_importance *imp, size_t k, const double *f,

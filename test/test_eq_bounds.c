@@ -180,11 +180,46 @@ static void test_section_1_forms_at_the_bound_are_finite_for_the_heaviest_patter
     }
 }
 
+/* ---- item 7: variances never negative ------------------------------------------ */
+
+static void test_eq52_of_a_zero_variance_integrand_is_never_negative(void)
+{
+    /* Flat importance and f = {0.1, 0.1} gave eq. 52 corrected = -3.5e-18:
+     * the exact value is 0, and the term-by-term sum rounds around it. For
+     * f proportional to p (every lumpy g too) the exact eq. 52 corrected is 0
+     * and eq. 52 printed (1/K)(1/N) sum q (f - fbar)^2 is not negative:
+     * both read >= 0 and within rounding of their primal forms. */
+    static double w[MCS_MAX_COV_N], f[MCS_MAX_COV_N];
+    const double scales[4] = {0.1, 1.0 / 3.0, 7.3e-5, 2.9e17};
+    for (size_t n = 2; n <= (size_t)MCS_MAX_COV_N; n += (n < 12u ? 1u : 13u))
+        for (int lumpy = 0; lumpy < 2; ++lumpy)
+            for (int s = 0; s < 4; ++s) {
+                for (size_t b = 0; b < n; ++b)
+                    w[b] = lumpy ? 1.0 + (double)((b * 7u) % 5u) : 1.0;
+                TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_init(&imp, n, w));
+                double fbar = 0.0, primal = 0.0;
+                for (size_t b = 0; b < n; ++b)
+                    fbar += f[b] = scales[s] * imp.p[b];
+                fbar /= (double)n;
+                for (size_t b = 0; b < n; ++b)
+                    primal += (f[b] - fbar) * (f[b] - fbar) / imp.p[b];
+                primal /= (double)n * 3.0;
+                double corrected = SENTINEL, printed = SENTINEL;
+                TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_eq52_variance_corrected(&imp, 3u, f, &corrected));
+                TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_eq52_variance_printed(&imp, 3u, f, &printed));
+                const double scale = scales[s] * scales[s];
+                TEST_ASSERT_TRUE(corrected >= 0.0 && corrected <= 1e-13 * scale);
+                TEST_ASSERT_TRUE(printed >= 0.0);
+                TEST_ASSERT_TRUE(fabs(printed - primal) <= 1e-13 * scale);
+            }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_a_complex_result_into_one_double_is_refused_and_elsewhere_is_written);
     RUN_TEST(test_integrands_up_to_the_bound_give_finite_forms_and_beyond_are_refused);
     RUN_TEST(test_section_1_forms_at_the_bound_are_finite_for_the_heaviest_pattern);
+    RUN_TEST(test_eq52_of_a_zero_variance_integrand_is_never_negative);
     return UNITY_END();
 }

@@ -231,7 +231,10 @@ mcs_status mcs_eq52_variance_printed(const mcs_importance *imp, size_t k, const 
 
 /* Eq. 52 corrected: (1/K) [N^{-3/2} sum_{all k,l} F_k* F_l Q_{k-l} - |F_0|^2/N],
  * the exact Var[I] of random sampling with importance, equal by Parseval to
- * the primal (1/K) [(1/N) sum_n f_n^2 / p_n - fbar^2]. Same arguments. */
+ * the primal (1/K) [(1/N) sum_n f_n^2 / p_n - fbar^2]. Same arguments.
+ * Never negative, nor is eq. 52 as printed (both are sums of squares by
+ * Parseval): a term-by-term sum in [-b, 0) is rounding and reads 0, b =
+ * (N^2 + 4N + 16) DBL_EPSILON (sum_n |f_n|)^2 / (H K) bounding it. */
 mcs_status mcs_eq52_variance_corrected(const mcs_importance *imp, size_t k, const double *f,
                                        double *out);
 
