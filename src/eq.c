@@ -38,13 +38,6 @@ mcs_status mcs_eq_check_pair(int outputs, size_t n, size_t k, size_t freq_k, siz
     return MCS_OK;
 }
 
-mcs_status mcs_eq_check_complex(mcs_status st, const double *re, const double *im)
-{
-    if (st == MCS_OK && mcs_overlap_(re, sizeof *re, im, sizeof *im))
-        return MCS_ERR_ALIAS;
-    return st;
-}
-
 void mcs_eq_dft_at(size_t n, const double *x, size_t freq, double *re, double *im)
 {
     double r = 0.0, i = 0.0;
