@@ -100,12 +100,13 @@ static double gradient_variance(const mcs_readout *view, size_t k, const double 
 }
 
 /* The read-out's checks of f and g on th, then both within
- * MCS_ESTIMATE_MAX_ABS (MAGNITUDE): f - g cannot overflow then either. */
+ * MCS_ESTIMATE_MAX_ABS (MAGNITUDE): f - g cannot overflow then either. The
+ * caller checks its output first (six arguments at most: see readout.h). */
 static mcs_status check_two(const mcs_theory *th, size_t n, size_t k, const double *f,
-                            const double *g, const double *out, mcs_readout *v)
+                            const double *g, mcs_readout *v)
 {
     const mcs_readout_source src = {th, mcs_readout_open_theory};
-    mcs_status st = out == NULL ? MCS_ERR_NULL : mcs_readout_check_integrands(&src, n, k, f, g, v);
+    mcs_status st = mcs_readout_check_integrands(&src, n, k, f, g, v);
     if (st == MCS_OK)
         st = mcs_check_integrand_(n, f);
     return st == MCS_OK ? mcs_check_integrand_(n, g) : st;
@@ -115,7 +116,7 @@ mcs_status mcs_eq2_uncorrelated_variance(const mcs_theory *th, size_t n, size_t 
                                          const double *f, const double *g, double *out)
 {
     mcs_readout v;
-    mcs_status st = check_two(th, n, k, f, g, out, &v);
+    mcs_status st = out == NULL ? MCS_ERR_NULL : check_two(th, n, k, f, g, &v);
     return st == MCS_OK ? mcs_set_(out, gradient_variance(&v, k, f, g, 0)) : st;
 }
 
@@ -123,7 +124,7 @@ mcs_status mcs_eq4_correlated_variance(const mcs_theory *th, size_t n, size_t k,
                                        const double *f, const double *g, double *out)
 {
     mcs_readout v;
-    mcs_status st = check_two(th, n, k, f, g, out, &v);
+    mcs_status st = out == NULL ? MCS_ERR_NULL : check_two(th, n, k, f, g, &v);
     return st == MCS_OK ? mcs_set_(out, gradient_variance(&v, k, f, g, 1)) : st;
 }
 
@@ -188,7 +189,7 @@ mcs_status mcs_eq13_variance(const mcs_theory *th, size_t n, size_t k, const dou
                              double *out)
 {
     mcs_readout v;
-    mcs_status st = check_two(th, n, k, f, f, out, &v);
+    mcs_status st = out == NULL ? MCS_ERR_NULL : check_two(th, n, k, f, f, &v);
     return st == MCS_OK ? mcs_set_(out, eq13_sum(&v, k, f)) : st;
 }
 
