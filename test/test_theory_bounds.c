@@ -1,7 +1,8 @@
 /* Tests for the limits of the exact moments (issue 10): the uniform pattern's
  * set-up at the largest K in bounded time with the generator's own counts,
- * a pattern K above MCS_MAX_K refused, integrands above MCS_ESTIMATE_MAX_ABS
- * refused rather than read out as inf or NaN, and re == im refused. The
+ * a pattern K above MCS_MAX_K refused, the cross matrix's diagonal never
+ * negative, integrands above MCS_ESTIMATE_MAX_ABS refused rather than read
+ * out as inf or NaN, and re == im refused. The
  * theory itself is tested in test_theory.c and test_theory_spectrum.c. */
 #include "mcspec.h"
 #include "theory_ref.h"
@@ -120,6 +121,40 @@ static void test_a_pattern_k_above_the_largest_is_refused_by_both_inits(void)
         }
 }
 
+/* ---- item 7: powers never negative -------------------------------------------- */
+
+static double mat_re[MCS_MAX_COV_N * MCS_MAX_COV_N], mat_im[MCS_MAX_COV_N * MCS_MAX_COV_N];
+
+static void test_the_cross_matrix_diagonal_is_the_power_and_never_negative(void)
+{
+    /* The diagonal <|S_k|^2> of mcs_theory_cross_matrix was not clamped as
+     * mcs_theory_power is: uniform, N = 2, K = 7 through g = {1, 6} gave
+     * -8.9e-16 where S_1 is exactly 0 (fuzz_api). Every kind over a range of
+     * N and K, with and without importance: >= 0 and equal to the power. */
+    static double w[MCS_MAX_COV_N];
+    for (size_t n = 1; n <= (size_t)MCS_MAX_COV_N; n += (n < 8u ? 1u : 9u)) {
+        for (size_t b = 0; b < n; ++b)
+            w[b] = 1.0 + (double)((b * 5u) % 7u);
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_init(&imp, n, w));
+        for (size_t k = 1; k <= 42u; k += (n < 8u ? 1u : 5u))
+            for (int j = 0; j < 2 * MCS_PATTERN_KIND_COUNT; ++j) {
+                const mcs_pattern_kind kind = (mcs_pattern_kind)(j / 2);
+                const mcs_importance *im = j % 2 ? &imp : NULL;
+                if (im != NULL && kind == MCS_PATTERN_HOMOGENIZED)
+                    continue;
+                TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_init(&pat, kind, n, k, im));
+                TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_theory_init(&th, &pat));
+                TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_theory_cross_matrix(&th, n, mat_re, mat_im));
+                for (size_t q = 0; q < n; ++q) {
+                    double power = SENTINEL;
+                    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_theory_power(&th, q, &power));
+                    TEST_ASSERT_TRUE(mat_re[q * n + q] >= 0.0);
+                    theory_assert_close(power, mat_re[q * n + q], 1e-12, "diagonal = power");
+                }
+            }
+    }
+}
+
 /* ---- item 5: integrands up to the bound ----------------------------------- */
 
 static double f_max[MCS_MAX_N], g_max[MCS_MAX_N], f_over[MCS_MAX_N];
@@ -209,6 +244,7 @@ int main(void)
     RUN_TEST(test_uniform_counts_are_the_generators_for_every_small_n_and_k);
     RUN_TEST(test_uniform_theory_at_the_largest_k_is_quick_and_exact);
     RUN_TEST(test_a_pattern_k_above_the_largest_is_refused_by_both_inits);
+    RUN_TEST(test_the_cross_matrix_diagonal_is_the_power_and_never_negative);
     RUN_TEST(test_integrands_up_to_the_bound_read_out_finite_for_the_heaviest_pattern);
     RUN_TEST(test_a_complex_result_into_one_double_is_refused_and_elsewhere_is_written);
     return UNITY_END();

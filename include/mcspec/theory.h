@@ -115,7 +115,8 @@ mcs_status mcs_theory_covariance(const mcs_theory *th, size_t freq_k, size_t fre
 /* Every <S_k S_l*> at once, O(N^3): re[k * n + l] + i im[k * n + l], caller
  * arrays of n * n (exactly n * n entries are written), n equal to th->n, else
  * MCS_ERR_MISMATCH. re and im must overlap neither each other nor *th (they
- * are written while it is read): MCS_ERR_ALIAS. */
+ * are written while it is read): MCS_ERR_ALIAS. The diagonal is the power
+ * spectrum, never negative (clamped as mcs_theory_power). */
 mcs_status mcs_theory_cross_matrix(const mcs_theory *th, size_t n, double *re, double *im);
 
 /* Every Cov(S_k, S_l) at once, O(N^3), laid out as mcs_theory_cross_matrix. */
