@@ -24,6 +24,24 @@ static mcs_status check_imp(int outputs, const mcs_importance *imp, size_t k)
     return MCS_OK;
 }
 
+/* Writes a result formed from imp. It is finite for every object
+ * mcs_importance_init makes (1/p_n < 2^32, H >= 2^-32; f within its bound),
+ * so a value that is not comes from stored values init never makes (a
+ * zeroed p_n, say): MCS_ERR_INVARIANT, nothing written. */
+static mcs_status set_from_imp(double *out, double v)
+{
+    return isfinite(v) ? mcs_set_(out, v) : MCS_ERR_INVARIANT;
+}
+
+static mcs_status set_complex_from_imp(double *re, double *im, double r, double i)
+{
+    if (!(isfinite(r) && isfinite(i)))
+        return MCS_ERR_INVARIANT;
+    *re = r;
+    *im = i;
+    return MCS_OK;
+}
+
 /* check_imp, then freq < N (FREQ_RANGE) and, as asked, freq >= 1 and K
  * dividing N (DOMAIN). */
 static mcs_status check_imp_freq(int outputs, const mcs_importance *imp, size_t k, size_t freq,
@@ -63,8 +81,7 @@ mcs_status mcs_eq41_importance_second(const mcs_importance *imp, size_t k, size_
     double v = (kd * kd - kd) / (nd * nd);
     if (bin_m == bin_n)
         v += kd / nd / imp->p[bin_n];
-    *out = v;
-    return MCS_OK;
+    return set_from_imp(out, v);
 }
 
 /* (K/N) N^{-1/2} Q_{k-l}, the importance-sampled random cross spectrum. */
@@ -88,16 +105,18 @@ mcs_status mcs_eq43_importance_cross(const mcs_importance *imp, size_t k, size_t
     if (st == MCS_OK && freq_k == 0u && freq_l == 0u) /* the constant (K^2 - K)/N^2 adds there */
         st = MCS_ERR_DOMAIN;
     st = mcs_eq_check_complex(st, re, im);
-    if (st == MCS_OK)
-        q_term(imp, k, freq_k, freq_l, re, im);
-    return st;
+    if (st != MCS_OK)
+        return st;
+    double qr, qi;
+    q_term(imp, k, freq_k, freq_l, &qr, &qi);
+    return set_complex_from_imp(re, im, qr, qi);
 }
 
 mcs_status mcs_eq45_importance_power(const mcs_importance *imp, size_t k, size_t freq,
                                      double *out)
 {
     mcs_status st = check_imp_freq(out != NULL, imp, k, freq, 1, 0);
-    return st == MCS_OK ? mcs_set_(out, (double)k / (double)imp->n / imp->harmonic_mean) : st;
+    return st == MCS_OK ? set_from_imp(out, (double)k / (double)imp->n / imp->harmonic_mean) : st;
 }
 
 mcs_status mcs_eq46_importance_power0(const mcs_importance *imp, size_t k, double *out)
@@ -106,8 +125,7 @@ mcs_status mcs_eq46_importance_power0(const mcs_importance *imp, size_t k, doubl
     if (st != MCS_OK)
         return st;
     double kn = (double)k / (double)imp->n;
-    *out = (double)k * kn + kn * (1.0 / imp->harmonic_mean - 1.0);
-    return MCS_OK;
+    return set_from_imp(out, (double)k * kn + kn * (1.0 / imp->harmonic_mean - 1.0));
 }
 
 mcs_status mcs_eq49_importance_stratified_cross(const mcs_importance *imp, size_t k,
@@ -125,9 +143,7 @@ mcs_status mcs_eq49_importance_stratified_cross(const mcs_importance *imp, size_
     double qr, qi, dr, di;
     q_term(imp, k, freq_k, freq_l, &qr, &qi);
     mcs_eq_delta_printed(imp->n, k, freq_k, freq_l, &dr, &di);
-    *re = qr + dr;
-    *im = qi + di;
-    return MCS_OK;
+    return set_complex_from_imp(re, im, qr + dr, qi + di);
 }
 
 mcs_status mcs_eq50_importance_stratified_power(const mcs_importance *imp, size_t k, size_t freq,
@@ -137,8 +153,7 @@ mcs_status mcs_eq50_importance_stratified_power(const mcs_importance *imp, size_
     if (st != MCS_OK)
         return st;
     double kn = (double)k / (double)imp->n;
-    *out = kn * (1.0 / imp->harmonic_mean - mcs_eq_sinc2(imp->n, k, freq));
-    return MCS_OK;
+    return set_from_imp(out, kn * (1.0 / imp->harmonic_mean - mcs_eq_sinc2(imp->n, k, freq)));
 }
 
 /* (1/K) N^{-3/2} Re sum_{k >= k0, l >= l0} F_k* F_l Q_{k-l}: F of f, Q of 1/p,
@@ -222,10 +237,10 @@ static mcs_status fq_form(const mcs_importance *imp, size_t k, const double *f, 
     if (st != MCS_OK)
         return st;
     if (imp->n > (size_t)MCS_MAX_COV_N)
-        return mcs_set_(out, fq_variance_parseval(imp, k, f, k0, l0));
+        return set_from_imp(out, fq_variance_parseval(imp, k, f, k0, l0));
     if (k0 != 0u) {
         const double v = fq_variance(imp, k, f, k0, l0);
-        return mcs_set_(out, l0 != 0u ? nonnegative_form(imp, k, f, v) : v);
+        return set_from_imp(out, l0 != 0u ? nonnegative_form(imp, k, f, v) : v);
     }
     const double nd = (double)imp->n;
     double sum = 0.0;
@@ -233,7 +248,7 @@ static mcs_status fq_form(const mcs_importance *imp, size_t k, const double *f, 
         sum += f[b];
     const double f0_sq = sum * sum / nd; /* |F_0|^2 */
     const double v = (fq_variance(imp, 1u, f, 0u, 0u) - f0_sq / nd) / (double)k;
-    return mcs_set_(out, nonnegative_form(imp, k, f, v));
+    return set_from_imp(out, nonnegative_form(imp, k, f, v));
 }
 
 mcs_status mcs_eq52_variance_printed(const mcs_importance *imp, size_t k, const double *f,
@@ -260,8 +275,7 @@ mcs_status mcs_eq58_bound_printed(const mcs_importance *imp, size_t k, const dou
     mcs_status st = check_imp_f(imp, k, f, out, (size_t)MCS_MAX_N);
     if (st != MCS_OK) /* sum_{k >= 1} |F_k|^2 needs the DFT of f */
         return st;
-    *out = mcs_eq_ac_energy(imp->n, f) / imp->harmonic_mean / (double)k;
-    return MCS_OK;
+    return set_from_imp(out, mcs_eq_ac_energy(imp->n, f) / imp->harmonic_mean / (double)k);
 }
 
 mcs_status mcs_eq58_bound_corrected(const mcs_importance *imp, size_t k, const double *f,
@@ -273,6 +287,6 @@ mcs_status mcs_eq58_bound_corrected(const mcs_importance *imp, size_t k, const d
     double energy = 0.0; /* sum_{all n} |F_n|^2 = sum f_n^2 (Parseval, eq. 7 is unitary) */
     for (size_t b = 0; b < imp->n; ++b)
         energy += f[b] * f[b];
-    *out = energy * (1.0 / imp->harmonic_mean - 1.0 / (double)imp->n) / (double)k;
-    return MCS_OK;
+    return set_from_imp(out, energy * (1.0 / imp->harmonic_mean - 1.0 / (double)imp->n) /
+                                 (double)k);
 }

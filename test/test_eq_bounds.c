@@ -180,6 +180,52 @@ static void test_section_1_forms_at_the_bound_are_finite_for_the_heaviest_patter
     }
 }
 
+static void test_an_importance_function_init_never_made_gives_no_infinite_form(void)
+{
+    /* fuzz_api: a zeroed importance object whose n a flipped byte made 16
+     * gave eq. 55 = NaN with MCS_OK. With every p_n and H zeroed, or one p_n
+     * zeroed, each importance form either returns a finite value or an
+     * error with its outputs untouched; the f-forms, which read every p_n,
+     * return MCS_ERR_INVARIANT. */
+    typedef mcs_status (*imp_f_fn)(const mcs_importance *, size_t, const double *, double *);
+    const imp_f_fn imp_forms[5] = {mcs_eq52_variance_printed, mcs_eq52_variance_corrected,
+                                   mcs_eq55_variance_convolution, mcs_eq58_bound_printed,
+                                   mcs_eq58_bound_corrected};
+    double f[16];
+    theory_make_f(16u, f, 0.2);
+    for (int how = 0; how < 2; ++how) {
+        theory_lumpy_importance(&imp, 16u);
+        if (how == 0) {
+            memset(&imp, 0, sizeof imp);
+            imp.n = 16u;
+        } else {
+            imp.p[3] = 0.0;
+        }
+        for (int i = 0; i < 5; ++i) {
+            double v = SENTINEL;
+            const mcs_status st = imp_forms[i](&imp, 2u, f, &v);
+            TEST_ASSERT_TRUE(how == 0 || i >= 3 || st == MCS_ERR_INVARIANT);
+            TEST_ASSERT_TRUE(st == MCS_OK ? isfinite(v) : v == SENTINEL);
+        }
+        double o[8];
+        mcs_status st[8];
+        for (int j = 0; j < 8; ++j)
+            o[j] = SENTINEL;
+        st[0] = mcs_eq41_importance_second(&imp, 3u, 3u, 3u, &o[0]);
+        st[1] = mcs_eq43_importance_cross(&imp, 4u, 1u, 2u, &o[1], &o[2]);
+        st[2] = mcs_eq45_importance_power(&imp, 3u, 5u, &o[3]);
+        st[3] = mcs_eq46_importance_power0(&imp, 3u, &o[4]);
+        st[4] = mcs_eq49_importance_stratified_cross(&imp, 4u, 1u, 2u, &o[5], &o[6]);
+        st[5] = mcs_eq50_importance_stratified_power(&imp, 4u, 5u, &o[7]);
+        const int first[6] = {0, 1, 3, 4, 5, 7}, count[6] = {1, 2, 1, 1, 2, 1};
+        for (int c = 0; c < 6; ++c)
+            for (int j = first[c]; j < first[c] + count[c]; ++j)
+                TEST_ASSERT_TRUE(st[c] == MCS_OK ? isfinite(o[j]) : o[j] == SENTINEL);
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_INVARIANT, st[0]); /* 1/p_3 */
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_INVARIANT, st[1]); /* Q */
+    }
+}
+
 /* ---- item 7: variances never negative ------------------------------------------ */
 
 static void test_eq52_of_a_zero_variance_integrand_is_never_negative(void)
@@ -220,6 +266,7 @@ int main(void)
     RUN_TEST(test_a_complex_result_into_one_double_is_refused_and_elsewhere_is_written);
     RUN_TEST(test_integrands_up_to_the_bound_give_finite_forms_and_beyond_are_refused);
     RUN_TEST(test_section_1_forms_at_the_bound_are_finite_for_the_heaviest_pattern);
+    RUN_TEST(test_an_importance_function_init_never_made_gives_no_infinite_form);
     RUN_TEST(test_eq52_of_a_zero_variance_integrand_is_never_negative);
     return UNITY_END();
 }

@@ -176,7 +176,9 @@ mcs_status mcs_eq37_jitter_power(size_t n, size_t k, size_t freq, double *out);
  * MCS_ERR_UNINIT. Also MCS_ERR_NULL (outputs), MCS_ERR_K_RANGE (k = 0),
  * MCS_ERR_FREQ_RANGE (freq >= N), MCS_ERR_NOT_FINITE (f), MCS_ERR_MAGNITUDE
  * (|f_n| above MCS_ESTIMATE_MAX_ABS), MCS_ERR_ALIAS (re == im, where the
- * result is complex). */
+ * result is complex), and last MCS_ERR_INVARIANT when imp holds values
+ * mcs_importance_init never makes (a zeroed p_n or H) and the result would
+ * not be finite: for every object init makes it is (1/p_n < 2^32). */
 
 /* Eq. 41: random with importance, <s_m s_n> = (K^2 - K)/N^2 + (K/N) delta_mn / p_n
  * (exact) for bins bin_m, bin_n of imp: MCS_ERR_BIN_RANGE. */
