@@ -460,6 +460,11 @@ mcs_status mcs_readout_cross_matrix(const mcs_readout_source *src, size_t n,
         add_mean_products(&v, first_mean_at, first_mean_at, -1.0, re, im);
         add_mean_products(&v, mean_at, mean_at, 1.0, re, im);
     }
+    /* The diagonal is <|S_k|^2>, clamped as mcs_readout_power: two sums of N
+     * terms, within power_bound. */
+    const double tol = power_bound(&v);
+    for (size_t k = 0; k < n; ++k)
+        re[k * n + k] = mcs_readout_nonnegative(&v, re[k * n + k], tol);
     return MCS_OK;
 }
 
