@@ -39,12 +39,6 @@ typedef struct {
 } known_row;
 
 static const known_row known[] = {
-    {"mcs_theory_init", "K=SIZE_MAX @uniform", NULL, 4}, /* O(K): hangs */
-    {"mcs_theory_spectrum_init", "K=SIZE_MAX @uniform", NULL, 4},
-    {"mcs_", "alias", "aliased call gave MCS_OK", 10},
-    {"mcs_", "1e300", "", 5},
-    {"mcs_", "1.5e154", "", 5},
-    {"mcs_", "DBL_MAX", "", 5},
     {NULL, NULL, NULL, 0},
 };
 
@@ -444,10 +438,10 @@ static const scenario scenarios[] = {
     SCENARIO(item1_fft_trial_with_an_overflowing_bin_sum_is_refused, 0),
     SCENARIO(item2_autocorr_power_is_never_ok_with_untransformed_data, 0),
     SCENARIO(item3_an_unseeded_rng_is_refused_not_looped_on, 0),
-    SCENARIO(item4_the_largest_accepted_k_gives_sound_theory_in_bounded_time, 4),
-    SCENARIO(item5_no_accepted_input_poisons_a_read_out, 5),
+    SCENARIO(item4_the_largest_accepted_k_gives_sound_theory_in_bounded_time, 0),
+    SCENARIO(item5_no_accepted_input_poisons_a_read_out, 0),
     SCENARIO(item6_variance_stderr_is_never_zero_when_undefined, 0),
-    SCENARIO(item7_variances_are_never_negative, 7),
+    SCENARIO(item7_variances_are_never_negative, 0),
     SCENARIO(item8_importance_weights_of_any_finite_scale, 0),
     SCENARIO(item9_self_merges_never_wrap_the_count, 0),
     SCENARIO(item10_input_inside_the_plan_scratch_works_or_is_refused, 0),
