@@ -85,11 +85,22 @@ typedef struct {
     const char *help_more; /* printed after help, or NULL (C11 caps one literal at 4095) */
 } cli_parser;
 
-enum { CLI_PARSED = 0, CLI_HELP = 1, CLI_BAD = 2 };
+/* A subcommand's parser over its opts and args arrays (both in scope as
+ * arrays, so their lengths are known). */
+#define CLI_PARSER(cmd, help, opts, args, help_more)                                         \
+    {cmd, help, opts, sizeof opts / sizeof opts[0], args, sizeof args / sizeof args[0], 0u, \
+     help_more}
 
-/* Parses argv[1..argc-1] (--opt V and --opt=V both work). CLI_PARSED;
- * CLI_HELP after printing the help; CLI_BAD after one line on stderr. */
+enum { CLI_PARSED = 0, CLI_HELP = -1, CLI_BAD = CLI_EXIT_USAGE };
+
+/* Parses argv[1..argc-1] (--opt V and --opt=V both work). CLI_PARSED (0);
+ * CLI_HELP (-1) after printing the help; CLI_BAD (CLI_EXIT_USAGE) after one
+ * line on stderr. So a subcommand's parse returns what cli_parse did unless
+ * it is 0, and its entry point exits CLI_EXIT_OK after --help. */
 int cli_parse(cli_parser *p, int argc, char **argv);
+
+/* The library's pattern kind named text (mcs_pattern_kind_str), or -1. */
+int cli_pattern_kind(const char *text);
 
 /* Whole number in [min, max] from text (digits only). 0 or -1. */
 int cli_parse_u64(const char *text, uint64_t min, uint64_t max, uint64_t *out);

@@ -66,10 +66,10 @@ static int parse(int argc, char **argv, show_opts *o)
         {"radial", CLI_OPT_FLAG, &o->radial, 0, 0, 0},
     };
     const char *args[1] = {NULL};
-    cli_parser p = {CMD, help, opts, sizeof opts / sizeof opts[0], args, 1, 0, NULL};
+    cli_parser p = CLI_PARSER(CMD, help, opts, args, NULL);
     int rc = cli_parse(&p, argc, argv);
     if (rc != CLI_PARSED)
-        return rc == CLI_HELP ? -1 : CLI_EXIT_USAGE;
+        return rc;
     if (p.nargs == 0u)
         return cli_fail(CMD, "which record? give FILE");
     o->path = args[0];

@@ -125,10 +125,10 @@ static int parse(int argc, char **argv, spectrum_opts *o)
         {"save", CLI_OPT_STRING, &o->save, 0, 0, 0},
     };
     const char *args[1] = {NULL};
-    cli_parser p = {CMD, help, opts, sizeof opts / sizeof opts[0], args, 1, 0, NULL};
+    cli_parser p = CLI_PARSER(CMD, help, opts, args, NULL);
     int rc = cli_parse(&p, argc, argv);
     if (rc != CLI_PARSED)
-        return rc == CLI_HELP ? -1 : CLI_EXIT_USAGE;
+        return rc;
     rc = check_mode(o, opts[0].given);
     if (rc != 0)
         return rc;

@@ -2,6 +2,8 @@
  * mcspec subcommand. */
 #include "cli.h"
 
+#include "mcspec/pattern.h"
+
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
@@ -199,4 +201,12 @@ double cli_z(double measured, double predicted, double stderr_, double floor)
     if (fabs(d) <= floor)
         return 0.0;
     return d / fmax(stderr_, floor);
+}
+
+int cli_pattern_kind(const char *text)
+{
+    for (int i = 0; i < MCS_PATTERN_KIND_COUNT; ++i)
+        if (strcmp(text, mcs_pattern_kind_str((mcs_pattern_kind)i)) == 0)
+            return i;
+    return -1;
 }
