@@ -85,12 +85,6 @@ typedef struct {
     const char *help_more; /* printed after help, or NULL (C11 caps one literal at 4095) */
 } cli_parser;
 
-/* A subcommand's parser over its opts and args arrays (both in scope as
- * arrays, so their lengths are known). */
-#define CLI_PARSER(cmd, help, opts, args, help_more)                                         \
-    {cmd, help, opts, sizeof opts / sizeof opts[0], args, sizeof args / sizeof args[0], 0u, \
-     help_more}
-
 enum { CLI_PARSED = 0, CLI_HELP = -1, CLI_BAD = CLI_EXIT_USAGE };
 
 /* Parses argv[1..argc-1] (--opt V and --opt=V both work). CLI_PARSED (0);
@@ -98,6 +92,13 @@ enum { CLI_PARSED = 0, CLI_HELP = -1, CLI_BAD = CLI_EXIT_USAGE };
  * line on stderr. So a subcommand's parse returns what cli_parse did unless
  * it is 0, and its entry point exits CLI_EXIT_OK after --help. */
 int cli_parse(cli_parser *p, int argc, char **argv);
+
+/* cli_parse for a subcommand of at most one positional argument, which goes
+ * to *arg (NULL when there is none); help_more may be NULL. */
+int cli_parse_one(const char *cmd, const char *help, const char *help_more, cli_opt *opts,
+                  size_t nopts, int argc, char **argv, const char **arg);
+
+#define CLI_COUNT(array) (sizeof(array) / sizeof((array)[0]))
 
 /* The library's pattern kind named text (mcs_pattern_kind_str), or -1. */
 int cli_pattern_kind(const char *text);

@@ -172,15 +172,12 @@ static int parse(int argc, char **argv, pattern_opts *o)
         {"freq", CLI_OPT_SIZE, &o->freq, 1, MCS_MAX_FREQ, 0},
         {"radial", CLI_OPT_FLAG, &o->radial, 0, 0, 0},
     };
-    const char *args[1] = {NULL};
-    cli_parser p = CLI_PARSER(CMD, help, opts, args, help_2d);
-    int rc = cli_parse(&p, argc, argv);
+    int rc = cli_parse_one(CMD, help, help_2d, opts, CLI_COUNT(opts), argc, argv, &o->kind_name);
     if (rc != CLI_PARSED)
         return rc;
-    if (p.nargs == 0u)
+    if (o->kind_name == NULL)
         return cli_fail(CMD, "which pattern? give KIND: random, stratified, homogenized, "
                         "uniform or jitter (with --dim 2: %s)", CLI_SOURCE2D_NAMES);
-    o->kind_name = args[0];
     rc = o->dim == 2u ? check_2d(o, opts) : check_1d(o, opts);
     if (rc != 0)
         return rc;

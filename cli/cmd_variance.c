@@ -83,12 +83,9 @@ static int parse(int argc, char **argv, variance_opts *o)
         {"csv", CLI_OPT_FLAG, &o->csv, 0, 0, 0},
         {"save", CLI_OPT_STRING, &o->save, 0, 0, 0},
     };
-    const char *args[1] = {NULL};
-    cli_parser p = CLI_PARSER(CMD, help, opts, args, NULL);
-    int rc = cli_parse(&p, argc, argv);
+    int rc = cli_parse_one(CMD, help, NULL, opts, CLI_COUNT(opts), argc, argv, &o->path);
     if (rc != CLI_PARSED)
         return rc;
-    o->path = p.nargs > 0u ? args[0] : NULL;
     if (!opts[0].given)
         return cli_fail(CMD, "--k K is required (see %s --help)", CMD);
     if (o->kind != NULL && cli_pattern_kind(o->kind) < 0)

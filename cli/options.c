@@ -203,6 +203,16 @@ double cli_z(double measured, double predicted, double stderr_, double floor)
     return d / fmax(stderr_, floor);
 }
 
+int cli_parse_one(const char *cmd, const char *help, const char *help_more, cli_opt *opts,
+                  size_t nopts, int argc, char **argv, const char **arg)
+{
+    const char *args[1] = {NULL};
+    cli_parser p = {cmd, help, opts, nopts, args, 1u, 0u, help_more};
+    int rc = cli_parse(&p, argc, argv);
+    *arg = args[0];
+    return rc;
+}
+
 int cli_pattern_kind(const char *text)
 {
     for (int i = 0; i < MCS_PATTERN_KIND_COUNT; ++i)

@@ -92,7 +92,7 @@ static int parse(int argc, char **argv, int nranks, run_params *prm, const char 
         {"timing", CLI_OPT_FLAG, &timing, 0, 0, 0},
     };
     const char *args[2] = {NULL, NULL};
-    cli_parser p = CLI_PARSER(CMD, help, opts, args, NULL);
+    cli_parser p = {CMD, help, opts, CLI_COUNT(opts), args, CLI_COUNT(args), 0u, NULL};
     int rc = cli_parse(&p, argc, argv);
     if (rc != CLI_PARSED)
         return rc;
