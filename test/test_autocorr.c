@@ -105,12 +105,7 @@ static void test_merge_of_halves_equals_one_pass(void)
 
 /* ---------------- bad input ---------------- */
 
-#define AC_UNCHANGED(status, call)                                                           \
-    do {                                                                                     \
-        memcpy(&ac_before, &ac, sizeof ac);                                                  \
-        TEST_ASSERT_EQUAL_INT((status), (call));                                             \
-        TEST_ASSERT_EQUAL_MEMORY(&ac_before, &ac, sizeof ac);                                \
-    } while (0)
+#define AC_UNCHANGED(status, call) SPECTRA_UNCHANGED(ac, ac_before, status, call)
 
 static mcs_status add_bins(void *obj, size_t k, const size_t *b, const double *w)
 {

@@ -436,12 +436,7 @@ static void test_stratified_off_diagonal_terms_follow_eq_30(void)
 
 /* ---------------- bad input ---------------- */
 
-#define MOM_UNCHANGED(status, call)                                                          \
-    do {                                                                                     \
-        memcpy(&mom_before, &mom, sizeof mom);                                               \
-        TEST_ASSERT_EQUAL_INT((status), (call));                                             \
-        TEST_ASSERT_EQUAL_MEMORY(&mom_before, &mom, sizeof mom);                             \
-    } while (0)
+#define MOM_UNCHANGED(status, call) SPECTRA_UNCHANGED(mom, mom_before, status, call)
 
 static mcs_status add_bins(void *obj, size_t k, const size_t *b, const double *w)
 {

@@ -4,6 +4,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <string.h>
 
 #include "mcspec.h"
 
@@ -43,6 +44,15 @@ void spectra_make_importance(mcs_importance *imp, size_t n, double base, size_t 
 void spectra_run(mcs_spectrum *a, mcs_pattern_kind kind, size_t n, size_t k,
                  const mcs_importance *importance, uint64_t seed, uint64_t seq, size_t trials,
                  size_t *bins, double *weights);
+
+/* call returns status and leaves the object obj as it was (copy: an object
+ * of its type to hold the bytes before the call). */
+#define SPECTRA_UNCHANGED(obj, copy, status, call)                                           \
+    do {                                                                                     \
+        memcpy(&(copy), &(obj), sizeof(obj));                                                \
+        TEST_ASSERT_EQUAL_INT((status), (call));                                             \
+        TEST_ASSERT_EQUAL_MEMORY(&(copy), &(obj), sizeof(obj));                              \
+    } while (0)
 
 /* An accumulator's add_bins through one signature (a small wrapper per
  * type: a call through a cast function pointer is undefined). */
