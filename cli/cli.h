@@ -85,11 +85,23 @@ typedef struct {
     const char *help_more; /* printed after help, or NULL (C11 caps one literal at 4095) */
 } cli_parser;
 
-enum { CLI_PARSED = 0, CLI_HELP = 1, CLI_BAD = 2 };
+enum { CLI_PARSED = 0, CLI_HELP = -1, CLI_BAD = CLI_EXIT_USAGE };
 
-/* Parses argv[1..argc-1] (--opt V and --opt=V both work). CLI_PARSED;
- * CLI_HELP after printing the help; CLI_BAD after one line on stderr. */
+/* Parses argv[1..argc-1] (--opt V and --opt=V both work). CLI_PARSED (0);
+ * CLI_HELP (-1) after printing the help; CLI_BAD (CLI_EXIT_USAGE) after one
+ * line on stderr. So a subcommand's parse returns what cli_parse did unless
+ * it is 0, and its entry point exits CLI_EXIT_OK after --help. */
 int cli_parse(cli_parser *p, int argc, char **argv);
+
+/* cli_parse for a subcommand of at most one positional argument, which goes
+ * to *arg (NULL when there is none); help_more may be NULL. */
+int cli_parse_one(const char *cmd, const char *help, const char *help_more, cli_opt *opts,
+                  size_t nopts, int argc, char **argv, const char **arg);
+
+#define CLI_COUNT(array) (sizeof(array) / sizeof((array)[0]))
+
+/* The library's pattern kind named text (mcs_pattern_kind_str), or -1. */
+int cli_pattern_kind(const char *text);
 
 /* Whole number in [min, max] from text (digits only). 0 or -1. */
 int cli_parse_u64(const char *text, uint64_t min, uint64_t max, uint64_t *out);

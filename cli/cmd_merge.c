@@ -92,7 +92,7 @@ int cli_cmd_merge(int argc, char **argv)
     int rc = cli_parse(&p, argc, argv);
     if (rc != CLI_PARSED) {
         free(files);
-        return rc == CLI_HELP ? CLI_EXIT_OK : CLI_EXIT_USAGE;
+        return rc == CLI_HELP ? CLI_EXIT_OK : rc;
     }
     if (output == NULL)
         rc = cli_fail(CMD, "where to? give -o OUT (see %s --help)", CMD);

@@ -127,19 +127,10 @@ typedef struct {
     int radial;
 } pattern_opts;
 
-/* The library's kind whose name is text; -1 if none. */
-static int kind_of(const char *text)
-{
-    for (int i = 0; i < MCS_PATTERN_KIND_COUNT; ++i)
-        if (strcmp(text, mcs_pattern_kind_str((mcs_pattern_kind)i)) == 0)
-            return i;
-    return -1;
-}
-
 /* KIND and the options of a 1D run (--n bins). */
 static int check_1d(const pattern_opts *o, const cli_opt *opts)
 {
-    if (kind_of(o->kind_name) < 0)
+    if (cli_pattern_kind(o->kind_name) < 0)
         return cli_fail(CMD, "unknown pattern '%s' (random, stratified, homogenized, uniform, "
                         "jitter; the 2D ones need --dim 2)", o->kind_name);
     if (!opts[0].given || !opts[1].given)
@@ -181,15 +172,12 @@ static int parse(int argc, char **argv, pattern_opts *o)
         {"freq", CLI_OPT_SIZE, &o->freq, 1, MCS_MAX_FREQ, 0},
         {"radial", CLI_OPT_FLAG, &o->radial, 0, 0, 0},
     };
-    const char *args[1] = {NULL};
-    cli_parser p = {CMD, help, opts, sizeof opts / sizeof opts[0], args, 1, 0, help_2d};
-    int rc = cli_parse(&p, argc, argv);
+    int rc = cli_parse_one(CMD, help, help_2d, opts, CLI_COUNT(opts), argc, argv, &o->kind_name);
     if (rc != CLI_PARSED)
-        return rc == CLI_HELP ? -1 : CLI_EXIT_USAGE;
-    if (p.nargs == 0u)
+        return rc;
+    if (o->kind_name == NULL)
         return cli_fail(CMD, "which pattern? give KIND: random, stratified, homogenized, "
                         "uniform or jitter (with --dim 2: %s)", CLI_SOURCE2D_NAMES);
-    o->kind_name = args[0];
     rc = o->dim == 2u ? check_2d(o, opts) : check_1d(o, opts);
     if (rc != 0)
         return rc;
@@ -233,7 +221,7 @@ static int make_pattern(const pattern_opts *o, mcs_importance *imp, mcs_pattern 
             return rc;
         g = imp;
     }
-    mcs_status st = mcs_pattern_init(pat, (mcs_pattern_kind)kind_of(o->kind_name), o->n, o->k, g);
+    mcs_status st = mcs_pattern_init(pat, (mcs_pattern_kind)cli_pattern_kind(o->kind_name), o->n, o->k, g);
     if (st == MCS_ERR_KIND)
         return cli_fail(CMD, "%s is not defined with an importance function; drop --importance",
                         o->kind_name);

@@ -65,14 +65,11 @@ static int parse(int argc, char **argv, show_opts *o)
         {"plot", CLI_OPT_STRING, &o->plot, 0, 0, 0},
         {"radial", CLI_OPT_FLAG, &o->radial, 0, 0, 0},
     };
-    const char *args[1] = {NULL};
-    cli_parser p = {CMD, help, opts, sizeof opts / sizeof opts[0], args, 1, 0, NULL};
-    int rc = cli_parse(&p, argc, argv);
+    int rc = cli_parse_one(CMD, help, NULL, opts, CLI_COUNT(opts), argc, argv, &o->path);
     if (rc != CLI_PARSED)
-        return rc == CLI_HELP ? -1 : CLI_EXIT_USAGE;
-    if (p.nargs == 0u)
+        return rc;
+    if (o->path == NULL)
         return cli_fail(CMD, "which record? give FILE");
-    o->path = args[0];
     if (o->plot != NULL)
         return cli_plot_check(CMD, o->plot);
     return 0;

@@ -124,15 +124,12 @@ static int parse(int argc, char **argv, spectrum_opts *o)
         {"plot", CLI_OPT_STRING, &o->plot, 0, 0, 0},
         {"save", CLI_OPT_STRING, &o->save, 0, 0, 0},
     };
-    const char *args[1] = {NULL};
-    cli_parser p = {CMD, help, opts, sizeof opts / sizeof opts[0], args, 1, 0, NULL};
-    int rc = cli_parse(&p, argc, argv);
+    int rc = cli_parse_one(CMD, help, NULL, opts, CLI_COUNT(opts), argc, argv, &o->path);
     if (rc != CLI_PARSED)
-        return rc == CLI_HELP ? -1 : CLI_EXIT_USAGE;
+        return rc;
     rc = check_mode(o, opts[0].given);
     if (rc != 0)
         return rc;
-    o->path = p.nargs > 0u ? args[0] : NULL;
     if (o->path == NULL && isatty(STDIN_FILENO))
         return cli_fail(CMD, "no input: give a point file, or '-' to read standard input");
     return cli_check_outputs(CMD, o->save, o->plot);

@@ -72,14 +72,6 @@ typedef struct {
     mcs_welford acc; /* the estimator's statistics, for --save */
 } variance_row;
 
-static int kind_of(const char *text)
-{
-    for (int i = 0; i < MCS_PATTERN_KIND_COUNT; ++i)
-        if (strcmp(text, mcs_pattern_kind_str((mcs_pattern_kind)i)) == 0)
-            return i;
-    return -1;
-}
-
 static int parse(int argc, char **argv, variance_opts *o)
 {
     cli_opt opts[] = {
@@ -91,18 +83,15 @@ static int parse(int argc, char **argv, variance_opts *o)
         {"csv", CLI_OPT_FLAG, &o->csv, 0, 0, 0},
         {"save", CLI_OPT_STRING, &o->save, 0, 0, 0},
     };
-    const char *args[1] = {NULL};
-    cli_parser p = {CMD, help, opts, sizeof opts / sizeof opts[0], args, 1, 0, NULL};
-    int rc = cli_parse(&p, argc, argv);
+    int rc = cli_parse_one(CMD, help, NULL, opts, CLI_COUNT(opts), argc, argv, &o->path);
     if (rc != CLI_PARSED)
-        return rc == CLI_HELP ? -1 : CLI_EXIT_USAGE;
-    o->path = p.nargs > 0u ? args[0] : NULL;
+        return rc;
     if (!opts[0].given)
         return cli_fail(CMD, "--k K is required (see %s --help)", CMD);
-    if (o->kind != NULL && kind_of(o->kind) < 0)
+    if (o->kind != NULL && cli_pattern_kind(o->kind) < 0)
         return cli_fail(CMD, "unknown pattern '%s' for --kind (random, stratified, homogenized, "
                         "uniform, jitter)", o->kind);
-    if (o->kind != NULL && o->importance != NULL && kind_of(o->kind) == MCS_PATTERN_HOMOGENIZED)
+    if (o->kind != NULL && o->importance != NULL && cli_pattern_kind(o->kind) == MCS_PATTERN_HOMOGENIZED)
         return cli_fail(CMD, "homogenized is not defined with an importance function; drop "
                         "--importance or choose another --kind");
     int stdin_uses = (o->path == NULL || strcmp(o->path, "-") == 0) +
@@ -234,7 +223,7 @@ static int run_kinds(const variance_opts *o, const double *f, size_t n, const mc
     int done[MCS_PATTERN_KIND_COUNT] = {0};
     for (int i = 0; i < MCS_PATTERN_KIND_COUNT; ++i) {
         mcs_pattern_kind kind = (mcs_pattern_kind)i;
-        if (o->kind != NULL ? kind_of(o->kind) != i
+        if (o->kind != NULL ? cli_pattern_kind(o->kind) != i
                             : (imp != NULL && kind == MCS_PATTERN_HOMOGENIZED))
             continue;
         int rc = measure_kind(o, kind, n, f, imp, f2, &rows[i]);
@@ -247,7 +236,7 @@ static int run_kinds(const variance_opts *o, const double *f, size_t n, const mc
         if (done[i])
             print_row(o, mcs_pattern_kind_str((mcs_pattern_kind)i), n, &rows[i]);
     if (o->save != NULL) {
-        cli_acc saved = {MCS_IO_KIND_WELFORD, &rows[kind_of(o->kind)].acc};
+        cli_acc saved = {MCS_IO_KIND_WELFORD, &rows[cli_pattern_kind(o->kind)].acc};
         return cli_acc_write(CMD, o->save, &saved);
     }
     return 0;

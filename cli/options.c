@@ -2,6 +2,8 @@
  * mcspec subcommand. */
 #include "cli.h"
 
+#include "mcspec/pattern.h"
+
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
@@ -199,4 +201,22 @@ double cli_z(double measured, double predicted, double stderr_, double floor)
     if (fabs(d) <= floor)
         return 0.0;
     return d / fmax(stderr_, floor);
+}
+
+int cli_parse_one(const char *cmd, const char *help, const char *help_more, cli_opt *opts,
+                  size_t nopts, int argc, char **argv, const char **arg)
+{
+    const char *args[1] = {NULL};
+    cli_parser p = {cmd, help, opts, nopts, args, 1u, 0u, help_more};
+    int rc = cli_parse(&p, argc, argv);
+    *arg = args[0];
+    return rc;
+}
+
+int cli_pattern_kind(const char *text)
+{
+    for (int i = 0; i < MCS_PATTERN_KIND_COUNT; ++i)
+        if (strcmp(text, mcs_pattern_kind_str((mcs_pattern_kind)i)) == 0)
+            return i;
+    return -1;
 }

@@ -75,43 +75,70 @@ static const char *closed_source(const mcs_pattern *pat)
     return "";
 }
 
-static int theory_power(const char *cmd, const mcs_pattern *pat, cli_prediction *pred)
+/* The exact engine for a pattern: mcs_theory (exact moments) up to
+ * MCS_MAX_COV_N, above it the O(N)-memory mcs_theory_spectrum (every kind,
+ * with or without importance: it copies what it needs from pat). */
+typedef struct {
+    mcs_theory *th;
+    mcs_theory_spectrum *ts;
+    const char *source;
+} exact_engine;
+
+/* Allocates and initialises e's engine for pat: 0 with *st the init's
+ * status, or CLI_EXIT_FAIL when out of memory (said). */
+static int engine_open(const char *cmd, const mcs_pattern *pat, exact_engine *e, mcs_status *st)
 {
-    mcs_theory *th = cli_alloc(cmd, 1, sizeof *th);
-    if (th == NULL)
+    *e = (exact_engine){NULL, NULL, "mcs_theory (exact moments)"};
+    if (pat->n <= (size_t)MCS_MAX_COV_N) {
+        e->th = cli_alloc(cmd, 1, sizeof *e->th);
+        *st = e->th != NULL ? mcs_theory_init(e->th, pat) : MCS_ERR_NULL;
+        return e->th != NULL ? 0 : CLI_EXIT_FAIL;
+    }
+    e->source = "mcs_theory_spectrum (exact, any N)";
+    e->ts = cli_alloc(cmd, 1, sizeof *e->ts);
+    *st = e->ts != NULL ? mcs_theory_spectrum_init(e->ts, pat) : MCS_ERR_NULL;
+    return e->ts != NULL ? 0 : CLI_EXIT_FAIL;
+}
+
+/* <|S_k|^2> at k = 0..N/2 from the engine: mcs_theory one frequency at a
+ * time, mcs_theory_spectrum all N at once into a scratch array. */
+static int engine_power(const char *cmd, const exact_engine *e, const mcs_pattern *pat,
+                        cli_prediction *pred, mcs_status *st)
+{
+    if (e->th != NULL) {
+        for (size_t f = 0; *st == MCS_OK && f < pred->nfreq; ++f)
+            *st = mcs_theory_power(e->th, f, &pred->exact[f]);
+        return 0;
+    }
+    double *power = cli_alloc(cmd, pat->n, sizeof *power);
+    if (power == NULL)
         return CLI_EXIT_FAIL;
-    mcs_status st = mcs_theory_init(th, pat);
-    for (size_t f = 0; st == MCS_OK && f < pred->nfreq; ++f)
-        st = mcs_theory_power(th, f, &pred->exact[f]);
-    free(th);
-    if (st != MCS_OK)
-        return cli_internal(cmd, "exact theory failed: %s", mcs_status_str(st));
-    snprintf(pred->exact_source, sizeof pred->exact_source, "%s", "mcs_theory (exact moments)");
+    *st = mcs_theory_power_spectrum(e->ts, pat->n, power);
+    for (size_t f = 0; *st == MCS_OK && f < pred->nfreq; ++f)
+        pred->exact[f] = power[f];
+    free(power);
     return 0;
 }
 
-/* Above MCS_MAX_COV_N: the O(N)-memory exact spectrum, every kind, with or
- * without importance (it copies what it needs from pat). */
-static int theory_spectrum_power(const char *cmd, const mcs_pattern *pat, cli_prediction *pred)
+static void engine_close(exact_engine *e)
 {
-    mcs_theory_spectrum *ts = cli_alloc(cmd, 1, sizeof *ts);
-    double *power = cli_alloc(cmd, pat->n, sizeof *power);
-    mcs_status st = MCS_ERR_NULL;
-    if (ts != NULL && power != NULL) {
-        st = mcs_theory_spectrum_init(ts, pat);
-        if (st == MCS_OK)
-            st = mcs_theory_power_spectrum(ts, pat->n, power);
-        for (size_t f = 0; st == MCS_OK && f < pred->nfreq; ++f)
-            pred->exact[f] = power[f];
-    }
-    free(ts);
-    free(power);
-    if (ts == NULL || power == NULL)
-        return CLI_EXIT_FAIL;
+    free(e->th);
+    free(e->ts);
+}
+
+static int theory_power(const char *cmd, const mcs_pattern *pat, cli_prediction *pred)
+{
+    exact_engine e;
+    mcs_status st = MCS_OK;
+    int rc = engine_open(cmd, pat, &e, &st);
+    if (rc == 0 && st == MCS_OK)
+        rc = engine_power(cmd, &e, pat, pred, &st);
+    engine_close(&e);
+    if (rc != 0)
+        return rc;
     if (st != MCS_OK)
         return cli_internal(cmd, "exact theory failed: %s", mcs_status_str(st));
-    snprintf(pred->exact_source, sizeof pred->exact_source, "%s",
-             "mcs_theory_spectrum (exact, any N)");
+    snprintf(pred->exact_source, sizeof pred->exact_source, "%s", e.source);
     return 0;
 }
 
@@ -124,36 +151,24 @@ int cli_predict_power(const char *cmd, const mcs_pattern *pat, cli_prediction *p
         pred->closed[f] = closed_form(pat, f);
         pred->exact[f] = (double)NAN;
     }
-    if (pat->n <= (size_t)MCS_MAX_COV_N)
-        return theory_power(cmd, pat, pred);
-    return theory_spectrum_power(cmd, pat, pred);
+    return theory_power(cmd, pat, pred);
 }
 
 int cli_predict_variance(const char *cmd, const mcs_pattern *pat, const double *f, double *out,
                          const char **source)
 {
+    exact_engine e;
+    mcs_status st = MCS_OK;
     *out = (double)NAN;
     *source = "";
-    mcs_status st = MCS_OK;
-    if (pat->n <= (size_t)MCS_MAX_COV_N) {
-        mcs_theory *th = cli_alloc(cmd, 1, sizeof *th);
-        if (th == NULL)
-            return CLI_EXIT_FAIL;
-        st = mcs_theory_init(th, pat);
-        if (st == MCS_OK)
-            st = mcs_theory_variance(th, pat->n, pat->k, f, out);
-        free(th);
-        *source = "mcs_theory (exact moments)";
-    } else {
-        mcs_theory_spectrum *ts = cli_alloc(cmd, 1, sizeof *ts);
-        if (ts == NULL)
-            return CLI_EXIT_FAIL;
-        st = mcs_theory_spectrum_init(ts, pat);
-        if (st == MCS_OK)
-            st = mcs_theory_spectrum_variance(ts, pat->n, pat->k, f, out);
-        free(ts);
-        *source = "mcs_theory_spectrum (exact, any N)";
-    }
+    int rc = engine_open(cmd, pat, &e, &st);
+    if (rc == 0 && st == MCS_OK)
+        st = e.th != NULL ? mcs_theory_variance(e.th, pat->n, pat->k, f, out)
+                          : mcs_theory_spectrum_variance(e.ts, pat->n, pat->k, f, out);
+    engine_close(&e);
+    if (rc != 0)
+        return rc;
+    *source = e.source;
     if (st != MCS_OK)
         return cli_internal(cmd, "exact variance failed: %s", mcs_status_str(st));
     return 0;

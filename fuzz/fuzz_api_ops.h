@@ -338,8 +338,6 @@ static void op_theory_init(void)
     void *th = obj_or_null(which == 0 ? TH : TS);
     const mcs_pattern *pat = obj_or_null(PAT);
     const size_t n = size_any(), len = n <= MAXLEN ? n : 1u;
-    if (skip_known && pat != NULL && pat->k > ((size_t)1 << 20))
-        return; /* item 4: O(K) for the uniform pattern */
     begin(which == 0 ? "mcs_theory_init" : which == 1 ? "mcs_theory_spectrum_init" : "mcs_theory_power_spectrum");
     if (which == 2) {
         double *power = out(dout[0], len, 8);

@@ -114,16 +114,9 @@ static void same_bytes(const char *kind, size_t len, const uint8_t *data, size_t
         finding(kind, "saving the loaded object does not give the input back");
 }
 
-static void check_spectrum(const uint8_t *data, size_t size, mcs_status peek_st)
+static void read_spectrum(void)
 {
-    size_t len = 0u;
     uint64_t count = 0u, units = 0u;
-    memcpy(&spec, &spec_pristine, sizeof spec);
-    mcs_status st = mcs_io_load_spectrum(&spec, size, data);
-    if (!loaded("spectrum", st, peek_st, &spec, &spec_pristine, sizeof spec))
-        return;
-    ok_or_die(mcs_io_save_spectrum(&spec, sizeof saved, saved, &len), "spectrum", "save");
-    same_bytes("spectrum", len, data, size);
     ok_or_die(mcs_spectrum_count(&spec, &count), "spectrum", "count");
     ok_or_die(mcs_spectrum_units(&spec, &units), "spectrum", "units");
     for (size_t f = 0; count >= 1u && f < spec.n; ++f) {
@@ -142,15 +135,8 @@ static void check_spectrum(const uint8_t *data, size_t size, mcs_status peek_st)
     }
 }
 
-static void check_moment(const uint8_t *data, size_t size, mcs_status peek_st)
+static void read_moment(void)
 {
-    size_t len = 0u;
-    memcpy(&mom, &mom_pristine, sizeof mom);
-    mcs_status st = mcs_io_load_moment(&mom, size, data);
-    if (!loaded("moment", st, peek_st, &mom, &mom_pristine, sizeof mom))
-        return;
-    ok_or_die(mcs_io_save_moment(&mom, sizeof saved, saved, &len), "moment", "save");
-    same_bytes("moment", len, data, size);
     if (mom.count == 0u)
         return;
     const size_t n = mom.n;
@@ -187,15 +173,8 @@ static void check_moment(const uint8_t *data, size_t size, mcs_status peek_st)
     }
 }
 
-static void check_autocorr(const uint8_t *data, size_t size, mcs_status peek_st)
+static void read_autocorr(void)
 {
-    size_t len = 0u;
-    memcpy(&ac, &ac_pristine, sizeof ac);
-    mcs_status st = mcs_io_load_autocorr(&ac, size, data);
-    if (!loaded("autocorr", st, peek_st, &ac, &ac_pristine, sizeof ac))
-        return;
-    ok_or_die(mcs_io_save_autocorr(&ac, sizeof saved, saved, &len), "autocorr", "save");
-    same_bytes("autocorr", len, data, size);
     if (ac.count == 0u)
         return;
     const size_t n = ac.n;
@@ -210,15 +189,8 @@ static void check_autocorr(const uint8_t *data, size_t size, mcs_status peek_st)
         finite_or_die(re[f], "autocorr", "power");
 }
 
-static void check_welford(const uint8_t *data, size_t size, mcs_status peek_st)
+static void read_welford(void)
 {
-    size_t len = 0u;
-    memcpy(&wf, &wf_pristine, sizeof wf);
-    mcs_status st = mcs_io_load_welford(&wf, size, data);
-    if (!loaded("welford", st, peek_st, &wf, &wf_pristine, sizeof wf))
-        return;
-    ok_or_die(mcs_io_save_welford(&wf, sizeof saved, saved, &len), "welford", "save");
-    same_bytes("welford", len, data, size);
     double v;
     if (wf.count >= 1u) {
         ok_or_die(mcs_welford_mean(&wf, &v), "welford", "mean");
@@ -245,15 +217,8 @@ static void finite_if_ok(mcs_status st, const double *v, const char *kind, const
         finite_or_die(*v, kind, what);
 }
 
-static void check_pointset(const uint8_t *data, size_t size, mcs_status peek_st)
+static void read_pointset(void)
 {
-    size_t len = 0u;
-    memcpy(&ps, &ps_pristine, sizeof ps);
-    mcs_status st = mcs_io_load_pointset(&ps, size, data);
-    if (!loaded("pointset", st, peek_st, &ps, &ps_pristine, sizeof ps))
-        return;
-    ok_or_die(mcs_io_save_pointset(&ps, sizeof saved, saved, &len), "pointset", "save");
-    same_bytes("pointset", len, data, size);
     for (long f = -(long)ps.freq_max; f <= (long)ps.freq_max; ++f) {
         double v = 0.0;
         finite_if_ok(mcs_pointset_power(&ps, f, &v), &v, "pointset", "power");
@@ -261,15 +226,8 @@ static void check_pointset(const uint8_t *data, size_t size, mcs_status peek_st)
     }
 }
 
-static void check_pointset2d(const uint8_t *data, size_t size, mcs_status peek_st)
+static void read_pointset2d(void)
 {
-    size_t len = 0u;
-    memcpy(&ps2, &ps2_pristine, sizeof ps2);
-    mcs_status st = mcs_io_load_pointset2d(&ps2, size, data);
-    if (!loaded("pointset2d", st, peek_st, &ps2, &ps2_pristine, sizeof ps2))
-        return;
-    ok_or_die(mcs_io_save_pointset2d(&ps2, sizeof saved, saved, &len), "pointset2d", "save");
-    same_bytes("pointset2d", len, data, size);
     const long f = (long)ps2.freq_max;
     for (long fy = -f; fy <= f; ++fy)
         for (long fx = -f; fx <= f; ++fx) {
@@ -286,19 +244,12 @@ static void check_pointset2d(const uint8_t *data, size_t size, mcs_status peek_s
     }
 }
 
-static void check_spectrum2d(const uint8_t *data, size_t size, mcs_status peek_st)
+static void read_spectrum2d(void)
 {
-    size_t len = 0u;
-    memcpy(&sp2, &sp2_pristine, sizeof sp2);
-    mcs_status st = mcs_io_load_spectrum2d(&sp2, size, data);
-    if (!loaded("spectrum2d", st, peek_st, &sp2, &sp2_pristine, sizeof sp2))
-        return;
-    ok_or_die(mcs_io_save_spectrum2d(&sp2, sizeof saved, saved, &len), "spectrum2d", "save");
-    same_bytes("spectrum2d", len, data, size);
     for (size_t k2 = 0; k2 < sp2.n_y; ++k2)
         for (size_t k1 = 0; k1 < sp2.n_x; ++k1) {
             double a = 0.0, b = 0.0;
-            st = mcs_spectrum2d_mean(&sp2, k1, k2, &a, &b);
+            const mcs_status st = mcs_spectrum2d_mean(&sp2, k1, k2, &a, &b);
             finite_if_ok(st, &a, "spectrum2d", "mean re");
             finite_if_ok(st, &b, "spectrum2d", "mean im");
             finite_if_ok(mcs_spectrum2d_power(&sp2, k1, k2, &a), &a, "spectrum2d", "power");
@@ -309,19 +260,66 @@ static void check_spectrum2d(const uint8_t *data, size_t size, mcs_status peek_s
         }
 }
 
+/* Each kind's load and save through one signature (a call through a cast
+ * function pointer would be undefined, and UBSan's -fsanitize=function says so). */
+#define IO_CALLS(name, type)                                                              \
+    static mcs_status load_##name(void *obj, size_t len, const void *buf)                 \
+    {                                                                                     \
+        return mcs_io_load_##name((type *)obj, len, buf);                                 \
+    }                                                                                     \
+    static mcs_status save_##name(const void *obj, size_t cap, void *buf, size_t *len)    \
+    {                                                                                     \
+        return mcs_io_save_##name((const type *)obj, cap, buf, len);                      \
+    }
+IO_CALLS(spectrum, mcs_spectrum)
+IO_CALLS(moment, mcs_moment)
+IO_CALLS(autocorr, mcs_autocorr)
+IO_CALLS(welford, mcs_welford)
+IO_CALLS(pointset, mcs_pointset)
+IO_CALLS(pointset2d, mcs_pointset2d)
+IO_CALLS(spectrum2d, mcs_spectrum2d)
+
+/* A kind: its destination and the pristine copy it is reset to, its load
+ * and save, and the read-outs of a loaded object. */
+typedef struct {
+    const char *name;
+    void *dst;
+    const void *pristine;
+    size_t size;
+    mcs_status (*load)(void *obj, size_t len, const void *buf);
+    mcs_status (*save)(const void *obj, size_t cap, void *buf, size_t *len);
+    void (*read_outs)(void);
+} kind_case;
+
+#define KIND(name, obj) {#name, &obj, &obj##_pristine, sizeof obj, load_##name, save_##name, read_##name}
+
+static const kind_case kinds[] = {
+    KIND(spectrum, spec), KIND(moment, mom),     KIND(autocorr, ac),     KIND(welford, wf),
+    KIND(pointset, ps),   KIND(pointset2d, ps2), KIND(spectrum2d, sp2),
+};
+
+/* The load into a destination holding another accumulator; when it
+ * succeeds, the save that must give the input back, then the read-outs. */
+static void check_kind(const kind_case *k, const uint8_t *data, size_t size, mcs_status peek_st)
+{
+    size_t len = 0u;
+    memcpy(k->dst, k->pristine, k->size);
+    const mcs_status st = k->load(k->dst, size, data);
+    if (!loaded(k->name, st, peek_st, k->dst, k->pristine, k->size))
+        return;
+    ok_or_die(k->save(k->dst, sizeof saved, saved, &len), k->name, "save");
+    same_bytes(k->name, len, data, size);
+    k->read_outs();
+}
+
 static void check_all(const uint8_t *data, size_t size)
 {
     mcs_io_info info;
     const mcs_status peek_st = mcs_io_peek(size, data, &info);
     if (peek_st == MCS_OK && info.size != size)
         finding("peek", "record size is not the input size");
-    check_spectrum(data, size, peek_st);
-    check_moment(data, size, peek_st);
-    check_autocorr(data, size, peek_st);
-    check_welford(data, size, peek_st);
-    check_pointset(data, size, peek_st);
-    check_pointset2d(data, size, peek_st);
-    check_spectrum2d(data, size, peek_st);
+    for (size_t i = 0; i < sizeof kinds / sizeof kinds[0]; ++i)
+        check_kind(&kinds[i], data, size, peek_st);
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)

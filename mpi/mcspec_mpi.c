@@ -74,14 +74,6 @@ typedef struct {
     int64_t status; /* 0, or the exit status every rank returns at once */
 } run_params;
 
-static int kind_of(const char *text)
-{
-    for (int i = 0; i < MCS_PATTERN_KIND_COUNT; ++i)
-        if (strcmp(text, mcs_pattern_kind_str((mcs_pattern_kind)i)) == 0)
-            return i;
-    return -1;
-}
-
 /* Rank 0: the command line into *prm and, with --importance, the weights
  * into *weights. Returns 0, -1 after --help, or an exit status. */
 static int parse(int argc, char **argv, int nranks, run_params *prm, const char **save,
@@ -100,13 +92,13 @@ static int parse(int argc, char **argv, int nranks, run_params *prm, const char 
         {"timing", CLI_OPT_FLAG, &timing, 0, 0, 0},
     };
     const char *args[2] = {NULL, NULL};
-    cli_parser p = {CMD, help, opts, sizeof opts / sizeof opts[0], args, 2, 0, NULL};
+    cli_parser p = {CMD, help, opts, CLI_COUNT(opts), args, CLI_COUNT(args), 0u, NULL};
     int rc = cli_parse(&p, argc, argv);
     if (rc != CLI_PARSED)
-        return rc == CLI_HELP ? -1 : CLI_EXIT_USAGE;
+        return rc;
     if (p.nargs < 1u || strcmp(args[0], "pattern") != 0)
         return cli_fail(CMD, "the only command is pattern: mcspec-mpi pattern KIND ...");
-    if (p.nargs < 2u || kind_of(args[1]) < 0)
+    if (p.nargs < 2u || cli_pattern_kind(args[1]) < 0)
         return cli_fail(CMD, "which pattern? give KIND: random, stratified, homogenized, "
                         "uniform or jitter");
     for (int i = 0; i < 3; ++i)
@@ -119,7 +111,7 @@ static int parse(int argc, char **argv, int nranks, run_params *prm, const char 
                         (unsigned long long)prm->trials, nranks);
     prm->n = n;
     prm->k = k;
-    prm->kind = (uint64_t)kind_of(args[1]);
+    prm->kind = (uint64_t)cli_pattern_kind(args[1]);
     prm->timing = (uint64_t)timing;
     prm->importance = importance != NULL;
     if (importance != NULL) {

@@ -1,14 +1,8 @@
 #include "mcspec/autocorr.h"
-#include "internal.h"
+#include "acc_internal.h"
 
 #include <math.h>
 #include <string.h>
-
-/* Read-outs refuse a stored value above 2^500 in magnitude, the bound of the
- * record format too (io.h): trials never get there (the sums stay below
- * 2^496, see the header's trial limit), and below it every read-out, squares
- * of transforms of N values included, stays finite on any object. */
-#define LIMIT 3.273390607896142e+150 /* 2^500 */
 
 mcs_status mcs_autocorr_init(mcs_autocorr *acc, size_t n)
 {
@@ -88,20 +82,10 @@ mcs_status mcs_autocorr_add_bins(mcs_autocorr *acc, size_t k, const size_t *bins
 {
     mcs_status st = bins == NULL || weights == NULL ? MCS_ERR_NULL : autocorr_check(acc);
     if (st == MCS_OK)
-        st = mcs_check_sparse_(acc->n, k, bins, weights);
+        st = mcs_check_add_sparse_(acc, sizeof *acc, acc->n, acc->count, k, bins, weights,
+                                   MCS_AUTOCORR_MAX_TRIAL);
     if (st != MCS_OK)
         return st;
-    double total = 0.0;
-    for (size_t j = 0; j < k; ++j)
-        total += weights[j];
-    if (!(total <= MCS_AUTOCORR_MAX_TRIAL))
-        return MCS_ERR_MAGNITUDE;
-    st = mcs_check_count_(acc->count, 1u);
-    if (st != MCS_OK)
-        return st;
-    if (mcs_overlap_(bins, mcs_bytes_(k, sizeof *bins), acc, sizeof *acc) ||
-        mcs_overlap_(weights, mcs_bytes_(k, sizeof *weights), acc, sizeof *acc))
-        return MCS_ERR_ALIAS;
     if (k >= acc->n)
         add_dense(acc, k, bins, weights);
     else
@@ -110,29 +94,19 @@ mcs_status mcs_autocorr_add_bins(mcs_autocorr *acc, size_t k, const size_t *bins
     return MCS_OK;
 }
 
-/* dst's (sum, lo) pairs += src's; each src value read before dst's is
- * written, so dst == src doubles them. */
+/* dst's (sum, lo) pairs += src's (dst == src doubles them). */
 static void merge_kahan(size_t len, double *sum, double *lo, const double *src_sum,
                         const double *src_lo)
 {
-    for (size_t j = 0; j < len; ++j) {
-        const double hi = src_sum[j], l = src_lo[j];
-        mcs_kahan_add_(&sum[j], &lo[j], hi);
-        mcs_kahan_add_(&sum[j], &lo[j], -l);
-    }
+    for (size_t j = 0; j < len; ++j)
+        mcs_kahan_merge_(&sum[j], &lo[j], src_sum[j], src_lo[j]);
 }
 
 mcs_status mcs_autocorr_merge(mcs_autocorr *dst, const mcs_autocorr *src)
 {
-    mcs_status st = src == NULL ? MCS_ERR_NULL : autocorr_check(dst);
+    mcs_status st = mcs_check_pair_(autocorr_check(dst), autocorr_check(src));
     if (st == MCS_OK)
-        st = autocorr_check(src);
-    if (st == MCS_OK && dst->n != src->n)
-        st = MCS_ERR_MISMATCH;
-    if (st == MCS_OK)
-        st = mcs_check_count_(dst->count, src->count);
-    if (st == MCS_OK && dst != src && mcs_overlap_(dst, sizeof *dst, src, sizeof *src))
-        st = MCS_ERR_ALIAS;
+        st = mcs_check_merge_(dst, src, sizeof *dst, dst->n == src->n, dst->count, src->count);
     if (st != MCS_OK)
         return st;
     const size_t n = dst->n;
@@ -149,15 +123,6 @@ mcs_status mcs_autocorr_count(const mcs_autocorr *acc, uint64_t *count)
     if (st == MCS_OK)
         *count = acc->count;
     return st;
-}
-
-/* Every x[len] finite and at most lim in magnitude (NaN fails the compare). */
-static int all_within(size_t len, const double *x, double lim)
-{
-    int ok = 1;
-    for (size_t j = 0; j < len; ++j)
-        ok &= fabs(x[j]) <= lim;
-    return ok;
 }
 
 /* The checks of a read-out writing the n-entry arrays out and out2 (out2
@@ -177,9 +142,8 @@ static mcs_status autocorr_readout(const mcs_autocorr *acc, const mcs_dft *plan,
     if (st == MCS_OK && acc->count == 0u)
         st = MCS_ERR_EMPTY;
     if (st == MCS_OK &&
-        (!all_within(n, acc->sum_s, LIMIT) ||
-         !all_within(n / 2u + 1u, acc->sum_lag, LIMIT) || !(acc->sum_dc >= 0.0) ||
-         !(acc->sum_dc <= LIMIT)))
+        (!mcs_all_stored_(n, acc->sum_s) || !mcs_all_stored_(n / 2u + 1u, acc->sum_lag) ||
+         !(acc->sum_dc >= 0.0) || !(acc->sum_dc <= MCS_STORED_LIMIT_)))
         st = MCS_ERR_INVARIANT;
     const size_t bytes = n * sizeof(double);
     const size_t out2_bytes = out2 != NULL ? bytes : 0u;

@@ -99,39 +99,57 @@ static double gradient_variance(const mcs_readout *view, size_t k, const double 
     return var;
 }
 
+/* The read-out's checks of f and g on th, then both within
+ * MCS_ESTIMATE_MAX_ABS (MAGNITUDE): f - g cannot overflow then either. The
+ * caller checks its output first (six arguments at most: see readout.h). */
+static mcs_status check_two(const mcs_theory *th, size_t n, size_t k, const double *f,
+                            const double *g, mcs_readout *v)
+{
+    const mcs_readout_source src = {th, mcs_readout_open_theory};
+    mcs_status st = mcs_readout_check_integrands(&src, n, k, f, g, v);
+    if (st == MCS_OK)
+        st = mcs_check_integrand_(n, f);
+    return st == MCS_OK ? mcs_check_integrand_(n, g) : st;
+}
+
 mcs_status mcs_eq2_uncorrelated_variance(const mcs_theory *th, size_t n, size_t k,
                                          const double *f, const double *g, double *out)
 {
-    const mcs_readout_source src = {th, mcs_readout_open_theory};
     mcs_readout v;
-    mcs_status st = out == NULL ? MCS_ERR_NULL : mcs_readout_check_integrands(&src, n, k, f, g, &v);
+    mcs_status st = out == NULL ? MCS_ERR_NULL : check_two(th, n, k, f, g, &v);
     return st == MCS_OK ? mcs_set_(out, gradient_variance(&v, k, f, g, 0)) : st;
 }
 
 mcs_status mcs_eq4_correlated_variance(const mcs_theory *th, size_t n, size_t k,
                                        const double *f, const double *g, double *out)
 {
-    const mcs_readout_source src = {th, mcs_readout_open_theory};
     mcs_readout v;
-    mcs_status st = out == NULL ? MCS_ERR_NULL : mcs_readout_check_integrands(&src, n, k, f, g, &v);
-    for (size_t b = 0; st == MCS_OK && b < n; ++b)
-        if (!isfinite(f[b] - g[b])) /* f - g can overflow */
-            st = MCS_ERR_NOT_FINITE;
+    mcs_status st = out == NULL ? MCS_ERR_NULL : check_two(th, n, k, f, g, &v);
     return st == MCS_OK ? mcs_set_(out, gradient_variance(&v, k, f, g, 1)) : st;
 }
 
 /* ---- Section 2 ------------------------------------------------------------ */
 
 /* An integrand's closed form: outputs given (else NULL), n in [1, cap],
- * k >= 1, f[n] finite. */
+ * k >= 1, f[n] finite and within MCS_ESTIMATE_MAX_ABS. */
 static mcs_status check_f(int outputs, size_t n, size_t cap, size_t k, const double *f)
 {
     if (!outputs)
         return MCS_ERR_NULL;
     mcs_status st = mcs_eq_check_n_k(n, cap, k);
-    if (st == MCS_OK && !mcs_all_finite_(n, f))
-        st = MCS_ERR_NOT_FINITE;
-    return st;
+    return st == MCS_OK ? mcs_check_integrand_(n, f) : st;
+}
+
+/* A power spectrum for eq. 14: power[1..n) finite (NOT_FINITE) and within
+ * MCS_EQ_MAX_POWER (MAGNITUDE). */
+static mcs_status check_power(size_t n, const double *power)
+{
+    if (!mcs_all_finite_(n - 1u, power + 1))
+        return MCS_ERR_NOT_FINITE;
+    for (size_t b = 1; b < n; ++b)
+        if (!(fabs(power[b]) <= MCS_EQ_MAX_POWER))
+            return MCS_ERR_MAGNITUDE;
+    return MCS_OK;
 }
 
 mcs_status mcs_eq11_unbiased_mean(size_t n, const double *f, double *out)
@@ -170,8 +188,9 @@ static double eq13_sum(const mcs_readout *view, size_t k, const double *f)
 mcs_status mcs_eq13_variance(const mcs_theory *th, size_t n, size_t k, const double *f,
                              double *out)
 {
-    const mcs_readout_source src = {th, mcs_readout_open_theory};
-    return mcs_readout_integrand_value(&src, n, k, f, eq13_sum, out);
+    mcs_readout v;
+    mcs_status st = out == NULL ? MCS_ERR_NULL : check_two(th, n, k, f, f, &v);
+    return st == MCS_OK ? mcs_set_(out, eq13_sum(&v, k, f)) : st;
 }
 
 mcs_status mcs_eq14_variance(size_t n, size_t k, const double *f, const double *power,
@@ -179,8 +198,8 @@ mcs_status mcs_eq14_variance(size_t n, size_t k, const double *f, const double *
 {
     int outputs = f != NULL && power != NULL && out != NULL;
     mcs_status st = check_f(outputs, n, (size_t)MCS_MAX_N, k, f);
-    if (st == MCS_OK && !mcs_all_finite_(n - 1u, power + 1))
-        st = MCS_ERR_NOT_FINITE;
+    if (st == MCS_OK)
+        st = check_power(n, power);
     if (st != MCS_OK)
         return st;
     double sum = 0.0;
@@ -296,6 +315,7 @@ mcs_status mcs_eq30_stratified_delta_printed(size_t n, size_t k, size_t freq_k, 
     mcs_status st = mcs_eq_check_pair(re != NULL && im != NULL, n, k, freq_k, freq_l);
     if (st == MCS_OK && (freq_k == 0u || freq_l == 0u)) /* the ratios are 0/0 there */
         st = MCS_ERR_DOMAIN;
+    st = mcs_eq_check_complex(st, re, im);
     if (st == MCS_OK)
         mcs_eq_delta_printed(n, k, freq_k, freq_l, re, im);
     return st;
@@ -320,6 +340,7 @@ mcs_status mcs_eq30_stratified_delta_corrected(size_t n, size_t k, size_t freq_k
                                                size_t freq_l, double *re, double *im)
 {
     mcs_status st = mcs_eq_check_pair(re != NULL && im != NULL, n, k, freq_k, freq_l);
+    st = mcs_eq_check_complex(st, re, im);
     if (st == MCS_OK)
         eq30_corrected(n, k, freq_k, freq_l, re, im);
     return st;
@@ -329,6 +350,7 @@ mcs_status mcs_eq30_stratified_cross(size_t n, size_t k, size_t freq_k, size_t f
                                      double *re, double *im)
 {
     mcs_status st = mcs_eq_check_pair(re != NULL && im != NULL, n, k, freq_k, freq_l);
+    st = mcs_eq_check_complex(st, re, im);
     if (st != MCS_OK)
         return st;
     double dr, di;
@@ -406,6 +428,7 @@ mcs_status mcs_eq34_uniform_spectrum(size_t n, size_t k, size_t freq, double *re
     mcs_status st = check_freq(re != NULL && im != NULL, n, k, freq, 0, 1);
     if (st == MCS_OK && (n / k) % 2u != 0u) /* (alpha + 1/2) N/K must be a whole bin */
         st = MCS_ERR_DOMAIN;
+    st = mcs_eq_check_complex(st, re, im);
     if (st != MCS_OK)
         return st;
     *re = 0.0;
@@ -419,7 +442,8 @@ mcs_status mcs_eq34_uniform_spectrum(size_t n, size_t k, size_t freq, double *re
 
 mcs_status mcs_eq35_jitter_mean(size_t n, size_t k, size_t freq, double *re, double *im)
 {
-    mcs_status st = check_freq(re != NULL && im != NULL, n, k, freq, 0, 1);
+    mcs_status st = mcs_eq_check_complex(check_freq(re != NULL && im != NULL, n, k, freq, 0, 1),
+                                         re, im);
     if (st != MCS_OK)
         return st;
     *re = freq == 0u ? (double)k / sqrt((double)n) : 0.0;

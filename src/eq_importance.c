@@ -5,6 +5,7 @@
 #include "importance_internal.h"
 #include "internal.h"
 
+#include <float.h>
 #include <math.h>
 
 /* imp NULL is "no importance function": the importance formulas are not
@@ -23,6 +24,24 @@ static mcs_status check_imp(int outputs, const mcs_importance *imp, size_t k)
     return MCS_OK;
 }
 
+/* Writes a result formed from imp. It is finite for every object
+ * mcs_importance_init makes (1/p_n < 2^32, H >= 2^-32; f within its bound),
+ * so a value that is not comes from stored values init never makes (a
+ * zeroed p_n, say): MCS_ERR_INVARIANT, nothing written. */
+static mcs_status set_from_imp(double *out, double v)
+{
+    return isfinite(v) ? mcs_set_(out, v) : MCS_ERR_INVARIANT;
+}
+
+static mcs_status set_complex_from_imp(double *re, double *im, double r, double i)
+{
+    if (!(isfinite(r) && isfinite(i)))
+        return MCS_ERR_INVARIANT;
+    *re = r;
+    *im = i;
+    return MCS_OK;
+}
+
 /* check_imp, then freq < N (FREQ_RANGE) and, as asked, freq >= 1 and K
  * dividing N (DOMAIN). */
 static mcs_status check_imp_freq(int outputs, const mcs_importance *imp, size_t k, size_t freq,
@@ -38,16 +57,16 @@ static mcs_status check_imp_freq(int outputs, const mcs_importance *imp, size_t 
     return MCS_OK;
 }
 
-/* check_imp for the forms of f[imp->n] (finite), imp->n <= cap (N_RANGE). */
+/* check_imp for the forms of f[imp->n] (finite, within MCS_ESTIMATE_MAX_ABS),
+ * imp->n <= cap (N_RANGE). With 1/p_n < 2^32 (MCS_IMPORTANCE_MIN_G) every
+ * F_k* F_l Q_{k-l} and p (f/p - fbar)^2 stays below 2^300. */
 static mcs_status check_imp_f(const mcs_importance *imp, size_t k, const double *f,
                               const double *out, size_t cap)
 {
     mcs_status st = check_imp(f != NULL && out != NULL, imp, k);
     if (st == MCS_OK && imp->n > cap)
         st = MCS_ERR_N_RANGE;
-    if (st == MCS_OK && !mcs_all_finite_(imp->n, f))
-        st = MCS_ERR_NOT_FINITE;
-    return st;
+    return st == MCS_OK ? mcs_check_integrand_(imp->n, f) : st;
 }
 
 mcs_status mcs_eq41_importance_second(const mcs_importance *imp, size_t k, size_t bin_m,
@@ -62,8 +81,7 @@ mcs_status mcs_eq41_importance_second(const mcs_importance *imp, size_t k, size_
     double v = (kd * kd - kd) / (nd * nd);
     if (bin_m == bin_n)
         v += kd / nd / imp->p[bin_n];
-    *out = v;
-    return MCS_OK;
+    return set_from_imp(out, v);
 }
 
 /* (K/N) N^{-1/2} Q_{k-l}, the importance-sampled random cross spectrum. */
@@ -86,16 +104,19 @@ mcs_status mcs_eq43_importance_cross(const mcs_importance *imp, size_t k, size_t
         st = MCS_ERR_FREQ_RANGE;
     if (st == MCS_OK && freq_k == 0u && freq_l == 0u) /* the constant (K^2 - K)/N^2 adds there */
         st = MCS_ERR_DOMAIN;
-    if (st == MCS_OK)
-        q_term(imp, k, freq_k, freq_l, re, im);
-    return st;
+    st = mcs_eq_check_complex(st, re, im);
+    if (st != MCS_OK)
+        return st;
+    double qr, qi;
+    q_term(imp, k, freq_k, freq_l, &qr, &qi);
+    return set_complex_from_imp(re, im, qr, qi);
 }
 
 mcs_status mcs_eq45_importance_power(const mcs_importance *imp, size_t k, size_t freq,
                                      double *out)
 {
     mcs_status st = check_imp_freq(out != NULL, imp, k, freq, 1, 0);
-    return st == MCS_OK ? mcs_set_(out, (double)k / (double)imp->n / imp->harmonic_mean) : st;
+    return st == MCS_OK ? set_from_imp(out, (double)k / (double)imp->n / imp->harmonic_mean) : st;
 }
 
 mcs_status mcs_eq46_importance_power0(const mcs_importance *imp, size_t k, double *out)
@@ -104,8 +125,7 @@ mcs_status mcs_eq46_importance_power0(const mcs_importance *imp, size_t k, doubl
     if (st != MCS_OK)
         return st;
     double kn = (double)k / (double)imp->n;
-    *out = (double)k * kn + kn * (1.0 / imp->harmonic_mean - 1.0);
-    return MCS_OK;
+    return set_from_imp(out, (double)k * kn + kn * (1.0 / imp->harmonic_mean - 1.0));
 }
 
 mcs_status mcs_eq49_importance_stratified_cross(const mcs_importance *imp, size_t k,
@@ -117,14 +137,13 @@ mcs_status mcs_eq49_importance_stratified_cross(const mcs_importance *imp, size_
         st = mcs_eq_check_pair(1, imp->n, k, freq_k, freq_l);
     if (st == MCS_OK && (freq_k == 0u || freq_l == 0u))
         st = MCS_ERR_DOMAIN;
+    st = mcs_eq_check_complex(st, re, im);
     if (st != MCS_OK)
         return st;
     double qr, qi, dr, di;
     q_term(imp, k, freq_k, freq_l, &qr, &qi);
     mcs_eq_delta_printed(imp->n, k, freq_k, freq_l, &dr, &di);
-    *re = qr + dr;
-    *im = qi + di;
-    return MCS_OK;
+    return set_complex_from_imp(re, im, qr + dr, qi + di);
 }
 
 mcs_status mcs_eq50_importance_stratified_power(const mcs_importance *imp, size_t k, size_t freq,
@@ -134,8 +153,7 @@ mcs_status mcs_eq50_importance_stratified_power(const mcs_importance *imp, size_
     if (st != MCS_OK)
         return st;
     double kn = (double)k / (double)imp->n;
-    *out = kn * (1.0 / imp->harmonic_mean - mcs_eq_sinc2(imp->n, k, freq));
-    return MCS_OK;
+    return set_from_imp(out, kn * (1.0 / imp->harmonic_mean - mcs_eq_sinc2(imp->n, k, freq)));
 }
 
 /* (1/K) N^{-3/2} Re sum_{k >= k0, l >= l0} F_k* F_l Q_{k-l}: F of f, Q of 1/p,
@@ -188,6 +206,27 @@ static double fq_variance_parseval(const mcs_importance *imp, size_t k, const do
     return sum / ((double)n * (double)k);
 }
 
+/* Eq. 52 printed and corrected are, by Parseval, (1/K)(1/N) sum_n q_n
+ * (f_n - fbar)^2 and (1/K)(1/N) sum_n p_n (f_n q_n - fbar)^2 (see above):
+ * sums of squares, so never negative, and a negative value of the term-by-
+ * term double sum is its rounding. That rounding is below (N^2 + 4N + 16) eps
+ * times the sum of the terms' magnitudes (three N-term transforms per term,
+ * then N^2 terms), which |F_k| <= N^{-1/2} sum |f| and |Q_j| <= N^{1/2} / H
+ * bound by (sum_n |f_n|)^2 / (H K). A value in [-bound, 0) reads 0; one below
+ * is returned as it is (no rounding makes it). Eq. 55 can be negative. */
+static double nonnegative_form(const mcs_importance *imp, size_t k, const double *f, double v)
+{
+    if (!(v < 0.0))
+        return v;
+    const double nd = (double)imp->n;
+    double abs_sum = 0.0;
+    for (size_t b = 0; b < imp->n; ++b)
+        abs_sum += fabs(f[b]);
+    const double bound = (nd * nd + 4.0 * nd + 16.0) * DBL_EPSILON * abs_sum * abs_sum /
+                         (imp->harmonic_mean * (double)k);
+    return -v <= bound ? 0.0 : v;
+}
+
 /* The double sums of eq. 52 as printed and corrected and eq. 55, checked:
  * (1/K) N^{-3/2} sum_{k >= k0, l >= l0} F_k* F_l Q_{k-l} (less |F_0|^2/N K
  * when k0 = 0, eq. 52 corrected), term by term up to MCS_MAX_COV_N. */
@@ -198,15 +237,18 @@ static mcs_status fq_form(const mcs_importance *imp, size_t k, const double *f, 
     if (st != MCS_OK)
         return st;
     if (imp->n > (size_t)MCS_MAX_COV_N)
-        return mcs_set_(out, fq_variance_parseval(imp, k, f, k0, l0));
-    if (k0 != 0u)
-        return mcs_set_(out, fq_variance(imp, k, f, k0, l0));
+        return set_from_imp(out, fq_variance_parseval(imp, k, f, k0, l0));
+    if (k0 != 0u) {
+        const double v = fq_variance(imp, k, f, k0, l0);
+        return set_from_imp(out, l0 != 0u ? nonnegative_form(imp, k, f, v) : v);
+    }
     const double nd = (double)imp->n;
     double sum = 0.0;
     for (size_t b = 0; b < imp->n; ++b)
         sum += f[b];
     const double f0_sq = sum * sum / nd; /* |F_0|^2 */
-    return mcs_set_(out, (fq_variance(imp, 1u, f, 0u, 0u) - f0_sq / nd) / (double)k);
+    const double v = (fq_variance(imp, 1u, f, 0u, 0u) - f0_sq / nd) / (double)k;
+    return set_from_imp(out, nonnegative_form(imp, k, f, v));
 }
 
 mcs_status mcs_eq52_variance_printed(const mcs_importance *imp, size_t k, const double *f,
@@ -233,8 +275,7 @@ mcs_status mcs_eq58_bound_printed(const mcs_importance *imp, size_t k, const dou
     mcs_status st = check_imp_f(imp, k, f, out, (size_t)MCS_MAX_N);
     if (st != MCS_OK) /* sum_{k >= 1} |F_k|^2 needs the DFT of f */
         return st;
-    *out = mcs_eq_ac_energy(imp->n, f) / imp->harmonic_mean / (double)k;
-    return MCS_OK;
+    return set_from_imp(out, mcs_eq_ac_energy(imp->n, f) / imp->harmonic_mean / (double)k);
 }
 
 mcs_status mcs_eq58_bound_corrected(const mcs_importance *imp, size_t k, const double *f,
@@ -246,6 +287,6 @@ mcs_status mcs_eq58_bound_corrected(const mcs_importance *imp, size_t k, const d
     double energy = 0.0; /* sum_{all n} |F_n|^2 = sum f_n^2 (Parseval, eq. 7 is unitary) */
     for (size_t b = 0; b < imp->n; ++b)
         energy += f[b] * f[b];
-    *out = energy * (1.0 / imp->harmonic_mean - 1.0 / (double)imp->n) / (double)k;
-    return MCS_OK;
+    return set_from_imp(out, energy * (1.0 / imp->harmonic_mean - 1.0 / (double)imp->n) /
+                                 (double)k);
 }

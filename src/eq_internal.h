@@ -4,6 +4,7 @@
 #define MCSPEC_EQ_INTERNAL_H
 
 #include <stddef.h>
+#include "internal.h"
 #include "mcspec/status.h"
 
 #define MCS_PI 3.14159265358979323846
@@ -18,6 +19,16 @@ int mcs_eq_k_divides_n(size_t n, size_t k);
  * check_n_k at MCS_MAX_N, both frequencies < n (FREQ_RANGE), K dividing N
  * (DOMAIN). */
 mcs_status mcs_eq_check_pair(int outputs, size_t n, size_t k, size_t freq_k, size_t freq_l);
+
+/* A complex result's last check: st if it is an error, else MCS_ERR_ALIAS
+ * when re and im overlap (one double cannot hold both parts), else MCS_OK.
+ * Inline, so the static analyser sees that an error st covers NULL outputs. */
+static inline mcs_status mcs_eq_check_complex(mcs_status st, const double *re, const double *im)
+{
+    if (st == MCS_OK && mcs_overlap_(re, sizeof *re, im, sizeof *im))
+        return MCS_ERR_ALIAS;
+    return st;
+}
 
 /* Eq. 7 at one frequency with the twiddle computed per term from the reduced
  * index (freq t mod N): no table, so any N. */

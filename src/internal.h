@@ -8,6 +8,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "mcspec/estimate.h"
 #include "mcspec/pattern.h"
 #include "mcspec/status.h"
 
@@ -126,6 +127,20 @@ static inline int mcs_all_finite_(size_t n, const double *x)
     for (; j < n; ++j)
         z0 += x[j] * 0.0;
     return (z0 + z1) + (z2 + z3) == 0.0;
+}
+
+/* An integrand f[n] of a closed form (eq.h) or an exact spectrum (theory.h):
+ * finite (NOT_FINITE), |f_n| <= MCS_ESTIMATE_MAX_ABS = 2^110 (MAGNITUDE), the
+ * largest term the estimator takes. With moments below 2^124 (K <= 2^30
+ * samples of weight < 2^32) no square or sum of products then passes 2^400. */
+static inline mcs_status mcs_check_integrand_(size_t n, const double *f)
+{
+    if (!mcs_all_finite_(n, f))
+        return MCS_ERR_NOT_FINITE;
+    for (size_t j = 0; j < n; ++j)
+        if (!(fabs(f[j]) <= MCS_ESTIMATE_MAX_ABS))
+            return MCS_ERR_MAGNITUDE;
+    return MCS_OK;
 }
 
 /* Bytes of count elements of elem bytes each, saturating at SIZE_MAX (an array

@@ -43,7 +43,7 @@ static uint64_t get_le(const uint8_t *p, size_t bytes)
     return v;
 }
 
-double mcs_io_get_f64(const uint8_t *payload, size_t i)
+static double get_f64(const uint8_t *payload, size_t i)
 {
     const uint64_t bits = get_le(payload + 8u * i, 8u);
     double v;
@@ -183,93 +183,180 @@ mcs_status mcs_io_peek(size_t len, const void *buf, mcs_io_info *info)
     return MCS_OK;
 }
 
-void mcs_io_layout_start(io_layout *lay, uint32_t kind, uint32_t shape_len,
-                         const uint64_t *shape)
+/* ---- the field walker: one pass over a kind's payload, in payload order ---- */
+
+/* What one pass does with each value: read from the object being saved
+ * (payload == NULL) or from the payload; then written to out, stored into
+ * the object, or (neither) checked against the field's rules. */
+typedef struct {
+    const io_values *values;
+    uint64_t count;
+    uint8_t *out;
+    void *into;
+    size_t index;
+    int not_finite, broken;
+} io_pass;
+
+static double read_value(const void *obj, const io_field *field, size_t at)
 {
-    memset(lay, 0, sizeof *lay);
-    lay->kind = kind;
-    lay->shape_len = shape_len;
-    for (size_t i = 0; i < shape_len; ++i)
-        lay->shape[i] = shape[i];
+    const unsigned char *p = (const unsigned char *)obj + at;
+    if (field->as == IO_AS_COUNT) {
+        uint64_t u;
+        memcpy(&u, p, sizeof u);
+        return (double)u;
+    }
+    double v;
+    memcpy(&v, p, sizeof v);
+    return v;
 }
 
-void mcs_io_add_range(io_layout *lay, size_t len, unsigned rules)
+/* Stores v at byte offset at, and at the mirrored place of an upper
+ * triangle's value (row m, column c of an n x n array). */
+static void store_value(void *obj, const io_field *field, size_t n, size_t at, double v)
 {
-    io_range *r = &lay->ranges[lay->nranges++];
-    r->first = lay->payload_len;
-    r->len = len;
-    r->rules = rules;
-    lay->payload_len += len;
-}
-
-void mcs_io_put_array(io_sink *sink, const double *a, size_t len)
-{
-    for (size_t i = 0; i < len; ++i)
-        mcs_io_sink_put(sink, a[i]);
-}
-
-void mcs_io_get_array(double *a, const uint8_t *payload, size_t first, size_t len)
-{
-    for (size_t i = 0; i < len; ++i)
-        a[i] = mcs_io_get_f64(payload, first + i);
-}
-
-void mcs_io_sink_put(io_sink *sink, double v)
-{
-    if (sink->out != NULL) {
-        uint64_t bits;
-        memcpy(&bits, &v, sizeof bits);
-        put_le(sink->out + 8u * sink->index, bits, 8u);
-        sink->index += 1u;
+    unsigned char *p = (unsigned char *)obj;
+    if (field->as == IO_AS_COUNT) {
+        const uint64_t u = (uint64_t)v;
+        memcpy(p + at, &u, sizeof u);
         return;
     }
-    const io_layout *lay = sink->lay;
-    while (sink->range + 1u < lay->nranges &&
-           sink->index >= lay->ranges[sink->range].first + lay->ranges[sink->range].len)
-        sink->range += 1u;
-    const unsigned rules = lay->ranges[sink->range].rules;
+    memcpy(p + at, &v, sizeof v);
+    if (field->as == IO_AS_UPPER) {
+        const size_t mc = (at - field->offset) / sizeof(double), m = mc / n, c = mc % n;
+        memcpy(p + field->offset + sizeof(double) * (c * n + m), &v, sizeof v);
+    }
+}
+
+static void check_value(io_pass *pass, double v, unsigned rules)
+{
     if (!isfinite(v))
-        sink->not_finite = 1;
-    else if (fabs(v) > MCS_IO_MAX_MAGNITUDE || (sink->count == 0u && v != 0.0) ||
+        pass->not_finite = 1;
+    else if (fabs(v) > MCS_IO_MAX_MAGNITUDE || (pass->count == 0u && v != 0.0) ||
              ((rules & IO_RULE_NONNEG) && v < 0.0) ||
-             ((rules & IO_RULE_SPREAD) && sink->count < 2u && v != 0.0))
-        sink->broken = 1;
-    sink->index += 1u;
+             ((rules & IO_RULE_SPREAD) && pass->count < 2u && v != 0.0))
+        pass->broken = 1;
+}
+
+static void visit(io_pass *pass, const io_field *field, size_t at)
+{
+    const io_values *values = pass->values;
+    const double v = values->payload != NULL ? get_f64(values->payload, pass->index)
+                                              : read_value(values->obj, field, at);
+    if (pass->out != NULL) {
+        uint64_t bits;
+        memcpy(&bits, &v, sizeof bits);
+        put_le(pass->out + 8u * pass->index, bits, 8u);
+    } else if (pass->into != NULL) {
+        store_value(pass->into, field, values->size[field->len], at, v);
+    } else {
+        check_value(pass, v, field->rules);
+    }
+    pass->index += 1u;
+}
+
+/* Every payload value in order, with the byte offset of its place in the
+ * object. */
+static void walk(io_pass *pass)
+{
+    const io_kind *kind = pass->values->kind;
+    const size_t *size = pass->values->size;
+    for (size_t f = 0; f < kind->nfields; ++f) {
+        const io_field *field = &kind->fields[f];
+        const size_t len = size[field->len], stride = size[field->stride];
+        const size_t rows = field->as == IO_AS_UPPER ? len : size[field->rows];
+        /* an upper triangle's row r starts at column r */
+        for (size_t r = 0; r < rows; ++r)
+            for (size_t c = field->as == IO_AS_UPPER ? r : 0u; c < len; ++c)
+                visit(pass, field, field->offset + sizeof(double) * (r * stride + c));
+    }
+}
+
+static size_t field_values(const io_field *field, const size_t *size)
+{
+    const size_t len = size[field->len];
+    return field->as == IO_AS_UPPER ? len * (len + 1u) / 2u : size[field->rows] * len;
+}
+
+static size_t payload_len(const io_kind *kind, const size_t *size)
+{
+    size_t len = 0u;
+    for (size_t f = 0; f < kind->nfields; ++f)
+        len += field_values(&kind->fields[f], size);
+    return len;
+}
+
+double mcs_io_value(const io_values *values, size_t i)
+{
+    if (values->payload != NULL)
+        return get_f64(values->payload, i);
+    const io_kind *kind = values->kind;
+    for (size_t f = 0; f < kind->nfields; ++f) {
+        const io_field *field = &kind->fields[f];
+        const size_t in_field = field_values(field, values->size);
+        if (i >= in_field) {
+            i -= in_field;
+            continue;
+        }
+        const size_t len = values->size[field->len];
+        size_t r = i / len, c = i % len;
+        if (field->as == IO_AS_UPPER) /* row r of the triangle holds len - r values from column r */
+            for (r = 0u, c = i; c >= len - r; ++r)
+                c -= len - r;
+        const size_t col = field->as == IO_AS_UPPER ? r + c : c;
+        return read_value(values->obj, field,
+                          field->offset + sizeof(double) * (r * values->size[field->stride] + col));
+    }
+    return 0.0; /* i beyond the payload: not asked for */
 }
 
 /* The verdict of a checking pass: non-finite values first (they are what an
- * overflow leaves), then broken invariants, then the count itself. */
-static mcs_status sink_status(const io_sink *sink)
+ * overflow leaves), then broken rules or invariants, then the count itself. */
+static mcs_status check_values(const io_values *values, uint64_t count)
 {
-    if (sink->not_finite)
+    io_pass pass = {values, count, NULL, NULL, 0u, 0, 0};
+    walk(&pass);
+    if (pass.not_finite)
         return MCS_ERR_NOT_FINITE;
-    if (sink->broken || sink->count > MCS_IO_MAX_COUNT)
+    if (pass.broken || count > MCS_IO_MAX_COUNT)
+        return MCS_ERR_INVARIANT;
+    if (values->kind->valid != NULL && !values->kind->valid(values, count))
         return MCS_ERR_INVARIANT;
     return MCS_OK;
 }
 
-static void write_header(const io_layout *lay, uint64_t count, uint8_t *p)
+static void write_header(const io_kind *kind, const uint64_t *shape, uint64_t count,
+                         size_t payload, uint8_t *p)
 {
     memcpy(p, io_magic, sizeof io_magic);
     put_le(p + OFF_VERSION, MCS_IO_VERSION, 2u);
-    put_le(p + OFF_KIND, lay->kind, 2u);
-    put_le(p + OFF_SHAPE_LEN, lay->shape_len, 4u);
+    put_le(p + OFF_KIND, kind->kind, 2u);
+    put_le(p + OFF_SHAPE_LEN, kind->shape_len, 4u);
     put_le(p + OFF_COUNT, count, 8u);
-    put_le(p + OFF_PAYLOAD_LEN, lay->payload_len, 8u);
-    for (size_t i = 0; i < lay->shape_len; ++i)
-        put_le(p + MCS_IO_HEADER_BYTES + 8u * i, lay->shape[i], 8u);
+    put_le(p + OFF_PAYLOAD_LEN, payload, 8u);
+    for (size_t i = 0; i < kind->shape_len; ++i)
+        put_le(p + MCS_IO_HEADER_BYTES + 8u * i, shape[i], 8u);
 }
 
-mcs_status mcs_io_save_record(const io_layout *lay, const io_source *src, size_t cap, void *buf,
-                   size_t *len)
+mcs_status mcs_io_save(const io_kind *kind, const void *obj, size_t cap, void *buf, size_t *len)
 {
-    const size_t head = head_bytes(lay->shape_len);
-    const size_t size = head + 8u * lay->payload_len + MCS_IO_CRC_BYTES;
-    io_sink sink = {lay, src->count, NULL, 0u, 0u, 0, 0};
-    src->emit(src->obj, &sink);
-    mcs_status st = sink_status(&sink);
+    uint64_t count, shape[MCS_IO_MAX_SHAPE] = {0u};
+    io_values values = {kind, {1u}, obj, NULL};
+    if (obj == NULL || len == NULL)
+        return MCS_ERR_NULL;
+    mcs_status st = kind->count(obj, &count); /* MCS_ERR_UNINIT */
     if (st != MCS_OK)
         return st;
+    for (size_t i = 0; i < kind->shape_len; ++i) {
+        size_t word;
+        memcpy(&word, (const unsigned char *)obj + kind->shape_at[i], sizeof word);
+        shape[i] = word;
+    }
+    (void)kind->sizes(shape, values.size); /* cannot fail: an initialised object's shape */
+    st = check_values(&values, count);
+    if (st != MCS_OK)
+        return st;
+    const size_t head = head_bytes(kind->shape_len), payload = payload_len(kind, values.size);
+    const size_t size = head + 8u * payload + MCS_IO_CRC_BYTES;
     if (buf == NULL) {
         *len = size;
         return MCS_OK;
@@ -277,18 +364,20 @@ mcs_status mcs_io_save_record(const io_layout *lay, const io_source *src, size_t
     if (cap < size)
         return MCS_ERR_SPACE;
     uint8_t *p = (uint8_t *)buf;
-    write_header(lay, src->count, p);
-    io_sink writer = {lay, src->count, p + head, 0u, 0u, 0, 0};
-    src->emit(src->obj, &writer);
+    write_header(kind, shape, count, payload, p);
+    io_pass writer = {&values, count, p + head, NULL, 0u, 0, 0};
+    walk(&writer);
     put_le(p + size - MCS_IO_CRC_BYTES, crc32_of(p, size - MCS_IO_CRC_BYTES), MCS_IO_CRC_BYTES);
     *len = size;
     return MCS_OK;
 }
 
-mcs_status mcs_io_load_check(const io_kind *kind, size_t len, const void *buf, io_record *rec)
+mcs_status mcs_io_load(const io_kind *kind, void *obj, size_t len, const void *buf)
 {
     mcs_io_info info;
-    io_layout lay;
+    io_values values = {kind, {1u}, NULL, NULL};
+    if (obj == NULL || buf == NULL)
+        return MCS_ERR_NULL;
     mcs_status st = frame(len, (const uint8_t *)buf, &info);
     if (st != MCS_OK)
         return st;
@@ -296,20 +385,20 @@ mcs_status mcs_io_load_check(const io_kind *kind, size_t len, const void *buf, i
         return MCS_ERR_KIND;
     if (info.shape_len != kind->shape_len)
         return MCS_ERR_FORMAT;
-    st = kind->layout(info.shape, &lay);
+    st = kind->sizes(info.shape, values.size);
     if (st != MCS_OK)
         return st;
-    if (info.payload_len != (uint64_t)lay.payload_len)
+    if (info.payload_len != (uint64_t)payload_len(kind, values.size))
         return MCS_ERR_FORMAT;
-    const uint8_t *pl = (const uint8_t *)buf + head_bytes(kind->shape_len);
-    io_sink sink = {&lay, info.count, NULL, 0u, 0u, 0, 0};
-    for (size_t i = 0; i < lay.payload_len; ++i)
-        mcs_io_sink_put(&sink, mcs_io_get_f64(pl, i));
-    st = sink_status(&sink);
+    values.payload = (const uint8_t *)buf + head_bytes(kind->shape_len);
+    st = check_values(&values, info.count);
     if (st != MCS_OK)
         return st;
-    rec->lay = lay;
-    rec->payload = pl;
-    rec->count = info.count;
+    st = kind->init(obj, info.shape); /* leaves obj as it was on error */
+    if (st != MCS_OK)
+        return st;
+    io_pass store = {&values, info.count, NULL, obj, 0u, 0, 0};
+    walk(&store);
+    memcpy((unsigned char *)obj + kind->count_at, &info.count, sizeof info.count);
     return MCS_OK;
 }

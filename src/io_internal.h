@@ -1,10 +1,11 @@
-/* Private to io.c and io_kinds.c: the record codec shared by every kind.
+/* Private to the io sources: the record codec shared by every kind.
  *
- * A kind describes its payload as a layout: the payload length for its
- * shape and a few contiguous ranges, each with the rules its values obey
- * (io.c checks them the same way on save and on load). Its emit function
- * feeds the object's values, in payload order, to a sink that either checks
- * them or writes them; its load code decodes them in the same order. */
+ * A kind describes its payload as a table of fields, in payload order: where
+ * each array (or scalar) sits in the object, how many of its values are
+ * written (a few sizes that follow from the shape) and the rules they obey.
+ * One walker (io.c) reads that table to check an object's values, write
+ * them, check a payload's values and load them back, so save, load and
+ * validation cannot disagree about the order. */
 #ifndef MCSPEC_IO_INTERNAL_H
 #define MCSPEC_IO_INTERNAL_H
 
@@ -16,83 +17,70 @@
  * count, is 0: an empty accumulator holds nothing). */
 #define IO_RULE_NONNEG 1u /* >= 0: a sum of (products of) weights, a mean power, an M2 */
 #define IO_RULE_SPREAD 2u /* a sum of deviations from the mean: 0 with fewer than 2 trials */
+#define IO_RULE_M2 (IO_RULE_NONNEG | IO_RULE_SPREAD) /* a sum of squared deviations */
 
-#define IO_MAX_RANGES 8u
+/* Sizes a kind derives from its shape, named by index in its fields;
+ * size 0 (IO_ONE) is always 1, for scalars and single rows. */
+#define IO_MAX_DIMS 4u
+#define IO_ONE 0u
+
+/* How a field's values are laid out in the object. */
+#define IO_AS_ROWS 0u  /* rows of len doubles, stride doubles apart */
+#define IO_AS_COUNT 1u /* one uint64_t, stored as a double (exact: at most 2^53) */
+#define IO_AS_UPPER 2u /* upper triangle of a len x len array, row by row; the
+                        * load mirrors it into the lower one (exactly symmetric) */
+
+#define IO_MAX_FIELDS 10u
 
 typedef struct {
-    size_t first, len;
-    unsigned rules;
-} io_range;
+    size_t offset;        /* of the first value in the object (offsetof) */
+    unsigned char as;     /* IO_AS_* */
+    unsigned char rows, len, stride; /* indices into the kind's sizes */
+    unsigned rules;       /* IO_RULE_* */
+} io_field;
 
-typedef struct {
-    uint32_t kind;
-    uint32_t shape_len;
-    uint64_t shape[MCS_IO_MAX_SHAPE];
-    size_t payload_len;                /* binary64 values */
-    size_t nranges;
-    io_range ranges[IO_MAX_RANGES];    /* contiguous, covering the payload */
-} io_layout;
+/* The fields a kind's table lists (member of type t, sizes by index). */
+#define IO_COUNT(t, member, rules) {offsetof(t, member), IO_AS_COUNT, IO_ONE, IO_ONE, IO_ONE, rules}
+#define IO_ARRAY(t, member, len, rules) {offsetof(t, member), IO_AS_ROWS, IO_ONE, len, IO_ONE, rules}
+#define IO_GRID(t, member, rows, len, stride, rules) \
+    {offsetof(t, member), IO_AS_ROWS, rows, len, stride, rules}
+#define IO_UPPER(t, member, n, rules) {offsetof(t, member), IO_AS_UPPER, IO_ONE, n, n, rules}
 
-/* Empties *lay for a kind with shape_len shape words (shape may be NULL when
- * there are none); ranges then follow with mcs_io_add_range. */
-void mcs_io_layout_start(io_layout *lay, uint32_t kind, uint32_t shape_len,
-                         const uint64_t *shape);
+struct io_values;
 
-/* Appends a range of len values obeying rules to the payload. */
-void mcs_io_add_range(io_layout *lay, size_t len, unsigned rules);
-
-/* Fills *lay for a shape (shape_len words already checked); MCS_ERR_N_RANGE
- * when the shape is beyond this build's capacities. */
-typedef mcs_status (*io_layout_fn)(const uint64_t *shape, io_layout *lay);
-
-/* Receives payload values in order: checks them (out == NULL) or writes them. */
-typedef struct {
-    const io_layout *lay;
-    uint64_t count;
-    uint8_t *out;
-    size_t index, range;
-    int not_finite, broken;
-} io_sink;
-
-void mcs_io_sink_put(io_sink *sink, double v);
-
-typedef void (*io_emit_fn)(const void *obj, io_sink *sink);
-
-/* The value at payload index i (little-endian binary64). */
-double mcs_io_get_f64(const uint8_t *payload, size_t i);
-
-/* a[0 .. len) to the sink, in order; and back from payload[first ..). */
-void mcs_io_put_array(io_sink *sink, const double *a, size_t len);
-void mcs_io_get_array(double *a, const uint8_t *payload, size_t first, size_t len);
-
-/* What a kind's save passes: the object, its emit function and its count. */
-typedef struct {
-    const void *obj;
-    io_emit_fn emit;
-    uint64_t count;
-} io_source;
-
-/* Save driver: checks the values emit gives, then (buf != NULL) writes the
- * record. Statuses as the mcs_io_save_* calls, after UNINIT. */
-mcs_status mcs_io_save_record(const io_layout *lay, const io_source *src, size_t cap, void *buf,
-                   size_t *len);
-
-/* A kind as its load sees it: number, shape words, layout function. */
+/* A kind: its number and shape words, how its sizes follow from the shape
+ * (MCS_ERR_N_RANGE or MCS_ERR_FREQ_RANGE for a shape beyond this build's
+ * capacities), where the shape words sit in the object (size_t members), the
+ * object's count (MCS_ERR_UNINIT), init and count member, an optional check of invariants
+ * beyond the rules (nonzero when they hold), and the fields. */
 typedef struct {
     uint32_t kind;
     uint32_t shape_len;
-    io_layout_fn layout;
+    mcs_status (*sizes)(const uint64_t *shape, size_t *size);
+    size_t shape_at[MCS_IO_MAX_SHAPE];
+    mcs_status (*count)(const void *obj, uint64_t *count);
+    mcs_status (*init)(void *obj, const uint64_t *shape);
+    size_t count_at; /* the object's uint64_t count, set last by a load */
+    int (*valid)(const struct io_values *values, uint64_t count);
+    size_t nfields;
+    io_field fields[IO_MAX_FIELDS];
 } io_kind;
 
-/* A record that passed every check, ready to commit. */
-typedef struct {
-    io_layout lay;
+/* The payload values of one record, read from the object being saved
+ * (payload == NULL) or from the payload being loaded. */
+typedef struct io_values {
+    const io_kind *kind;
+    size_t size[IO_MAX_DIMS];
+    const void *obj;
     const uint8_t *payload;
-    uint64_t count;
-} io_record;
+} io_values;
 
-/* Load checks: framing, kind, shape (through the kind's layout), values.
- * *rec written only on MCS_OK. */
-mcs_status mcs_io_load_check(const io_kind *kind, size_t len, const void *buf, io_record *rec);
+/* Payload value i. */
+double mcs_io_value(const io_values *values, size_t i);
+
+/* The mcs_io_save_* and mcs_io_load_* calls for a kind: the NULL checks,
+ * the object's count, the rules and the kind's invariants, framing. */
+mcs_status mcs_io_save(const io_kind *kind, const void *obj, size_t cap, void *buf, size_t *len);
+mcs_status mcs_io_load(const io_kind *kind, void *obj, size_t len, const void *buf);
 
 #endif /* MCSPEC_IO_INTERNAL_H */

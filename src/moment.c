@@ -1,14 +1,8 @@
 #include "mcspec/moment.h"
-#include "internal.h"
+#include "acc_internal.h"
 #include "readout.h"
 
 #include <string.h>
-
-/* Read-outs refuse a stored value above 2^500 in magnitude, the bound of the
- * record format too (io.h): trials never get there (the sums stay below
- * 2^496, see the header's trial limit), and below it every read-out, squares
- * of transforms of N values included, stays finite on any object. */
-#define LIMIT 3.273390607896142e+150 /* 2^500 */
 
 mcs_status mcs_moment_init(mcs_moment *acc, size_t n)
 {
@@ -25,20 +19,6 @@ static mcs_status moment_check(const mcs_moment *acc)
 {
     mcs_status st = mcs_check_object_(acc, acc != NULL ? acc->n : 0u, (size_t)MCS_MAX_COV_N);
     return st == MCS_OK && acc->count > (uint64_t)MCS_MAX_COUNT ? MCS_ERR_INVARIANT : st;
-}
-
-/* The checks every add shares once the trial itself is valid: its total
- * weight (MAGNITUDE), the count (COUNT), and its arrays outside the object. */
-static mcs_status check_add(const mcs_moment *acc, double total, const void *a, size_t a_bytes,
-                            const void *b, size_t b_bytes)
-{
-    if (!(total <= MCS_MOMENT_MAX_TRIAL))
-        return MCS_ERR_MAGNITUDE;
-    mcs_status st = mcs_check_count_(acc->count, 1u);
-    if (st == MCS_OK && (mcs_overlap_(a, a_bytes, acc, sizeof *acc) ||
-                         mcs_overlap_(b, b_bytes, acc, sizeof *acc)))
-        st = MCS_ERR_ALIAS;
-    return st;
 }
 
 /* work holds the trial's s. The first trial becomes the shift c (its d is 0,
@@ -82,14 +62,8 @@ mcs_status mcs_moment_add_bins(mcs_moment *acc, size_t k, const size_t *bins,
 {
     mcs_status st = bins == NULL || weights == NULL ? MCS_ERR_NULL : moment_check(acc);
     if (st == MCS_OK)
-        st = mcs_check_sparse_(acc->n, k, bins, weights);
-    if (st != MCS_OK)
-        return st;
-    double total = 0.0;
-    for (size_t j = 0; j < k; ++j)
-        total += weights[j];
-    st = check_add(acc, total, bins, mcs_bytes_(k, sizeof *bins), weights,
-                   mcs_bytes_(k, sizeof *weights));
+        st = mcs_check_add_sparse_(acc, sizeof *acc, acc->n, acc->count, k, bins, weights,
+                                   MCS_MOMENT_MAX_TRIAL);
     if (st != MCS_OK)
         return st;
     /* s of the trial: per-bin sums of its weights (eq. 38) */
@@ -108,7 +82,8 @@ mcs_status mcs_moment_add_dense(mcs_moment *acc, size_t n, const double *s)
     double total = 0.0;
     for (size_t m = 0; m < n; ++m)
         total += s[m];
-    st = check_add(acc, total, s, n * sizeof *s, NULL, 0u);
+    st = mcs_check_add_(acc, sizeof *acc, acc->count, total, MCS_MOMENT_MAX_TRIAL, s,
+                        n * sizeof *s, NULL, 0u);
     if (st != MCS_OK)
         return st;
     memcpy(acc->work, s, n * sizeof *s);
@@ -131,32 +106,22 @@ static void merge_sums(mcs_moment *dst, const mcs_moment *src)
         for (size_t c = 0; c < n; ++c) {
             const size_t i = m * n + c;
             const double ec = src->shift[c] - dst->shift[c];
-            const double hi = src->sum_dd[i], lo = src->lo_dd[i];
             const double move = (bm * ec + em * src->sum_d[c]) + tb * (em * ec);
-            mcs_kahan_add_(&dst->sum_dd[i], &dst->lo_dd[i], hi);
-            mcs_kahan_add_(&dst->sum_dd[i], &dst->lo_dd[i], -lo);
+            mcs_kahan_merge_(&dst->sum_dd[i], &dst->lo_dd[i], src->sum_dd[i], src->lo_dd[i]);
             mcs_kahan_add_(&dst->sum_dd[i], &dst->lo_dd[i], move);
         }
     }
     for (size_t m = 0; m < n; ++m) {
-        const double hi = src->sum_d[m], lo = src->lo_d[m];
-        mcs_kahan_add_(&dst->sum_d[m], &dst->lo_d[m], hi);
-        mcs_kahan_add_(&dst->sum_d[m], &dst->lo_d[m], -lo);
+        mcs_kahan_merge_(&dst->sum_d[m], &dst->lo_d[m], src->sum_d[m], src->lo_d[m]);
         mcs_kahan_add_(&dst->sum_d[m], &dst->lo_d[m], tb * (src->shift[m] - dst->shift[m]));
     }
 }
 
 mcs_status mcs_moment_merge(mcs_moment *dst, const mcs_moment *src)
 {
-    mcs_status st = src == NULL ? MCS_ERR_NULL : moment_check(dst);
+    mcs_status st = mcs_check_pair_(moment_check(dst), moment_check(src));
     if (st == MCS_OK)
-        st = moment_check(src);
-    if (st == MCS_OK && dst->n != src->n)
-        st = MCS_ERR_MISMATCH;
-    if (st == MCS_OK)
-        st = mcs_check_count_(dst->count, src->count);
-    if (st == MCS_OK && dst != src && mcs_overlap_(dst, sizeof *dst, src, sizeof *src))
-        st = MCS_ERR_ALIAS;
+        st = mcs_check_merge_(dst, src, sizeof *dst, dst->n == src->n, dst->count, src->count);
     if (st != MCS_OK || src->count == 0u)
         return st;
     if (dst->count == 0u) { /* take src's shift and sums as they are */
@@ -181,15 +146,6 @@ mcs_status mcs_moment_count(const mcs_moment *acc, uint64_t *count)
     return st;
 }
 
-/* Every x[len] finite and at most lim in magnitude (NaN fails the compare). */
-static int all_within(size_t len, const double *x, double lim)
-{
-    int ok = 1;
-    for (size_t j = 0; j < len; ++j)
-        ok &= fabs(x[j]) <= lim;
-    return ok;
-}
-
 /* ---- read-out (src/readout.c): <s> = c + sum_d / count, and the
  * covariances come from the d sums alone (they do not depend on c) ---- */
 
@@ -202,8 +158,8 @@ mcs_status mcs_readout_open_moment(const void *obj, mcs_readout *view)
     if (acc->count == 0u)
         return MCS_ERR_EMPTY;
     const size_t n = acc->n;
-    if (!all_within(n, acc->shift, LIMIT) || !all_within(n, acc->sum_d, LIMIT) ||
-        !all_within(n * n, acc->sum_dd, LIMIT))
+    if (!mcs_all_stored_(n, acc->shift) || !mcs_all_stored_(n, acc->sum_d) ||
+        !mcs_all_stored_(n * n, acc->sum_dd))
         return MCS_ERR_INVARIANT;
     /* k = 0: the accumulator does not know K, the caller names it */
     *view = (mcs_readout){n,           0u,           1.0 / (double)acc->count, acc->sum_d,

@@ -66,27 +66,79 @@ static double stratum_point(size_t j, double v, size_t k)
     return u < 1.0 ? u : nextafter(1.0, 0.0);
 }
 
-/* Canonical u -> (bin, weight, x), through the importance warp if any.
- * Without importance the bin is floor(t), t = u N given exactly where
- * possible: the uniform pattern with N/K even puts every u_j on a bin edge,
- * and u rounded then times N can land just below it (N = 24, K = 6 gave bin
- * 13 for u_3 = 7/12); t = (j + v) N / K is one rounding from exact, which
- * cannot cross an integer. */
-static void place(const mcs_pattern *pat, double u, double t, size_t *bin, double *weight,
-                  double *x)
+/* The point of a sample without importance: u itself when it lies in bin b
+ * (b = floor(t)). t is one rounding from exact, so it picks the bin: the
+ * uniform pattern with N/K even puts every u_j on a bin edge, and u rounded
+ * then times N can land just below it (N = 24, K = 6 gave bin 13 for u_3 =
+ * 7/12); then the point is moved into b. */
+static double plain_point(size_t n, size_t b, double u, double t)
 {
-    if (pat->importance != NULL) {
-        mcs_importance_warp_unchecked(pat->importance, u, x, bin);
-        *weight = 1.0 / pat->importance->p[*bin];
+    if ((size_t)(u * (double)n) == b)
+        return u;
+    double frac = t - (double)b;
+    return mcs_importance_point_in_bin(n, b, frac < 1.0 ? frac : nextafter(1.0, 0.0));
+}
+
+/* The largest double below 1: where u would round up to 1, it stays inside. */
+#define MCS_BELOW_ONE 0x1.fffffffffffffp-1
+
+/* Bin floor(t) (t in [0, N]: the signed conversion is exact and one
+ * instruction, where one to size_t is a compare and two on x86-64), clamped
+ * to N - 1; weight 1; the point if asked. */
+static inline void place_plain(size_t n, size_t j, double u, double t, size_t *bins, double *vw,
+                               double *points)
+{
+    size_t b = (size_t)(int64_t)t;
+    b = b < n ? b : n - 1u;
+    bins[j] = b;
+    vw[j] = 1.0;
+    if (points != NULL)
+        points[j] = plain_point(n, b, u, t);
+}
+
+/* The samples without importance. Random: u = v, t = u N. Strata: u = (j +
+ * v)/K and t = (j + v) N / K, each by one rounding from exact; when K is a
+ * power of two the division is a multiplication by 1/K, exact and bit for
+ * bit the same, and several times cheaper. v is each sample's own (random,
+ * stratified, homogenized: vw holds them on entry) or the trial's beta
+ * (uniform 1/2, jitter); vw holds the weights on return. One loop per case,
+ * so none tests the case per sample. */
+static void draw_plain(const mcs_pattern *pat, size_t k, double beta, size_t *bins, double *vw,
+                       double *points)
+{
+    const size_t n = pat->n;
+    const double nd = (double)n, kd = (double)k, inv_k = 1.0 / kd;
+    const int pow2 = (k & (k - 1u)) == 0u;
+    const int own_v = pat->kind != MCS_PATTERN_UNIFORM && pat->kind != MCS_PATTERN_JITTER;
+    if (pat->kind == MCS_PATTERN_RANDOM) {
+        for (size_t j = 0; j < k; ++j)
+            place_plain(n, j, vw[j], vw[j] * nd, bins, vw, points);
+    } else if (own_v && pow2) {
+        for (size_t j = 0; j < k; ++j) {
+            double jv = (double)j + vw[j], u = jv * inv_k;
+            place_plain(n, j, u < 1.0 ? u : MCS_BELOW_ONE, jv * nd * inv_k, bins, vw, points);
+        }
     } else {
-        size_t b = (size_t)t;
-        b = b < pat->n ? b : pat->n - 1u;
-        *bin = b;
-        *weight = 1.0;
-        double frac = t - (double)b;
-        *x = (size_t)(u * (double)pat->n) == b
-                 ? u
-                 : mcs_importance_point_in_bin(pat->n, b, frac < 1.0 ? frac : nextafter(1.0, 0.0));
+        for (size_t j = 0; j < k; ++j) {
+            double jv = (double)j + (own_v ? vw[j] : beta), u = jv / kd;
+            place_plain(n, j, u < 1.0 ? u : MCS_BELOW_ONE, jv * nd / kd, bins, vw, points);
+        }
+    }
+}
+
+/* The samples through the importance warp (u as in draw_plain). */
+static void draw_warped(const mcs_pattern *pat, size_t k, double beta, size_t *bins, double *vw,
+                        double *points)
+{
+    const int own_v = pat->kind != MCS_PATTERN_UNIFORM && pat->kind != MCS_PATTERN_JITTER;
+    for (size_t j = 0; j < k; ++j) {
+        double v = own_v ? vw[j] : beta;
+        double u = pat->kind == MCS_PATTERN_RANDOM ? v : stratum_point(j, v, k);
+        double x;
+        mcs_importance_warp_unchecked(pat->importance, u, &x, &bins[j]);
+        vw[j] = 1.0 / pat->importance->p[bins[j]];
+        if (points != NULL)
+            points[j] = x;
     }
 }
 
@@ -136,34 +188,15 @@ mcs_status mcs_pattern_draw(const mcs_pattern *pat, mcs_rng *rng, size_t k, size
     if (draw_aliases(pat, rng, k, bins, weights, points))
         return MCS_ERR_ALIAS;
 
-    const double nd = (double)pat->n, kd = (double)k;
     double beta = 0.5;
     if (pat->kind == MCS_PATTERN_JITTER)
         beta = mcs_rng_double_(rng);
-
-    for (size_t j = 0; j < k; ++j) {
-        double u, t, v;
-        switch (pat->kind) {
-        case MCS_PATTERN_RANDOM:
-            u = mcs_rng_double_(rng);
-            t = u * nd;
-            break;
-        case MCS_PATTERN_STRATIFIED:
-        case MCS_PATTERN_HOMOGENIZED:
-            v = mcs_rng_double_(rng);
-            u = stratum_point(j, v, k);
-            t = ((double)j + v) * nd / kd;
-            break;
-        default: /* uniform (beta = 1/2) and jitter (one beta per trial) */
-            u = stratum_point(j, beta, k);
-            t = ((double)j + beta) * nd / kd;
-            break;
-        }
-        double x;
-        place(pat, u, t, &bins[j], &weights[j], &x);
-        if (points != NULL)
-            points[j] = x;
-    }
+    else if (pat->kind != MCS_PATTERN_UNIFORM)
+        mcs_rng_fill_doubles_(rng, k, weights); /* each sample's v, read before its weight is written */
+    if (pat->importance == NULL)
+        draw_plain(pat, k, beta, bins, weights, points);
+    else
+        draw_warped(pat, k, beta, bins, weights, points);
 
     if (pat->kind == MCS_PATTERN_HOMOGENIZED) {
         /* Cyclic shift by a whole number of bins, drawn after the strata. */

@@ -168,7 +168,9 @@ uint32_t mcs_pattern2d_permute(uint32_t i, uint32_t l, uint32_t p)
         i &= w;
         i ^= i >> 5;
     } while (i >= l);
-    return (i + p) % l;
+    /* Kensler's final rotation (i + p) mod l, summed in 64 bits: the 32-bit
+     * sum wraps for p near 2^32, and the images are then no permutation. */
+    return (uint32_t)(((uint64_t)i + p) % l);
 }
 
 /* Kensler's randfloat, as a double: all 32 hashed bits over 2^32, in [0, 1). */
@@ -210,7 +212,9 @@ mcs_status mcs_pattern2d_draw(const mcs_pattern2d *pat, mcs_rng *rng, size_t k, 
 {
     if (pat == NULL || rng == NULL || points == NULL)
         return MCS_ERR_NULL;
-    if (!mcs_pattern2d_is_valid_(pat))
+    /* A never-seeded rng outputs only zeros, on which the bounded draws of
+     * n-rooks and multi-jittered never return (rng_inline.h). */
+    if (!mcs_pattern2d_is_valid_(pat) || !mcs_rng_is_seeded_(rng))
         return MCS_ERR_UNINIT;
     if (k != pat->k)
         return MCS_ERR_MISMATCH;

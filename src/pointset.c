@@ -52,6 +52,8 @@ static MCS_ALWAYS_INLINE mcs_status add_points(mcs_pointset *acc, size_t k, mcs_
     mcs_status st = mcs_points_addr_(points) == NULL ? MCS_ERR_NULL : check_acc(acc);
     if (st == MCS_OK)
         st = k == 0u ? MCS_ERR_K_RANGE : mcs_check_points_(k, points, NULL);
+    if (st == MCS_OK)
+        st = mcs_check_count_(acc->count, 1u);
     if (st != MCS_OK)
         return st;
     const size_t fmax = acc->freq_max, blocks = fmax / MCS_POINTSET_BLOCK + 1u;
@@ -83,8 +85,8 @@ mcs_status mcs_pointset_add_f(mcs_pointset *acc, size_t k, const float *points)
 mcs_status mcs_pointset_merge(mcs_pointset *dst, const mcs_pointset *src)
 {
     mcs_status st = mcs_ps_pair_status(check_acc(dst), check_acc(src));
-    if (st == MCS_OK && dst->freq_max != src->freq_max)
-        st = MCS_ERR_MISMATCH;
+    if (st == MCS_OK)
+        st = mcs_ps_merge_check(dst->freq_max == src->freq_max, dst->count, src->count);
     if (st != MCS_OK || src->count == 0u)
         return st;
     mcs_ps_chan_cells(dst->freq_max + 1u, dst->mean, dst->m2, dst->count, src->mean, src->m2,
@@ -96,9 +98,7 @@ mcs_status mcs_pointset_merge(mcs_pointset *dst, const mcs_pointset *src)
 mcs_status mcs_pointset_count(const mcs_pointset *acc, uint64_t *count)
 {
     mcs_status st = count == NULL ? MCS_ERR_NULL : check_acc(acc);
-    if (st == MCS_OK)
-        *count = acc->count;
-    return st;
+    return mcs_ps_count_out(st, st == MCS_OK ? acc->count : 0u, count);
 }
 
 /* <P(freq)> (want_stderr 0) or its standard error (1). */

@@ -112,6 +112,8 @@ static MCS_ALWAYS_INLINE mcs_status add_points(mcs_pointset2d *acc, size_t k, mc
         st = MCS_ERR_K_RANGE;
     if (st == MCS_OK)
         st = k > SIZE_MAX / 2u ? MCS_ERR_POINT_RANGE : mcs_check_points_(2u * k, points, NULL);
+    if (st == MCS_OK)
+        st = mcs_check_count_(acc->count, 1u);
     if (st != MCS_OK)
         return st;
     mcs_ps_clear(cells_of(acc->freq_max), acc->re, acc->im);
@@ -137,8 +139,8 @@ mcs_status mcs_pointset2d_add_f(mcs_pointset2d *acc, size_t k, const float *poin
 mcs_status mcs_pointset2d_merge(mcs_pointset2d *dst, const mcs_pointset2d *src)
 {
     mcs_status st = mcs_ps_pair_status(check_acc(dst), check_acc(src));
-    if (st == MCS_OK && dst->freq_max != src->freq_max)
-        st = MCS_ERR_MISMATCH;
+    if (st == MCS_OK)
+        st = mcs_ps_merge_check(dst->freq_max == src->freq_max, dst->count, src->count);
     if (st != MCS_OK || src->count == 0u)
         return st;
     const uint64_t na = dst->count, nb = src->count;
@@ -153,9 +155,7 @@ mcs_status mcs_pointset2d_merge(mcs_pointset2d *dst, const mcs_pointset2d *src)
 mcs_status mcs_pointset2d_count(const mcs_pointset2d *acc, uint64_t *count)
 {
     mcs_status st = count == NULL ? MCS_ERR_NULL : check_acc(acc);
-    if (st == MCS_OK)
-        *count = acc->count;
-    return st;
+    return mcs_ps_count_out(st, st == MCS_OK ? acc->count : 0u, count);
 }
 
 /* <P(fx, fy)> (want_stderr 0) or its standard error (1), read at the stored
@@ -232,15 +232,22 @@ mcs_status mcs_pointset2d_anisotropy(const mcs_pointset2d *acc, size_t radius, d
     return mcs_ps_ring_db(&g, RING_ZERO, 0.0, out_db);
 }
 
+/* Integer wave vectors of the whole plane with |f|^2 < q: row fy (and -fy),
+ * fy^2 < q, holds the fx with fx^2 <= q - fy^2 - 1. O(sqrt q) steps. */
+static size_t disc_size(size_t q)
+{
+    size_t n = 0u;
+    for (size_t fy = 0; fy * fy < q; ++fy)
+        n += (fy > 0u ? 2u : 1u) * (2u * mcs_ps_isqrt(q - fy * fy - 1u) + 1u);
+    return n;
+}
+
 mcs_status mcs_pointset2d_ring_size(size_t radius, size_t *out)
 {
     if (out == NULL)
         return MCS_ERR_NULL;
-    const size_t lim = radius + 1u;
-    size_t n = 0u;
-    for (size_t ay = 0; ay < lim; ++ay)
-        for (size_t ax = 0; ax < lim; ++ax)
-            n += (size_t)mcs_ps_ring_weight(ax, ay, radius);
-    *out = n;
+    if (radius > (size_t)MCS_MAX_FREQ)
+        return MCS_ERR_FREQ_RANGE;
+    *out = disc_size((radius + 1u) * (radius + 1u)) - disc_size(radius * radius);
     return MCS_OK;
 }

@@ -67,9 +67,17 @@ static void exact_ring(const mcs_pattern2d *pat, size_t r, mcs_ps_ring *g)
             }
 }
 
-mcs_status mcs_pointset2d_exact_radial(const mcs_pattern2d *pat, size_t radius, double *out)
+/* The checks of an annulus read-out: annuli exist up to the largest cutoff
+ * (the quadrant loops are O(radius^2), so no larger radius is looped over). */
+static mcs_status check_ring(const mcs_pattern2d *pat, size_t radius, const double *out)
 {
     mcs_status st = check(pat, out);
+    return st == MCS_OK && radius > (size_t)MCS_MAX_FREQ ? MCS_ERR_FREQ_RANGE : st;
+}
+
+mcs_status mcs_pointset2d_exact_radial(const mcs_pattern2d *pat, size_t radius, double *out)
+{
+    mcs_status st = check_ring(pat, radius, out);
     if (st != MCS_OK)
         return st;
     mcs_ps_ring g = {0.0, 0.0, 0.0};
@@ -81,7 +89,7 @@ mcs_status mcs_pointset2d_exact_radial(const mcs_pattern2d *pat, size_t radius, 
 mcs_status mcs_pointset2d_exact_anisotropy(const mcs_pattern2d *pat, size_t radius,
                                            double *out_db)
 {
-    mcs_status st = check(pat, out_db);
+    mcs_status st = check_ring(pat, radius, out_db);
     if (st != MCS_OK)
         return st;
     mcs_ps_ring g = {0.0, 0.0, 0.0};

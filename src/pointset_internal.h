@@ -37,6 +37,24 @@ static inline mcs_status mcs_ps_pair_status(mcs_status a, mcs_status b)
     return a != MCS_OK ? a : b;
 }
 
+/* The checks of a merge after the pair's own (mcs_ps_pair_status gave
+ * MCS_OK): MCS_ERR_MISMATCH unless the two have the same shape, then
+ * MCS_ERR_COUNT if the merged count na + nb would pass MCS_MAX_COUNT (or
+ * either already has), so no count wraps and each stays exact in a double. */
+static inline mcs_status mcs_ps_merge_check(int same_shape, uint64_t na, uint64_t nb)
+{
+    return same_shape ? mcs_check_count_(na, nb) : MCS_ERR_MISMATCH;
+}
+
+/* A count read-out: *out = count when the object's own check gave st, MCS_OK
+ * (count is read only then: the caller passes 0 otherwise). */
+static inline mcs_status mcs_ps_count_out(mcs_status st, uint64_t count, uint64_t *out)
+{
+    if (st == MCS_OK)
+        *out = count;
+    return st;
+}
+
 /* e^{-2 pi i f x} for x in [0,1): f x reduced mod 1 first so the angle stays
  * in [0, 2 pi) however large f is. */
 static inline void mcs_ps_phase(double x, size_t f, double *re, double *im)

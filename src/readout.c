@@ -411,13 +411,16 @@ static mcs_status open_n(int outputs, const mcs_readout_source *src, size_t n,
     return st;
 }
 
-/* The outputs of a matrix read-out (n * n doubles each) are written while
- * the object is read, and zeroed first: they must overlap neither each other
- * nor any array of the view (MCS_ERR_ALIAS). */
-static mcs_status check_matrix_outputs(const mcs_readout *view, const double *re,
-                                       const double *im)
+/* A matrix read-out opens the source for n; its outputs (n * n doubles
+ * each) are written while the object is read, and zeroed first: they must
+ * overlap neither each other nor any array of the view (MCS_ERR_ALIAS). */
+static mcs_status open_matrix(const mcs_readout_source *src, size_t n, const double *re,
+                              const double *im, mcs_readout *view)
 {
-    const size_t n = view->n, nn = n * n * sizeof(double), n1 = n * sizeof(double);
+    mcs_status st = open_n(re != NULL && im != NULL, src, n, view);
+    if (st != MCS_OK)
+        return st;
+    const size_t nn = n * n * sizeof(double), n1 = n * sizeof(double);
     const void *in[5] = {view->first, view->second, view->cos_table, view->sin_table,
                          view->shift};
     const size_t len[5] = {n1, nn, n1, n1, view->shift != NULL ? n1 : 0u};
@@ -450,9 +453,7 @@ mcs_status mcs_readout_cross_matrix(const mcs_readout_source *src, size_t n,
                                     double *re, double *im)
 {
     mcs_readout v;
-    mcs_status st = open_n(re != NULL && im != NULL, src, n, &v);
-    if (st == MCS_OK)
-        st = check_matrix_outputs(&v, re, im);
+    mcs_status st = open_matrix(src, n, re, im, &v);
     if (st != MCS_OK)
         return st;
     second_matrix_at(&v, re, im);
@@ -460,6 +461,11 @@ mcs_status mcs_readout_cross_matrix(const mcs_readout_source *src, size_t n,
         add_mean_products(&v, first_mean_at, first_mean_at, -1.0, re, im);
         add_mean_products(&v, mean_at, mean_at, 1.0, re, im);
     }
+    /* The diagonal is <|S_k|^2>, clamped as mcs_readout_power: two sums of N
+     * terms, within power_bound. */
+    const double tol = power_bound(&v);
+    for (size_t k = 0; k < n; ++k)
+        re[k * n + k] = mcs_readout_nonnegative(&v, re[k * n + k], tol);
     return MCS_OK;
 }
 
@@ -467,9 +473,7 @@ mcs_status mcs_readout_covariance_matrix(const mcs_readout_source *src, size_t n
                                          double *re, double *im)
 {
     mcs_readout v;
-    mcs_status st = open_n(re != NULL && im != NULL, src, n, &v);
-    if (st == MCS_OK)
-        st = check_matrix_outputs(&v, re, im);
+    mcs_status st = open_matrix(src, n, re, im, &v);
     if (st != MCS_OK)
         return st;
     /* The diagonal is checked before anything is written (see clamp_variance). */

@@ -71,12 +71,14 @@ mcs_status mcs_sampler_init(mcs_sampler *s, mcs_sampler_kind kind, size_t dim, s
     return MCS_OK;
 }
 
-/* The checks of a trial of k points into points: NULL, UNINIT, MISMATCH. */
-static mcs_status check(const mcs_sampler *s, size_t k, const double *points)
+/* The checks of a trial of k points into points: NULL, UNINIT (also for a
+ * never-seeded rng, whose zeros would give every trial the same set; 1 when
+ * none is drawn from), MISMATCH. */
+static mcs_status check(const mcs_sampler *s, int rng_seeded, size_t k, const double *points)
 {
     if (s == NULL || points == NULL)
         return MCS_ERR_NULL;
-    if (!mcs_sampler_has_dim(s->kind, s->dim) || !k_in_range(s->k))
+    if (!mcs_sampler_has_dim(s->kind, s->dim) || !k_in_range(s->k) || !rng_seeded)
         return MCS_ERR_UNINIT;
     if (k != s->k)
         return MCS_ERR_MISMATCH;
@@ -189,7 +191,7 @@ static double rotate(double u, double shift)
 
 mcs_status mcs_sampler_base_points(const mcs_sampler *s, size_t k, double *points)
 {
-    mcs_status st = check(s, k, points);
+    mcs_status st = check(s, 1, k, points);
     if (st != MCS_OK)
         return st;
     const size_t dim = s->dim;
@@ -204,7 +206,7 @@ mcs_status mcs_sampler_base_points(const mcs_sampler *s, size_t k, double *point
 
 mcs_status mcs_sampler_draw(const mcs_sampler *s, mcs_rng *rng, size_t k, double *points)
 {
-    mcs_status st = rng == NULL ? MCS_ERR_NULL : check(s, k, points);
+    mcs_status st = rng == NULL ? MCS_ERR_NULL : check(s, mcs_rng_is_seeded_(rng), k, points);
     if (st != MCS_OK)
         return st;
     const size_t dim = s->dim;

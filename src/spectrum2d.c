@@ -165,11 +165,9 @@ mcs_status mcs_spectrum2d_add_points_f(mcs_spectrum2d *acc, size_t k, const floa
 mcs_status mcs_spectrum2d_merge(mcs_spectrum2d *dst, const mcs_spectrum2d *src)
 {
     mcs_status st = mcs_ps_pair_status(check_acc(dst), check_acc(src));
-    if (st == MCS_OK && (dst->n_x != src->n_x || dst->n_y != src->n_y))
-        st = MCS_ERR_MISMATCH;
-    if (st == MCS_OK && (dst->count > MCS_SPECTRUM_MAX_COUNT ||
-                         src->count > MCS_SPECTRUM_MAX_COUNT - dst->count))
-        st = MCS_ERR_COUNT; /* the merged count would not be exact in a double */
+    if (st == MCS_OK)
+        st = mcs_ps_merge_check(dst->n_x == src->n_x && dst->n_y == src->n_y, dst->count,
+                                src->count);
     if (st != MCS_OK || src->count == 0u)
         return st;
     const uint64_t na = dst->count, nb = src->count;
@@ -191,9 +189,7 @@ mcs_status mcs_spectrum2d_merge(mcs_spectrum2d *dst, const mcs_spectrum2d *src)
 mcs_status mcs_spectrum2d_count(const mcs_spectrum2d *acc, uint64_t *count)
 {
     mcs_status st = count == NULL ? MCS_ERR_NULL : check_acc(acc);
-    if (st == MCS_OK)
-        *count = acc->count;
-    return st;
+    return mcs_ps_count_out(st, st == MCS_OK ? acc->count : 0u, count);
 }
 
 /* The checks of a read-out at k = (k1, k2) with output out, and the stored

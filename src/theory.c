@@ -120,10 +120,7 @@ mcs_status mcs_theory_init(mcs_theory *th, const mcs_pattern *pat)
 
     if (pat->kind == MCS_PATTERN_UNIFORM) {
         /* mean_s holds the bin counts r_n until the weights are applied */
-        for (size_t b = 0; b < n; ++b)
-            th->mean_s[b] = 0.0;
-        for (size_t j = 0; j < pat->k; ++j)
-            th->mean_s[mcs_theory_uniform_bin_(pat, j)] += 1.0;
+        mcs_theory_uniform_counts_(pat, th->mean_s);
         for (size_t m = 0; m < n; ++m)
             th->mean_s[m] *= mcs_theory_inv_p_(pat, m);
         for (size_t m = 0; m < n; ++m)

@@ -55,12 +55,37 @@ static inline size_t mcs_theory_uniform_bin_(const mcs_pattern *pat, size_t j)
     return b < pat->n ? b : pat->n - 1u;
 }
 
+/* The uniform pattern's bin counts r[b], b < N, without a walk over the K
+ * samples: the bin of u_j never decreases with j (a floor, or a CDF search,
+ * of a rounded quotient that grows with j), so the number of samples below
+ * bin b + 1 is the first j whose bin passes b, found by bisection on j with
+ * mcs_theory_uniform_bin_ itself. O(N log K) (at most 31 steps per bin at
+ * MCS_MAX_K), and the counts are those of the walk exactly. */
+static inline void mcs_theory_uniform_counts_(const mcs_pattern *pat, double *r)
+{
+    size_t below = 0u; /* samples in bins before b */
+    for (size_t b = 0; b < pat->n; ++b) {
+        size_t lo = below, hi = pat->k;
+        while (lo < hi) {
+            const size_t mid = lo + (hi - lo) / 2u;
+            if (mcs_theory_uniform_bin_(pat, mid) > b)
+                hi = mid;
+            else
+                lo = mid + 1u;
+        }
+        r[b] = (double)(lo - below);
+        below = lo;
+    }
+}
+
 /* A pattern the theory can describe, with N up to cap: MCS_ERR_UNINIT
- * (n or k 0, unknown kind, importance of another n or not initialised),
- * MCS_ERR_N_RANGE (n > cap), MCS_ERR_KIND (homogenized with importance). */
+ * (n 0, k 0 or above MCS_MAX_K as mcs_pattern_init allows, unknown kind,
+ * importance of another n or not initialised), MCS_ERR_N_RANGE (n > cap),
+ * MCS_ERR_KIND (homogenized with importance). */
 static inline mcs_status mcs_theory_check_pattern_(const mcs_pattern *pat, size_t cap)
 {
-    if (pat->n == 0u || pat->k == 0u || !mcs_kind_is_valid_(pat->kind))
+    if (pat->n == 0u || pat->k == 0u || pat->k > (size_t)MCS_MAX_K ||
+        !mcs_kind_is_valid_(pat->kind))
         return MCS_ERR_UNINIT;
     if (pat->n > cap)
         return MCS_ERR_N_RANGE;

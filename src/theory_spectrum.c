@@ -20,10 +20,7 @@ static void fill_bins(mcs_theory_spectrum *ts, const mcs_pattern *pat)
         ts->mean_s[b] = (double)pat->k * ts->length[b] * ts->inv_p[b];
     }
     if (pat->kind == MCS_PATTERN_UNIFORM) {
-        for (size_t b = 0; b < n; ++b)
-            ts->mean_s[b] = 0.0;
-        for (size_t j = 0; j < pat->k; ++j)
-            ts->mean_s[mcs_theory_uniform_bin_(pat, j)] += 1.0;
+        mcs_theory_uniform_counts_(pat, ts->mean_s);
         for (size_t b = 0; b < n; ++b)
             ts->mean_s[b] *= ts->inv_p[b];
     } else if (pat->kind == MCS_PATTERN_HOMOGENIZED) {
@@ -76,8 +73,29 @@ static mcs_status check_freqs(int outputs, const mcs_theory_spectrum *ts, size_t
     return st;
 }
 
+/* check_freqs for a complex output: re and im given and two different
+ * doubles (one double cannot hold both parts: ALIAS). */
+static mcs_status check_complex(const mcs_theory_spectrum *ts, size_t freq_k, size_t freq_l,
+                                const double *re, const double *im)
+{
+    mcs_status st = check_freqs(re != NULL && im != NULL, ts, freq_k, freq_l);
+    if (st == MCS_OK && mcs_overlap_(re, sizeof *re, im, sizeof *im))
+        st = MCS_ERR_ALIAS;
+    return st;
+}
+
+/* Writes a complex result computed into locals: last, so re and im may lie
+ * anywhere (but on each other), even in the object just read. */
+static mcs_status set_complex(double *re, double *im, double r, double i)
+{
+    *re = r;
+    *im = i;
+    return MCS_OK;
+}
+
 /* check_ts, then n (MISMATCH), k (K_RANGE, MISMATCH), f and g finite
- * (NOT_FINITE); g may be NULL when not wanted. */
+ * (NOT_FINITE) and within MCS_ESTIMATE_MAX_ABS (MAGNITUDE); g may be NULL
+ * when not wanted. */
 static mcs_status check_integrands(int outputs, const mcs_theory_spectrum *ts, size_t n,
                                    size_t k, const double *f, const double *g)
 {
@@ -90,9 +108,8 @@ static mcs_status check_integrands(int outputs, const mcs_theory_spectrum *ts, s
         return MCS_ERR_K_RANGE;
     if (k != ts->k)
         return MCS_ERR_MISMATCH;
-    if (!mcs_all_finite_(n, f) || (g != NULL && !mcs_all_finite_(n, g)))
-        return MCS_ERR_NOT_FINITE;
-    return MCS_OK;
+    st = mcs_check_integrand_(n, f);
+    return st == MCS_OK && g != NULL ? mcs_check_integrand_(n, g) : st;
 }
 
 /* ---- spectra ---------------------------------------------------------------- */
@@ -137,10 +154,12 @@ static double power_at(const mcs_theory_spectrum *ts, size_t freq)
 mcs_status mcs_theory_spectrum_mean(const mcs_theory_spectrum *ts, size_t freq, double *re,
                                     double *im)
 {
-    mcs_status st = check_freqs(re != NULL && im != NULL, ts, freq, freq);
-    if (st == MCS_OK)
-        mean_at(ts, freq, re, im);
-    return st;
+    mcs_status st = check_complex(ts, freq, freq, re, im);
+    if (st != MCS_OK)
+        return st;
+    double r, i;
+    mean_at(ts, freq, &r, &i);
+    return set_complex(re, im, r, i);
 }
 
 mcs_status mcs_theory_spectrum_power(const mcs_theory_spectrum *ts, size_t freq, double *out)
@@ -164,16 +183,18 @@ mcs_status mcs_theory_power_spectrum(const mcs_theory_spectrum *ts, size_t n, do
 mcs_status mcs_theory_spectrum_covariance(const mcs_theory_spectrum *ts, size_t freq_k,
                                           size_t freq_l, double *re, double *im)
 {
-    mcs_status st = check_freqs(re != NULL && im != NULL, ts, freq_k, freq_l);
-    if (st == MCS_OK)
-        covariance_at(ts, freq_k, freq_l, re, im);
-    return st;
+    mcs_status st = check_complex(ts, freq_k, freq_l, re, im);
+    if (st != MCS_OK)
+        return st;
+    double r, i;
+    covariance_at(ts, freq_k, freq_l, &r, &i);
+    return set_complex(re, im, r, i);
 }
 
 mcs_status mcs_theory_spectrum_cross(const mcs_theory_spectrum *ts, size_t freq_k,
                                      size_t freq_l, double *re, double *im)
 {
-    mcs_status st = check_freqs(re != NULL && im != NULL, ts, freq_k, freq_l);
+    mcs_status st = check_complex(ts, freq_k, freq_l, re, im);
     if (st != MCS_OK)
         return st;
     double cr, ci, kr, ki, lr, li;
@@ -181,9 +202,7 @@ mcs_status mcs_theory_spectrum_cross(const mcs_theory_spectrum *ts, size_t freq_
     mean_at(ts, freq_k, &kr, &ki);
     mean_at(ts, freq_l, &lr, &li);
     /* + <S_k><S_l>* = (kr + i ki)(lr - i li) */
-    *re = cr + (kr * lr + ki * li);
-    *im = ci + (ki * lr - kr * li);
-    return MCS_OK;
+    return set_complex(re, im, cr + (kr * lr + ki * li), ci + (ki * lr - kr * li));
 }
 
 /* ---- the estimator ---------------------------------------------------------- */

@@ -39,27 +39,16 @@ case $MCSPEC in
 *) abs=$PWD/$MCSPEC ;;
 esac
 
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/cli_check.XXXXXX") || exit 1
-trap 'rm -rf "$tmp"' EXIT INT TERM
-
-passed=0
-failed=0
-ok() { passed=$((passed + 1)); }
-bad() { failed=$((failed + 1)); echo "FAIL $1"; }
-skip() { echo "skip $1"; }
+# shellcheck source=test/support/check.sh
+. "$(dirname "$0")/support/check.sh"
+check_start cli_check
 
 if [ ! -x "$MCSPEC" ]; then
     bad "$MCSPEC is not an executable (make cli)"
-    echo "-----------------------"
-    echo "$((passed + failed)) Tests $failed Failures 0 Ignored"
-    echo "FAIL"
+    check_summary
     exit 1
 fi
 
-# run CMD...: stdout, stderr and status into $tmp/out, $tmp/err, $rc; stdin
-# from $tmp/in (empty unless a check writes it).
-: >"$tmp/in"
-run() { "$@" <"$tmp/in" >"$tmp/out" 2>"$tmp/err"; rc=$?; }
 input() { printf '%b' "$1" >"$tmp/in"; } # backslash escapes (\n) in $1 are expanded
 
 # usage_error LABEL PATTERN CMD...: exit 2, nothing on stdout, exactly one
@@ -73,16 +62,6 @@ usage_error() {
     elif [ "$(wc -l <"$tmp/err")" -ne 1 ]; then bad "$label: $(wc -l <"$tmp/err") lines on stderr"
     elif ! grep -Eq -- "$pattern" "$tmp/err"; then bad "$label: message '$(cat "$tmp/err")' lacks /$pattern/"
     else ok; fi
-}
-
-# succeeds LABEL CMD...: exit 0, nothing on stderr.
-succeeds() {
-    label=$1
-    shift
-    run "$@"
-    if [ "$rc" -ne 0 ]; then bad "$label: exit status $rc ($(head -n 1 "$tmp/err"))"; return 1; fi
-    if [ -s "$tmp/err" ]; then bad "$label: stderr '$(head -n 1 "$tmp/err")'"; return 1; fi
-    ok
 }
 
 # csv_shape LABEL FILE HEADER ROWS FIELDS: the header line exactly, then ROWS
@@ -519,7 +498,4 @@ else
     skip "progress on a terminal: util-linux script not available"
 fi
 
-echo "-----------------------"
-echo "$((passed + failed)) Tests $failed Failures 0 Ignored"
-if [ "$failed" -eq 0 ]; then echo "OK"; else echo "FAIL"; fi
-[ "$failed" -eq 0 ]
+check_summary

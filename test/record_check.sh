@@ -29,25 +29,9 @@ MCSPEC=${MCSPEC:-build/bin/mcspec}
 GOLDEN=${GOLDEN:-test/golden}
 CORPUS=${CORPUS:-fuzz/corpus/load}
 
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/record_check.XXXXXX") || exit 1
-trap 'rm -rf "$tmp"' EXIT INT TERM
-
-passed=0
-failed=0
-ok() { passed=$((passed + 1)); }
-bad() { failed=$((failed + 1)); echo "FAIL $1"; }
-
-run() { "$@" </dev/null >"$tmp/out" 2>"$tmp/err"; rc=$?; }
-
-# succeeds LABEL CMD...: exit 0, nothing on stderr.
-succeeds() {
-    label=$1
-    shift
-    run "$@"
-    if [ "$rc" -ne 0 ]; then bad "$label: exit status $rc: $(head -n 2 "$tmp/err")"; return 1; fi
-    if [ -s "$tmp/err" ]; then bad "$label: wrote to stderr: $(head -n 2 "$tmp/err")"; return 1; fi
-    ok
-}
+# shellcheck source=test/support/check.sh
+. "$(dirname "$0")/support/check.sh"
+check_start record_check
 
 # refused LABEL PATTERN CMD...: exit 2, nothing on stdout, one line on stderr
 # matching PATTERN, and $tmp/keep (an old OUT) untouched.
@@ -184,7 +168,4 @@ refused "--save of a directory" "it is a directory" pattern 10 --save "$tmp"
 refused "variance --save without --kind" "choose its pattern with --kind" \
     "$MCSPEC" variance --k 3 --save "$tmp/v3.rec" "$tmp/f6.txt"
 
-echo "-----------------------"
-echo "$((passed + failed)) Tests $failed Failures 0 Ignored"
-if [ "$failed" -eq 0 ]; then echo OK; else echo FAIL; fi
-[ "$failed" -eq 0 ]
+check_summary

@@ -20,13 +20,9 @@
 
 RENDERER=${RENDERER:-build/examples/renderer_sampler}
 
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/renderer_check.XXXXXX") || exit 1
-trap 'rm -rf "$tmp"' EXIT INT TERM
-
-passed=0
-failed=0
-ok() { passed=$((passed + 1)); }
-bad() { failed=$((failed + 1)); echo "FAIL $1"; }
+# shellcheck source=test/support/check.sh
+. "$(dirname "$0")/support/check.sh"
+check_start renderer_check
 
 echo "== $RENDERER"
 if [ ! -x "$RENDERER" ]; then
@@ -75,7 +71,4 @@ else
         bad "halton3-cp Var[I] against jitter: verdict \"$v\", want fails"; fi
 fi
 
-echo "-----------------------"
-echo "$((passed + failed)) Tests $failed Failures 0 Ignored"
-if [ "$failed" -eq 0 ]; then echo "OK"; else echo "FAIL"; fi
-[ "$failed" -eq 0 ]
+check_summary

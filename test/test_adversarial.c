@@ -39,24 +39,6 @@ typedef struct {
 } known_row;
 
 static const known_row known[] = {
-    {"mcs_pattern2d_draw", "rng=zeroed @n-rooks", NULL, 3}, /* hangs */
-    {"mcs_pattern2d_draw", "rng=zeroed @multi", NULL, 3},
-    {"mcs_", "rng=zeroed", "expected an error", 3}, /* zeros, as if random */
-    {"mcs_theory_init", "K=SIZE_MAX @uniform", NULL, 4}, /* O(K): hangs */
-    {"mcs_theory_spectrum_init", "K=SIZE_MAX @uniform", NULL, 4},
-    {"mcs_autocorr_add_bins", "1.5e154", "autocorr_power", 2},
-    {"mcs_", "count=UINT64_MAX", "expected an error", 9},
-    {"mcs_welford_add", "0xFF-filled", "count", 9},
-    {"mcs_", "alias", "aliased call gave MCS_OK", 10},
-    {"mcs_moment_", "", "covariance(k,k)", 7},
-    {"mcs_theory_init", "", "read-out", 7}, /* a covariance or power below 0 by rounding */
-    {"mcs_", "1e300", "", 5},
-    {"mcs_", "1.5e154", "", 5},
-    {"mcs_", "DBL_MAX", "", 5},
-    {"mcs_welford_", "0xFF-filled", "nan", 5},
-    {"mcs_pattern2d_permute", "p=4294967295", NULL, 101},
-    {"mcs_pointset2d_exact_", "radius=SIZE_MAX", NULL, 102},
-    {"mcs_io_load_moment", "", "read-out", 103}, /* the lower triangle of sum_ss stays 0 */
     {NULL, NULL, NULL, 0},
 };
 
@@ -453,19 +435,19 @@ typedef struct {
 
 #define SCENARIO(fn, item) {"test_" #fn, fn, item}
 static const scenario scenarios[] = {
-    SCENARIO(item1_fft_trial_with_an_overflowing_bin_sum_is_refused, 1),
-    SCENARIO(item2_autocorr_power_is_never_ok_with_untransformed_data, 2),
-    SCENARIO(item3_an_unseeded_rng_is_refused_not_looped_on, 3),
-    SCENARIO(item4_the_largest_accepted_k_gives_sound_theory_in_bounded_time, 4),
-    SCENARIO(item5_no_accepted_input_poisons_a_read_out, 5),
-    SCENARIO(item6_variance_stderr_is_never_zero_when_undefined, 6),
-    SCENARIO(item7_variances_are_never_negative, 7),
-    SCENARIO(item8_importance_weights_of_any_finite_scale, 8),
-    SCENARIO(item9_self_merges_never_wrap_the_count, 9),
-    SCENARIO(item10_input_inside_the_plan_scratch_works_or_is_refused, 10),
-    SCENARIO(n1_pattern2d_permute_is_a_permutation_for_every_key, 101),
-    SCENARIO(n2_annulus_read_outs_of_any_radius_return, 102),
-    SCENARIO(n3_a_loaded_moment_reads_out_like_the_saved_one, 103),
+    SCENARIO(item1_fft_trial_with_an_overflowing_bin_sum_is_refused, 0),
+    SCENARIO(item2_autocorr_power_is_never_ok_with_untransformed_data, 0),
+    SCENARIO(item3_an_unseeded_rng_is_refused_not_looped_on, 0),
+    SCENARIO(item4_the_largest_accepted_k_gives_sound_theory_in_bounded_time, 0),
+    SCENARIO(item5_no_accepted_input_poisons_a_read_out, 0),
+    SCENARIO(item6_variance_stderr_is_never_zero_when_undefined, 0),
+    SCENARIO(item7_variances_are_never_negative, 0),
+    SCENARIO(item8_importance_weights_of_any_finite_scale, 0),
+    SCENARIO(item9_self_merges_never_wrap_the_count, 0),
+    SCENARIO(item10_input_inside_the_plan_scratch_works_or_is_refused, 0),
+    SCENARIO(n1_pattern2d_permute_is_a_permutation_for_every_key, 0),
+    SCENARIO(n2_annulus_read_outs_of_any_radius_return, 0),
+    SCENARIO(n3_a_loaded_moment_reads_out_like_the_saved_one, 0),
 };
 
 static const scenario *current_scenario;

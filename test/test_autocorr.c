@@ -24,10 +24,7 @@ static double weights[256], re[MCS_MAX_N + 1], im[MCS_MAX_N + 1], power[MCS_MAX_
 
 static void make_importance(size_t n)
 {
-    static double g[MCS_MAX_N];
-    for (size_t b = 0; b < n; ++b)
-        g[b] = 0.3 + (double)((b * 5u) % n) / (double)n + (b == 2u ? 1.5 : 0.0);
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_init(&imp, n, g));
+    spectra_make_importance(&imp, n, 0.3, 5u, 2u, 1.5);
 }
 
 static void test_autocorrelation_and_spectrum_agree_for_any_n(void)
@@ -108,12 +105,12 @@ static void test_merge_of_halves_equals_one_pass(void)
 
 /* ---------------- bad input ---------------- */
 
-#define AC_UNCHANGED(status, call)                                                           \
-    do {                                                                                     \
-        memcpy(&ac_before, &ac, sizeof ac);                                                  \
-        TEST_ASSERT_EQUAL_INT((status), (call));                                             \
-        TEST_ASSERT_EQUAL_MEMORY(&ac_before, &ac, sizeof ac);                                \
-    } while (0)
+#define AC_UNCHANGED(status, call) SPECTRA_UNCHANGED(ac, ac_before, status, call)
+
+static mcs_status add_bins(void *obj, size_t k, const size_t *b, const double *w)
+{
+    return mcs_autocorr_add_bins((mcs_autocorr *)obj, k, b, w);
+}
 
 static void test_bad_input_returns_an_error_and_changes_nothing(void)
 {
@@ -131,18 +128,7 @@ static void test_bad_input_returns_an_error_and_changes_nothing(void)
     AC_UNCHANGED(MCS_ERR_NULL, mcs_autocorr_init(NULL, 8u));
     AC_UNCHANGED(MCS_ERR_N_RANGE, mcs_autocorr_init(&ac, 0u));
     AC_UNCHANGED(MCS_ERR_N_RANGE, mcs_autocorr_init(&ac, (size_t)MCS_MAX_N + 1u));
-    AC_UNCHANGED(MCS_ERR_NULL, mcs_autocorr_add_bins(NULL, 3u, b, w));
-    AC_UNCHANGED(MCS_ERR_NULL, mcs_autocorr_add_bins(&ac, 3u, NULL, w));
-    AC_UNCHANGED(MCS_ERR_NULL, mcs_autocorr_add_bins(&ac, 3u, b, NULL));
-    AC_UNCHANGED(MCS_ERR_K_RANGE, mcs_autocorr_add_bins(&ac, 0u, b, w));
-    b[0] = 8u;
-    AC_UNCHANGED(MCS_ERR_BIN_RANGE, mcs_autocorr_add_bins(&ac, 3u, b, w));
-    b[0] = 0u;
-    w[2] = NAN;
-    AC_UNCHANGED(MCS_ERR_NOT_FINITE, mcs_autocorr_add_bins(&ac, 3u, b, w));
-    w[2] = -0.5;
-    AC_UNCHANGED(MCS_ERR_NEGATIVE, mcs_autocorr_add_bins(&ac, 3u, b, w));
-    w[2] = 0.5;
+    spectra_refuses_bad_trials(&ac, &ac_before, sizeof ac, 8u, add_bins, b, w, 0u, 2u);
 
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_autocorr_init(&ac2, 9u));
     AC_UNCHANGED(MCS_ERR_MISMATCH, mcs_autocorr_merge(&ac, &ac2));

@@ -33,12 +33,35 @@ static void stream_draw(spectra_stream *st)
     spectra_stream_draw(st, bins, weights, NULL);
 }
 
+/* One trial of st: added to mom, its dense s in dense and its transform
+ * S_k in re, im (the plan set up for N), for the brute-force references. */
+static void draw_transformed(spectra_stream *st, size_t n, size_t k)
+{
+    stream_draw(st);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_add_bins(&mom, k, bins, weights));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_dense(n, k, bins, weights, dense));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_dft_real(&plan, n, dense, re, im));
+}
+
+/* Empties count pairs of accumulators for Re and Im of S_k S_l*. */
+static void cross_init(size_t count, mcs_welford *wr, mcs_welford *wi)
+{
+    for (size_t j = 0; j < count; ++j) {
+        mcs_welford_init(&wr[j]);
+        mcs_welford_init(&wi[j]);
+    }
+}
+
+/* Adds S_k S_l* of the last transformed trial to (wr, wi). */
+static void cross_add(size_t k, size_t l, mcs_welford *wr, mcs_welford *wi)
+{
+    mcs_welford_add(wr, re[k] * re[l] + im[k] * im[l]);
+    mcs_welford_add(wi, im[k] * re[l] - re[k] * im[l]);
+}
+
 static void make_importance(size_t n)
 {
-    static double g[MCS_MAX_N];
-    for (size_t b = 0; b < n; ++b)
-        g[b] = 0.3 + (double)((b * 5u) % n) / (double)n + (b == 2u ? 1.5 : 0.0);
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_init(&imp, n, g));
+    spectra_make_importance(&imp, n, 0.3, 5u, 2u, 1.5);
 }
 
 /* ---------------- agreement with the spectrum accumulator ---------------- */
@@ -106,10 +129,7 @@ static void test_primal_moments_and_cross_spectrum_match_brute_force(void)
     spectra_stream st;
     spectra_stream_init(&st, MCS_PATTERN_STRATIFIED, N, K, &imp, 3u, STREAM_SEQ);
     for (size_t t = 0; t < T; ++t) {
-        stream_draw(&st);
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_add_bins(&mom, K, bins, weights));
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_dense(N, K, bins, weights, dense));
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_dft_real(&plan, N, dense, re, im));
+        draw_transformed(&st, N, K);
         for (size_t m = 0; m < N; ++m) {
             sum_s[m] += dense[m];
             for (size_t c = 0; c < N; ++c) {
@@ -309,24 +329,15 @@ static void test_importance_sampled_cross_spectrum_is_q_of_k_minus_l(void)
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_dft_init(&plan, N));
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_dft_real(&plan, N, inv_p, q_re, q_im));
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_init(&mom, N));
-    for (size_t a = 0; a < NK; ++a)
-        for (size_t l = 0; l < N; ++l) {
-            mcs_welford_init(&wr[a][l]);
-            mcs_welford_init(&wi[a][l]);
-        }
+    cross_init(NK * N, &wr[0][0], &wi[0][0]);
     spectra_stream st;
     spectra_stream_init(&st, MCS_PATTERN_RANDOM, N, K, &imp, 77u, STREAM_SEQ);
     for (size_t t = 0; t < T; ++t) {
-        stream_draw(&st);
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_add_bins(&mom, K, bins, weights));
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_dense(N, K, bins, weights, dense));
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_dft_real(&plan, N, dense, re, im));
+        draw_transformed(&st, N, K);
         for (size_t a = 0; a < NK; ++a) {
             const size_t k = ks[a];
-            for (size_t l = 0; l < N; ++l) {
-                mcs_welford_add(&wr[a][l], re[k] * re[l] + im[k] * im[l]);
-                mcs_welford_add(&wi[a][l], im[k] * re[l] - re[k] * im[l]);
-            }
+            for (size_t l = 0; l < N; ++l)
+                cross_add(k, l, &wr[a][l], &wi[a][l]);
         }
     }
     const double kn = (double)K / N, h = imp.harmonic_mean;
@@ -375,23 +386,14 @@ static void test_stratified_off_diagonal_terms_follow_eq_30(void)
     static mcs_welford wr[N][N], wi[N][N];
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_init(&mom, N));
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_dft_init(&plan, N));
-    for (size_t k = 0; k < N; ++k)
-        for (size_t l = 0; l < N; ++l) {
-            mcs_welford_init(&wr[k][l]);
-            mcs_welford_init(&wi[k][l]);
-        }
+    cross_init(N * N, &wr[0][0], &wi[0][0]);
     spectra_stream st;
     spectra_stream_init(&st, MCS_PATTERN_STRATIFIED, N, K, NULL, 99u, STREAM_SEQ);
     for (size_t t = 0; t < T; ++t) {
-        stream_draw(&st);
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_add_bins(&mom, K, bins, weights));
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_dense(N, K, bins, weights, dense));
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_dft_real(&plan, N, dense, re, im));
+        draw_transformed(&st, N, K);
         for (size_t k = 1; k < 4u; ++k)
-            for (size_t l = 0; l < N; ++l) {
-                mcs_welford_add(&wr[k][l], re[k] * re[l] + im[k] * im[l]);
-                mcs_welford_add(&wi[k][l], im[k] * re[l] - re[k] * im[l]);
-            }
+            for (size_t l = 0; l < N; ++l)
+                cross_add(k, l, &wr[k][l], &wi[k][l]);
     }
     const double kn = (double)K / N;
     size_t nonzero_off_diagonal = 0u;
@@ -434,12 +436,12 @@ static void test_stratified_off_diagonal_terms_follow_eq_30(void)
 
 /* ---------------- bad input ---------------- */
 
-#define MOM_UNCHANGED(status, call)                                                          \
-    do {                                                                                     \
-        memcpy(&mom_before, &mom, sizeof mom);                                               \
-        TEST_ASSERT_EQUAL_INT((status), (call));                                             \
-        TEST_ASSERT_EQUAL_MEMORY(&mom_before, &mom, sizeof mom);                             \
-    } while (0)
+#define MOM_UNCHANGED(status, call) SPECTRA_UNCHANGED(mom, mom_before, status, call)
+
+static mcs_status add_bins(void *obj, size_t k, const size_t *b, const double *w)
+{
+    return mcs_moment_add_bins((mcs_moment *)obj, k, b, w);
+}
 
 static void test_bad_input_to_adding_and_merging_changes_nothing(void)
 {
@@ -452,19 +454,9 @@ static void test_bad_input_to_adding_and_merging_changes_nothing(void)
     MOM_UNCHANGED(MCS_ERR_N_RANGE, mcs_moment_init(&mom, 0u));
     MOM_UNCHANGED(MCS_ERR_N_RANGE, mcs_moment_init(&mom, (size_t)COV + 1u));
 
-    MOM_UNCHANGED(MCS_ERR_NULL, mcs_moment_add_bins(NULL, 3u, b, w));
-    MOM_UNCHANGED(MCS_ERR_NULL, mcs_moment_add_bins(&mom, 3u, NULL, w));
-    MOM_UNCHANGED(MCS_ERR_NULL, mcs_moment_add_bins(&mom, 3u, b, NULL));
-    MOM_UNCHANGED(MCS_ERR_K_RANGE, mcs_moment_add_bins(&mom, 0u, b, w));
-    b[2] = 8u;
-    MOM_UNCHANGED(MCS_ERR_BIN_RANGE, mcs_moment_add_bins(&mom, 3u, b, w));
-    b[2] = 7u;
-    w[1] = NAN;
-    MOM_UNCHANGED(MCS_ERR_NOT_FINITE, mcs_moment_add_bins(&mom, 3u, b, w));
+    spectra_refuses_bad_trials(&mom, &mom_before, sizeof mom, 8u, add_bins, b, w, 2u, 1u);
     w[1] = -INFINITY;
     MOM_UNCHANGED(MCS_ERR_NOT_FINITE, mcs_moment_add_bins(&mom, 3u, b, w));
-    w[1] = -2.0;
-    MOM_UNCHANGED(MCS_ERR_NEGATIVE, mcs_moment_add_bins(&mom, 3u, b, w));
     w[1] = 2.0;
 
     for (size_t j = 0; j < 8u; ++j)

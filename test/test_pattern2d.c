@@ -147,6 +147,27 @@ static void test_kensler_permute_is_a_permutation_of_every_length(void)
     TEST_ASSERT_EQUAL_UINT32(0u, mcs_pattern2d_permute(0u, 0u, 1u));
 }
 
+/* The final offset (i + p) mod l must not wrap in 32 bits: with p near 2^32
+ * the images of a wrapped sum are not a permutation (finding N1). Every
+ * length up to 300 under keys at both ends of the range and near 2^32 - l. */
+static void test_kensler_permute_is_a_permutation_for_keys_near_two_to_the_32(void)
+{
+    static unsigned char seen[300];
+    for (uint32_t l = 1u; l <= 300u; ++l) {
+        const uint32_t keys[7] = {0u, 1u, 0x7fffffffu, 0x80000000u, 0xffffffffu - l,
+                                  0xffffffffu - l / 2u, 0xffffffffu};
+        for (int c = 0; c < 7; ++c) {
+            memset(seen, 0, sizeof seen);
+            for (uint32_t i = 0; i < l; ++i) {
+                uint32_t v = mcs_pattern2d_permute(i, l, keys[c]);
+                TEST_ASSERT_TRUE(v < l);
+                TEST_ASSERT_EQUAL_UINT8(0u, seen[v]); /* no image twice */
+                seen[v] = 1u;
+            }
+        }
+    }
+}
+
 /* Unbiasedness: the mean number of points in a box B, over the trials, is
  * K |B| for every kind but the (biased) fixed grid. The boxes straddle the
  * strata edges, so a pattern whose points piled up anywhere would fail. */
@@ -213,6 +234,25 @@ static void test_bad_draw_writes_nothing_and_does_not_advance_the_rng(void)
     TEST_ASSERT_EQUAL_MEMORY(&rng0, &rng, sizeof rng);
 }
 
+/* A never-seeded (zeroed) generator outputs only zeros: n-rooks and
+ * multi-jittered would loop for ever in its bounded draws, the other kinds
+ * would return a fixed set as if random. Every kind refuses it, as
+ * mcs_pattern_draw does, even the grid that draws nothing from it. */
+static void test_draw_with_a_never_seeded_rng_is_refused_and_writes_nothing(void)
+{
+    mcs_rng rng, rng0;
+    memset(&rng, 0, sizeof rng);
+    rng0 = rng;
+    for (int c = 0; c < MCS_PATTERN2D_KIND_COUNT; ++c) {
+        mcs_pattern2d p = points_pattern2d(all_kinds[c], 12u, 4u, 3u);
+        points_guard_fill(pts, 26u, GUARD);
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_UNINIT, mcs_pattern2d_draw(&p, &rng, 12u, pts));
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_UNINIT, mcs_pattern2d_draw(&p, &rng, 11u, pts));
+        points_guard_check(pts, 26u, GUARD);
+        TEST_ASSERT_EQUAL_MEMORY(&rng0, &rng, sizeof rng);
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -221,8 +261,10 @@ int main(void)
     RUN_TEST(test_stratified_kinds_keep_their_stratification_every_trial);
     RUN_TEST(test_grid_is_the_cell_centres_and_shifted_grid_moves_them_together);
     RUN_TEST(test_kensler_permute_is_a_permutation_of_every_length);
+    RUN_TEST(test_kensler_permute_is_a_permutation_for_keys_near_two_to_the_32);
     RUN_TEST(test_every_randomised_kind_puts_k_times_area_points_in_a_box_on_average);
     RUN_TEST(test_bad_configuration_returns_an_error_and_changes_nothing);
     RUN_TEST(test_bad_draw_writes_nothing_and_does_not_advance_the_rng);
+    RUN_TEST(test_draw_with_a_never_seeded_rng_is_refused_and_writes_nothing);
     return UNITY_END();
 }

@@ -175,6 +175,20 @@ static void test_bad_input_returns_an_error_and_changes_nothing(void)
     TEST_ASSERT_EQUAL_DOUBLE(-1.0, out);
 }
 
+static uint64_t *count_of(void *a) { return &((mcs_pointset *)a)->count; }
+static int add_one(void *a) { return mcs_pointset_add(a, 2u, x); }
+static int merge(void *dst, const void *src) { return mcs_pointset_merge(dst, src); }
+
+static void test_the_trial_count_stops_at_mcs_max_count_and_never_wraps(void)
+{
+    const points_counted kind = {sizeof acc, count_of, add_one, merge};
+    for (int j = 0; j < 4; ++j)
+        x[j] = 0.125 + 0.25 * j; /* two points in 1D or 2D */
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset_init(&acc, 8u));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset_init(&acc2, 8u));
+    points_assert_count_bound(&kind, &acc, &acc2, &acc3, &snapshot);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -183,5 +197,6 @@ int main(void)
     RUN_TEST(test_uniform_jitter_points_give_the_exact_comb);
     RUN_TEST(test_merge_of_halves_equals_one_pass);
     RUN_TEST(test_bad_input_returns_an_error_and_changes_nothing);
+    RUN_TEST(test_the_trial_count_stops_at_mcs_max_count_and_never_wraps);
     return UNITY_END();
 }

@@ -75,6 +75,38 @@ static void test_radial_average_of_one_trial_is_the_whole_plane_annulus_mean(voi
     TEST_ASSERT_EQUAL_UINT(8u, s1);
 }
 
+/* Annuli exist up to the largest cutoff, MCS_MAX_FREQ: ring sizes are exact
+ * there (against a count over the square) and every annulus read-out of a
+ * larger radius is refused, whatever its size, with *out untouched
+ * (finding N2: radius SIZE_MAX looped for ever, ring_size(SIZE_MAX) gave 0). */
+static void test_annulus_read_outs_stop_at_the_largest_cutoff(void)
+{
+    const long fmax = MCS_MAX_FREQ;
+    for (long r = 0; r <= fmax; ++r) {
+        size_t want = 0u, size = 0u;
+        for (long fy = -r - 1; fy <= r + 1; ++fy)
+            for (long fx = -r - 1; fx <= r + 1; ++fx)
+                want += fx * fx + fy * fy >= r * r && fx * fx + fy * fy < (r + 1) * (r + 1);
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_ring_size((size_t)r, &size));
+        TEST_ASSERT_EQUAL_UINT(want, size);
+    }
+    mcs_pattern2d p = points_pattern2d(MCS_PATTERN2D_JITTERED, 6u, 3u, 2u);
+    double v = 0.0;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_exact_radial(&p, (size_t)fmax, &v));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_exact_anisotropy(&p, (size_t)fmax, &v));
+    const size_t past[3] = {(size_t)fmax + 1u, (size_t)1 << 31, SIZE_MAX};
+    for (int c = 0; c < 3; ++c) {
+        size_t size = 7u;
+        v = -1.0;
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_FREQ_RANGE, mcs_pointset2d_ring_size(past[c], &size));
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_FREQ_RANGE, mcs_pointset2d_exact_radial(&p, past[c], &v));
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_FREQ_RANGE,
+                              mcs_pointset2d_exact_anisotropy(&p, past[c], &v));
+        TEST_ASSERT_EQUAL_UINT(7u, size);
+        TEST_ASSERT_EQUAL_DOUBLE(-1.0, v);
+    }
+}
+
 /* Measured <P(f)> against the exact spectrum at every |fx|, |fy| <= F and the
  * annulus averages against the exact ones, within 5 standard errors (1e-9 K
  * for the deterministic grids). */
@@ -288,11 +320,26 @@ static void test_bad_input_returns_an_error_and_changes_nothing(void)
     TEST_ASSERT_EQUAL_DOUBLE(-1.0, out);
 }
 
+static uint64_t *count_of(void *a) { return &((mcs_pointset2d *)a)->count; }
+static int add_one(void *a) { return mcs_pointset2d_add(a, 2u, pts); }
+static int merge(void *dst, const void *src) { return mcs_pointset2d_merge(dst, src); }
+
+static void test_the_trial_count_stops_at_mcs_max_count_and_never_wraps(void)
+{
+    const points_counted kind = {sizeof acc, count_of, add_one, merge};
+    for (int j = 0; j < 4; ++j)
+        pts[j] = 0.125 + 0.25 * j; /* two points in 1D or 2D */
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_init(&acc, 3u));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_init(&acc2, 3u));
+    points_assert_count_bound(&kind, &acc, &acc2, &acc3, &snapshot);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_one_trial_matches_the_direct_sum_at_every_wave_vector);
     RUN_TEST(test_radial_average_of_one_trial_is_the_whole_plane_annulus_mean);
+    RUN_TEST(test_annulus_read_outs_stop_at_the_largest_cutoff);
     RUN_TEST(test_random_and_jittered_points_match_their_exact_spectra);
     RUN_TEST(test_grids_give_the_exact_comb_with_or_without_the_shift);
     RUN_TEST(test_n_rooks_points_match_their_exact_spectrum);
@@ -300,5 +347,6 @@ int main(void)
     RUN_TEST(test_anisotropy_is_psa_variance_over_squared_mean_in_decibels);
     RUN_TEST(test_merge_of_halves_equals_one_pass);
     RUN_TEST(test_bad_input_returns_an_error_and_changes_nothing);
+    RUN_TEST(test_the_trial_count_stops_at_mcs_max_count_and_never_wraps);
     return UNITY_END();
 }

@@ -260,6 +260,27 @@ static void test_bad_draw_writes_nothing_and_does_not_advance_the_rng(void)
     TEST_ASSERT_EQUAL_DOUBLE(GUARD, pts[8]);
 }
 
+/* A never-seeded (zeroed) generator outputs only zeros, so every trial
+ * would be the same set as if randomised. Every kind refuses it, as
+ * mcs_pattern_draw does, and writes nothing. */
+static void test_draw_with_a_never_seeded_rng_is_refused_and_writes_nothing(void)
+{
+    mcs_rng rng, rng0;
+    memset(&rng, 0, sizeof rng);
+    rng0 = rng;
+    for (int c = 0; c < MCS_SAMPLER_KIND_COUNT; ++c)
+        for (size_t dim = 1u; dim <= 2u; ++dim) {
+            if (!mcs_sampler_has_dim(all_kinds[c], dim))
+                continue;
+            mcs_sampler s = make(all_kinds[c], dim, 8u);
+            points_guard_fill(pts, 18u, GUARD);
+            TEST_ASSERT_EQUAL_INT(MCS_ERR_UNINIT, mcs_sampler_draw(&s, &rng, 8u, pts));
+            TEST_ASSERT_EQUAL_INT(MCS_ERR_UNINIT, mcs_sampler_draw(&s, &rng, 7u, pts));
+            points_guard_check(pts, 18u, GUARD);
+            TEST_ASSERT_EQUAL_MEMORY(&rng0, &rng, sizeof rng);
+        }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -271,5 +292,6 @@ int main(void)
     RUN_TEST(test_same_seed_same_points_and_kinds_have_names);
     RUN_TEST(test_bad_configuration_returns_an_error_and_changes_nothing);
     RUN_TEST(test_bad_draw_writes_nothing_and_does_not_advance_the_rng);
+    RUN_TEST(test_draw_with_a_never_seeded_rng_is_refused_and_writes_nothing);
     return UNITY_END();
 }

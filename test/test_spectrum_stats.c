@@ -25,20 +25,12 @@ static double weights[64];
 static void run(mcs_spectrum *a, mcs_pattern_kind kind, size_t n, size_t k,
                 const mcs_importance *importance, uint64_t seed, size_t trials)
 {
-    spectra_stream st;
-    spectra_stream_init(&st, kind, n, k, importance, seed, STREAM_SEQ);
-    for (size_t t = 0; t < trials; ++t) {
-        spectra_stream_draw(&st, bins, weights, NULL);
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_bins(a, k, bins, weights));
-    }
+    spectra_run(a, kind, n, k, importance, seed, STREAM_SEQ, trials, bins, weights);
 }
 
 static void make_importance(size_t n)
 {
-    static double g[MCS_MAX_N];
-    for (size_t b = 0; b < n; ++b)
-        g[b] = 0.2 + (double)((b * 7u) % n) / (double)n + (b == 3u ? 2.0 : 0.0);
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_init(&imp, n, g));
+    spectra_make_importance(&imp, n, 0.2, 7u, 3u, 2.0);
 }
 
 /* ---------------- the note's spectra, measured ---------------- */

@@ -9,20 +9,29 @@
 void setUp(void) {}
 void tearDown(void) {}
 
+/* A fresh acc holding count values offset + U[0,1) from PCG32 (seed, seq);
+ * x[count] keeps them unless NULL. */
+static void fill_uniform(mcs_welford *acc, uint64_t seed, uint64_t seq, int count, double offset,
+                         double *x)
+{
+    mcs_rng rng;
+    mcs_rng_seed(&rng, seed, seq);
+    mcs_welford_init(acc);
+    for (int i = 0; i < count; ++i) {
+        double u;
+        mcs_rng_double(&rng, &u);
+        if (x != NULL)
+            x[i] = offset + u;
+        mcs_welford_add(acc, offset + u);
+    }
+}
+
 static void test_welford_matches_a_two_pass_computation_with_a_large_offset(void)
 {
     enum { COUNT = 5000 };
     static double x[COUNT];
-    mcs_rng rng;
-    mcs_rng_seed(&rng, 9u, 9u);
     mcs_welford acc;
-    mcs_welford_init(&acc);
-    for (int i = 0; i < COUNT; ++i) {
-        double u;
-        mcs_rng_double(&rng, &u);
-        x[i] = 1e9 + u; /* the sum of squares would lose every digit here */
-        mcs_welford_add(&acc, x[i]);
-    }
+    fill_uniform(&acc, 9u, 9u, COUNT, 1e9, x); /* the sum of squares would lose every digit */
     double mean = 0.0, m2 = 0.0, m3 = 0.0, m4 = 0.0;
     for (int i = 0; i < COUNT; ++i)
         mean += x[i] - 1e9; /* exact: the two-pass reference must not lose digits either */
@@ -79,15 +88,8 @@ static void test_variance_stderr_matches_the_theory_for_uniform_values(void)
 {
     /* U(0,1): sigma^2 = 1/12, mu4 = 1/80, so Var[s^2] ~ (1/80 - 1/144)/c. */
     enum { COUNT = 40000 };
-    mcs_rng rng;
-    mcs_rng_seed(&rng, 21u, 22u);
     mcs_welford acc;
-    mcs_welford_init(&acc);
-    for (int i = 0; i < COUNT; ++i) {
-        double u;
-        mcs_rng_double(&rng, &u);
-        mcs_welford_add(&acc, u);
-    }
+    fill_uniform(&acc, 21u, 22u, COUNT, 0.0, NULL);
     double se_var, var;
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_welford_variance_stderr(&acc, &se_var));
     mcs_welford_variance(&acc, &var);

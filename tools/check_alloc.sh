@@ -20,15 +20,7 @@ NM='nm'
 ALLOW="$(dirname "$0")/alloc_allowlist.txt"
 RUNTIME=
 LABEL=
-while getopts n:a:r:l: opt; do
-    case $opt in
-    n) NM=$OPTARG ;;
-    a) ALLOW=$OPTARG ;;
-    r) RUNTIME=$OPTARG ;;
-    l) LABEL=$OPTARG ;;
-    *) usage_exit ;;
-    esac
-done
+opts_parse "n=NM a=ALLOW r=RUNTIME l=LABEL" "$@"
 shift $((OPTIND - 1))
 [ $# -ge 1 ] || fail_exit 2 "check_alloc: no input file"
 for f in "$@"; do

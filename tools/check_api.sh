@@ -20,27 +20,19 @@
 #    (so nothing without the mcs_ prefix either), and none of the API missing.
 # Prints one line per failure and a summary; exit status 1 on any failure.
 set -eu
+# shellcheck source=tools/common.sh
+. "$(dirname "$0")/common.sh"
+USAGE="usage: $0 [-c 'cc flags'] [-d dir] [-n nm] [-p pending] [-o 'objects'] [library...]"
 
 CPP='cc -Iinclude'
 DIR=include
-NM=nm
+NM='nm'
 PENDING=
 OBJECTS=
-while getopts c:d:n:p:o: opt; do
-    case $opt in
-    c) CPP=$OPTARG ;;
-    d) DIR=$OPTARG ;;
-    n) NM=$OPTARG ;;
-    p) PENDING=$OPTARG ;;
-    o) OBJECTS=$OPTARG ;;
-    *) echo "usage: $0 [-c 'cc flags'] [-d dir] [-n nm] [-p pending] [-o 'objects'] [library...]" >&2
-       exit 2 ;;
-    esac
-done
+opts_parse "c=CPP d=DIR n=NM p=PENDING o=OBJECTS" "$@"
 shift $((OPTIND - 1))
 
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT INT TERM
+make_tmp
 fail=0
 here=$(dirname "$0")
 

@@ -22,3 +22,26 @@ make_tmp() {
     tmp=$(mktemp -d)
     trap 'rm -rf "$tmp"' EXIT INT TERM
 }
+
+# opts_parse SPEC "$@": the options of a check script, each taking a value,
+# with getopts. SPEC lists letter=VARIABLE pairs ("n=NM a=ALLOW"); -x VALUE
+# sets VARIABLE, an unknown option exits through usage_exit. The caller then
+# drops the options with
+#   shift $((OPTIND - 1))
+opts_parse() {
+    spec=$1
+    shift
+    letters=
+    for pair in $spec; do
+        letters="$letters${pair%%=*}:"
+    done
+    OPTIND=1
+    while getopts "$letters" opt; do
+        var=
+        for pair in $spec; do
+            [ "${pair%%=*}" != "$opt" ] || var=${pair#*=}
+        done
+        [ -n "$var" ] || usage_exit
+        eval "$var=\$OPTARG"
+    done
+}

@@ -26,16 +26,7 @@ DEPTH=8
 TOP=8
 HDRS=include/mcspec
 ROOTS=
-while getopts l:d:n:p:e: opt; do
-    case $opt in
-    l) LIMIT=$OPTARG ;;
-    d) DEPTH=$OPTARG ;;
-    n) TOP=$OPTARG ;;
-    p) HDRS=$OPTARG ;;
-    e) ROOTS=$OPTARG ;;
-    *) usage_exit ;;
-    esac
-done
+opts_parse "l=LIMIT d=DEPTH n=TOP p=HDRS e=ROOTS" "$@"
 shift $((OPTIND - 1))
 [ $# -eq 1 ] || usage_exit
 dir=$1

@@ -12,16 +12,28 @@
  * [0, n); S_k = N^{-1/2} sum_n e^{-2 pi i k n / N} s_n (eq. 7); F is the same
  * transform of f; Q is the same transform of 1/p_n (eq. 43, mcs_importance_q).
  * Every function validates all inputs before writing anything: on error every
- * output is byte-for-byte unchanged. Nothing allocates, and no work arrays
+ * output is byte-for-byte unchanged. A complex result (re, im) is written
+ * last, after every input is read, so re and im may be any two doubles; the
+ * same double for both is MCS_ERR_ALIAS (it cannot hold both parts), checked
+ * after every other status. Nothing allocates, and no work arrays
  * live on the stack: transforms are taken one coefficient at a time (with
- * trig per term), at the costs noted per function. */
+ * trig per term), at the costs noted per function.
+ *
+ * Magnitudes: an integrand f (and g) takes |f_n| <= MCS_ESTIMATE_MAX_ABS
+ * (estimate.h: 2^110, the largest term the estimator takes), a larger finite
+ * value is MCS_ERR_MAGNITUDE (after MCS_ERR_NOT_FINITE for NaN or infinity
+ * anywhere in it). Within it no square, product or sum inside a form can
+ * overflow (they stay below 2^400 with importance weights 1/p_n < 2^32 and
+ * K up to MCS_MAX_K), so every result with MCS_OK is finite. */
 #ifndef MCSPEC_EQ_H
 #define MCSPEC_EQ_H
 
 #include <stddef.h>
 #include "config.h"
 #include "status.h"
+#include "estimate.h"
 #include "importance.h"
+#include "moment.h"
 #include "theory.h"
 
 #ifdef __cplusplus
@@ -31,58 +43,72 @@ extern "C" {
 /* ---- Section 1: gradient variance -------------------------------------- */
 /* th: exact moments of the pattern, n == th->n and k == th->k as for
  * mcs_theory_variance, whose statuses these share: MCS_ERR_NULL,
- * MCS_ERR_UNINIT, MCS_ERR_MISMATCH, MCS_ERR_K_RANGE, MCS_ERR_NOT_FINITE. */
+ * MCS_ERR_UNINIT, MCS_ERR_MISMATCH, MCS_ERR_K_RANGE, MCS_ERR_NOT_FINITE;
+ * then MCS_ERR_MAGNITUDE (|f_n| or |g_n| above MCS_ESTIMATE_MAX_ABS). */
 
 /* Eq. 2, uncorrelated sampling: the exact Var[I_f] + Var[I_g] when f and g
  * are each estimated from their own independent trial (the covariance is 0).
- * f[n], g[n]. */
+ * f[n], g[n], each |value| <= MCS_ESTIMATE_MAX_ABS. */
 mcs_status mcs_eq2_uncorrelated_variance(const mcs_theory *th, size_t n, size_t k,
                                          const double *f, const double *g, double *out);
 
 /* Eq. 4 (and eq. 6), correlated sampling: the exact Var[I_h] of h = f - g
  * estimated from ONE shared trial; equals Var[f] + Var[g] - 2 Cov[f,g].
- * f[n], g[n]; MCS_ERR_NOT_FINITE also when f - g overflows. */
+ * f[n], g[n], each |value| <= MCS_ESTIMATE_MAX_ABS (so f - g cannot
+ * overflow). */
 mcs_status mcs_eq4_correlated_variance(const mcs_theory *th, size_t n, size_t k,
                                        const double *f, const double *g, double *out);
 
 /* ---- Section 2: discrete Fourier analysis ------------------------------- */
 
-/* Eq. 11: <I> = (1/N) sum_n f_n, the unbiased mean. f[n], n <= MCS_MAX_N.
- * MCS_ERR_NULL, MCS_ERR_N_RANGE, MCS_ERR_NOT_FINITE. */
+/* Eq. 11: <I> = (1/N) sum_n f_n, the unbiased mean. f[n], n <= MCS_MAX_N,
+ * |f_n| <= MCS_ESTIMATE_MAX_ABS. MCS_ERR_NULL, MCS_ERR_N_RANGE,
+ * MCS_ERR_NOT_FINITE, MCS_ERR_MAGNITUDE. */
 mcs_status mcs_eq11_unbiased_mean(size_t n, const double *f, double *out);
 
 /* Eq. 13: (1/K^2) sum_{m,n >= 1} F_m* F_n <S_m S_n*>, the full double sum
  * from the exact moments of th (second moments, not covariances, and no
  * k = 0 terms, as printed; it is the variance when <S_{k>0}> = 0 and S_0 is
  * deterministic, i.e. unbiased kinds without importance). O(N^4), about
- * 17 M multiply-adds (tens of ms) at N = 64. f[n]; statuses as section 1. */
+ * 17 M multiply-adds (tens of ms) at N = 64. f[n], |f_n| <=
+ * MCS_ESTIMATE_MAX_ABS; statuses as section 1. */
 mcs_status mcs_eq13_variance(const mcs_theory *th, size_t n, size_t k, const double *f,
                              double *out);
 
+/* Largest |power[b]| mcs_eq14_variance takes: MCS_MOMENT_MAX_TRIAL squared,
+ * 2^440, the most |S_k|^2 (<= (sum_n s_n)^2 / N) of any trial an accumulator
+ * takes. With |F_k|^2 <= sum_n f_n^2 < 2^232 the sum stays below 2^672. */
+#define MCS_EQ_MAX_POWER (MCS_MOMENT_MAX_TRIAL * MCS_MOMENT_MAX_TRIAL)
+
 /* Eq. 14: (1/K^2) sum_{n >= 1} |F_n|^2 power[n], the diagonal (stationary)
  * approximation, for any power spectrum the caller holds: measured, from
- * mcs_theory_power, or a closed form below. f[n], power[n] (power[0]
- * unused), n <= MCS_MAX_N (direct DFT of f, O(N^2) trig: about 0.3 s at 4096).
- * MCS_ERR_NULL, MCS_ERR_N_RANGE, MCS_ERR_K_RANGE (k = 0), MCS_ERR_NOT_FINITE. */
+ * mcs_theory_power, or a closed form below. f[n] (|f_n| <=
+ * MCS_ESTIMATE_MAX_ABS), power[n] (power[0] unused, the others within
+ * +-MCS_EQ_MAX_POWER), n <= MCS_MAX_N (direct DFT of f, O(N^2) trig: about
+ * 0.3 s at 4096). MCS_ERR_NULL, MCS_ERR_N_RANGE, MCS_ERR_K_RANGE (k = 0),
+ * MCS_ERR_NOT_FINITE, MCS_ERR_MAGNITUDE (f or power beyond its bound). */
 mcs_status mcs_eq14_variance(size_t n, size_t k, const double *f, const double *power,
                              double *out);
 
 /* ---- Section 3: random, stratified, uniform, jitter --------------------- */
 /* Shared statuses: MCS_ERR_NULL, MCS_ERR_N_RANGE (n = 0 or > MCS_MAX_N),
  * MCS_ERR_K_RANGE (k = 0), MCS_ERR_FREQ_RANGE
- * (freq >= n), MCS_ERR_DOMAIN as stated per function, MCS_ERR_NOT_FINITE (f). */
+ * (freq >= n), MCS_ERR_DOMAIN as stated per function, MCS_ERR_NOT_FINITE (f),
+ * MCS_ERR_MAGNITUDE (|f_n| above MCS_ESTIMATE_MAX_ABS), MCS_ERR_ALIAS
+ * (re == im, where the result is complex). */
 
 /* Eq. 23: random power spectrum <|S_freq|^2> = K/N, freq in [1, N) (exact at
  * finite N). freq 0: MCS_ERR_DOMAIN. */
 mcs_status mcs_eq23_random_power(size_t n, size_t k, size_t freq, double *out);
 
-/* Eq. 24: random Var[I] = (1/K)(1/N) sum_{n >= 1} |F_n|^2. f[n], n <= MCS_MAX_N:
+/* Eq. 24: random Var[I] = (1/K)(1/N) sum_{n >= 1} |F_n|^2. f[n] (|f_n| <=
+ * MCS_ESTIMATE_MAX_ABS), n <= MCS_MAX_N:
  * the sum term by term up to MCS_MAX_COV_N, above it its Parseval equal
  * sum_n (f_n - fbar)^2 (O(N)). */
 mcs_status mcs_eq24_random_variance(size_t n, size_t k, const double *f, double *out);
 
 /* Eq. 25: random Var[I] = (1/K) (1/N) sum_n (f_n - fbar)^2, the population
- * variance of f over K. f[n], n <= MCS_MAX_N. */
+ * variance of f over K. f[n] (|f_n| <= MCS_ESTIMATE_MAX_ABS), n <= MCS_MAX_N. */
 mcs_status mcs_eq25_random_variance(size_t n, size_t k, const double *f, double *out);
 
 /* Eq. 30 as printed: the stratified correction
@@ -148,7 +174,11 @@ mcs_status mcs_eq37_jitter_power(size_t n, size_t k, size_t freq, double *out);
  * (eq. 44: N^{-1/2} Q_0 = 1/H). imp NULL means "no importance function" and
  * gives MCS_ERR_DOMAIN; imp not initialised (n out of range) gives
  * MCS_ERR_UNINIT. Also MCS_ERR_NULL (outputs), MCS_ERR_K_RANGE (k = 0),
- * MCS_ERR_FREQ_RANGE (freq >= N), MCS_ERR_NOT_FINITE (f). */
+ * MCS_ERR_FREQ_RANGE (freq >= N), MCS_ERR_NOT_FINITE (f), MCS_ERR_MAGNITUDE
+ * (|f_n| above MCS_ESTIMATE_MAX_ABS), MCS_ERR_ALIAS (re == im, where the
+ * result is complex), and last MCS_ERR_INVARIANT when imp holds values
+ * mcs_importance_init never makes (a zeroed p_n or H) and the result would
+ * not be finite: for every object init makes it is (1/p_n < 2^32). */
 
 /* Eq. 41: random with importance, <s_m s_n> = (K^2 - K)/N^2 + (K/N) delta_mn / p_n
  * (exact) for bins bin_m, bin_n of imp: MCS_ERR_BIN_RANGE. */
@@ -193,7 +223,7 @@ mcs_status mcs_eq50_importance_stratified_power(const mcs_importance *imp, size_
 
 /* Eq. 52 as printed: (1/K) N^{-3/2} sum_{k,l >= 1} F_k* F_l Q_{k-l}.
  * Not the variance under importance sampling (S_0 is random there).
- * f[imp->n], any N up to MCS_MAX_N. Up to MCS_MAX_COV_N the double sum is
+ * f[imp->n], |f_n| <= MCS_ESTIMATE_MAX_ABS, any N up to MCS_MAX_N. Up to MCS_MAX_COV_N the double sum is
  * taken term by term, O(N^3) trig (eq. 52 corrected and eq. 55 too); above,
  * its equal by Parseval in O(N), (1/K)(1/N) sum_n (f_n - fbar)^2 / p_n
  * (eq. 52 corrected: (1/K)(1/N) sum_n p_n (f_n/p_n - fbar)^2; eq. 55:
@@ -203,7 +233,10 @@ mcs_status mcs_eq52_variance_printed(const mcs_importance *imp, size_t k, const 
 
 /* Eq. 52 corrected: (1/K) [N^{-3/2} sum_{all k,l} F_k* F_l Q_{k-l} - |F_0|^2/N],
  * the exact Var[I] of random sampling with importance, equal by Parseval to
- * the primal (1/K) [(1/N) sum_n f_n^2 / p_n - fbar^2]. Same arguments. */
+ * the primal (1/K) [(1/N) sum_n f_n^2 / p_n - fbar^2]. Same arguments.
+ * Never negative, nor is eq. 52 as printed (both are sums of squares by
+ * Parseval): a term-by-term sum in [-b, 0) is rounding and reads 0, b =
+ * (N^2 + 4N + 16) DBL_EPSILON (sum_n |f_n|)^2 / (H K) bounding it. */
 mcs_status mcs_eq52_variance_corrected(const mcs_importance *imp, size_t k, const double *f,
                                        double *out);
 
@@ -211,20 +244,23 @@ mcs_status mcs_eq52_variance_corrected(const mcs_importance *imp, size_t k, cons
  * cyclic convolution (F (x) Q)_k = sum_{l=0}^{N-1} F_l Q_{k-l}. By Parseval it
  * equals (1/K)[(1/N) sum f^2/p - fbar * mean(f/p)]: zero when f/p is constant
  * (the note's remark) but the exact variance only when mean(f/p) = fbar.
- * f[imp->n], any N up to MCS_MAX_N (as eq. 52). */
+ * f[imp->n], |f_n| <= MCS_ESTIMATE_MAX_ABS, any N up to MCS_MAX_N (as
+ * eq. 52). */
 mcs_status mcs_eq55_variance_convolution(const mcs_importance *imp, size_t k, const double *f,
                                          double *out);
 
 /* Eq. 58 as printed: (1/K) (sum_{n >= 1} |F_n|^2) / H. Not a bound under
  * importance sampling (constant f: 0, while the variance is not).
- * f[imp->n], any N up to MCS_MAX_N (the sum as for eq. 24). */
+ * f[imp->n], |f_n| <= MCS_ESTIMATE_MAX_ABS, any N up to MCS_MAX_N (the sum
+ * as for eq. 24). */
 mcs_status mcs_eq58_bound_printed(const mcs_importance *imp, size_t k, const double *f,
                                   double *out);
 
 /* Eq. 58 corrected: (1/K) (sum_{all n} |F_n|^2) (1/H - 1/N), the
  * Cauchy-Schwarz step applied over every k (sum_k Var S_k = K/H - K/N); a
- * valid upper bound on the random-with-importance Var[I]. f[imp->n]
- * (sum |F_n|^2 = sum f_n^2 by Parseval, so any N). */
+ * valid upper bound on the random-with-importance Var[I]. f[imp->n],
+ * |f_n| <= MCS_ESTIMATE_MAX_ABS (sum |F_n|^2 = sum f_n^2 by Parseval, so
+ * any N). */
 mcs_status mcs_eq58_bound_corrected(const mcs_importance *imp, size_t k, const double *f,
                                     double *out);
 

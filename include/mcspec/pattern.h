@@ -27,13 +27,13 @@ typedef enum {
 #define MCS_PATTERN_KIND_COUNT 5
 
 /* Largest K a pattern takes: 2^30 (1 073 741 824) samples per trial. Why
- * this bound: exact theory walks the K samples of a uniform pattern once
- * (about 4 s at 2^30; at SIZE_MAX it never returned); u_j = (j + xi)/K keeps
+ * this bound: u_j = (j + xi)/K keeps
  * at least 53 - 30 = 23 bits of the in-stratum offset xi, and j N (N up to
  * 2^12) stays an exact integer in a double, so bins are found exactly (past
  * ~2^50 they are not); and a trial's total weight, at most
  * K / (N MCS_IMPORTANCE_MIN_G) < 2^62, stays far inside every accumulator's
- * magnitude limit. */
+ * magnitude limit. (Exact theory of a uniform pattern finds its bin counts by
+ * bisection, O(N log K): K does not bound its time.) */
 #define MCS_MAX_K 1073741824u
 
 typedef struct {

@@ -70,15 +70,19 @@ mcs_status mcs_pattern2d_init(mcs_pattern2d *pat, mcs_pattern2d_kind kind, size_
                               size_t strata_x, size_t strata_y);
 
 /* One trial: points[2 k] written; k must equal pat->k. The grid kind draws
- * nothing from rng; cmj draws one 32-bit seed per trial.
- * MCS_ERR_NULL, MCS_ERR_UNINIT, MCS_ERR_MISMATCH (k != pat->k).
+ * nothing from rng (it must still be seeded); cmj draws one 32-bit seed per
+ * trial. MCS_ERR_NULL, MCS_ERR_UNINIT (pat not from mcs_pattern2d_init, or
+ * rng never seeded), MCS_ERR_MISMATCH (k != pat->k).
  * On error nothing is written and rng is not advanced. */
 mcs_status mcs_pattern2d_draw(const mcs_pattern2d *pat, mcs_rng *rng, size_t k, double *points);
 
 /* Kensler's keyed permutation: the image of i in a pseudo-random permutation
  * of [0, l) chosen by key p (cycle-walking a hash over the next power of 2).
- * i < l required; returns 0 for l = 0 or i >= l. Exposed for tests and for
- * renderers that want the same shuffles. */
+ * i < l required; returns 0 for l = 0 or i >= l. A permutation for every
+ * key: the final (i + p) mod l is summed in 64 bits, so for p + i >= 2^32 it
+ * differs from the paper's 32-bit code, whose sum wraps there and then maps
+ * two i to one image. Exposed for tests and for renderers that want the same
+ * shuffles. */
 uint32_t mcs_pattern2d_permute(uint32_t i, uint32_t l, uint32_t p);
 
 #ifdef __cplusplus

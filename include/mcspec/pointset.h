@@ -53,8 +53,8 @@ mcs_status mcs_pointset_init(mcs_pointset *acc, size_t freq_max);
 
 /* Adds one trial: points[k] in [0, 1), any k >= 1 (trials may differ in K;
  * each periodogram is normalised by its own K). MCS_ERR_NULL, MCS_ERR_UNINIT,
- * MCS_ERR_K_RANGE (k = 0), MCS_ERR_POINT_RANGE (outside [0,1) or NaN).
- * *acc untouched on error. */
+ * MCS_ERR_K_RANGE (k = 0), MCS_ERR_POINT_RANGE (outside [0,1) or NaN),
+ * MCS_ERR_COUNT (the count at MCS_MAX_COUNT). *acc untouched on error. */
 mcs_status mcs_pointset_add(mcs_pointset *acc, size_t k, const double *points);
 
 /* mcs_pointset_add for float points, read in place: each coordinate widens to double
@@ -65,7 +65,8 @@ mcs_status mcs_pointset_add_f(mcs_pointset *acc, size_t k, const float *points);
 
 /* dst <- dst union src: the statistics of one pass over both trial streams,
  * to rounding. src unchanged; dst == src allowed. MCS_ERR_NULL,
- * MCS_ERR_UNINIT, MCS_ERR_MISMATCH (different F). dst untouched on error. */
+ * MCS_ERR_UNINIT, MCS_ERR_MISMATCH (different F), MCS_ERR_COUNT (the counts
+ * would pass MCS_MAX_COUNT). dst untouched on error. */
 mcs_status mcs_pointset_merge(mcs_pointset *dst, const mcs_pointset *src);
 
 /* Trials added. MCS_ERR_NULL, MCS_ERR_UNINIT. */

@@ -61,8 +61,8 @@ mcs_status mcs_pointset2d_init(mcs_pointset2d *acc, size_t freq_max);
 
 /* Adds one trial: points[2 k] interleaved (x_0, y_0, x_1, ...), each in
  * [0, 1); any k >= 1. MCS_ERR_NULL, MCS_ERR_UNINIT, MCS_ERR_K_RANGE (k = 0),
- * MCS_ERR_POINT_RANGE (a coordinate outside [0,1) or NaN). *acc untouched on
- * error. */
+ * MCS_ERR_POINT_RANGE (a coordinate outside [0,1) or NaN), MCS_ERR_COUNT (the
+ * count at MCS_MAX_COUNT). *acc untouched on error. */
 mcs_status mcs_pointset2d_add(mcs_pointset2d *acc, size_t k, const double *points);
 
 /* mcs_pointset2d_add for float points, read in place: each coordinate widens to double
@@ -73,7 +73,8 @@ mcs_status mcs_pointset2d_add_f(mcs_pointset2d *acc, size_t k, const float *poin
 
 /* dst <- dst union src (Chan et al.), to rounding one pass over both trial
  * streams. src unchanged; dst == src allowed. MCS_ERR_NULL, MCS_ERR_UNINIT,
- * MCS_ERR_MISMATCH (different F). dst untouched on error. */
+ * MCS_ERR_MISMATCH (different F), MCS_ERR_COUNT (the counts would pass
+ * MCS_MAX_COUNT). dst untouched on error. */
 mcs_status mcs_pointset2d_merge(mcs_pointset2d *dst, const mcs_pointset2d *src);
 
 /* Trials added. MCS_ERR_NULL, MCS_ERR_UNINIT. */
@@ -103,7 +104,9 @@ mcs_status mcs_pointset2d_radial_stderr(const mcs_pointset2d *acc, size_t radius
 mcs_status mcs_pointset2d_anisotropy(const mcs_pointset2d *acc, size_t radius, double *out_db);
 
 /* Number of integer wave vectors in annulus radius (r <= |f| < r + 1), the
- * whole plane counted: 1 for r = 0, 8 for r = 1. MCS_ERR_NULL. */
+ * whole plane counted: 1 for r = 0, 8 for r = 1; exact, in O(radius) steps.
+ * MCS_ERR_NULL, MCS_ERR_FREQ_RANGE (radius above MCS_MAX_FREQ: no
+ * accumulator holds that annulus). *out untouched on error. */
 mcs_status mcs_pointset2d_ring_size(size_t radius, size_t *out);
 
 /* Exact <P(fx, fy)> of a 2D pattern, for any integer wave vector:
@@ -125,9 +128,11 @@ mcs_status mcs_pointset2d_exact_power(const mcs_pattern2d *pat, long freq_x, lon
 /* The exact radial average and psa anisotropy of annulus radius, from
  * mcs_pointset2d_exact_power over the annulus's wave vectors (no trial
  * noise: an exactly isotropic annulus, e.g. random points, has zero variance
- * and gives MCS_ERR_DOMAIN for the anisotropy). radius may be any size; the
- * anisotropy needs radius >= 1. Statuses as mcs_pointset2d_exact_power, and
- * MCS_ERR_DOMAIN as mcs_pointset2d_anisotropy. */
+ * and gives MCS_ERR_DOMAIN for the anisotropy). radius 0..MCS_MAX_FREQ (the
+ * annuli an accumulator holds; O(radius^2) work); the anisotropy needs
+ * radius >= 1. Statuses as mcs_pointset2d_exact_power, MCS_ERR_FREQ_RANGE
+ * (radius above MCS_MAX_FREQ), and MCS_ERR_DOMAIN as
+ * mcs_pointset2d_anisotropy. *out untouched on error. */
 mcs_status mcs_pointset2d_exact_radial(const mcs_pattern2d *pat, size_t radius, double *out);
 mcs_status mcs_pointset2d_exact_anisotropy(const mcs_pattern2d *pat, size_t radius,
                                            double *out_db);

@@ -66,7 +66,8 @@ mcs_status mcs_sampler_init(mcs_sampler *s, mcs_sampler_kind kind, size_t dim, s
 
 /* One randomised trial: points[k * dim] written. k must equal s->k.
  * Draws dim values from rng per trial (a shift, or a scrambling seed).
- * MCS_ERR_NULL, MCS_ERR_UNINIT, MCS_ERR_MISMATCH (k != s->k).
+ * MCS_ERR_NULL, MCS_ERR_UNINIT (s not from mcs_sampler_init, or rng never
+ * seeded), MCS_ERR_MISMATCH (k != s->k).
  * On error nothing is written and rng is not advanced. */
 mcs_status mcs_sampler_draw(const mcs_sampler *s, mcs_rng *rng, size_t k, double *points);
 

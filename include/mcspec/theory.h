@@ -32,8 +32,9 @@
  *   r_n(beta) = ceil(B_n - beta) - ceil(A_n - beta), a step function with at
  *   most two steps in [0,1); <r_m r_n> is the exact integral of the product
  *   of two such step functions.
- * Each kind costs O(N^2) (O(N^3) for homogenized, O(K + N^2) for uniform)
- * whatever K is.
+ * Each kind costs O(N^2) (O(N^3) for homogenized, O(N log K + N^2) for
+ * uniform, whose bin counts are found by bisection on j, not by a walk over
+ * the K samples): well under a second at every K up to MCS_MAX_K.
  *
  * The read-out is the same, call for call, as that of the measured moments
  * in moment.h (and runs the same code): <S_k> (eq. 15), <S_k S_l*> (eq. 16),
@@ -51,6 +52,7 @@
 
 #include <stddef.h>
 #include "config.h"
+#include "estimate.h"
 #include "status.h"
 #include "pattern.h"
 
@@ -75,14 +77,16 @@ typedef struct {
 } mcs_theory;
 
 /* Computes the exact <s_n> and <s_m s_n> of pat (any kind, with or without
- * importance, any K >= 1, pat->n <= MCS_MAX_COV_N). pat is read, not kept.
- * MCS_ERR_NULL, MCS_ERR_N_RANGE (pat->n > MCS_MAX_COV_N), MCS_ERR_UNINIT
- * (pat->n == 0, pat->k == 0, unknown kind, or an importance function of the
- * wrong n), MCS_ERR_KIND (homogenized with importance). *th untouched on error. */
+ * importance, any K in [1, MCS_MAX_K], pat->n <= MCS_MAX_COV_N). pat is read,
+ * not kept. MCS_ERR_NULL, MCS_ERR_N_RANGE (pat->n > MCS_MAX_COV_N),
+ * MCS_ERR_UNINIT (pat->n == 0, pat->k == 0 or above MCS_MAX_K, unknown kind,
+ * or an importance function of the wrong n), MCS_ERR_KIND (homogenized with importance). *th untouched on error. */
 mcs_status mcs_theory_init(mcs_theory *th, const mcs_pattern *pat);
 
 /* ---- Read-out: the expectations. Every call returns MCS_ERR_NULL,
- * MCS_ERR_UNINIT, and as stated; outputs are untouched on error. ---- */
+ * MCS_ERR_UNINIT, and as stated; outputs are untouched on error, and a
+ * complex result's re and im must be two different doubles (MCS_ERR_ALIAS),
+ * as for the measured moments (moment.h). ---- */
 
 /* <s_bin>. MCS_ERR_BIN_RANGE (bin >= N). */
 mcs_status mcs_theory_bin_mean(const mcs_theory *th, size_t bin, double *out);
@@ -110,7 +114,9 @@ mcs_status mcs_theory_covariance(const mcs_theory *th, size_t freq_k, size_t fre
 
 /* Every <S_k S_l*> at once, O(N^3): re[k * n + l] + i im[k * n + l], caller
  * arrays of n * n (exactly n * n entries are written), n equal to th->n, else
- * MCS_ERR_MISMATCH. */
+ * MCS_ERR_MISMATCH. re and im must overlap neither each other nor *th (they
+ * are written while it is read): MCS_ERR_ALIAS. The diagonal is the power
+ * spectrum, never negative (clamped as mcs_theory_power). */
 mcs_status mcs_theory_cross_matrix(const mcs_theory *th, size_t n, double *re, double *im);
 
 /* Every Cov(S_k, S_l) at once, O(N^3), laid out as mcs_theory_cross_matrix. */
@@ -202,17 +208,21 @@ typedef struct {
     double sin_table[MCS_MAX_N];  /* sin(2 pi j / N) */
 } mcs_theory_spectrum;
 
-/* Sets up ts for pat (any kind, with or without importance, any K >= 1,
- * 1 <= pat->n <= MCS_MAX_N): <s_n> and the bins (O(N), O(K) more for
- * uniform) and, for jitter, the sorted bin edges (O(N log N)). pat is read,
- * not kept. MCS_ERR_NULL,
- * MCS_ERR_UNINIT (pat->n == 0, pat->k == 0, unknown kind, an importance
- * function not initialised or of another n), MCS_ERR_N_RANGE (pat->n >
+/* Sets up ts for pat (any kind, with or without importance, any K in
+ * [1, MCS_MAX_K], 1 <= pat->n <= MCS_MAX_N): <s_n> and the bins (O(N),
+ * O(N log K) for uniform) and, for jitter, the sorted bin edges
+ * (O(N log N)). pat is read, not kept. MCS_ERR_NULL,
+ * MCS_ERR_UNINIT (pat->n == 0, pat->k == 0 or above MCS_MAX_K, unknown kind,
+ * an importance function not initialised or of another n), MCS_ERR_N_RANGE (pat->n >
  * MCS_MAX_N), MCS_ERR_KIND (homogenized with importance). *ts untouched on
  * error. */
 mcs_status mcs_theory_spectrum_init(mcs_theory_spectrum *ts, const mcs_pattern *pat);
 
-/* <S_freq> (eq. 15). O(N). MCS_ERR_FREQ_RANGE (freq >= N). */
+/* The three calls with a complex result (re, im) below compute it first and
+ * write it last, so re and im may be any two doubles, even inside ts; the
+ * same double for both is MCS_ERR_ALIAS (it cannot hold both parts). */
+
+/* <S_freq> (eq. 15). O(N). MCS_ERR_FREQ_RANGE (freq >= N), MCS_ERR_ALIAS. */
 mcs_status mcs_theory_spectrum_mean(const mcs_theory_spectrum *ts, size_t freq, double *re,
                                     double *im);
 
@@ -226,18 +236,22 @@ mcs_status mcs_theory_power_spectrum(const mcs_theory_spectrum *ts, size_t n, do
 
 /* <S_k S_l*> (eq. 16) for k = freq_k, l = freq_l. O(N) (homogenized: its
  * covariance is circulant, so Cov(S_k, S_l) = 0 for k != l).
- * MCS_ERR_FREQ_RANGE. */
+ * MCS_ERR_FREQ_RANGE, MCS_ERR_ALIAS. */
 mcs_status mcs_theory_spectrum_cross(const mcs_theory_spectrum *ts, size_t freq_k,
                                      size_t freq_l, double *re, double *im);
 
 /* Cov(S_k, S_l) = <S_k S_l*> - <S_k><S_l>*, formed directly (no difference).
- * O(N). MCS_ERR_FREQ_RANGE. */
+ * O(N). MCS_ERR_FREQ_RANGE, MCS_ERR_ALIAS. */
 mcs_status mcs_theory_spectrum_covariance(const mcs_theory_spectrum *ts, size_t freq_k,
                                           size_t freq_l, double *re, double *im);
 
 /* <I> = (1/K) sum_n f_n <s_n>. f[n], n equal to the pattern's N, else
  * MCS_ERR_MISMATCH; k the pattern's K: MCS_ERR_K_RANGE (k = 0),
- * MCS_ERR_MISMATCH (k != K); f finite, else MCS_ERR_NOT_FINITE. O(N). */
+ * MCS_ERR_MISMATCH (k != K); f finite, else MCS_ERR_NOT_FINITE, and |f_n| <=
+ * MCS_ESTIMATE_MAX_ABS (estimate.h: 2^110, the largest term the estimator
+ * takes), else MCS_ERR_MAGNITUDE: within it no square or product of f with
+ * the moments (below 2^124 at K <= MCS_MAX_K, 1/p_n < 2^32) can overflow,
+ * so this and the two calls below return finite values. O(N). */
 mcs_status mcs_theory_spectrum_estimator_mean(const mcs_theory_spectrum *ts, size_t n,
                                               size_t k, const double *f, double *out);
 

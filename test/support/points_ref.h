@@ -3,6 +3,7 @@
 #define POINTS_REF_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "mcspec.h"
 
@@ -26,5 +27,23 @@ void points_assert_merged(double a, double sa, double b, double sb);
  * them still holds it (a call that failed wrote nothing). */
 void points_guard_fill(double *buf, size_t n, double guard);
 void points_guard_check(const double *buf, size_t n, double guard);
+
+/* An accumulator kind for points_assert_count_bound: its size, where its
+ * count lives, a call that adds one fixed trial and its merge. */
+typedef struct {
+    size_t size;
+    uint64_t *(*count)(void *acc);
+    int (*add_one)(void *acc);
+    int (*merge)(void *dst, const void *src);
+} points_counted;
+
+/* Counts are exact in a double up to MCS_MAX_COUNT: fails the test unless an
+ * add or merge that would pass it (or starts past it, as a corrupted count
+ * does) returns MCS_ERR_COUNT and changes nothing, one that lands on it is
+ * taken, and 70 self-merges double the count up to the bound and never wrap
+ * it. a and b: two empty accumulators of one configuration; snap_a, snap_b:
+ * two more of the kind, overwritten. */
+void points_assert_count_bound(const points_counted *kind, void *a, void *b, void *snap_a,
+                               void *snap_b);
 
 #endif /* POINTS_REF_H */

@@ -66,6 +66,66 @@ void spectra_stream_draw(spectra_stream *st, size_t *bins, double *weights, doub
                           mcs_pattern_draw(&st->pat, &st->rng, st->k, bins, weights, points));
 }
 
+void spectra_make_importance(mcs_importance *imp, size_t n, double base, size_t mult,
+                             size_t bump_bin, double bump)
+{
+    static double g[MCS_MAX_N];
+    for (size_t b = 0; b < n; ++b)
+        g[b] = base + (double)((b * mult) % n) / (double)n + (b == bump_bin ? bump : 0.0);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_init(imp, n, g));
+}
+
+void spectra_run(mcs_spectrum *a, mcs_pattern_kind kind, size_t n, size_t k,
+                 const mcs_importance *importance, uint64_t seed, uint64_t seq, size_t trials,
+                 size_t *bins, double *weights)
+{
+    spectra_stream st;
+    spectra_stream_init(&st, kind, n, k, importance, seed, seq);
+    for (size_t t = 0; t < trials; ++t) {
+        spectra_stream_draw(&st, bins, weights, NULL);
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_bins(a, k, bins, weights));
+    }
+}
+
+/* The object a bad trial is offered to, its size, a scratch copy and its add. */
+typedef struct {
+    void *obj, *scratch;
+    size_t size;
+    spectra_add_bins_fn add;
+} bad_trial;
+
+/* add(obj, ...) (add(NULL, ...) when no_object) returns status and leaves
+ * obj as it was. */
+static void refused(const bad_trial *t, mcs_status status, int no_object, size_t k,
+                    const size_t *bins, const double *weights, const char *what)
+{
+    memcpy(t->scratch, t->obj, t->size);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(status, t->add(no_object ? NULL : t->obj, k, bins, weights),
+                                  what);
+    TEST_ASSERT_EQUAL_MEMORY_MESSAGE(t->scratch, t->obj, t->size, what);
+}
+
+void spectra_refuses_bad_trials(void *obj, void *scratch, size_t size, size_t n,
+                                spectra_add_bins_fn add, size_t *bins, double *weights,
+                                size_t bin_at, size_t weight_at)
+{
+    const bad_trial t = {obj, scratch, size, add};
+    const size_t bin = bins[bin_at];
+    const double weight = weights[weight_at];
+    refused(&t, MCS_ERR_NULL, 1, 3u, bins, weights, "NULL object");
+    refused(&t, MCS_ERR_NULL, 0, 3u, NULL, weights, "NULL bins");
+    refused(&t, MCS_ERR_NULL, 0, 3u, bins, NULL, "NULL weights");
+    refused(&t, MCS_ERR_K_RANGE, 0, 0u, bins, weights, "K = 0");
+    bins[bin_at] = n;
+    refused(&t, MCS_ERR_BIN_RANGE, 0, 3u, bins, weights, "bin N");
+    bins[bin_at] = bin;
+    weights[weight_at] = NAN;
+    refused(&t, MCS_ERR_NOT_FINITE, 0, 3u, bins, weights, "NaN weight");
+    weights[weight_at] = -weight;
+    refused(&t, MCS_ERR_NEGATIVE, 0, 3u, bins, weights, "negative weight");
+    weights[weight_at] = weight;
+}
+
 void spectra_assert_close(double expected, double actual, double tol, double scale,
                           const char *what, size_t a, size_t b)
 {

@@ -108,7 +108,10 @@ size_t bench_spectrum_contenders(bench_contender *out)
     for (size_t p = 0; p < PATH_COUNT; ++p) {
         spectrum_ctxs[p].path = spectrum_paths[p].path;
         bench_contender c = {spectrum_paths[p].name, &spectrum_ctxs[p], 1u, spectrum_prepare,
-                             spectrum_run, NULL, spectrum_readout, 0.0};
+                             spectrum_run, NULL, spectrum_readout, 0.0, 0u};
+        /* The pair route closes a batch at most every MCS_SPECTRUM_BATCH_MAX trials. */
+        if (spectrum_paths[p].path == MCS_SPECTRUM_PATH_PAIR || spectrum_paths[p].path == MCS_SPECTRUM_PATH_AUTO)
+            c.period = MCS_SPECTRUM_BATCH_MAX;
         out[p] = c;
     }
     return PATH_COUNT;
@@ -171,10 +174,10 @@ static int autocorr_run(void *ctx, size_t calls)
 
 size_t bench_reference_contenders(bench_contender *out)
 {
-    bench_contender draw = {"draw", &draw_ctx, 1u, draw_prepare, draw_run, NULL, NULL, 0.0};
-    bench_contender dft = {"dft", &dft_state, 1u, dft_prepare, dft_run, NULL, NULL, 0.0};
+    bench_contender draw = {"draw", &draw_ctx, 1u, draw_prepare, draw_run, NULL, NULL, 0.0, 0u};
+    bench_contender dft = {"dft", &dft_state, 1u, dft_prepare, dft_run, NULL, NULL, 0.0, 0u};
     bench_contender acorr = {"autocorr", &autocorr_state, 1u, autocorr_prepare, autocorr_run,
-                             NULL, NULL, 0.0};
+                             NULL, NULL, 0.0, 0u};
     out[0] = draw;
     out[1] = dft;
     out[2] = acorr;
@@ -241,6 +244,6 @@ bench_contender bench_moment_contender(const bench_pool *pool)
 {
     moment_state.pool = pool;
     bench_contender c = {"mcs_moment", &moment_state, 1u, moment_prepare, moment_run, NULL,
-                         moment_readout, 0.0};
+                         moment_readout, 0.0, 0u};
     return c;
 }

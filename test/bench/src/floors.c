@@ -146,10 +146,10 @@ size_t bench_moment_floors(bench_contender *out, const bench_pool *pool)
 {
     pairs_ctx.pool = dense_ctx.pool = xtx_ctx.pool = pool;
     bench_contender pairs = {"pairs", &pairs_ctx, 1u, floor_prepare, pairs_run,
-                             NULL, floor_readout, 0.0};
+                             NULL, floor_readout, 0.0, 0u};
     bench_contender dense = {"dense", &dense_ctx, 1u, floor_prepare, dense_run,
-                             NULL, floor_readout, 0.0};
-    bench_contender xtx = {"XtX", &xtx_ctx, PT, floor_prepare, xtx_run, NULL, floor_readout, 0.0};
+                             NULL, floor_readout, 0.0, 0u};
+    bench_contender xtx = {"XtX", &xtx_ctx, PT, floor_prepare, xtx_run, NULL, floor_readout, 0.0, 0u};
     out[0] = pairs;
     out[1] = dense;
     out[2] = xtx;
@@ -187,6 +187,6 @@ static int bare_run(void *ctx, size_t calls)
 
 bench_contender bench_bare_draw_contender(void)
 {
-    bench_contender c = {"pcg32", &bare, 1u, bare_prepare, bare_run, NULL, NULL, 0.0};
+    bench_contender c = {"pcg32", &bare, 1u, bare_prepare, bare_run, NULL, NULL, 0.0, 0u};
     return c;
 }

@@ -58,6 +58,8 @@ static int timed_slice(bench_contender *c, double seconds, bench_slice *out)
         return c->slice(c->ctx, seconds, out);
     double want = seconds / (c->pace > 0.0 ? c->pace : seconds);
     size_t calls = want < 1.0 ? 1u : (size_t)want;
+    if (c->period > 0u && calls < BENCH_PERIODS * c->period)
+        calls = BENCH_PERIODS * c->period;
     double t0 = slice_clock();
     if (c->run(c->ctx, calls) != BENCH_OK)
         return BENCH_FAILED;

@@ -49,7 +49,15 @@ typedef struct {
      * check that contenders compute the same quantity. */
     int (*readout)(void *ctx, size_t freq, double *value, double *stderr_out);
     double pace; /* harness-owned: fastest seconds per call seen in this cell */
+    /* Optional (0 = 1): calls over which the contender's cost repeats. A
+     * spectrum accumulator on the PAIR path pays a batch close every batch
+     * (2.5 ms at N = 4093), longer than a slice: a slice then holds at least
+     * BENCH_PERIODS periods, so each slice's rate counts its closes in
+     * proportion instead of some slices missing them and others holding one. */
+    size_t period;
 } bench_contender;
+
+#define BENCH_PERIODS 4u
 
 /* Trials/s of every contender in every round of one cell. */
 typedef struct {

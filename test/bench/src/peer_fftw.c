@@ -160,7 +160,7 @@ const char *bench_fftw_version(void)
 
 bench_contender bench_fftw_contender(void)
 {
-    bench_contender c = {"FFTW", &peer, 1u, fftw_prepare, fftw_run, NULL, fftw_readout, 0.0};
+    bench_contender c = {"FFTW", &peer, 1u, fftw_prepare, fftw_run, NULL, fftw_readout, 0.0, 0u};
     return c;
 }
 
@@ -196,7 +196,7 @@ const char *bench_fftw_version(void)
 
 bench_contender bench_fftw_contender(void)
 {
-    bench_contender c = {"FFTW", NULL, 1u, fftw_unavailable, NULL, NULL, NULL, 0.0};
+    bench_contender c = {"FFTW", NULL, 1u, fftw_unavailable, NULL, NULL, NULL, 0.0, 0u};
     return c;
 }
 

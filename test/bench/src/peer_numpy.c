@@ -193,6 +193,6 @@ static int numpy_readout(void *ctx, size_t freq, double *value, double *stderr_o
 
 bench_contender bench_numpy_contender(void)
 {
-    bench_contender c = {"numpy", NULL, 1u, numpy_prepare, NULL, numpy_slice, numpy_readout, 0.0};
+    bench_contender c = {"numpy", NULL, 1u, numpy_prepare, NULL, numpy_slice, numpy_readout, 0.0, 0u};
     return c;
 }

@@ -4,6 +4,7 @@
 #include <stdio.h>
 
 #include "mcspec/pattern.h"
+#include "mcspec/spectrum.h"
 
 #define AUTO_SLACK 1.15  /* AUTO within this factor of the best forced path */
 #define Z_AGREE 5.0      /* read-outs of two contenders agree within this many SE */
@@ -64,8 +65,11 @@ void report_grid_legend(const bench_contender *list, const bench_grid_layout *la
            "size of a few (chosen per cell); a co-process that takes its slice in turn in every\n"
            "round while the C side waits on the pipe, timed by itself in whole batches (its\n"
            "slice is >= 2 ms, longer when one batch takes longer).\n"
+           "AUTO and PAIR slices hold at least %u x %u trials (their batch closes, up to\n"
+           "2.5 ms each at N = 4093, then count in every slice in proportion).\n"
            "Every contender's slices rotate in the same rounds with the reference figures\n"
-           "(draw, dft, autocorr) shown below the grid.\n");
+           "(draw, dft, autocorr) shown below the grid.\n",
+           BENCH_PERIODS, MCS_SPECTRUM_BATCH_MAX);
     printf("targets for AUTO: >= 1.0x FFTW and >= 3x numpy where K^2 <= N log2 N (>= 10x numpy\n"
            "at K <= 8, N >= 1024); >= 0.4x FFTW and >= 1x numpy elsewhere; AUTO >= 1/%.2f of\n"
            "the best forced path.\n",

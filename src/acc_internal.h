@@ -1,0 +1,94 @@
+/* Private helpers shared by the accumulators that keep compensated sums of
+ * trials (moment, autocorr; the point-set ones can use the merge check): the
+ * bound on stored values, the checks of an add and of a merge, and the merge
+ * of two compensated sums. Static inline, as internal.h. */
+#ifndef MCSPEC_ACC_INTERNAL_H
+#define MCSPEC_ACC_INTERNAL_H
+
+#include "internal.h"
+
+/* Read-outs refuse a stored value above 2^500 in magnitude, the bound of the
+ * record format too (io.h): trials never get there (the sums stay below
+ * 2^496, see each header's trial limit), and below it every read-out,
+ * squares of transforms of N values included, stays finite on any object. */
+#define MCS_STORED_LIMIT_ 3.273390607896142e+150 /* 2^500 */
+
+/* Every x[len] finite and at most MCS_STORED_LIMIT_ in magnitude (NaN fails
+ * the compare). */
+static inline int mcs_all_stored_(size_t len, const double *x)
+{
+    int ok = 1;
+    for (size_t j = 0; j < len; ++j)
+        ok &= fabs(x[j]) <= MCS_STORED_LIMIT_;
+    return ok;
+}
+
+/* The checks every add shares once the object and the trial are valid: the
+ * trial's total weight at most max_total (MAGNITUDE), the count (COUNT), and
+ * the caller's arrays a and b (b_bytes 0 for none) outside the object
+ * (ALIAS). */
+static inline mcs_status mcs_check_add_(const void *obj, size_t obj_bytes, uint64_t count,
+                                        double total, double max_total, const void *a,
+                                        size_t a_bytes, const void *b, size_t b_bytes)
+{
+    if (!(total <= max_total))
+        return MCS_ERR_MAGNITUDE;
+    mcs_status st = mcs_check_count_(count, 1u);
+    if (st == MCS_OK && (mcs_overlap_(a, a_bytes, obj, obj_bytes) ||
+                         mcs_overlap_(b, b_bytes, obj, obj_bytes)))
+        st = MCS_ERR_ALIAS;
+    return st;
+}
+
+/* The same for a sparse trial on an object of N = n bins (checked already):
+ * the trial as mcs_check_sparse_, then mcs_check_add_ with its weights'
+ * sum. */
+static inline mcs_status mcs_check_add_sparse_(const void *obj, size_t obj_bytes, size_t n,
+                                               uint64_t count, size_t k, const size_t *bins,
+                                               const double *weights, double max_total)
+{
+    mcs_status st = mcs_check_sparse_(n, k, bins, weights);
+    if (st != MCS_OK)
+        return st;
+    double total = 0.0;
+    for (size_t j = 0; j < k; ++j)
+        total += weights[j];
+    return mcs_check_add_(obj, obj_bytes, count, total, max_total, bins,
+                          mcs_bytes_(k, sizeof *bins), weights, mcs_bytes_(k, sizeof *weights));
+}
+
+/* The status of a call on two objects (merge) from each one's own check:
+ * MCS_ERR_NULL first, as if both had been checked for NULL before anything
+ * else, then the first object's status, then the second's. */
+static inline mcs_status mcs_check_pair_(mcs_status a, mcs_status b)
+{
+    if (a == MCS_ERR_NULL || b == MCS_ERR_NULL)
+        return MCS_ERR_NULL;
+    return a != MCS_OK ? a : b;
+}
+
+/* The checks of merging src into dst once both objects passed their own
+ * (mcs_check_pair_): MISMATCH unless same_shape, COUNT if the counts would
+ * add up past MCS_MAX_COUNT, ALIAS for distinct objects that overlap
+ * (dst == src is allowed: it doubles). */
+static inline mcs_status mcs_check_merge_(const void *dst, const void *src, size_t bytes,
+                                          int same_shape, uint64_t dst_count, uint64_t src_count)
+{
+    if (!same_shape)
+        return MCS_ERR_MISMATCH;
+    mcs_status st = mcs_check_count_(dst_count, src_count);
+    if (st == MCS_OK && dst != src && mcs_overlap_(dst, bytes, src, bytes))
+        st = MCS_ERR_ALIAS;
+    return st;
+}
+
+/* Adds the compensated sum (src_sum, src_lo), whose total is
+ * src_sum - src_lo, to (*sum, *lo). The caller reads both src values before
+ * either destination is written, so a merge into itself doubles. */
+static inline void mcs_kahan_merge_(double *sum, double *lo, double src_sum, double src_lo)
+{
+    mcs_kahan_add_(sum, lo, src_sum);
+    mcs_kahan_add_(sum, lo, -src_lo);
+}
+
+#endif /* MCSPEC_ACC_INTERNAL_H */

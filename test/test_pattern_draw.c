@@ -1,0 +1,115 @@
+/* mcs_pattern_draw against a one-sample-at-a-time reference written from
+ * its documentation: the fast draw (PCG32 steps formed several at a time,
+ * division by a power-of-two K as a multiplication) must give bit for bit the
+ * bins, weights and points of the plain definition, and leave the generator
+ * where the plain definition leaves it. */
+#include "mcspec.h"
+#include "unity.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+void setUp(void) {}
+void tearDown(void) {}
+
+#define MAXK 300
+
+static size_t bins[MAXK], ref_bins[MAXK];
+static double weights[MAXK], ref_weights[MAXK], points[MAXK], ref_points[MAXK];
+
+static double next_double(mcs_rng *rng)
+{
+    double v = 0.0;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_rng_double(rng, &v));
+    return v;
+}
+
+/* (b + t)/N moved by ulps into bin b, as documented for points. */
+static double point_in_bin(size_t n, size_t b, double t)
+{
+    double x = ((double)b + t) / (double)n;
+    while (x >= 1.0 || floor(x * (double)n) > (double)b)
+        x = nextafter(x, 0.0);
+    while (floor(x * (double)n) < (double)b)
+        x = nextafter(x, 1.0);
+    return x;
+}
+
+/* The documented draw without importance: v per sample (random, stratified)
+ * or beta per trial (uniform 1/2, jitter); u = v or (j + v)/K below 1; bin
+ * floor(t) with t = u N (random) or (j + v) N / K; the point is u when u lies
+ * in that bin, else the point of t's fraction in it. */
+static void reference_draw(mcs_pattern_kind kind, size_t n, size_t k, mcs_rng *rng)
+{
+    double beta = kind == MCS_PATTERN_JITTER ? next_double(rng) : 0.5;
+    for (size_t j = 0; j < k; ++j) {
+        double v = kind == MCS_PATTERN_RANDOM || kind == MCS_PATTERN_STRATIFIED ? next_double(rng) : beta;
+        double u = kind == MCS_PATTERN_RANDOM ? v : ((double)j + v) / (double)k;
+        double t = kind == MCS_PATTERN_RANDOM ? u * (double)n : ((double)j + v) * (double)n / (double)k;
+        u = u < 1.0 ? u : nextafter(1.0, 0.0);
+        size_t b = (size_t)t < n ? (size_t)t : n - 1u;
+        double frac = t - (double)b;
+        ref_bins[j] = b;
+        ref_weights[j] = 1.0;
+        ref_points[j] = (size_t)(u * (double)n) == b
+                            ? u
+                            : point_in_bin(n, b, frac < 1.0 ? frac : nextafter(1.0, 0.0));
+    }
+}
+
+static void check_kind(mcs_pattern_kind kind, size_t n, size_t k)
+{
+    mcs_pattern pat;
+    mcs_rng fast, slow;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_init(&pat, kind, n, k, NULL));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_rng_seed(&fast, 1234u + k, 77u + n));
+    slow = fast;
+    for (int trial = 0; trial < 20; ++trial) {
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_draw(&pat, &fast, k, bins, weights, points));
+        reference_draw(kind, n, k, &slow);
+        TEST_ASSERT_EQUAL_MEMORY(ref_bins, bins, k * sizeof bins[0]);
+        TEST_ASSERT_EQUAL_MEMORY(ref_weights, weights, k * sizeof weights[0]);
+        TEST_ASSERT_EQUAL_MEMORY(ref_points, points, k * sizeof points[0]);
+        TEST_ASSERT_EQUAL_MEMORY(&slow, &fast, sizeof fast);
+    }
+}
+
+static void test_every_kind_draws_bit_for_bit_the_documented_samples_and_leaves_the_rng_alike(void)
+{
+    static const mcs_pattern_kind kinds[] = {MCS_PATTERN_RANDOM, MCS_PATTERN_STRATIFIED,
+                                             MCS_PATTERN_UNIFORM, MCS_PATTERN_JITTER};
+    /* Powers of two (multiplication by 1/K), odd K (a lone last sample in
+     * the generator's pairs), K above and below N, N/K even (edges). */
+    static const size_t ns[] = {1u, 24u, 1000u, 4096u, 4093u};
+    static const size_t ks[] = {1u, 2u, 5u, 6u, 7u, 8u, 64u, 255u, 256u};
+    for (size_t a = 0; a < sizeof kinds / sizeof kinds[0]; ++a)
+        for (size_t b = 0; b < sizeof ns / sizeof ns[0]; ++b)
+            for (size_t c = 0; c < sizeof ks / sizeof ks[0]; ++c)
+                check_kind(kinds[a], ns[b], ks[c]);
+}
+
+static void test_the_homogenized_draw_uses_as_many_generator_steps_as_the_stratified_one_plus_its_shift(void)
+{
+    mcs_pattern strat, homog;
+    mcs_rng r1, r2;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_init(&strat, MCS_PATTERN_STRATIFIED, 100u, 7u, NULL));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_init(&homog, MCS_PATTERN_HOMOGENIZED, 100u, 7u, NULL));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_rng_seed(&r1, 9u, 3u));
+    r2 = r1;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_draw(&homog, &r1, 7u, bins, weights, NULL));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_draw(&strat, &r2, 7u, ref_bins, ref_weights, NULL));
+    uint32_t shift = 0;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_rng_bounded(&r2, 100u, &shift));
+    TEST_ASSERT_EQUAL_MEMORY(&r2, &r1, sizeof r1);
+    for (size_t j = 0; j < 7u; ++j)
+        TEST_ASSERT_EQUAL_UINT((ref_bins[j] + shift) % 100u, bins[j]);
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_every_kind_draws_bit_for_bit_the_documented_samples_and_leaves_the_rng_alike);
+    RUN_TEST(test_the_homogenized_draw_uses_as_many_generator_steps_as_the_stratified_one_plus_its_shift);
+    return UNITY_END();
+}
