@@ -220,8 +220,9 @@ static void op_pattern(void)
     } else if (which == 2) {
         const double *x2 = darray(2, k);
         const mcs_importance *ip = reg(imp, imp ? sizeof *imp : 0u, 0u);
-        st = end(k % 2u ? mcs_pattern_bin_points_f(n, k, ip, reg(as_floats(x2, k), k * 4, 0), bins, w)
-                        : mcs_pattern_bin_points(n, k, ip, reg(x2, k * 8, 0), bins, w));
+        const float *xf = k % 2u ? reg(as_floats(x2, k), k * 4, 0) : NULL;
+        st = end(xf != NULL ? mcs_pattern_bin_points_f(n, k, ip, xf, bins, w)
+                            : mcs_pattern_bin_points(n, k, ip, reg(x2, k * 8, 0), bins, w));
     } else {
         const size_t nn = n <= MAXLEN ? n : 1u;
         double *s = out(dout[1], nn, 8);

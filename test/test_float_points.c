@@ -117,7 +117,8 @@ static void test_point_sets_of_float_points_equal_the_widened_double_points(void
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_rng_seed(&rng, 0x9051u, 4u));
     for (size_t a = 0; a < sizeof fmax / sizeof fmax[0]; ++a)
         for (size_t b = 0; b < sizeof ks / sizeof ks[0]; ++b) {
-            const size_t f1 = cap_freq(fmax[a], MCS_MAX_FREQ_1D), f2 = cap_freq(fmax[a], MCS_MAX_FREQ);
+            const size_t f1 = cap_freq(fmax[a], MCS_MAX_FREQ_1D);
+            const size_t f2 = cap_freq(fmax[a], MCS_MAX_FREQ);
             TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset_init(&ps_f, f1));
             TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset_init(&ps_d, f1));
             TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_init(&p2_f, f2));
@@ -346,7 +347,8 @@ static void test_estimate_points_f_refuses_bad_input_and_writes_nothing(void)
         x[0] = keep;
     }
     w[3] = NAN;
-    TEST_ASSERT_EQUAL_INT(MCS_ERR_NOT_FINITE, mcs_estimate_points_f(4u, identity, NULL, x, w, &out));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NOT_FINITE,
+                          mcs_estimate_points_f(4u, identity, NULL, x, w, &out));
     w[3] = -1.0;
     TEST_ASSERT_EQUAL_INT(MCS_ERR_NEGATIVE, mcs_estimate_points_f(4u, identity, NULL, x, w, &out));
     TEST_ASSERT_EQUAL_DOUBLE(42.0, out);
