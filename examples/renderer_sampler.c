@@ -8,9 +8,10 @@
  *  - rng:        plain random from the renderer's own 32-bit generator.
  * Samples stay 0.32 fixed point up to the last step, (bits >> 8) 2^-24, so
  * the rotation is an exact wrapping add (mod 1) and every sample is exact in
- * float and in double. Each pixel's K samples of one dimension are one trial:
- * mcs_spectrum_add_points reads them where the sampler wrote them, and
- * mcs_estimate_points gives the pixel's estimate of a 1D integrand: a
+ * float and in double; the buffer is float, as in a renderer. Each pixel's K
+ * samples of one dimension are one trial: mcs_spectrum_add_points_f reads
+ * them where the sampler wrote them, and mcs_estimate_points_f gives the
+ * pixel's estimate of a 1D integrand: a
  * texture row of N texels looked up nearest, so the estimator is eq. 8's
  * binned one and mcspec's theory of it is exact.
  *
@@ -44,12 +45,12 @@ static const char help_text[] =
     "renderer writes it: van der Corput (bit reversal) and Halton base 3, each\n"
     "with a per-pixel Cranley-Patterson rotation from a pixel hash, and plain\n"
     "random from the renderer's own 32-bit generator. Each pixel's K samples of\n"
-    "one dimension are one trial for mcs_spectrum_add_points (read in place) and\n"
-    "mcs_estimate_points, whose integrand is a texture row of N texels with the\n"
-    "values of f(x) = 0.5 + 0.3 sin(2 pi x) + 0.4 [x >= 0.3] at the texel centres\n"
-    "(nearest lookup). Printed per dimension: <|S_k|^2> at k in {1, K/2, K, K+1,\n"
-    "2K, N/2}, <I> and Var[I], beside the exact prediction of the pattern the\n"
-    "dimension reduces to: a rotated van der Corput set of K = 2^m points is\n"
+    "one dimension (float) are one trial for mcs_spectrum_add_points_f (read in\n"
+    "place) and mcs_estimate_points_f, whose integrand is a texture row of N\n"
+    "texels with the values of f(x) = 0.5 + 0.3 sin(2 pi x) + 0.4 [x >= 0.3]\n"
+    "at the texel centres (nearest lookup). Printed per dimension: <|S_k|^2> at\n"
+    "k in {1, K/2, K, K+1, 2K, N/2}, <I> and Var[I], beside the exact\n"
+    "prediction of the pattern the dimension reduces to: a rotated van der Corput set of K = 2^m points is\n"
     "uniform jitter (closed: eq. 37, eq. 14 with eq. 37); random is random\n"
     "(closed: eq. 23, eq. 25). Halton base 3 with K = 2^m is not jitter: its\n"
     "closed column holds mcspec's exact jitter value (the comparison a renderer\n"
@@ -65,9 +66,10 @@ static const char help_text[] =
 enum { D_VDC, D_HALTON3, D_RANDOM, D_COUNT };
 static const char *const dim_name[D_COUNT] = {"vdc-cp", "halton3-cp", "rng"};
 
-/* The renderer's per-pixel sample buffer: each dimension's K samples are
- * contiguous, so one dimension of one pixel is an array mcspec reads as is. */
-static double samples[D_COUNT][MAX_K];
+/* The renderer's per-pixel sample buffer, in float as renderers keep it:
+ * each dimension's K samples are contiguous, so one dimension of one pixel
+ * is an array the _f calls read as is (no copy, no conversion pass). */
+static float samples[D_COUNT][MAX_K];
 
 static double texture[MCS_MAX_COV_N];  /* the integrand, one value per texel */
 static mcs_spectrum spectrum[D_COUNT]; /* per dimension, pixels as trials */
@@ -114,10 +116,11 @@ static uint32_t tiny_next(uint32_t *state)
     return (w >> 22u) ^ w;
 }
 
-/* 0.32 fixed point to [0,1): the top 24 bits, exact in float and double. */
-static double unit(uint32_t bits)
+/* 0.32 fixed point to [0,1): the top 24 bits, exact in float (a 24-bit
+ * integer times a power of 2), so widening it to double is exact too. */
+static float unit(uint32_t bits)
 {
-    return (double)(bits >> 8u) * 0x1p-24;
+    return (float)(bits >> 8u) * 0x1p-24f;
 }
 
 /* Radical inverse in base 2 as 0.32 fixed point: the bits of i reversed. */
@@ -182,9 +185,10 @@ static mcs_status render(const ex_options *opt)
         pixel_samples(hash2(px, hash2(py, frame)), opt->k);
         for (int d = 0; d < D_COUNT && st == MCS_OK; ++d) {
             double pixel_value = 0.0;
-            st = mcs_spectrum_add_points(&spectrum[d], opt->k, samples[d], NULL);
+            st = mcs_spectrum_add_points_f(&spectrum[d], opt->k, samples[d], NULL);
             if (st == MCS_OK)
-                st = mcs_estimate_points(opt->k, texel, &texels, samples[d], NULL, &pixel_value);
+                st = mcs_estimate_points_f(opt->k, texel, &texels, samples[d], NULL,
+                                           &pixel_value);
             if (st == MCS_OK)
                 st = mcs_welford_add(&estimate[d], pixel_value);
         }
@@ -249,7 +253,7 @@ static mcs_status predict(const ex_options *opt)
         st = mcs_theory_init(&random_th, &pat);
     for (int s = 0; s < 2 && st == MCS_OK; ++s) {
         for (uint32_t j = 0; j < (uint32_t)opt->k; ++j)
-            base_set[j] = unit(s == 0 ? vdc_bits(j) : halton3_bits(j));
+            base_set[j] = (double)unit(s == 0 ? vdc_bits(j) : halton3_bits(j));
         rotation_offsets(opt->n, opt->k, base_set, offsets[s]);
     }
     return st;

@@ -225,6 +225,19 @@ static double *darray(int which, size_t len)
     return d;
 }
 
+/* The values of d[len] as floats for the _f calls (beyond the float range:
+ * an infinity of its sign, since that conversion is undefined in C). */
+static float fin[2u * MAXLEN]; /* the 2D calls read 2 k values */
+static float *as_floats(const double *d, size_t len)
+{
+    for (size_t j = 0; j < len; ++j)
+        fin[j] = fabs(d[j]) <= (double)FLT_MAX ? (float)d[j]
+                 : isnan(d[j])                 ? NAN
+                 : d[j] > 0.0                  ? INFINITY
+                                               : -INFINITY;
+    return fin;
+}
+
 /* Bins below n (mostly), or any value. */
 static size_t *zarray(size_t len, size_t n)
 {
@@ -418,11 +431,13 @@ static void op_add(void)
     void *o = obj_or_null(type);
     /* Every accumulator but welford starts with its size_t N (or F, or N1). */
     const size_t k = len_arg(), nb = o != NULL && type != WEL ? *(const size_t *)o : 16u;
-    const unsigned how = byte() % 3u;
+    /* One byte picks the input form and whether points go in as float. */
+    const unsigned how_byte = byte(), how = how_byte % 3u, as_float = how_byte / 3u % 2u;
     uint64_t before = o ? *count_of(type, o) : 0u;
     begin("add");
     const double *w = byte() % 8u == 0u ? NULL : reg(darray(0, k), k * 8, 0);
     const double *pts = reg(darray(1, 2u * k), 2u * k * 8, 0);
+    const float *ptf = as_float ? reg(as_floats(pts, 2u * k), 2u * k * 4, 0) : NULL;
     inout(type, o);
     mcs_status st;
     switch (type) {
@@ -430,6 +445,7 @@ static void op_add(void)
     case SPEC:
         st = how == 0 ? mcs_spectrum_add_bins(o, k, reg(zarray(k, nb), k * sizeof(size_t), 0), w)
              : how == 1 ? mcs_spectrum_add_dense(o, k, w)
+             : as_float ? mcs_spectrum_add_points_f(o, k, ptf, w)
                         : mcs_spectrum_add_points(o, k, pts, w);
         break;
     case MOM:
@@ -437,9 +453,14 @@ static void op_add(void)
                       : mcs_moment_add_dense(o, k, w);
         break;
     case AC: st = mcs_autocorr_add_bins(o, k, reg(zarray(k, nb), k * sizeof(size_t), 0), w); break;
-    case PS: st = mcs_pointset_add(o, k, pts); break;
-    case PS2: st = mcs_pointset2d_add(o, k, pts); break;
-    default: st = mcs_spectrum2d_add_points(o, k, pts, w); break;
+    case PS: st = as_float ? mcs_pointset_add_f(o, k, ptf) : mcs_pointset_add(o, k, pts); break;
+    case PS2:
+        st = as_float ? mcs_pointset2d_add_f(o, k, ptf) : mcs_pointset2d_add(o, k, pts);
+        break;
+    default:
+        st = as_float ? mcs_spectrum2d_add_points_f(o, k, ptf, w)
+                      : mcs_spectrum2d_add_points(o, k, pts, w);
+        break;
     }
     end(st);
     if (o != NULL)

@@ -218,8 +218,11 @@ static void op_pattern(void)
         reg(pat, pat ? sizeof *pat : 0u, 0u);
         st = end(mcs_pattern_draw(pat, inout(RNG, r), k, bins, w, x));
     } else if (which == 2) {
-        st = end(mcs_pattern_bin_points(n, k, reg(imp, imp ? sizeof *imp : 0u, 0u),
-                                        reg(darray(2, k), k * 8, 0), bins, w));
+        const double *x2 = darray(2, k);
+        const mcs_importance *ip = reg(imp, imp ? sizeof *imp : 0u, 0u);
+        const float *xf = k % 2u ? reg(as_floats(x2, k), k * 4, 0) : NULL;
+        st = end(xf != NULL ? mcs_pattern_bin_points_f(n, k, ip, xf, bins, w)
+                            : mcs_pattern_bin_points(n, k, ip, reg(x2, k * 8, 0), bins, w));
     } else {
         const size_t nn = n <= MAXLEN ? n : 1u;
         double *s = out(dout[1], nn, 8);
@@ -236,6 +239,16 @@ static void op_pattern(void)
 
 static double integrand(double x, void *ctx) { return x * *(const double *)ctx; }
 
+/* mcs_estimate_points, or its float twin for odd k. */
+static mcs_status estimate_points(size_t k, double *scale, double *v)
+{
+    mcs_estimate_integrand f = byte() % 16u ? integrand : NULL;
+    const double *x = darray(2, k);
+    const double *w = byte() % 4u ? reg(darray(1, k), k * 8, 0) : NULL;
+    return k % 2u ? mcs_estimate_points_f(k, f, scale, reg(as_floats(x, k), k * 4, 0), w, v)
+                  : mcs_estimate_points(k, f, scale, reg(x, k * 8, 0), w, v);
+}
+
 static void op_estimate(void)
 {
     /* f[n] is read at every bin below n: n is a real length (no maximum to test). */
@@ -247,9 +260,7 @@ static void op_estimate(void)
                         ? mcs_estimate_bins(n, k, reg(darray(0, nn), nn * 8, 0),
                                             reg(zarray(k, nn), k * sizeof(size_t), 0),
                                             reg(darray(1, k), k * 8, 0), v)
-                        : mcs_estimate_points(k, byte() % 16u ? integrand : NULL, &scale,
-                                              reg(darray(2, k), k * 8, 0),
-                                              byte() % 4u ? reg(darray(1, k), k * 8, 0) : NULL, v);
+                        : estimate_points(k, &scale, v);
     vals(end(st), v, 1, 0);
 }
 

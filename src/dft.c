@@ -13,16 +13,8 @@
 #include <cpuid.h>
 #endif
 
-#define KERNEL(name) name##_generic
-#include "dft_simd.h"
-#undef KERNEL
-#if MCS_AVX2_CLONES
-MCS_AVX2_BEGIN
-#define KERNEL(name) name##_avx2
-#include "dft_simd.h"
-#undef KERNEL
-MCS_AVX2_END
-#endif
+#define MCS_SIMD_BODY "dft_simd.h"
+#include "simd_clones.h"
 
 int mcs_cpu_avx2_(void)
 {

@@ -36,10 +36,13 @@ mcs_status mcs_estimate_bins(size_t n, size_t k, const double *f, const size_t *
     return MCS_OK;
 }
 
-mcs_status mcs_estimate_points(size_t k, mcs_estimate_integrand f, void *ctx,
-                               const double *points, const double *weights, double *out)
+/* The body of both point calls, over double or float points (internal.h):
+ * f sees each x_j widened exactly, so the two give the same bits. */
+static MCS_ALWAYS_INLINE mcs_status estimate_points(size_t k, mcs_estimate_integrand f, void *ctx,
+                                                    mcs_points_ points, const double *weights,
+                                                    double *out)
 {
-    if (f == NULL || points == NULL || out == NULL)
+    if (f == NULL || mcs_points_addr_(points) == NULL || out == NULL)
         return MCS_ERR_NULL;
     if (k == 0u)
         return MCS_ERR_K_RANGE;
@@ -48,9 +51,21 @@ mcs_status mcs_estimate_points(size_t k, mcs_estimate_integrand f, void *ctx,
         return st;
     double sum = 0.0;
     for (size_t j = 0; j < k && st == MCS_OK; ++j)
-        st = add_term(f(points[j], ctx), weights != NULL ? weights[j] : 1.0, &sum);
+        st = add_term(f(mcs_point_(points, j), ctx), weights != NULL ? weights[j] : 1.0, &sum);
     if (st != MCS_OK)
         return st;
     *out = sum / (double)k;
     return MCS_OK;
+}
+
+mcs_status mcs_estimate_points(size_t k, mcs_estimate_integrand f, void *ctx,
+                               const double *points, const double *weights, double *out)
+{
+    return estimate_points(k, f, ctx, mcs_points_d_(points), weights, out);
+}
+
+mcs_status mcs_estimate_points_f(size_t k, mcs_estimate_integrand f, void *ctx,
+                                 const float *points, const double *weights, double *out)
+{
+    return estimate_points(k, f, ctx, mcs_points_f_(points), weights, out);
 }

@@ -143,13 +143,70 @@ static inline mcs_status mcs_check_integrand_(size_t n, const double *f)
     return MCS_OK;
 }
 
-/* Caller points of one trial: points[k] in [0, 1) (NaN is not), and
- * weights[k] as mcs_check_weight_ unless weights is NULL (all 1).
+/* Bytes of count elements of elem bytes each, saturating at SIZE_MAX (an array
+ * that large cannot exist, so an overlap test with it stays conservative). */
+static inline size_t mcs_bytes_(size_t count, size_t elem)
+{
+    return count > SIZE_MAX / elem ? SIZE_MAX : count * elem;
+}
+
+/* Forces a body into its callers: the point-taking calls write their body
+ * once over mcs_points_ and call it from a double and a float entry point,
+ * each with a constant pointer kind, so each copy loses the other's branch. */
+#if defined(__GNUC__) || defined(__clang__)
+#define MCS_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define MCS_ALWAYS_INLINE inline
+#endif
+
+/* Caller points of a point-taking call: the double array (d) or the float
+ * one (f, from the _f calls), the other pointer NULL. A float widens to a
+ * double exactly, so every later step sees the same value either way: a _f
+ * call gives the bits of the double call on the widened points, with no
+ * copy of the samples. */
+typedef struct {
+    const double *d;
+    const float *f;
+} mcs_points_;
+
+static inline mcs_points_ mcs_points_d_(const double *x)
+{
+    mcs_points_ p = {x, NULL};
+    return p;
+}
+
+static inline mcs_points_ mcs_points_f_(const float *x)
+{
+    mcs_points_ p = {NULL, x};
+    return p;
+}
+
+/* x_j, widened exactly when the points are float. */
+static inline double mcs_point_(mcs_points_ p, size_t j)
+{
+    return p.f != NULL ? (double)p.f[j] : p.d[j];
+}
+
+/* The array's address and the bytes of its first k points (overlap tests). */
+static inline const void *mcs_points_addr_(mcs_points_ p)
+{
+    return p.f != NULL ? (const void *)p.f : (const void *)p.d;
+}
+
+static inline size_t mcs_points_bytes_(mcs_points_ p, size_t k)
+{
+    return mcs_bytes_(k, p.f != NULL ? sizeof *p.f : sizeof *p.d);
+}
+
+/* Caller points of one trial: points[k] in [0, 1) (NaN is not; a float
+ * just below 1.0f is inside, 1.0f is not), and weights[k] as
+ * mcs_check_weight_ unless weights is NULL (all 1).
  * POINT_RANGE, NOT_FINITE, NEGATIVE. */
-static inline mcs_status mcs_check_points_(size_t k, const double *points, const double *weights)
+static inline mcs_status mcs_check_points_(size_t k, mcs_points_ points, const double *weights)
 {
     for (size_t j = 0; j < k; ++j) {
-        if (!(points[j] >= 0.0 && points[j] < 1.0))
+        const double x = mcs_point_(points, j);
+        if (!(x >= 0.0 && x < 1.0))
             return MCS_ERR_POINT_RANGE;
         mcs_status st = weights != NULL ? mcs_check_weight_(weights[j]) : MCS_OK;
         if (st != MCS_OK)
@@ -164,13 +221,6 @@ static inline mcs_status mcs_set_(double *out, double value)
 {
     *out = value;
     return MCS_OK;
-}
-
-/* Bytes of count elements of elem bytes each, saturating at SIZE_MAX (an array
- * that large cannot exist, so an overlap test with it stays conservative). */
-static inline size_t mcs_bytes_(size_t count, size_t elem)
-{
-    return count > SIZE_MAX / elem ? SIZE_MAX : count * elem;
 }
 
 /* Whether the byte ranges [a, a + a_bytes) and [b, b + b_bytes) share a byte.

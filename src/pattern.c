@@ -215,10 +215,13 @@ mcs_status mcs_pattern_draw(const mcs_pattern *pat, mcs_rng *rng, size_t k, size
     return MCS_OK;
 }
 
-mcs_status mcs_pattern_bin_points(size_t n, size_t k, const mcs_importance *importance,
-                                  const double *points, size_t *bins, double *weights)
+/* The body of both bin_points calls, over double or float points
+ * (internal.h): the same bins and weights from the widened points. */
+static MCS_ALWAYS_INLINE mcs_status bin_points(size_t n, size_t k, const mcs_importance *importance,
+                                               mcs_points_ points, size_t *bins, double *weights)
 {
-    if (points == NULL || bins == NULL || weights == NULL)
+    const void *pa = mcs_points_addr_(points);
+    if (pa == NULL || bins == NULL || weights == NULL)
         return MCS_ERR_NULL;
     if (n == 0u || n > (size_t)MCS_MAX_N)
         return MCS_ERR_N_RANGE;
@@ -226,21 +229,34 @@ mcs_status mcs_pattern_bin_points(size_t n, size_t k, const mcs_importance *impo
         return MCS_ERR_K_RANGE;
     if (importance != NULL && (!mcs_importance_is_valid_(importance) || importance->n != n))
         return MCS_ERR_MISMATCH;
-    const size_t pb = mcs_bytes_(k, sizeof *points), bb = mcs_bytes_(k, sizeof *bins);
+    const size_t pb = mcs_points_bytes_(points, k), bb = mcs_bytes_(k, sizeof *bins);
+    const size_t wb = mcs_bytes_(k, sizeof *weights);
     const size_t ib = importance != NULL ? sizeof *importance : 0u;
-    if (mcs_overlap_(points, pb, bins, bb) || mcs_overlap_(points, pb, weights, pb) ||
-        mcs_overlap_(bins, bb, weights, pb) || mcs_overlap_(bins, bb, importance, ib) ||
-        mcs_overlap_(weights, pb, importance, ib))
+    if (mcs_overlap_(pa, pb, bins, bb) || mcs_overlap_(pa, pb, weights, wb) ||
+        mcs_overlap_(bins, bb, weights, wb) || mcs_overlap_(bins, bb, importance, ib) ||
+        mcs_overlap_(weights, wb, importance, ib))
         return MCS_ERR_ALIAS;
     mcs_status st = mcs_check_points_(k, points, NULL);
     if (st != MCS_OK)
         return st;
     for (size_t j = 0; j < k; ++j) {
-        size_t b = mcs_point_bin_(points[j], n);
+        size_t b = mcs_point_bin_(mcs_point_(points, j), n);
         bins[j] = b;
         weights[j] = importance != NULL ? 1.0 / importance->p[b] : 1.0;
     }
     return MCS_OK;
+}
+
+mcs_status mcs_pattern_bin_points(size_t n, size_t k, const mcs_importance *importance,
+                                  const double *points, size_t *bins, double *weights)
+{
+    return bin_points(n, k, importance, mcs_points_d_(points), bins, weights);
+}
+
+mcs_status mcs_pattern_bin_points_f(size_t n, size_t k, const mcs_importance *importance,
+                                    const float *points, size_t *bins, double *weights)
+{
+    return bin_points(n, k, importance, mcs_points_f_(points), bins, weights);
 }
 
 mcs_status mcs_pattern_dense(size_t n, size_t k, const size_t *bins, const double *weights,

@@ -19,12 +19,21 @@
  * Requires KERNEL() and MCS_PHASE_BLOCK_ (8); MCS_PHASE_BLOCK_RE_ adds the
  * real-only variant. */
 
-#define MCS_LANE_(r) (ar##r += c * pr[r] + s * pi[r], ai##r += c * pi[r] - s * pr[r])
-#define MCS_LANE_RE_(r) (ar##r += c * pr[r] + s * pi[r])
+/* One lane r of the block: the real part always, the imaginary part when
+ * the constant want_im asks for it (the other copy drops it entirely). */
+#define MCS_LANE_(r)                                                                         \
+    do {                                                                                     \
+        ar##r += c * pr[r] + s * pi[r];                                                      \
+        if (want_im)                                                                         \
+            ai##r += c * pi[r] - s * pr[r];                                                  \
+    } while (0)
 
-MCS_NOINLINE static void KERNEL(phase_block)(const mcs_phase_ctx_ *ctx, size_t count,
-                                             size_t blocks, int add, double *restrict out_re,
-                                             double *restrict out_im)
+/* The kernel, written once: inlined into the two leaf functions below with
+ * want_im a constant, so each is the loop it names. */
+static MCS_ALWAYS_INLINE void KERNEL(phase_block_body)(const mcs_phase_ctx_ *ctx, size_t count,
+                                                       size_t blocks, int add,
+                                                       double *restrict out_re,
+                                                       double *restrict out_im, int want_im)
 {
     const size_t n = ctx->n;
     const double *ct = ctx->cos_table, *st = ctx->sin_table, *phase = ctx->phase;
@@ -50,52 +59,38 @@ MCS_NOINLINE static void KERNEL(phase_block)(const mcs_phase_ctx_ *ctx, size_t c
             const size_t next = i + step[j];
             index[j] = next >= n ? next - n : next;
         }
-        double *re = out_re + blk * MCS_PHASE_BLOCK_, *im = out_im + blk * MCS_PHASE_BLOCK_;
-        if (!add)
-            for (size_t r = 0; r < MCS_PHASE_BLOCK_; ++r)
-                re[r] = im[r] = 0.0;
+        double *re = out_re + blk * MCS_PHASE_BLOCK_;
+        double *im = want_im ? out_im + blk * MCS_PHASE_BLOCK_ : NULL;
+        for (size_t r = 0; !add && r < MCS_PHASE_BLOCK_; ++r) {
+            re[r] = 0.0;
+            if (want_im)
+                im[r] = 0.0;
+        }
         re[0] += ar0, re[1] += ar1, re[2] += ar2, re[3] += ar3;
         re[4] += ar4, re[5] += ar5, re[6] += ar6, re[7] += ar7;
-        im[0] += ai0, im[1] += ai1, im[2] += ai2, im[3] += ai3;
-        im[4] += ai4, im[5] += ai5, im[6] += ai6, im[7] += ai7;
+        if (want_im) {
+            im[0] += ai0, im[1] += ai1, im[2] += ai2, im[3] += ai3;
+            im[4] += ai4, im[5] += ai5, im[6] += ai6, im[7] += ai7;
+        }
     }
 }
 
+MCS_NOINLINE static void KERNEL(phase_block)(const mcs_phase_ctx_ *ctx, size_t count,
+                                             size_t blocks, int add, double *restrict out_re,
+                                             double *restrict out_im)
+{
+    KERNEL(phase_block_body)(ctx, count, blocks, add, out_re, out_im, 1);
+}
+
 #if defined(MCS_PHASE_BLOCK_RE_)
-/* The real parts only: half the work, for a transform whose imaginary
- * parts are not wanted (the pair histogram's); compiled where asked for. */
+/* The real parts only (always added): half the work, for a transform whose
+ * imaginary parts are not wanted (the pair histogram's); compiled where
+ * asked for. */
 MCS_NOINLINE static void KERNEL(phase_block_re)(const mcs_phase_ctx_ *ctx, size_t count,
                                                 size_t blocks, double *restrict out_re)
 {
-    const size_t n = ctx->n;
-    const double *ct = ctx->cos_table, *st = ctx->sin_table, *phase = ctx->phase;
-    size_t *index = ctx->index;
-    const size_t *step = ctx->step;
-    for (size_t blk = 0; blk < blocks; ++blk) {
-        double ar0 = 0.0, ar1 = 0.0, ar2 = 0.0, ar3 = 0.0, ar4 = 0.0, ar5 = 0.0, ar6 = 0.0;
-        double ar7 = 0.0;
-        for (size_t j = 0; j < count; ++j) {
-            const size_t i = index[j];
-            const double c = ct[i], s = st[i];
-            const double *restrict pr = phase + j * 2u * MCS_PHASE_BLOCK_;
-            const double *restrict pi = pr + MCS_PHASE_BLOCK_;
-            MCS_LANE_RE_(0);
-            MCS_LANE_RE_(1);
-            MCS_LANE_RE_(2);
-            MCS_LANE_RE_(3);
-            MCS_LANE_RE_(4);
-            MCS_LANE_RE_(5);
-            MCS_LANE_RE_(6);
-            MCS_LANE_RE_(7);
-            const size_t next = i + step[j];
-            index[j] = next >= n ? next - n : next;
-        }
-        double *re = out_re + blk * MCS_PHASE_BLOCK_;
-        re[0] += ar0, re[1] += ar1, re[2] += ar2, re[3] += ar3;
-        re[4] += ar4, re[5] += ar5, re[6] += ar6, re[7] += ar7;
-    }
+    KERNEL(phase_block_body)(ctx, count, blocks, 1, out_re, NULL, 0);
 }
 #endif
 
 #undef MCS_LANE_
-#undef MCS_LANE_RE_

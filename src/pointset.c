@@ -24,9 +24,9 @@ mcs_status mcs_pointset_init(mcs_pointset *acc, size_t freq_max)
  * last point contributes 0): low[b] = e^{-2 pi i b x}, b < B, and
  * high[a] = e^{-2 pi i a B x}, a < blocks. B x mod 1 is exact (B is a power
  * of two), so the high row is the phase row of that fraction. */
-static void phase_rows(mcs_pointset *acc, int p, size_t k, const double *points, size_t q)
+static void phase_rows(mcs_pointset *acc, int p, size_t k, mcs_points_ points, size_t q)
 {
-    const double x = q < k ? points[q] : 0.0, amp = q < k ? 1.0 : 0.0;
+    const double x = q < k ? mcs_point_(points, q) : 0.0, amp = q < k ? 1.0 : 0.0;
     const size_t blocks = acc->freq_max / MCS_POINTSET_BLOCK + 1u;
     mcs_ps_phase_row(x, 1.0, MCS_POINTSET_BLOCK - 1u, acc->low[p][0], acc->low[p][1]);
     double xb = (double)MCS_POINTSET_BLOCK * x;
@@ -45,9 +45,11 @@ static void accumulate_four(mcs_pointset *acc)
                   x, y);
 }
 
-mcs_status mcs_pointset_add(mcs_pointset *acc, size_t k, const double *points)
+/* The body of mcs_pointset_add and mcs_pointset_add_f, over double or float
+ * points (internal.h): the same bits from the widened points. */
+static MCS_ALWAYS_INLINE mcs_status add_points(mcs_pointset *acc, size_t k, mcs_points_ points)
 {
-    mcs_status st = points == NULL ? MCS_ERR_NULL : check_acc(acc);
+    mcs_status st = mcs_points_addr_(points) == NULL ? MCS_ERR_NULL : check_acc(acc);
     if (st == MCS_OK)
         st = k == 0u ? MCS_ERR_K_RANGE : mcs_check_points_(k, points, NULL);
     if (st == MCS_OK)
@@ -68,6 +70,16 @@ mcs_status mcs_pointset_add(mcs_pointset *acc, size_t k, const double *points)
         mcs_ps_welford(&acc->mean[f], &acc->m2[f], p, acc->count);
     }
     return MCS_OK;
+}
+
+mcs_status mcs_pointset_add(mcs_pointset *acc, size_t k, const double *points)
+{
+    return add_points(acc, k, mcs_points_d_(points));
+}
+
+mcs_status mcs_pointset_add_f(mcs_pointset *acc, size_t k, const float *points)
+{
+    return add_points(acc, k, mcs_points_f_(points));
 }
 
 mcs_status mcs_pointset_merge(mcs_pointset *dst, const mcs_pointset *src)

@@ -47,10 +47,11 @@ static size_t ring_of(size_t fmax, size_t c, size_t fy)
 /* Phase rows of point slot p for point q of k (a padding slot past the last
  * point contributes 0): x row over fx = -F..F (negative fx by conjugation,
  * exactly), y row over fy = 0..F scaled by the amplitude. */
-static void phase_rows(mcs_pointset2d *acc, int p, size_t k, const double *points, size_t q)
+static void phase_rows(mcs_pointset2d *acc, int p, size_t k, mcs_points_ points, size_t q)
 {
     const size_t fmax = acc->freq_max;
-    const double x = q < k ? points[2u * q] : 0.0, y = q < k ? points[2u * q + 1u] : 0.0;
+    const double x = q < k ? mcs_point_(points, 2u * q) : 0.0;
+    const double y = q < k ? mcs_point_(points, 2u * q + 1u) : 0.0;
     double *xr = acc->phase[p][XR], *xi = acc->phase[p][XI];
     mcs_ps_phase_row(x, 1.0, fmax, xr + fmax, xi + fmax);
     for (size_t f = 1; f <= fmax; ++f) {
@@ -102,9 +103,11 @@ static void update_statistics(mcs_pointset2d *acc, size_t k)
                        acc->count);
 }
 
-mcs_status mcs_pointset2d_add(mcs_pointset2d *acc, size_t k, const double *points)
+/* The body of mcs_pointset2d_add and mcs_pointset2d_add_f, over double or
+ * float points (internal.h): the same bits from the widened points. */
+static MCS_ALWAYS_INLINE mcs_status add_points(mcs_pointset2d *acc, size_t k, mcs_points_ points)
 {
-    mcs_status st = points == NULL ? MCS_ERR_NULL : check_acc(acc);
+    mcs_status st = mcs_points_addr_(points) == NULL ? MCS_ERR_NULL : check_acc(acc);
     if (st == MCS_OK && k == 0u)
         st = MCS_ERR_K_RANGE;
     if (st == MCS_OK)
@@ -121,6 +124,16 @@ mcs_status mcs_pointset2d_add(mcs_pointset2d *acc, size_t k, const double *point
     }
     update_statistics(acc, k);
     return MCS_OK;
+}
+
+mcs_status mcs_pointset2d_add(mcs_pointset2d *acc, size_t k, const double *points)
+{
+    return add_points(acc, k, mcs_points_d_(points));
+}
+
+mcs_status mcs_pointset2d_add_f(mcs_pointset2d *acc, size_t k, const float *points)
+{
+    return add_points(acc, k, mcs_points_f_(points));
 }
 
 mcs_status mcs_pointset2d_merge(mcs_pointset2d *dst, const mcs_pointset2d *src)

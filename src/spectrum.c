@@ -82,48 +82,32 @@ mcs_status mcs_spectrum_flush(mcs_spectrum *acc)
 
 /* An input array of `bytes` must not lie inside the accumulator: the paths
  * write its scratch while they read the trial. */
-static int inside(const mcs_spectrum *acc, const void *p, size_t count, size_t size)
+static int inside(const mcs_spectrum *acc, const void *p, size_t bytes)
 {
-    const size_t bytes = count <= SIZE_MAX / size ? count * size : SIZE_MAX;
     return p != NULL && mcs_overlap_(p, bytes, acc, sizeof *acc);
 }
 
-/* The first bad sample of t, in order (a bin or point out of range, then a
- * weight not finite, then a negative one), or the weights' sum above
- * MCS_SPECTRUM_MAX_SUM (spectrum.h: nothing can then overflow, so no later
- * step can fail). */
-static mcs_status first_bad_sample(size_t n, const mcs_spectrum_trial_ *t)
+/* MCS_ERR_MAGNITUDE when the weights (NULL: all 1, a sum of at most
+ * MCS_MAX_K) sum above MCS_SPECTRUM_MAX_SUM (spectrum.h: nothing can then
+ * overflow, so no later step can fail); the weights are checked already. */
+static mcs_status check_sum(size_t k, const double *w)
 {
     double sum = 0.0;
-    for (size_t j = 0; j < t->k; ++j) {
-        if (t->bins != NULL ? t->bins[j] >= n : !(t->points[j] >= 0.0 && t->points[j] < 1.0))
-            return t->bins != NULL ? MCS_ERR_BIN_RANGE : MCS_ERR_POINT_RANGE;
-        if (t->weights != NULL) {
-            const double w = t->weights[j];
-            if (!isfinite(w))
-                return MCS_ERR_NOT_FINITE;
-            if (w < 0.0)
-                return MCS_ERR_NEGATIVE;
-            sum += w;
-        }
-    }
-    return t->weights == NULL || sum <= MCS_SPECTRUM_MAX_SUM ? MCS_OK : MCS_ERR_MAGNITUDE;
+    for (size_t j = 0; w != NULL && j < k; ++j)
+        sum += w[j];
+    return sum <= MCS_SPECTRUM_MAX_SUM ? MCS_OK : MCS_ERR_MAGNITUDE;
 }
 
-/* The common case, bins and weights, without a branch per sample: a flag
- * for any bin out of range or negative weight, and the sum (NaN and
- * infinities poison it; four partial sums keep the adds apart). Only a
- * trial that fails goes through first_bad_sample, for the status of its
- * first bad sample. */
-static mcs_status check_samples(size_t n, const mcs_spectrum_trial_ *t)
+/* Bins and weights without a branch per sample: a flag for any bin out of
+ * range or negative weight, and the sum (NaN and infinities poison it; four
+ * partial sums keep the adds apart). Only a trial that fails is checked
+ * again sample by sample, for the status of its first bad sample (a bin out
+ * of range, then a weight not finite, then a negative one). */
+static mcs_status check_bins(size_t n, size_t k, const size_t *b, const double *w)
 {
-    if (t->bins == NULL || t->weights == NULL)
-        return first_bad_sample(n, t);
-    const size_t *b = t->bins;
-    const double *w = t->weights;
     size_t bad = 0u, j = 0;
     double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
-    for (; j + 4u <= t->k; j += 4u) {
+    for (; j + 4u <= k; j += 4u) {
         bad |= (size_t)(b[j] >= n) | (size_t)(b[j + 1u] >= n) | (size_t)(b[j + 2u] >= n) |
                (size_t)(b[j + 3u] >= n);
         bad |= (size_t)(w[j] < 0.0) | (size_t)(w[j + 1u] < 0.0) | (size_t)(w[j + 2u] < 0.0) |
@@ -133,14 +117,29 @@ static mcs_status check_samples(size_t n, const mcs_spectrum_trial_ *t)
         s2 += w[j + 2u];
         s3 += w[j + 3u];
     }
-    for (; j < t->k; ++j) {
+    for (; j < k; ++j) {
         bad |= (size_t)(b[j] >= n) | (size_t)(w[j] < 0.0);
         s0 += w[j];
     }
     const double sum = (s0 + s1) + (s2 + s3);
-    return bad == 0u && sum <= MCS_SPECTRUM_MAX_SUM ? MCS_OK : first_bad_sample(n, t);
+    if (bad == 0u && sum <= MCS_SPECTRUM_MAX_SUM)
+        return MCS_OK;
+    mcs_status st = mcs_check_sparse_(n, k, b, w);
+    return st != MCS_OK ? st : check_sum(k, w);
 }
 
+/* The samples of a trial of points (mcs_check_points_, then the weights'
+ * sum), one copy of the loop per kind of point (internal.h). */
+static mcs_status check_points(const mcs_spectrum_trial_ *t)
+{
+    const mcs_points_ p = t->points;
+    mcs_status st = p.f != NULL ? mcs_check_points_(t->k, mcs_points_f_(p.f), t->weights)
+                                : mcs_check_points_(t->k, mcs_points_d_(p.d), t->weights);
+    return st != MCS_OK ? st : check_sum(t->k, t->weights);
+}
+
+/* The checks of a trial: the object, K, the count, no input array inside
+ * the accumulator, then its samples. */
 static mcs_status check_trial(const mcs_spectrum *acc, const mcs_spectrum_trial_ *t)
 {
     mcs_status st = spectrum_check(acc);
@@ -150,11 +149,11 @@ static mcs_status check_trial(const mcs_spectrum *acc, const mcs_spectrum_trial_
         return MCS_ERR_K_RANGE;
     if (acc->count >= MCS_SPECTRUM_MAX_COUNT)
         return MCS_ERR_COUNT;
-    if (inside(acc, t->bins, t->k, sizeof t->bins[0]) ||
-        inside(acc, t->points, t->k, sizeof t->points[0]) ||
-        inside(acc, t->weights, t->k, sizeof t->weights[0]))
+    if (inside(acc, t->bins, mcs_bytes_(t->k, sizeof t->bins[0])) ||
+        inside(acc, mcs_points_addr_(t->points), mcs_points_bytes_(t->points, t->k)) ||
+        inside(acc, t->weights, mcs_bytes_(t->k, sizeof t->weights[0])))
         return MCS_ERR_ALIAS;
-    return check_samples(acc->n, t);
+    return t->bins != NULL ? check_bins(acc->n, t->k, t->bins, t->weights) : check_points(t);
 }
 
 /* One checked trial down the path the policy gives it. */
@@ -178,7 +177,23 @@ mcs_status mcs_spectrum_add_bins(mcs_spectrum *acc, size_t k, const size_t *bins
 {
     if (bins == NULL || weights == NULL)
         return MCS_ERR_NULL;
-    const mcs_spectrum_trial_ t = {k, bins, NULL, weights};
+    const mcs_spectrum_trial_ t = {k, bins, {NULL, NULL}, weights};
+    mcs_status st = check_trial(acc, &t);
+    if (st == MCS_OK)
+        add_trial(acc, &t);
+    return st;
+}
+
+/* Both point calls: the trial carries the points as given (double, or float
+ * read in place and widened exactly where a path reads them, internal.h),
+ * so every path gives the same bits for float points as for the widened
+ * double ones. */
+static mcs_status add_points(mcs_spectrum *acc, size_t k, mcs_points_ points,
+                             const double *weights)
+{
+    if (mcs_points_addr_(points) == NULL)
+        return MCS_ERR_NULL;
+    const mcs_spectrum_trial_ t = {k, NULL, points, weights};
     mcs_status st = check_trial(acc, &t);
     if (st == MCS_OK)
         add_trial(acc, &t);
@@ -188,13 +203,13 @@ mcs_status mcs_spectrum_add_bins(mcs_spectrum *acc, size_t k, const size_t *bins
 mcs_status mcs_spectrum_add_points(mcs_spectrum *acc, size_t k, const double *points,
                                    const double *weights)
 {
-    if (points == NULL)
-        return MCS_ERR_NULL;
-    const mcs_spectrum_trial_ t = {k, NULL, points, weights};
-    mcs_status st = check_trial(acc, &t);
-    if (st == MCS_OK)
-        add_trial(acc, &t);
-    return st;
+    return add_points(acc, k, mcs_points_d_(points), weights);
+}
+
+mcs_status mcs_spectrum_add_points_f(mcs_spectrum *acc, size_t k, const float *points,
+                                     const double *weights)
+{
+    return add_points(acc, k, mcs_points_f_(points), weights);
 }
 
 mcs_status mcs_spectrum_add_dense(mcs_spectrum *acc, size_t n, const double *s)
@@ -206,7 +221,7 @@ mcs_status mcs_spectrum_add_dense(mcs_spectrum *acc, size_t n, const double *s)
         return st;
     if (n != acc->n)
         return MCS_ERR_MISMATCH;
-    if (inside(acc, s, n, sizeof s[0]))
+    if (inside(acc, s, mcs_bytes_(n, sizeof s[0])))
         return MCS_ERR_ALIAS;
     if (acc->count >= MCS_SPECTRUM_MAX_COUNT)
         return MCS_ERR_COUNT;

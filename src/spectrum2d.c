@@ -52,12 +52,12 @@ mcs_status mcs_spectrum2d_init(mcs_spectrum2d *acc, size_t n_x, size_t n_y)
  * weight (a padding slot past the last point has weight 0):
  * x row e^{-2 pi i k1 b1/N1}, k1 < N1; y row w e^{-2 pi i k2 b2/N2}, k2 <= N2/2.
  * Table indices advance by b mod N, so every twiddle is an exact entry. */
-static void twiddle_rows(mcs_spectrum2d *acc, int p, size_t k, const double *points,
+static void twiddle_rows(mcs_spectrum2d *acc, int p, size_t k, mcs_points_ points,
                          const double *weights, size_t q)
 {
     const size_t n1 = acc->n_x, n2 = acc->n_y;
-    const size_t b1 = q < k ? mcs_point_bin_(points[2u * q], n1) : 0u;
-    const size_t b2 = q < k ? mcs_point_bin_(points[2u * q + 1u], n2) : 0u;
+    const size_t b1 = q < k ? mcs_point_bin_(mcs_point_(points, 2u * q), n1) : 0u;
+    const size_t b2 = q < k ? mcs_point_bin_(mcs_point_(points, 2u * q + 1u), n2) : 0u;
     const double w = q >= k ? 0.0 : weights != NULL ? weights[q] : 1.0;
     double *xr = acc->rows[p][XR], *xi = acc->rows[p][XI];
     for (size_t k1 = 0, t = 0; k1 < n1; ++k1) {
@@ -111,7 +111,7 @@ static void update_statistics(mcs_spectrum2d *acc)
  * finite and >= 0, in that order, then their sum at most
  * MCS_SPECTRUM_MAX_SUM: |S_k| <= 2^100 then, so no square or fourth power
  * of the statistics can overflow (as for the 1D accumulator, spectrum.h). */
-static mcs_status check_trial(size_t k, const double *points, const double *weights)
+static mcs_status check_trial(size_t k, mcs_points_ points, const double *weights)
 {
     if (k == 0u)
         return MCS_ERR_K_RANGE;
@@ -126,10 +126,14 @@ static mcs_status check_trial(size_t k, const double *points, const double *weig
     return st == MCS_OK && !(sum <= MCS_SPECTRUM_MAX_SUM) ? MCS_ERR_MAGNITUDE : st;
 }
 
-mcs_status mcs_spectrum2d_add_points(mcs_spectrum2d *acc, size_t k, const double *points,
-                                     const double *weights)
+/* The body of mcs_spectrum2d_add_points and its _f twin, over double or
+ * float points (internal.h): the same bits from the widened points. Not
+ * inlined: a point costs O(N1 + N2) here, far more than the test of its
+ * kind, and the inlined copies would realign their frames. */
+static mcs_status add_points(mcs_spectrum2d *acc, size_t k, mcs_points_ points,
+                             const double *weights)
 {
-    mcs_status st = points == NULL ? MCS_ERR_NULL : check_acc(acc);
+    mcs_status st = mcs_points_addr_(points) == NULL ? MCS_ERR_NULL : check_acc(acc);
     if (st == MCS_OK && acc->count >= MCS_SPECTRUM_MAX_COUNT)
         st = MCS_ERR_COUNT;
     if (st == MCS_OK)
@@ -144,6 +148,18 @@ mcs_status mcs_spectrum2d_add_points(mcs_spectrum2d *acc, size_t k, const double
     }
     update_statistics(acc);
     return MCS_OK;
+}
+
+mcs_status mcs_spectrum2d_add_points(mcs_spectrum2d *acc, size_t k, const double *points,
+                                     const double *weights)
+{
+    return add_points(acc, k, mcs_points_d_(points), weights);
+}
+
+mcs_status mcs_spectrum2d_add_points_f(mcs_spectrum2d *acc, size_t k, const float *points,
+                                       const double *weights)
+{
+    return add_points(acc, k, mcs_points_f_(points), weights);
 }
 
 mcs_status mcs_spectrum2d_merge(mcs_spectrum2d *dst, const mcs_spectrum2d *src)

@@ -12,18 +12,25 @@
 #include "mcspec/spectrum.h"
 
 /* One validated trial: k samples, bin from bins[j] or, when bins is NULL,
- * floor(N points[j]); weight weights[j], or 1 when weights is NULL. */
+ * floor(N x_j) of the points (double, or float widened exactly: internal.h);
+ * weight weights[j], or 1 when weights is NULL. */
 typedef struct {
     size_t k;
     const size_t *bins;
-    const double *points;
+    mcs_points_ points;
     const double *weights;
 } mcs_spectrum_trial_;
 
-static inline size_t mcs_spectrum_trial_bin_(const mcs_spectrum_trial_ *t, size_t n, size_t j)
+/* floor(N x_j) of a trial of points. */
+static inline size_t mcs_spectrum_point_bin_(const mcs_spectrum_trial_ *t, size_t n, size_t j)
 {
     /* A trial has bins or points: the public calls refuse NULL for both. */
-    return t->bins != NULL ? t->bins[j] : mcs_point_bin_(t->points[j], n); // NOLINT(clang-analyzer-core.NullDereference): see above
+    return mcs_point_bin_(mcs_point_(t->points, j), n); // NOLINT(clang-analyzer-core.NullDereference): see above
+}
+
+static inline size_t mcs_spectrum_trial_bin_(const mcs_spectrum_trial_ *t, size_t n, size_t j)
+{
+    return t->bins != NULL ? t->bins[j] : mcs_spectrum_point_bin_(t, n, j);
 }
 
 static inline double mcs_spectrum_trial_weight_(const mcs_spectrum_trial_ *t, size_t j)

@@ -34,17 +34,8 @@ static unit_factors factors(double w, double w_old)
     return u;
 }
 
-#define KERNEL(name) name##_generic
-#include "spectrum_simd.h"
-#undef KERNEL
-
-#if MCS_AVX2_CLONES
-MCS_AVX2_BEGIN
-#define KERNEL(name) name##_avx2
-#include "spectrum_simd.h"
-#undef KERNEL
-MCS_AVX2_END
-#endif
+#define MCS_SIMD_BODY "spectrum_simd.h"
+#include "simd_clones.h"
 
 /* The update of every stored frequency from acc->re, acc->im (and the power
  * xp, or |S_k|^2 without it), by the object's kernels. */
@@ -92,17 +83,63 @@ void mcs_spectrum_sparse_(mcs_spectrum *acc, const mcs_spectrum_trial_ *t)
     acc->units += 1u;
 }
 
+/* ---------------------------------------------------------- POINT BINS */
+
+/* floor(N x_j) of the points [j0, j1) of t into out[j1 - j0], x_j read as
+ * float or double by the constant is_float (widened exactly): each caller's
+ * copy of the loop is branch-free. */
+static MCS_ALWAYS_INLINE void bin_points_as(const mcs_spectrum_trial_ *t, size_t n, size_t j0,
+                                            size_t j1, size_t *restrict out, int is_float)
+{
+    for (size_t j = j0; j < j1; ++j)
+        out[j - j0] = mcs_point_bin_(is_float ? (double)t->points.f[j] : t->points.d[j], n);
+}
+
+static void bin_points(const mcs_spectrum_trial_ *t, size_t n, size_t j0, size_t j1,
+                       size_t *restrict out)
+{
+    if (t->points.f != NULL)
+        bin_points_as(t, n, j0, j1, out, 1);
+    else
+        bin_points_as(t, n, j0, j1, out, 0);
+}
+
 /* ------------------------------------------------------------------- FFT */
+
+/* s_n += w_j at the bins of t's points (clear: s_n = 0 there again), x_j
+ * read as float or double by the constant is_float. */
+static MCS_ALWAYS_INLINE void scatter_points_as(mcs_spectrum *acc, const mcs_spectrum_trial_ *t,
+                                                int clear, int is_float)
+{
+    const size_t n = acc->n, k = t->k;
+    const double *restrict xd = t->points.d, *restrict w = t->weights;
+    const float *restrict xf = t->points.f;
+    double *restrict s = acc->s;
+    for (size_t j = 0; j < k; ++j) {
+        const size_t b = mcs_point_bin_(is_float ? (double)xf[j] : xd[j], n);
+        s[b] = clear ? 0.0 : s[b] + (w != NULL ? w[j] : 1.0);
+    }
+}
+
+static void scatter_points(mcs_spectrum *acc, const mcs_spectrum_trial_ *t, int clear)
+{
+    if (t->points.f != NULL && clear)
+        scatter_points_as(acc, t, 1, 1);
+    else if (t->points.f != NULL)
+        scatter_points_as(acc, t, 0, 1);
+    else if (clear)
+        scatter_points_as(acc, t, 1, 0);
+    else
+        scatter_points_as(acc, t, 0, 0);
+}
 
 void mcs_spectrum_fft_(mcs_spectrum *acc, const mcs_spectrum_trial_ *t)
 {
-    const size_t n = acc->n;
     if (t->bins != NULL) { /* weights given with bins */
         for (size_t j = 0; j < t->k; ++j)
             acc->s[t->bins[j]] += t->weights[j];
     } else {
-        for (size_t j = 0; j < t->k; ++j)
-            acc->s[mcs_point_bin_(t->points[j], n)] += mcs_spectrum_trial_weight_(t, j);
+        scatter_points(acc, t, 0);
     }
     mcs_dft_half_(&acc->plan, acc->s, acc->re, acc->im);
     update_trial(acc);
@@ -110,8 +147,7 @@ void mcs_spectrum_fft_(mcs_spectrum *acc, const mcs_spectrum_trial_ *t)
         for (size_t j = 0; j < t->k; ++j)
             acc->s[t->bins[j]] = 0.0;
     } else {
-        for (size_t j = 0; j < t->k; ++j)
-            acc->s[mcs_point_bin_(t->points[j], n)] = 0.0;
+        scatter_points(acc, t, 1);
     }
 }
 
@@ -164,8 +200,8 @@ static void pair_arrays(mcs_spectrum *acc, size_t k, const size_t *restrict b,
 }
 
 /* Pairs (j, q), j < q, for the columns q in [c0, c1), whose bins and
- * weights are cb[q - c0], cw[q - c0] (binned points); the rows j come from
- * t, four at a time as in pair_arrays. */
+ * weights are cb[q - c0], cw[q - c0] (binned points); the rows j < c0 come
+ * from t, four at a time as in pair_arrays, the rows in the chunk from cb, cw. */
 static void pair_columns(mcs_spectrum *acc, const mcs_spectrum_trial_ *t, size_t c0, size_t c1,
                          const size_t *restrict cb, const double *restrict cw)
 {
@@ -186,10 +222,13 @@ static void pair_columns(mcs_spectrum *acc, const mcs_spectrum_trial_ *t, size_t
             MCS_PAIR_(h[3], wr[3], cb[q], cw[q]);
         }
     }
+    /* c0 is a whole number of chunks (of a multiple of 4), so j = c0 here:
+     * the rows left are the chunk's own, binned already. */
+    _Static_assert(CHUNK % 4 == 0, "the rows before a chunk come in fours");
     for (; j + 1u < c1; ++j) {
-        double *hj = hist + n - mcs_spectrum_trial_bin_(t, n, j);
-        const double wj = mcs_spectrum_trial_weight_(t, j);
-        for (size_t q = j + 1u > c0 ? j + 1u : c0; q < c1; ++q)
+        double *hj = hist + n - cb[j - c0];
+        const double wj = cw[j - c0];
+        for (size_t q = j + 1u; q < c1; ++q)
             MCS_PAIR_(hj, wj, cb[q - c0], cw[q - c0]);
     }
 }
@@ -216,16 +255,15 @@ static void pair_singles(mcs_spectrum *acc, size_t count, const size_t *b, const
 
 void mcs_spectrum_pairs_(mcs_spectrum *acc, const mcs_spectrum_trial_ *t)
 {
-    if (t->points == NULL && t->weights != NULL) { /* bins and weights as given */
+    if (t->bins != NULL) { /* bins and weights as given */
         pair_singles(acc, t->k, t->bins, t->weights);
         pair_arrays(acc, t->k, t->bins, t->weights);
     } else { /* bin the points chunk by chunk into the column scratch */
         for (size_t c0 = 0; c0 < t->k; c0 += CHUNK) {
             const size_t c1 = t->k - c0 > CHUNK ? c0 + CHUNK : t->k;
-            for (size_t q = c0; q < c1; ++q) {
-                acc->chunk_bins[q - c0] = mcs_spectrum_trial_bin_(t, acc->n, q);
+            bin_points(t, acc->n, c0, c1, acc->chunk_bins);
+            for (size_t q = c0; q < c1; ++q)
                 acc->chunk_weights[q - c0] = mcs_spectrum_trial_weight_(t, q);
-            }
             pair_singles(acc, c1 - c0, acc->chunk_bins, acc->chunk_weights);
             pair_columns(acc, t, c0, c1, acc->chunk_bins, acc->chunk_weights);
         }

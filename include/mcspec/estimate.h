@@ -39,6 +39,13 @@ mcs_status mcs_estimate_bins(size_t n, size_t k, const double *f, const size_t *
 mcs_status mcs_estimate_points(size_t k, mcs_estimate_integrand f, void *ctx,
                                const double *points, const double *weights, double *out);
 
+/* mcs_estimate_points for float points (a renderer's samples, read in
+ * place): f gets each x_j widened to double, which is exact, so the result
+ * is bit-equal to mcs_estimate_points on the widened points. A float just
+ * below 1.0f is in [0,1); 1.0f is not. Statuses as mcs_estimate_points. */
+mcs_status mcs_estimate_points_f(size_t k, mcs_estimate_integrand f, void *ctx,
+                                 const float *points, const double *weights, double *out);
+
 #ifdef __cplusplus
 }
 #endif

@@ -80,6 +80,13 @@ mcs_status mcs_pattern_draw(const mcs_pattern *pat, mcs_rng *rng, size_t k, size
 mcs_status mcs_pattern_bin_points(size_t n, size_t k, const mcs_importance *importance,
                                   const double *points, size_t *bins, double *weights);
 
+/* mcs_pattern_bin_points for float points, read in place: each x_j widens
+ * to double exactly, so bins and weights are bit-equal to the double call's
+ * on the widened points (a float just below 1.0f is in [0,1); 1.0f is not).
+ * Statuses as mcs_pattern_bin_points. */
+mcs_status mcs_pattern_bin_points_f(size_t n, size_t k, const mcs_importance *importance,
+                                    const float *points, size_t *bins, double *weights);
+
 /* Largest total weight of one trial mcs_pattern_dense accepts: 2^220, so no
  * s_n overflows (MCS_ERR_MAGNITUDE beyond it). */
 #define MCS_PATTERN_MAX_DENSE 1.684996666696915e+66

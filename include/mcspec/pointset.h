@@ -57,6 +57,12 @@ mcs_status mcs_pointset_init(mcs_pointset *acc, size_t freq_max);
  * MCS_ERR_COUNT (the count at MCS_MAX_COUNT). *acc untouched on error. */
 mcs_status mcs_pointset_add(mcs_pointset *acc, size_t k, const double *points);
 
+/* mcs_pointset_add for float points, read in place: each coordinate widens to double
+ * exactly, so the statistics are bit-equal to mcs_pointset_add's on the widened
+ * points (a float just below 1.0f is in [0,1); 1.0f is not). Statuses as
+ * mcs_pointset_add. */
+mcs_status mcs_pointset_add_f(mcs_pointset *acc, size_t k, const float *points);
+
 /* dst <- dst union src: the statistics of one pass over both trial streams,
  * to rounding. src unchanged; dst == src allowed. MCS_ERR_NULL,
  * MCS_ERR_UNINIT, MCS_ERR_MISMATCH (different F), MCS_ERR_COUNT (the counts

@@ -65,6 +65,12 @@ mcs_status mcs_pointset2d_init(mcs_pointset2d *acc, size_t freq_max);
  * count at MCS_MAX_COUNT). *acc untouched on error. */
 mcs_status mcs_pointset2d_add(mcs_pointset2d *acc, size_t k, const double *points);
 
+/* mcs_pointset2d_add for float points, read in place: each coordinate widens to double
+ * exactly, so the statistics are bit-equal to mcs_pointset2d_add's on the widened
+ * points (a float just below 1.0f is in [0,1); 1.0f is not). Statuses as
+ * mcs_pointset2d_add. */
+mcs_status mcs_pointset2d_add_f(mcs_pointset2d *acc, size_t k, const float *points);
+
 /* dst <- dst union src (Chan et al.), to rounding one pass over both trial
  * streams. src unchanged; dst == src allowed. MCS_ERR_NULL, MCS_ERR_UNINIT,
  * MCS_ERR_MISMATCH (different F), MCS_ERR_COUNT (the counts would pass

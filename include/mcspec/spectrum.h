@@ -198,6 +198,14 @@ mcs_status mcs_spectrum_add_dense(mcs_spectrum *acc, size_t n, const double *s);
 mcs_status mcs_spectrum_add_points(mcs_spectrum *acc, size_t k, const double *points,
                                    const double *weights);
 
+/* mcs_spectrum_add_points for float points (a renderer's samples, read in
+ * place, never copied): each x_j widens to double exactly, so every path
+ * gives the bits of mcs_spectrum_add_points on the widened points (a float
+ * just below 1.0f is in [0,1); 1.0f is not). Statuses as
+ * mcs_spectrum_add_points. */
+mcs_status mcs_spectrum_add_points_f(mcs_spectrum *acc, size_t k, const float *points,
+                                     const double *weights);
+
 /* dst <- dst union src (Chan et al. on the units, open batches summed): the
  * same means as one pass over both trial streams, to rounding, and standard
  * errors over the units of both. src unchanged; dst == src is allowed.

@@ -79,6 +79,13 @@ mcs_status mcs_spectrum2d_init(mcs_spectrum2d *acc, size_t n_x, size_t n_y);
 mcs_status mcs_spectrum2d_add_points(mcs_spectrum2d *acc, size_t k, const double *points,
                                      const double *weights);
 
+/* mcs_spectrum2d_add_points for float points, read in place: each
+ * coordinate widens to double exactly, so the statistics are bit-equal to
+ * the double call's on the widened points (a float just below 1.0f is in
+ * [0,1); 1.0f is not). Statuses as mcs_spectrum2d_add_points. */
+mcs_status mcs_spectrum2d_add_points_f(mcs_spectrum2d *acc, size_t k, const float *points,
+                                       const double *weights);
+
 /* dst <- dst union src (Chan et al.). MCS_ERR_NULL, MCS_ERR_UNINIT,
  * MCS_ERR_MISMATCH (different N1 or N2), MCS_ERR_COUNT (the counts would
  * pass MCS_MAX_COUNT). dst untouched on error. */

@@ -58,4 +58,10 @@
 #define BK 6u
 #define BT 5u
 
+/* The _f calls' rows reuse the double rows' arrays: adv_floats_begin
+ * narrows points[len] to floats in place (adv_table_core.c says how), and
+ * adv_floats_end puts the doubles back after the call. */
+const float *adv_floats_begin(void *points, size_t len);
+void adv_floats_end(void *points, size_t len);
+
 #endif /* ADV_TABLE_H */

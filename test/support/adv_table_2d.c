@@ -63,6 +63,13 @@ static int t_pattern2d_permute(const adv_val *a)
 }
 static int t_pointset_init(const adv_val *a) { return mcs_pointset_init(a[0].p, a[1].z); }
 static int t_pointset_add(const adv_val *a) { return mcs_pointset_add(a[0].p, a[1].z, a[2].p); }
+static int t_pointset_add_f(const adv_val *a)
+{
+    const float *x = adv_floats_begin(a[2].p, a[1].z);
+    int st = mcs_pointset_add_f(a[0].p, a[1].z, x);
+    adv_floats_end(a[2].p, a[1].z);
+    return st;
+}
 static int t_pointset_merge(const adv_val *a) { return mcs_pointset_merge(a[0].p, a[1].p); }
 static int t_pointset_count(const adv_val *a) { return mcs_pointset_count(a[0].p, a[1].p); }
 static int t_pointset_power(const adv_val *a) { return mcs_pointset_power(a[0].p, a[1].l, a[2].p); }
@@ -70,6 +77,14 @@ static int t_pointset_power_stderr(const adv_val *a) { return mcs_pointset_power
 static int t_pointset_exact_power(const adv_val *a) { return mcs_pointset_exact_power((mcs_pattern_kind)a[0].e, a[1].z, a[2].l, a[3].p); }
 static int t_pointset2d_init(const adv_val *a) { return mcs_pointset2d_init(a[0].p, a[1].z); }
 static int t_pointset2d_add(const adv_val *a) { return mcs_pointset2d_add(a[0].p, a[1].z, a[2].p); }
+static int t_pointset2d_add_f(const adv_val *a)
+{
+    const size_t len = a[1].z <= SIZE_MAX / 2u ? 2u * a[1].z : SIZE_MAX;
+    const float *x = adv_floats_begin(a[2].p, len);
+    int st = mcs_pointset2d_add_f(a[0].p, a[1].z, x);
+    adv_floats_end(a[2].p, len);
+    return st;
+}
 static int t_pointset2d_merge(const adv_val *a) { return mcs_pointset2d_merge(a[0].p, a[1].p); }
 static int t_pointset2d_count(const adv_val *a) { return mcs_pointset2d_count(a[0].p, a[1].p); }
 static int t_pointset2d_power(const adv_val *a) { return mcs_pointset2d_power(a[0].p, a[1].l, a[2].l, a[3].p); }
@@ -83,6 +98,14 @@ static int t_pointset2d_exact_radial(const adv_val *a) { return mcs_pointset2d_e
 static int t_pointset2d_exact_anisotropy(const adv_val *a) { return mcs_pointset2d_exact_anisotropy(a[0].p, a[1].z, a[2].p); }
 static int t_spectrum2d_init(const adv_val *a) { return mcs_spectrum2d_init(a[0].p, a[1].z, a[2].z); }
 static int t_spectrum2d_add_points(const adv_val *a) { return mcs_spectrum2d_add_points(a[0].p, a[1].z, a[2].p, a[3].p); }
+static int t_spectrum2d_add_points_f(const adv_val *a)
+{
+    const size_t len = a[1].z <= SIZE_MAX / 2u ? 2u * a[1].z : SIZE_MAX;
+    const float *x = adv_floats_begin(a[2].p, len);
+    int st = mcs_spectrum2d_add_points_f(a[0].p, a[1].z, x, a[3].p);
+    adv_floats_end(a[2].p, len);
+    return st;
+}
 static int t_spectrum2d_merge(const adv_val *a) { return mcs_spectrum2d_merge(a[0].p, a[1].p); }
 static int t_spectrum2d_count(const adv_val *a) { return mcs_spectrum2d_count(a[0].p, a[1].p); }
 static int t_spectrum2d_mean(const adv_val *a) { return mcs_spectrum2d_mean(a[0].p, a[1].z, a[2].z, a[3].p, a[4].p); }
@@ -144,6 +167,8 @@ const adv_fn adv_fns_2d[] = {
        SZ_DEF("freq_max", 8, 1, MCS_MAX_FREQ_1D, F_OKIN)),
     FN(pointset_add, EF_ADD, 1, 1, OBJ_IO("acc", T_POINTSET, 0), SZ_LEN("k", 6),
        AIN("points", E_D, R_POINT, LEN(L_SLOT, 1), 0)),
+    FN(pointset_add_f, EF_ADD, 1, 1, OBJ_IO("acc", T_POINTSET, 0), SZ_LEN("k", 6),
+       AIN("points", E_D, R_POINT, LEN(L_SLOT, 1), 0)),
     FN(pointset_merge, EF_MERGE, 1, 0, OBJ_IO("dst", T_POINTSET, 0), OBJ_IN("src", T_POINTSET, F_SIZED)),
     FN(pointset_count, EF_NONE, 1, 0, PS_IN, OUT("count", E_U64, O_RAW, 0)),
     FN(pointset_power, EF_NONE, 1, 0, PS_IN, F1("freq"), OUT_NN("out")),
@@ -153,6 +178,8 @@ const adv_fn adv_fns_2d[] = {
     FN(pointset2d_init, EF_INIT, 1, 1, OBJ_OUT("acc", T_POINTSET2D),
        SZ_DEF("freq_max", 4, 1, MCS_MAX_FREQ, F_OKIN)),
     FN(pointset2d_add, EF_ADD, 1, 1, OBJ_IO("acc", T_POINTSET2D, 0), SZ_LEN("k", 6),
+       AIN("points", E_D, R_POINT, LEN(L_2SLOT, 1), 0)),
+    FN(pointset2d_add_f, EF_ADD, 1, 1, OBJ_IO("acc", T_POINTSET2D, 0), SZ_LEN("k", 6),
        AIN("points", E_D, R_POINT, LEN(L_2SLOT, 1), 0)),
     FN(pointset2d_merge, EF_MERGE, 1, 0, OBJ_IO("dst", T_POINTSET2D, 0),
        OBJ_IN("src", T_POINTSET2D, F_SIZED)),
@@ -173,6 +200,9 @@ const adv_fn adv_fns_2d[] = {
     FN(spectrum2d_init, EF_INIT, 1, 1, OBJ_OUT("acc", T_SPECTRUM2D),
        SZ_DEF("n_x", 6, 1, MCS_MAX_SIDE, F_OKIN), SZ_DEF("n_y", 4, 1, MCS_MAX_SIDE, F_OKIN)),
     FN(spectrum2d_add_points, EF_ADD, 1, 1, OBJ_IO("acc", T_SPECTRUM2D, 0), SZ_LEN("k", 6),
+       AIN("points", E_D, R_POINT, LEN(L_2SLOT, 1), 0),
+       AIN("weights", E_D, R_WEIGHT, LEN(L_SLOT, 1), F_NULLOK)),
+    FN(spectrum2d_add_points_f, EF_ADD, 1, 1, OBJ_IO("acc", T_SPECTRUM2D, 0), SZ_LEN("k", 6),
        AIN("points", E_D, R_POINT, LEN(L_2SLOT, 1), 0),
        AIN("weights", E_D, R_WEIGHT, LEN(L_SLOT, 1), F_NULLOK)),
     FN(spectrum2d_merge, EF_MERGE, 1, 0, OBJ_IO("dst", T_SPECTRUM2D, 0),

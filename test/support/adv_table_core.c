@@ -2,7 +2,55 @@
  * welford, dft and spectrum. */
 #include "adv_table.h"
 
+#include <float.h>
+#include <math.h>
 #include <string.h>
+
+/* ---- float points ----
+ * The engine fills and mutates double arrays. A row of a _f call narrows
+ * its points to floats at the same address (so the aliasing rows still
+ * alias), rounding toward zero, which keeps a value in [0,1) inside and one
+ * outside outside (NaN stays NaN, beyond the float range an infinity): the
+ * double row's expected outcome holds. After the call the doubles go back
+ * byte for byte, except where the call itself wrote (an output aliasing the
+ * points), so the engine's byte checks see what the call did. */
+
+static double floats_saved[2u * ADV_LONG_LEN];
+static float floats_written[2u * ADV_LONG_LEN];
+
+static float toward_zero(double d)
+{
+    if (isnan(d))
+        return NAN;
+    if (!(fabs(d) <= (double)FLT_MAX))
+        return d > 0.0 ? INFINITY : -INFINITY;
+    float f = (float)d;
+    return fabs((double)f) > fabs(d) ? nextafterf(f, 0.0f) : f;
+}
+
+const float *adv_floats_begin(void *points, size_t len)
+{
+    if (points == NULL || len > sizeof floats_saved / sizeof floats_saved[0])
+        return NULL; /* NULL rows; a longer array is a table error the rows show */
+    memcpy(floats_saved, points, len * sizeof(double));
+    for (size_t j = 0; j < len; ++j)
+        floats_written[j] = toward_zero(floats_saved[j]);
+    memcpy(points, floats_written, len * sizeof(float));
+    return points;
+}
+
+void adv_floats_end(void *points, size_t len)
+{
+    if (points == NULL || len > sizeof floats_saved / sizeof floats_saved[0])
+        return;
+    /* The floats cover the first len / 2 doubles (and half of one more). */
+    for (size_t i = 0; 2u * i < len; ++i) {
+        unsigned char *slot = (unsigned char *)points + i * sizeof(double);
+        const size_t bytes = 2u * i + 1u < len ? sizeof(double) : sizeof(float);
+        if (memcmp(slot, &floats_written[2u * i], bytes) == 0)
+            memcpy(slot, &floats_saved[i], sizeof(double));
+    }
+}
 
 /* ---- thunks ---- */
 
@@ -55,6 +103,20 @@ static int t_estimate_points(const adv_val *a)
 {
     return mcs_estimate_points(a[0].z, a[1].fn, a[2].p, a[3].p, a[4].p, a[5].p);
 }
+static int t_pattern_bin_points_f(const adv_val *a)
+{
+    const float *x = adv_floats_begin(a[3].p, a[1].z);
+    int st = mcs_pattern_bin_points_f(a[0].z, a[1].z, a[2].p, x, a[4].p, a[5].p);
+    adv_floats_end(a[3].p, a[1].z);
+    return st;
+}
+static int t_estimate_points_f(const adv_val *a)
+{
+    const float *x = adv_floats_begin(a[3].p, a[0].z);
+    int st = mcs_estimate_points_f(a[0].z, a[1].fn, a[2].p, x, a[4].p, a[5].p);
+    adv_floats_end(a[3].p, a[0].z);
+    return st;
+}
 static int t_welford_init(const adv_val *a) { return mcs_welford_init(a[0].p); }
 static int t_welford_add(const adv_val *a) { return mcs_welford_add(a[0].p, a[1].d); }
 static int t_welford_merge(const adv_val *a) { return mcs_welford_merge(a[0].p, a[1].p); }
@@ -71,6 +133,13 @@ static int t_spectrum_set_path(const adv_val *a) { return mcs_spectrum_set_path(
 static int t_spectrum_add_bins(const adv_val *a) { return mcs_spectrum_add_bins(a[0].p, a[1].z, a[2].p, a[3].p); }
 static int t_spectrum_add_dense(const adv_val *a) { return mcs_spectrum_add_dense(a[0].p, a[1].z, a[2].p); }
 static int t_spectrum_add_points(const adv_val *a) { return mcs_spectrum_add_points(a[0].p, a[1].z, a[2].p, a[3].p); }
+static int t_spectrum_add_points_f(const adv_val *a)
+{
+    const float *x = adv_floats_begin(a[2].p, a[1].z);
+    int st = mcs_spectrum_add_points_f(a[0].p, a[1].z, x, a[3].p);
+    adv_floats_end(a[2].p, a[1].z);
+    return st;
+}
 static int t_spectrum_merge(const adv_val *a) { return mcs_spectrum_merge(a[0].p, a[1].p); }
 static int t_spectrum_count(const adv_val *a) { return mcs_spectrum_count(a[0].p, a[1].p); }
 static int t_spectrum_mean(const adv_val *a) { return mcs_spectrum_mean(a[0].p, a[1].z, a[2].p, a[3].p); }
@@ -117,6 +186,9 @@ const adv_fn adv_fns_core[] = {
     FN(pattern_bin_points, EF_NONE, 1, 0, SZ_DEF("n", BN, 1, MCS_MAX_N, 0), SZ_LEN("k", BK),
        OBJ_IN("importance", T_IMP, F_NULLOK | F_SIZED), AIN("points", E_D, R_POINT, LEN(L_SLOT, 1), 0),
        AOUT("bins", E_Z, O_BIN, LEN(L_SLOT, 1), 0), AOUT("weights", E_D, O_NN, LEN(L_SLOT, 1), 0)),
+    FN(pattern_bin_points_f, EF_NONE, 1, 0, SZ_DEF("n", BN, 1, MCS_MAX_N, 0), SZ_LEN("k", BK),
+       OBJ_IN("importance", T_IMP, F_NULLOK | F_SIZED), AIN("points", E_D, R_POINT, LEN(L_SLOT, 1), 0),
+       AOUT("bins", E_Z, O_BIN, LEN(L_SLOT, 1), 0), AOUT("weights", E_D, O_NN, LEN(L_SLOT, 1), 0)),
     FN(pattern_dense, EF_NONE, 1, 0, SZ_DEF("n", BN, 1, MCS_MAX_N, 0), SZ_LEN("k", BT),
        AIN("bins", E_Z, R_BINS, LEN(L_SLOT, 1), 0), AIN("weights", E_D, R_WEIGHT, LEN(L_SLOT, 1), 0),
        AOUT("s", E_D, O_NN, LEN(L_SLOT, 0), 0)),
@@ -124,6 +196,9 @@ const adv_fn adv_fns_core[] = {
        AIN("f", E_D, R_F, LEN(L_SLOT, 0), 0), AIN("bins", E_Z, R_BINS, LEN(L_SLOT, 1), 0),
        AIN("weights", E_D, R_WEIGHT, LEN(L_SLOT, 1), 0), OUT("out", E_D, O_VAL, 0)),
     FN(estimate_points, EF_NONE, 1, 0, SZ_LEN("k", BK), FNP("f"), CTX("ctx"),
+       AIN("points", E_D, R_POINT, LEN(L_SLOT, 0), 0),
+       AIN("weights", E_D, R_WEIGHT, LEN(L_SLOT, 0), F_NULLOK), OUT("out", E_D, O_VAL, 0)),
+    FN(estimate_points_f, EF_NONE, 1, 0, SZ_LEN("k", BK), FNP("f"), CTX("ctx"),
        AIN("points", E_D, R_POINT, LEN(L_SLOT, 0), 0),
        AIN("weights", E_D, R_WEIGHT, LEN(L_SLOT, 0), F_NULLOK), OUT("out", E_D, O_VAL, 0)),
     FN(welford_init, EF_INIT, 1, 0, OBJ_OUT("acc", T_WELFORD)),
@@ -149,6 +224,9 @@ const adv_fn adv_fns_core[] = {
     FN(spectrum_add_dense, EF_ADD, 1, 0, OBJ_IO("acc", T_SPECTRUM, F_SIZED),
        SZ_MATCH("n", BN, MCS_MAX_N), AIN("s", E_D, R_WEIGHT, LEN(L_SLOT, 1), 0)),
     FNV(spectrum_add_points, EF_ADD, path_vars, 0, OBJ_IO("acc", T_SPECTRUM, 0), SZ_LEN("k", BT),
+        AIN("points", E_D, R_POINT, LEN(L_SLOT, 1), 0),
+        AIN("weights", E_D, R_WEIGHT, LEN(L_SLOT, 1), F_NULLOK)),
+    FNV(spectrum_add_points_f, EF_ADD, path_vars, 0, OBJ_IO("acc", T_SPECTRUM, 0), SZ_LEN("k", BT),
         AIN("points", E_D, R_POINT, LEN(L_SLOT, 1), 0),
         AIN("weights", E_D, R_WEIGHT, LEN(L_SLOT, 1), F_NULLOK)),
     FN(spectrum_merge, EF_MERGE, 1, 0, OBJ_IO("dst", T_SPECTRUM, 0), OBJ_IN("src", T_SPECTRUM, F_SIZED)),
