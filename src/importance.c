@@ -185,6 +185,14 @@ mcs_status mcs_importance_q(const mcs_importance *imp, size_t freq, double *re, 
         return MCS_ERR_FREQ_RANGE;
     if (mcs_overlap_(re, sizeof *re, im, sizeof *im))
         return MCS_ERR_ALIAS;
-    mcs_importance_q_unchecked(imp, freq, re, im);
+    /* An object mcs_importance_init made has every p_n positive and
+     * bounded below, so Q_k is finite; a corrupted one (p_n = 0 or NaN) is
+     * refused rather than read out as NaN. */
+    double r, i;
+    mcs_importance_q_unchecked(imp, freq, &r, &i);
+    if (!isfinite(r) || !isfinite(i))
+        return MCS_ERR_INVARIANT;
+    *re = r;
+    *im = i;
     return MCS_OK;
 }

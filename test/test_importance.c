@@ -222,6 +222,18 @@ static void test_one_storage_for_two_outputs_is_refused(void)
     TEST_ASSERT_EQUAL_DOUBLE(7.0, both);
 }
 
+/* Found by fuzz_api: an object with a valid n but p_n = 0 (zeroed) gave Q_k =
+ * NaN with MCS_OK; a result that is not finite is refused, outputs untouched. */
+static void test_q_of_a_corrupted_object_is_refused_not_nan(void)
+{
+    memset(&imp, 0, sizeof imp);
+    imp.n = 4u;
+    double re = 7.0, im = 8.0;
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_INVARIANT, mcs_importance_q(&imp, 1u, &re, &im));
+    TEST_ASSERT_EQUAL_DOUBLE(7.0, re);
+    TEST_ASSERT_EQUAL_DOUBLE(8.0, im);
+}
+
 /* Grid points k / 2^53 (the generator's u) in [a, b), a and b in [0, 1]. */
 static double grid_count(double a, double b)
 {
@@ -269,5 +281,6 @@ int main(void)
     RUN_TEST(test_any_scale_is_accepted_and_a_negligible_weight_is_refused);
     RUN_TEST(test_bin_probabilities_are_the_stored_g_so_the_estimator_is_unbiased);
     RUN_TEST(test_one_storage_for_two_outputs_is_refused);
+    RUN_TEST(test_q_of_a_corrupted_object_is_refused_not_nan);
     return UNITY_END();
 }

@@ -62,7 +62,8 @@ mcs_status mcs_importance_warp(const mcs_importance *imp, double u, double *x, s
  * 1/p (eq. 43), which carries every importance-sampled cross spectrum (eq. 43,
  * 49, 52); N^{-1/2} Q_0 = 1/H (eq. 44). O(N) with trig per term.
  * MCS_ERR_NULL, MCS_ERR_UNINIT, MCS_ERR_FREQ_RANGE (freq >= imp->n),
- * MCS_ERR_ALIAS (re and im one double). Outputs untouched on error. */
+ * MCS_ERR_ALIAS (re and im one double), MCS_ERR_INVARIANT (a result not
+ * finite: only a corrupted object gives one). Outputs untouched on error. */
 mcs_status mcs_importance_q(const mcs_importance *imp, size_t freq, double *re, double *im);
 
 #ifdef __cplusplus
