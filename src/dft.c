@@ -233,7 +233,20 @@ void mcs_dft_half_(mcs_dft *plan, const double *s, double *re, double *im)
  * 0.42 ns per N log2 N on the packed real path and 0.84 on the odd complex
  * one; the direct sum C_DIRECT ns per (non-zero bin, frequency) pair for its
  * block-phase kernel (half that without im, which the model leaves to its
- * caller); FFTW's r2c 0.11 ns per N log2 N plus its copy in and out. */
+ * caller); FFTW's r2c 0.11 ns per N log2 N plus its copy in and out when
+ * every prime factor of N has a codelet (up to 13), and 17 times that
+ * otherwise: at N = 4093 (prime, Rader's algorithm) make bench measured
+ * 94 us where the smooth-size figure gives 5.5 (FFTW 3.3.10, FFTW_MEASURE).
+ * Without that factor AUTO put N = 4093, K = 256 on the FFT path at a
+ * quarter of the PAIR path's speed. */
+static int has_large_prime_factor(size_t n)
+{
+    for (size_t p = 2u; p <= 13u; ++p)
+        while (n % p == 0u)
+            n /= p;
+    return n > 1u;
+}
+
 double mcs_dft_cost_(const mcs_dft *plan, size_t nnz)
 {
     static const double c_direct[2] = {0.36, 0.24}; /* baseline, AVX2 */
@@ -244,7 +257,8 @@ double mcs_dft_cost_(const mcs_dft *plan, size_t nnz)
     case MCS_DFT_PATH_KISS_REAL: return 40.0 + 0.42 * nlog;
     case MCS_DFT_PATH_KISS_COMPLEX: return 40.0 + 0.84 * nlog;
     case MCS_DFT_PATH_DIRECT: return 40.0 + 0.5 * n + c_direct[plan->simd != 0] * used * h1;
-    case MCS_DFT_PATH_FFTW: return 40.0 + 0.11 * nlog + 0.3 * n;
+    case MCS_DFT_PATH_FFTW:
+        return 40.0 + 0.11 * nlog * (has_large_prime_factor(plan->n) ? 17.0 : 1.0) + 0.3 * n;
     default: return 5.0;
     }
 }
