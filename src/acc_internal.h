@@ -50,9 +50,7 @@ static inline mcs_status mcs_check_add_sparse_(const void *obj, size_t obj_bytes
     mcs_status st = mcs_check_sparse_(n, k, bins, weights);
     if (st != MCS_OK)
         return st;
-    double total = 0.0;
-    for (size_t j = 0; j < k; ++j)
-        total += weights[j];
+    const double total = mcs_weights_total_(k, weights);
     return mcs_check_add_(obj, obj_bytes, count, total, max_total, bins,
                           mcs_bytes_(k, sizeof *bins), weights, mcs_bytes_(k, sizeof *weights));
 }

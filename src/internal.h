@@ -143,6 +143,17 @@ static inline mcs_status mcs_check_integrand_(size_t n, const double *f)
     return MCS_OK;
 }
 
+/* The sum of a trial's k weights (each already checked finite and >= 0), in
+ * sample order: what the accumulators and the dense form bound so that no
+ * bin's s_n can overflow. */
+static inline double mcs_weights_total_(size_t k, const double *weights)
+{
+    double total = 0.0;
+    for (size_t j = 0; j < k; ++j)
+        total += weights[j];
+    return total;
+}
+
 /* Bytes of count elements of elem bytes each, saturating at SIZE_MAX (an array
  * that large cannot exist, so an overlap test with it stays conservative). */
 static inline size_t mcs_bytes_(size_t count, size_t elem)

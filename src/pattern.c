@@ -276,10 +276,7 @@ mcs_status mcs_pattern_dense(size_t n, size_t k, const size_t *bins, const doubl
     /* A bin's s_n is a sum of weights: bound the trial's total (the same
      * 2^220 as the moment and autocorrelation accumulators) so no s_n can
      * overflow to inf. */
-    double total = 0.0;
-    for (size_t j = 0; j < k; ++j)
-        total += weights[j];
-    if (!(total <= MCS_PATTERN_MAX_DENSE))
+    if (!(mcs_weights_total_(k, weights) <= MCS_PATTERN_MAX_DENSE))
         return MCS_ERR_MAGNITUDE;
     for (size_t b = 0; b < n; ++b)
         s[b] = 0.0;

@@ -123,6 +123,18 @@ static void test_a_pattern_k_above_the_largest_is_refused_by_both_inits(void)
 
 /* ---- item 7: powers never negative -------------------------------------------- */
 
+/* Configuration j of the 2 x kinds (kind j / 2, with imp when j is odd) in
+ * pat; 0 for the one that is not defined (homogenized with importance). */
+static int pattern_of(int j, size_t n, size_t k)
+{
+    const mcs_pattern_kind kind = (mcs_pattern_kind)(j / 2);
+    const mcs_importance *im = j % 2 ? &imp : NULL;
+    if (im != NULL && kind == MCS_PATTERN_HOMOGENIZED)
+        return 0;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_init(&pat, kind, n, k, im));
+    return 1;
+}
+
 static double mat_re[MCS_MAX_COV_N * MCS_MAX_COV_N], mat_im[MCS_MAX_COV_N * MCS_MAX_COV_N];
 
 static void test_the_cross_matrix_diagonal_is_the_power_and_never_negative(void)
@@ -138,11 +150,8 @@ static void test_the_cross_matrix_diagonal_is_the_power_and_never_negative(void)
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_init(&imp, n, w));
         for (size_t k = 1; k <= 42u; k += (n < 8u ? 1u : 5u))
             for (int j = 0; j < 2 * MCS_PATTERN_KIND_COUNT; ++j) {
-                const mcs_pattern_kind kind = (mcs_pattern_kind)(j / 2);
-                const mcs_importance *im = j % 2 ? &imp : NULL;
-                if (im != NULL && kind == MCS_PATTERN_HOMOGENIZED)
+                if (!pattern_of(j, n, k))
                     continue;
-                TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_init(&pat, kind, n, k, im));
                 TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_theory_init(&th, &pat));
                 TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_theory_cross_matrix(&th, n, mat_re, mat_im));
                 for (size_t q = 0; q < n; ++q) {
@@ -179,11 +188,8 @@ static void test_integrands_up_to_the_bound_read_out_finite_for_the_heaviest_pat
     }
     f_over[7] = -nextafter(MCS_ESTIMATE_MAX_ABS, INFINITY);
     for (int j = 0; j < 2 * MCS_PATTERN_KIND_COUNT; ++j) {
-        const mcs_pattern_kind kind = (mcs_pattern_kind)(j / 2);
-        const mcs_importance *im = j % 2 ? &imp : NULL;
-        if (im != NULL && kind == MCS_PATTERN_HOMOGENIZED)
+        if (!pattern_of(j, n, k))
             continue;
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_init(&pat, kind, n, k, im));
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_theory_spectrum_init(&ts, &pat));
         double v[3] = {SENTINEL, SENTINEL, SENTINEL};
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_theory_spectrum_estimator_mean(&ts, n, k, f_max, &v[0]));
