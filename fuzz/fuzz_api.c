@@ -13,12 +13,11 @@
  *   moved a count by exactly one per add and to the sum on a merge.
  * ASan and UBSan (the build flags) catch the rest.
  *
- * Findings of open items of issue 10 are tagged with the item (101-103: the
- * new findings N1-N3 of test/test_adversarial.c). With
- * FUZZ_API_KNOWN=skip they are counted instead of fatal, and calls known to
- * hang (an unseeded rng, huge K or radius) are not made, so the fuzzer can
- * look past them for new defects; FUZZ_API_KNOWN=<item> does the same for
- * every item but that one (to collect its reproducers). */
+ * Findings are tagged with the item of issue 10 whose rule they break (5:
+ * a non-finite read-out, 7: a negative variance, 9: a count) or 0. Every one
+ * is fatal; with FUZZ_API_KNOWN=skip the tagged ones are counted instead,
+ * and FUZZ_API_KNOWN=<item> counts all but that one, for hunting past a
+ * defect while it is open (none is today). */
 #include <float.h>
 #include <math.h>
 #include <stdarg.h>

@@ -76,12 +76,6 @@ static const readout r7s[] = {E(moment_estimator_covariance, MOM, 0),
                               E(theory_spectrum_estimator_covariance, TS, 0)};
 #define PICK(table) (&table[byte() % (sizeof table / sizeof table[0])])
 
-/* Skipped under FUZZ_API_KNOWN=skip: calls that hang today. */
-static int hangs(const readout *r, size_t a)
-{
-    return skip_known && r->type == P2D && a > 4096u; /* new finding N2 */
-}
-
 static void op_readout(unsigned which)
 {
     const readout *r = which == 0 ? PICK(r1s) : which == 1 ? PICK(r2s) : which == 2 ? PICK(r3s)
@@ -95,8 +89,6 @@ static void op_readout(unsigned which)
     mcs_status st = MCS_ERR_NULL;
     switch (which) {
     case 0:
-        if (hangs(r, a))
-            return;
         st = end(((r1_fn)r->f)(o, a, out(re, 1, 8)));
         vals(st, re, 1, r->nonneg);
         break;
@@ -156,8 +148,6 @@ static void op_rng(void)
     mcs_rng *r = obj_or_null(RNG);
     const unsigned which = byte() % 4u;
     const uint32_t bound = (uint32_t)word(byte() % 5u);
-    if (which == 2 && skip_known && unseeded(r))
-        return; /* item 3: hangs */
     begin("rng");
     inout(RNG, r);
     uint32_t *u = out(uout, 1, 4);
@@ -213,8 +203,6 @@ static void op_pattern(void)
         return;
     }
     if (which == 1) {
-        if (skip_known && unseeded(r))
-            return; /* item 3: the homogenized shift hangs */
         reg(pat, pat ? sizeof *pat : 0u, 0u);
         st = end(mcs_pattern_draw(pat, inout(RNG, r), k, bins, w, x));
     } else if (which == 2) {
@@ -272,8 +260,6 @@ static void op_sampler_pattern2d(void)
     mcs_rng *r = obj_or_null(RNG);
     const size_t k = len_arg() / 2u, a = size_any(), b = size_any();
     const int kind = (int)(byte() % 9u) - 1;
-    if (skip_known && unseeded(r) && (which == 1 || which == 4))
-        return; /* item 3: n-rooks and multi-jittered hang */
     begin(which < 3 ? "sampler" : "pattern2d");
     double *pts = out(dout[0], 2u * k, 8);
     mcs_status st = MCS_OK;
@@ -550,8 +536,6 @@ static void op_misc(void)
     }
     case 5: {
         size_t *n = out(zout, 1, sizeof(size_t));
-        if (skip_known && a > 4096u)
-            return; /* new finding N2: O(radius^2) */
         end(mcs_pointset2d_ring_size(a, n));
         return;
     }
