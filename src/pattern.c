@@ -102,7 +102,7 @@ static inline void place_plain(size_t n, size_t j, double u, double t, size_t *b
  * bit the same, and several times cheaper. v is each sample's own (random,
  * stratified, homogenized: vw holds them on entry) or the trial's beta
  * (uniform 1/2, jitter); vw holds the weights on return. One loop per case,
- * so none tests the case per sample. */
+ * so none tests the case per sample (one with a select was 6-8% slower). */
 static void draw_plain(const mcs_pattern *pat, size_t k, double beta, size_t *bins, double *vw,
                        double *points)
 {
@@ -116,6 +116,11 @@ static void draw_plain(const mcs_pattern *pat, size_t k, double beta, size_t *bi
     } else if (own_v && pow2) {
         for (size_t j = 0; j < k; ++j) {
             double jv = (double)j + vw[j], u = jv * inv_k;
+            place_plain(n, j, u < 1.0 ? u : MCS_BELOW_ONE, jv * nd * inv_k, bins, vw, points);
+        }
+    } else if (pow2) { /* uniform and jitter: one beta for the trial */
+        for (size_t j = 0; j < k; ++j) {
+            double jv = (double)j + beta, u = jv * inv_k;
             place_plain(n, j, u < 1.0 ? u : MCS_BELOW_ONE, jv * nd * inv_k, bins, vw, points);
         }
     } else {
