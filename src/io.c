@@ -227,13 +227,23 @@ static void store_value(void *obj, const io_field *field, size_t n, size_t at, d
     }
 }
 
-static void check_value(io_pass *pass, double v, unsigned rules)
+/* A count field holds a whole number in [0, 2^53] written as +0.0 or more:
+ * -0.0 or a fraction would load as the integer below it and save back as
+ * other bytes (fuzz_load found a spectrum whose units were -0.0). */
+static int bad_count(double v)
 {
+    return signbit(v) || v != floor(v) || v > (double)MCS_MAX_COUNT;
+}
+
+static void check_value(io_pass *pass, double v, const io_field *field)
+{
+    const unsigned rules = field->rules;
     if (!isfinite(v))
         pass->not_finite = 1;
     else if (fabs(v) > MCS_IO_MAX_MAGNITUDE || (pass->count == 0u && v != 0.0) ||
              ((rules & IO_RULE_NONNEG) && v < 0.0) ||
-             ((rules & IO_RULE_SPREAD) && pass->count < 2u && v != 0.0))
+             ((rules & IO_RULE_SPREAD) && pass->count < 2u && v != 0.0) ||
+             (field->as == IO_AS_COUNT && bad_count(v)))
         pass->broken = 1;
 }
 
@@ -249,7 +259,7 @@ static void visit(io_pass *pass, const io_field *field, size_t at)
     } else if (pass->into != NULL) {
         store_value(pass->into, field, values->size[field->len], at, v);
     } else {
-        check_value(pass, v, field->rules);
+        check_value(pass, v, field);
     }
     pass->index += 1u;
 }

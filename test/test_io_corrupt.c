@@ -293,6 +293,21 @@ static void test_spectrum_units_and_open_batch_that_do_not_fit_are_refused(void)
     refused(&io_kinds[0], MCS_ERR_INVARIANT, len, rec2, "no open batch, open sums", sums);
 }
 
+/* fuzz_load: an empty spectrum whose units (or open count) read -0.0 loaded
+ * as 0 and saved back as +0.0, other bytes. A count is a whole number written
+ * as +0.0 or more; -0.0 is refused, as a fraction is. */
+static void test_a_count_written_as_minus_zero_is_refused(void)
+{
+    static mcs_spectrum empty;
+    dirty_destinations();
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&empty, 14u));
+    size_t len = 0u;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_io_save_spectrum(&empty, sizeof rec, rec, &len));
+    expect_value(0u, len, 0u, 0.0, MCS_OK);
+    expect_value(0u, len, 0u, -0.0, MCS_ERR_INVARIANT); /* units */
+    expect_value(0u, len, 1u, -0.0, MCS_ERR_INVARIANT); /* open_count */
+}
+
 static void test_counts_that_do_not_fit_the_data_are_refused(void)
 {
     io_fill(&set_a, 14u, 11u, 9u);
@@ -338,5 +353,6 @@ int main(void)
     RUN_TEST(test_broken_invariants_are_refused);
     RUN_TEST(test_spectrum_units_and_open_batch_that_do_not_fit_are_refused);
     RUN_TEST(test_counts_that_do_not_fit_the_data_are_refused);
+    RUN_TEST(test_a_count_written_as_minus_zero_is_refused);
     return UNITY_END();
 }
