@@ -137,7 +137,7 @@ static int pattern_of(int j, size_t n, size_t k)
 
 static double mat_re[MCS_MAX_COV_N * MCS_MAX_COV_N], mat_im[MCS_MAX_COV_N * MCS_MAX_COV_N];
 
-static void test_the_cross_matrix_diagonal_is_the_power_and_never_negative(void)
+static void test_the_cross_matrix_diagonal_and_cross_k_k_are_the_power_and_never_negative(void)
 {
     /* The diagonal <|S_k|^2> of mcs_theory_cross_matrix was not clamped as
      * mcs_theory_power is: uniform, N = 2, K = 7 through g = {1, 6} gave
@@ -159,6 +159,11 @@ static void test_the_cross_matrix_diagonal_is_the_power_and_never_negative(void)
                     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_theory_power(&th, q, &power));
                     TEST_ASSERT_TRUE(mat_re[q * n + q] >= 0.0);
                     theory_assert_close(power, mat_re[q * n + q], 1e-12, "diagonal = power");
+                    /* mcs_theory_cross(k, k) is the same power (fuzz_api: -1.5e-17) */
+                    double cr = SENTINEL, ci = SENTINEL;
+                    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_theory_cross(&th, q, q, &cr, &ci));
+                    TEST_ASSERT_TRUE(cr >= 0.0);
+                    theory_assert_close(power, cr, 1e-12, "cross(k, k) = power");
                 }
             }
     }
@@ -250,7 +255,7 @@ int main(void)
     RUN_TEST(test_uniform_counts_are_the_generators_for_every_small_n_and_k);
     RUN_TEST(test_uniform_theory_at_the_largest_k_is_quick_and_exact);
     RUN_TEST(test_a_pattern_k_above_the_largest_is_refused_by_both_inits);
-    RUN_TEST(test_the_cross_matrix_diagonal_is_the_power_and_never_negative);
+    RUN_TEST(test_the_cross_matrix_diagonal_and_cross_k_k_are_the_power_and_never_negative);
     RUN_TEST(test_integrands_up_to_the_bound_read_out_finite_for_the_heaviest_pattern);
     RUN_TEST(test_a_complex_result_into_one_double_is_refused_and_elsewhere_is_written);
     return UNITY_END();

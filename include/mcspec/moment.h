@@ -109,7 +109,8 @@ mcs_status mcs_moment_mean(const mcs_moment *acc, size_t freq, double *re, doubl
 /* <|S_freq|^2>, the real diagonal of eq. 16. O(N^2). MCS_ERR_FREQ_RANGE. */
 mcs_status mcs_moment_power(const mcs_moment *acc, size_t freq, double *out);
 
-/* <S_k S_l*> (eq. 16) for k = freq_k, l = freq_l. O(N^2). MCS_ERR_FREQ_RANGE. */
+/* <S_k S_l*> (eq. 16) for k = freq_k, l = freq_l (at k = l the power, as
+ * mcs_moment_power). O(N^2). MCS_ERR_FREQ_RANGE. */
 mcs_status mcs_moment_cross(const mcs_moment *acc, size_t freq_k, size_t freq_l, double *re,
                             double *im);
 

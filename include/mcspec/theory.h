@@ -103,8 +103,9 @@ mcs_status mcs_theory_mean(const mcs_theory *th, size_t freq, double *re, double
  * (b with |e^{-2 pi i k n/N}| = 1 in place of |f_n|, and 1/N for 1/K^2). */
 mcs_status mcs_theory_power(const mcs_theory *th, size_t freq, double *out);
 
-/* <S_k S_l*> (eq. 16) for k = freq_k, l = freq_l, by separable direct sums.
- * O(N^2). MCS_ERR_FREQ_RANGE. */
+/* <S_k S_l*> (eq. 16) for k = freq_k, l = freq_l, by separable direct sums
+ * (at k = l the power, clamped as mcs_theory_power). O(N^2).
+ * MCS_ERR_FREQ_RANGE. */
 mcs_status mcs_theory_cross(const mcs_theory *th, size_t freq_k, size_t freq_l, double *re,
                             double *im);
 
