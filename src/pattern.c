@@ -244,6 +244,14 @@ static MCS_ALWAYS_INLINE mcs_status bin_points(size_t n, size_t k, const mcs_imp
     mcs_status st = mcs_check_points_(k, points, NULL);
     if (st != MCS_OK)
         return st;
+    /* mcs_importance_init keeps every p_n positive, so 1/p_n is finite; an
+     * object that says otherwise at a bin in use is refused before anything
+     * is written (fuzz_api: a zeroed importance object gave weights of inf). */
+    for (size_t j = 0; importance != NULL && j < k; ++j) {
+        const double p = importance->p[mcs_point_bin_(mcs_point_(points, j), n)];
+        if (!(p > 0.0 && isfinite(1.0 / p)))
+            return MCS_ERR_INVARIANT;
+    }
     for (size_t j = 0; j < k; ++j) {
         size_t b = mcs_point_bin_(mcs_point_(points, j), n);
         bins[j] = b;

@@ -106,10 +106,33 @@ static void test_the_homogenized_draw_uses_as_many_generator_steps_as_the_strati
         TEST_ASSERT_EQUAL_UINT((ref_bins[j] + shift) % 100u, bins[j]);
 }
 
+/* fuzz_api: an importance object with a valid n but p_n = 0 (zeroed) gave
+ * weights of inf with MCS_OK; it is refused and nothing is written. */
+static void test_bin_points_refuses_a_corrupted_importance_object_writing_nothing(void)
+{
+    static mcs_importance broken;
+    memset(&broken, 0, sizeof broken);
+    broken.n = 2u;
+    const double x[2] = {0.25, 0.75};
+    const float xf[2] = {0.25f, 0.75f};
+    for (int f = 0; f < 2; ++f) {
+        bins[0] = bins[1] = 7u;
+        weights[0] = weights[1] = -1.0;
+        mcs_status st = f ? mcs_pattern_bin_points_f(2u, 2u, &broken, xf, bins, weights)
+                          : mcs_pattern_bin_points(2u, 2u, &broken, x, bins, weights);
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_INVARIANT, st);
+        TEST_ASSERT_EQUAL_UINT(7u, bins[0]);
+        TEST_ASSERT_EQUAL_UINT(7u, bins[1]);
+        TEST_ASSERT_EQUAL_DOUBLE(-1.0, weights[0]);
+        TEST_ASSERT_EQUAL_DOUBLE(-1.0, weights[1]);
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_every_kind_draws_bit_for_bit_the_documented_samples_and_leaves_the_rng_alike);
     RUN_TEST(test_the_homogenized_draw_uses_as_many_generator_steps_as_the_stratified_one_plus_its_shift);
+    RUN_TEST(test_bin_points_refuses_a_corrupted_importance_object_writing_nothing);
     return UNITY_END();
 }

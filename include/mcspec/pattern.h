@@ -75,8 +75,9 @@ mcs_status mcs_pattern_draw(const mcs_pattern *pat, mcs_rng *rng, size_t k, size
  * points[k] in [0,1); bins[k], weights[k] written; no two of the three arrays
  * (nor an output and the importance function) may overlap.
  * MCS_ERR_NULL, MCS_ERR_N_RANGE, MCS_ERR_K_RANGE (k = 0), MCS_ERR_MISMATCH
- * (importance->n != n), MCS_ERR_POINT_RANGE, MCS_ERR_ALIAS. Outputs untouched
- * on error. */
+ * (importance->n != n), MCS_ERR_POINT_RANGE, MCS_ERR_ALIAS, MCS_ERR_INVARIANT
+ * (an importance object with p_n <= 0 at a bin in use: only a corrupted one).
+ * Outputs untouched on error. */
 mcs_status mcs_pattern_bin_points(size_t n, size_t k, const mcs_importance *importance,
                                   const double *points, size_t *bins, double *weights);
 
