@@ -40,17 +40,20 @@ const char *mcs_dft_backend(void)
     return mcs_dft_fftw_name_();
 }
 
+/* 1 when every prime factor of n is at most p_max. */
+static int is_smooth(size_t n, size_t p_max)
+{
+    for (size_t p = 2u; p <= p_max && n > 1u; ++p)
+        while (n % p == 0u)
+            n /= p;
+    return n == 1u;
+}
+
 /* Only the factors 2, 3 and 5: KissFFT has butterflies for them (radix 2, 3,
  * 4, 5); any other prime sends it to kf_bfly_generic, which asks for scratch. */
 static int is_kiss_smooth(size_t n)
 {
-    while (n % 2u == 0u)
-        n /= 2u;
-    while (n % 3u == 0u)
-        n /= 3u;
-    while (n % 5u == 0u)
-        n /= 5u;
-    return n == 1u;
+    return is_smooth(n, 5u);
 }
 
 /* The KissFFT-side path for n and its transform length (0 if none). KissFFT
@@ -239,14 +242,6 @@ void mcs_dft_half_(mcs_dft *plan, const double *s, double *re, double *im)
  * 94 us where the smooth-size figure gives 5.5 (FFTW 3.3.10, FFTW_MEASURE).
  * Without that factor AUTO put N = 4093, K = 256 on the FFT path at a
  * quarter of the PAIR path's speed. */
-static int has_large_prime_factor(size_t n)
-{
-    for (size_t p = 2u; p <= 13u; ++p)
-        while (n % p == 0u)
-            n /= p;
-    return n > 1u;
-}
-
 double mcs_dft_cost_(const mcs_dft *plan, size_t nnz)
 {
     static const double c_direct[2] = {0.36, 0.24}; /* baseline, AVX2 */
@@ -258,7 +253,7 @@ double mcs_dft_cost_(const mcs_dft *plan, size_t nnz)
     case MCS_DFT_PATH_KISS_COMPLEX: return 40.0 + 0.84 * nlog;
     case MCS_DFT_PATH_DIRECT: return 40.0 + 0.5 * n + c_direct[plan->simd != 0] * used * h1;
     case MCS_DFT_PATH_FFTW:
-        return 40.0 + 0.11 * nlog * (has_large_prime_factor(plan->n) ? 17.0 : 1.0) + 0.3 * n;
+        return 40.0 + 0.11 * nlog * (is_smooth(plan->n, 13u) ? 1.0 : 17.0) + 0.3 * n;
     default: return 5.0;
     }
 }
