@@ -138,7 +138,7 @@ mcs_status mcs_pointset2d_add_f(mcs_pointset2d *acc, size_t k, const float *poin
 
 mcs_status mcs_pointset2d_merge(mcs_pointset2d *dst, const mcs_pointset2d *src)
 {
-    mcs_status st = mcs_ps_pair_status(check_acc(dst), check_acc(src));
+    mcs_status st = mcs_check_pair_(check_acc(dst), check_acc(src));
     if (st == MCS_OK)
         st = mcs_ps_merge_check(dst->freq_max == src->freq_max, dst->count, src->count);
     if (st != MCS_OK || src->count == 0u)

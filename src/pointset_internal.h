@@ -11,7 +11,7 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "internal.h"
+#include "acc_internal.h"
 #include "mcspec/status.h"
 
 /* Phases are advanced by one complex multiplication per frequency; every
@@ -27,17 +27,7 @@ static inline mcs_status mcs_ps_check_init(const void *acc, size_t freq_max, siz
     return st == MCS_ERR_N_RANGE ? MCS_ERR_FREQ_RANGE : st;
 }
 
-/* The status of a call on two objects (merge) from each one's own check:
- * MCS_ERR_NULL first, as if both had been checked for NULL before anything
- * else, then the first object's status, then the second's. */
-static inline mcs_status mcs_ps_pair_status(mcs_status a, mcs_status b)
-{
-    if (a == MCS_ERR_NULL || b == MCS_ERR_NULL)
-        return MCS_ERR_NULL;
-    return a != MCS_OK ? a : b;
-}
-
-/* The checks of a merge after the pair's own (mcs_ps_pair_status gave
+/* The checks of a merge after the pair's own (mcs_check_pair_ gave
  * MCS_OK): MCS_ERR_MISMATCH unless the two have the same shape, then
  * MCS_ERR_COUNT if the merged count na + nb would pass MCS_MAX_COUNT (or
  * either already has), so no count wraps and each stays exact in a double. */

@@ -164,7 +164,7 @@ mcs_status mcs_spectrum2d_add_points_f(mcs_spectrum2d *acc, size_t k, const floa
 
 mcs_status mcs_spectrum2d_merge(mcs_spectrum2d *dst, const mcs_spectrum2d *src)
 {
-    mcs_status st = mcs_ps_pair_status(check_acc(dst), check_acc(src));
+    mcs_status st = mcs_check_pair_(check_acc(dst), check_acc(src));
     if (st == MCS_OK)
         st = mcs_ps_merge_check(dst->n_x == src->n_x && dst->n_y == src->n_y, dst->count,
                                 src->count);
