@@ -206,6 +206,30 @@ static void test_a_copied_plan_gives_the_same_transform(void)
     }
 }
 
+/* The AVX2 copies (KissFFT's transform, the direct kernel) and the baseline
+ * ones give the same bits at every path's N; only CPUs with AVX2 run both. */
+static void test_the_avx2_and_baseline_copies_give_the_same_bits(void)
+{
+    static double re2[BIG], im2[BIG];
+    static const size_t big[] = {4096u, 4093u, 3375u, 4000u, 1024u, 960u};
+    int ran = 0;
+    for (size_t i = 0; i < 300u + sizeof big / sizeof big[0]; ++i) {
+        const size_t n = i < 300u ? i + 1u : big[i - 300u];
+        fill_random(n, 77u + n);
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_dft_init(&plan, n));
+        if (plan.simd == 0)
+            continue;
+        ran = 1;
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_dft_real_half(&plan, n, s, re, im));
+        plan.simd = 0;
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_dft_real_half(&plan, n, s, re2, im2));
+        TEST_ASSERT_EQUAL_MEMORY(re, re2, (n / 2u + 1u) * sizeof re[0]);
+        TEST_ASSERT_EQUAL_MEMORY(im, im2, (n / 2u + 1u) * sizeof im[0]);
+    }
+    if (!ran)
+        TEST_IGNORE_MESSAGE("this CPU has no AVX2: one copy only");
+}
+
 static void test_parseval_holds_to_rounding(void)
 {
     static const size_t ns[] = {1u, 2u, 31u, 64u, 243u, 1000u, 4093u};
@@ -410,6 +434,7 @@ int main(void)
     RUN_TEST(test_half_output_matches_the_full_output_and_writes_nothing_beyond);
     RUN_TEST(test_input_may_alias_an_output_and_im_may_be_null);
     RUN_TEST(test_a_copied_plan_gives_the_same_transform);
+    RUN_TEST(test_the_avx2_and_baseline_copies_give_the_same_bits);
     RUN_TEST(test_parseval_holds_to_rounding);
     RUN_TEST(test_s0_is_k_over_root_n_for_an_unweighted_pattern);
     RUN_TEST(test_the_estimate_is_the_same_dot_product_in_both_domains);
