@@ -10,7 +10,8 @@
  *
  * Options: --quick (a subset, fewer rounds), --wall-clock (time slices by the
  * wall clock instead of the thread's CPU clock), --rounds R, --slice-ms T,
- * --python PATH (an interpreter that imports numpy), --numpy-peer SCRIPT.
+ * --cell N,K (that cell of the grid only, both patterns), --python PATH (an
+ * interpreter that imports numpy), --numpy-peer SCRIPT.
  * Timing: test/bench/src/harness.h; peers: peer_fftw.h, peer_numpy.h. */
 
 #include <math.h>
@@ -46,6 +47,7 @@ typedef struct {
     double slice_seconds;
     const char *python;
     const char *numpy_script;
+    size_t only_n, only_k; /* --cell N,K: that cell of the grid only (0: all) */
 } bench_options;
 
 static int parse_options(int argc, char **argv, bench_options *opt)
@@ -56,6 +58,8 @@ static int parse_options(int argc, char **argv, bench_options *opt)
     opt->slice_seconds = 2e-3;
     opt->python = NULL;
     opt->numpy_script = "test/bench/src/peer_numpy.py";
+    opt->only_n = 0u;
+    opt->only_k = 0u;
     for (int i = 1; i < argc; ++i) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         if (strcmp(a, "--quick") == 0) {
@@ -71,12 +75,15 @@ static int parse_options(int argc, char **argv, bench_options *opt)
         } else if (strcmp(a, "--python") == 0 && v != NULL) {
             opt->python = v;
             ++i;
+        } else if (strcmp(a, "--cell") == 0 && v != NULL &&
+                   sscanf(v, "%zu,%zu", &opt->only_n, &opt->only_k) == 2) {
+            ++i;
         } else if (strcmp(a, "--numpy-peer") == 0 && v != NULL) {
             opt->numpy_script = v;
             ++i;
         } else {
             fprintf(stderr, "usage: %s [--quick] [--wall-clock] [--rounds R] [--slice-ms T] "
-                            "[--python PATH] [--numpy-peer SCRIPT]\n", argv[0]);
+                            "[--cell N,K] [--python PATH] [--numpy-peer SCRIPT]\n", argv[0]);
             return 1;
         }
     }
@@ -84,6 +91,11 @@ static int parse_options(int argc, char **argv, bench_options *opt)
         opt->rounds = opt->quick ? 7u : 31u;
     if (opt->rounds > BENCH_MAX_ROUNDS || !(opt->slice_seconds > 0.0)) {
         fprintf(stderr, "bench: rounds must be 1..%d, the slice positive\n", BENCH_MAX_ROUNDS);
+        return 1;
+    }
+    if (opt->only_n != 0u && (opt->only_n > (size_t)MCS_MAX_N || opt->only_k == 0u ||
+                              opt->only_k > 256u)) {
+        fprintf(stderr, "bench: --cell N,K needs N in 1..%d and K in 1..256\n", MCS_MAX_N);
         return 1;
     }
     return 0;
@@ -156,7 +168,12 @@ static int run_grid(const bench_options *opt, bench_tally *tally)
     static const int kinds[] = {MCS_PATTERN_STRATIFIED, MCS_PATTERN_RANDOM};
     static bench_grid_result results[GRID_MAX_CELLS];
     const size_t *ns = opt->quick ? ns_quick : ns_full, *ks = opt->quick ? ks_quick : ks_full;
-    const size_t n_count = opt->quick ? 3u : 5u, k_count = opt->quick ? 2u : 5u;
+    size_t n_count = opt->quick ? 3u : 5u, k_count = opt->quick ? 2u : 5u;
+    if (opt->only_n != 0u) {
+        ns = &opt->only_n;
+        ks = &opt->only_k;
+        n_count = k_count = 1u;
+    }
     bench_contender list[BENCH_MAX_CONTENDERS];
     bench_grid_layout lay;
     size_t count = grid_contenders(list, &lay), cells = 0u;
