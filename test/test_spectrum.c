@@ -183,6 +183,40 @@ static void test_bins_dense_and_points_give_the_same_statistics(void)
         }
 }
 
+/* The FFT path sums each bin's weights in index order, whether a bin's
+ * samples come in a run (stratified with K > N: the run is summed in a
+ * register) or apart (random): the same bits as mcs_pattern_dense's s. */
+static void test_the_fft_path_sums_weights_as_the_dense_form_does(void)
+{
+    static const struct {
+        mcs_pattern_kind kind;
+        size_t n, k;
+    } cases[] = {{MCS_PATTERN_STRATIFIED, 32u, 200u}, {MCS_PATTERN_RANDOM, 7u, 40u},
+                 {MCS_PATTERN_STRATIFIED, 90u, 11u}};
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        const size_t n = cases[i].n, k = cases[i].k;
+        make_importance(n);
+        init_with(&acc, n, MCS_SPECTRUM_PATH_FFT, 0u);
+        init_with(&acc2, n, MCS_SPECTRUM_PATH_FFT, 0u);
+        spectra_stream st;
+        spectra_stream_init(&st, cases[i].kind, n, k, &imp, 11u + i, STREAM_SEQ);
+        for (size_t t = 0; t < 50u; ++t) {
+            stream_draw(&st);
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_bins(&acc, k, bins, weights));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_dense(n, k, bins, weights, dense));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_dense(&acc2, n, dense));
+        }
+        for (size_t q = 0; q <= n / 2u; ++q) {
+            double v[6];
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_mean(&acc, q, &v[0], &v[1]));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_power(&acc, q, &v[2]));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_mean(&acc2, q, &v[3], &v[4]));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_power(&acc2, q, &v[5]));
+            TEST_ASSERT_EQUAL_MEMORY(&v[3], &v[0], 3u * sizeof v[0]);
+        }
+    }
+}
+
 static void test_points_without_weights_count_as_weight_one(void)
 {
     for (size_t p = 0; p < PATHS; ++p) {
@@ -433,6 +467,7 @@ int main(void)
     RUN_TEST(test_pair_batches_of_one_give_the_per_trial_standard_errors);
     RUN_TEST(test_baseline_and_avx2_kernels_give_the_same_bits);
     RUN_TEST(test_bins_dense_and_points_give_the_same_statistics);
+    RUN_TEST(test_the_fft_path_sums_weights_as_the_dense_form_does);
     RUN_TEST(test_points_without_weights_count_as_weight_one);
     RUN_TEST(test_one_trial_matches_the_naive_dft_on_every_path);
     RUN_TEST(test_s0_is_k_over_root_n_in_every_trial_without_importance);
