@@ -96,42 +96,92 @@ static inline void place_plain(size_t n, size_t j, double u, double t, size_t *b
         points[j] = plain_point(n, b, u, t);
 }
 
-/* The samples without importance. Random: u = v, t = u N. Strata: u = (j +
- * v)/K and t = (j + v) N / K, each by one rounding from exact; when K is a
- * power of two the division is a multiplication by 1/K, exact and bit for
- * bit the same, and several times cheaper. v is each sample's own (random,
- * stratified, homogenized: vw holds them on entry) or the trial's beta
- * (uniform 1/2, jitter); vw holds the weights on return. One loop per case,
- * so none tests the case per sample (one with a select was 6-8% slower). */
-static void draw_plain(const mcs_pattern *pat, size_t k, double beta, size_t *bins, double *vw,
-                       double *points)
+/* How a sample's v gives t (and u): random t = v N; strata t = (j + v) N / K
+ * by one rounding from exact. When K is a power of two, (j + v) N / K is
+ * (j + v) times N/K, N/K exact: scaling by a power of two commutes with the
+ * rounding, so it is bit for bit the same and one dependent multiply
+ * shorter; the division by K is then a multiplication by 1/K, exact too. */
+typedef enum { OWN_RANDOM, OWN_POW2, OWN_DIV } own_mode;
+
+/* One sample of draw_own_body from its v. j < 2^30: the signed conversion
+ * is exact and one instruction, where one from size_t is a test and two. */
+static MCS_ALWAYS_INLINE void place_own(own_mode mode, size_t n, size_t j, double v, double nd,
+                                        double kd, double inv_k, double nk, size_t *bins, double *w,
+                                        double *points)
 {
-    const size_t n = pat->n;
-    const double nd = (double)n, kd = (double)k, inv_k = 1.0 / kd;
-    const int pow2 = (k & (k - 1u)) == 0u;
-    const int own_v = pat->kind != MCS_PATTERN_UNIFORM && pat->kind != MCS_PATTERN_JITTER;
-    if (pat->kind == MCS_PATTERN_RANDOM) {
-        for (size_t j = 0; j < k; ++j)
-            place_plain(n, j, vw[j], vw[j] * nd, bins, vw, points);
-    } else if (own_v && pow2) {
-        for (size_t j = 0; j < k; ++j) {
-            double jv = (double)j + vw[j], u = jv * inv_k;
-            place_plain(n, j, u < 1.0 ? u : MCS_BELOW_ONE, jv * nd * inv_k, bins, vw, points);
-        }
-    } else if (pow2) { /* uniform and jitter: one beta for the trial */
+    double jv = (double)(int64_t)j + v;
+    double t = mode == OWN_RANDOM ? v * nd : mode == OWN_POW2 ? jv * nk : jv * nd / kd;
+    double u = mode == OWN_RANDOM ? v : mode == OWN_POW2 ? jv * inv_k : jv / kd;
+    place_plain(n, j, mode == OWN_RANDOM || u < 1.0 ? u : MCS_BELOW_ONE, t, bins, w, points);
+}
+
+/* The samples that draw their own v (random, stratified, homogenized),
+ * without importance: the generator's doubles go straight to the bins, with
+ * no pass through memory, two per turn of the loop (rng_inline.h). mode and
+ * whether points is NULL are constants in every copy, so no per-sample test
+ * is left (the bench draws without points). */
+static MCS_ALWAYS_INLINE void draw_own_body(own_mode mode, size_t n, size_t k, mcs_rng *rng,
+                                            size_t *bins, double *w, double *points)
+{
+    const double nd = (double)n, kd = (double)k, inv_k = 1.0 / kd, nk = nd * inv_k;
+    const mcs_rng_lanes_ lanes = mcs_rng_lanes_of_(rng->inc);
+    uint64_t s = rng->state;
+    size_t j = 0;
+    for (; j + 2u <= k; j += 2u) {
+        double v0, v1;
+        s = mcs_rng_two_doubles_(s, &lanes, &v0, &v1);
+        place_own(mode, n, j, v0, nd, kd, inv_k, nk, bins, w, points);
+        place_own(mode, n, j + 1u, v1, nd, kd, inv_k, nk, bins, w, points);
+    }
+    rng->state = s;
+    if (j < k)
+        place_own(mode, n, j, mcs_rng_double_(rng), nd, kd, inv_k, nk, bins, w, points);
+}
+
+static void draw_own(const mcs_pattern *pat, mcs_rng *rng, size_t *bins, double *w,
+                     double *points)
+{
+    const size_t n = pat->n, k = pat->k;
+    const own_mode mode = pat->kind == MCS_PATTERN_RANDOM ? OWN_RANDOM
+                          : (k & (k - 1u)) == 0u         ? OWN_POW2
+                                                         : OWN_DIV;
+    if (points == NULL) {
+        if (mode == OWN_RANDOM)
+            draw_own_body(OWN_RANDOM, n, k, rng, bins, w, NULL);
+        else if (mode == OWN_POW2)
+            draw_own_body(OWN_POW2, n, k, rng, bins, w, NULL);
+        else
+            draw_own_body(OWN_DIV, n, k, rng, bins, w, NULL);
+    } else if (mode == OWN_RANDOM) {
+        draw_own_body(OWN_RANDOM, n, k, rng, bins, w, points);
+    } else if (mode == OWN_POW2) {
+        draw_own_body(OWN_POW2, n, k, rng, bins, w, points);
+    } else {
+        draw_own_body(OWN_DIV, n, k, rng, bins, w, points);
+    }
+}
+
+/* Uniform (beta 1/2) and jitter (the trial's beta) without importance: u =
+ * (j + beta)/K and t = (j + beta) N / K, as draw_own's strata. */
+static void draw_beta(const mcs_pattern *pat, double beta, size_t *bins, double *w, double *points)
+{
+    const size_t n = pat->n, k = pat->k;
+    const double nd = (double)n, kd = (double)k, inv_k = 1.0 / kd, nk = nd * inv_k;
+    if ((k & (k - 1u)) == 0u) {
         for (size_t j = 0; j < k; ++j) {
             double jv = (double)j + beta, u = jv * inv_k;
-            place_plain(n, j, u < 1.0 ? u : MCS_BELOW_ONE, jv * nd * inv_k, bins, vw, points);
+            place_plain(n, j, u < 1.0 ? u : MCS_BELOW_ONE, jv * nk, bins, w, points);
         }
     } else {
         for (size_t j = 0; j < k; ++j) {
-            double jv = (double)j + (own_v ? vw[j] : beta), u = jv / kd;
-            place_plain(n, j, u < 1.0 ? u : MCS_BELOW_ONE, jv * nd / kd, bins, vw, points);
+            double jv = (double)j + beta, u = jv / kd;
+            place_plain(n, j, u < 1.0 ? u : MCS_BELOW_ONE, jv * nd / kd, bins, w, points);
         }
     }
 }
 
-/* The samples through the importance warp (u as in draw_plain). */
+/* The samples through the importance warp (u as in draw_own, v in vw on
+ * entry unless the kind has one beta per trial). */
 static void draw_warped(const mcs_pattern *pat, size_t k, double beta, size_t *bins, double *vw,
                         double *points)
 {
@@ -159,25 +209,35 @@ static mcs_status check_drawable(const mcs_pattern *pat, const mcs_rng *rng)
     return mcs_rng_is_seeded_(rng) ? MCS_OK : MCS_ERR_UNINIT;
 }
 
+/* mcs_overlap_ for two lengths known to be nonzero, as a value rather than
+ * branches: the draw tests up to twelve pairs per call. */
+static inline int overlaps(const void *a, size_t a_bytes, const void *b, size_t b_bytes)
+{
+    const uintptr_t pa = (uintptr_t)a, pb = (uintptr_t)b;
+    return pa >= pb ? pa - pb < b_bytes : pb - pa < a_bytes;
+}
+
 /* The draw's outputs overlap each other, or an object it reads while writing
- * them: each output is written sample by sample, so no overlap can work. */
+ * them: each output is written sample by sample, so no overlap can work.
+ * bins and weights are k >= 1 long; points and the importance function are
+ * tested only when present (mcs_overlap_ gives 0 for their zero length). */
 static int draw_aliases(const mcs_pattern *pat, const mcs_rng *rng, size_t k,
                         const size_t *bins, const double *weights, const double *points)
 {
-    const void *out[3] = {bins, weights, points};
-    const size_t len[3] = {mcs_bytes_(k, sizeof *bins), mcs_bytes_(k, sizeof *weights),
-                           points != NULL ? mcs_bytes_(k, sizeof *points) : 0u};
-    const size_t imp_len = pat->importance != NULL ? sizeof *pat->importance : 0u;
-    for (size_t a = 0; a < 3u; ++a) {
-        for (size_t b = a + 1u; b < 3u; ++b)
-            if (mcs_overlap_(out[a], len[a], out[b], len[b]))
-                return 1;
-        if (mcs_overlap_(out[a], len[a], pat, sizeof *pat) ||
-            mcs_overlap_(out[a], len[a], rng, sizeof *rng) ||
-            mcs_overlap_(out[a], len[a], pat->importance, imp_len))
-            return 1;
+    const size_t lb = mcs_bytes_(k, sizeof *bins), lw = mcs_bytes_(k, sizeof *weights);
+    const mcs_importance *imp = pat->importance;
+    int hit = overlaps(bins, lb, weights, lw) | overlaps(bins, lb, pat, sizeof *pat) |
+              overlaps(bins, lb, rng, sizeof *rng) | overlaps(weights, lw, pat, sizeof *pat) |
+              overlaps(weights, lw, rng, sizeof *rng);
+    if (imp != NULL)
+        hit |= overlaps(bins, lb, imp, sizeof *imp) | overlaps(weights, lw, imp, sizeof *imp);
+    if (points != NULL) { /* as long as weights */
+        hit |= overlaps(points, lw, bins, lb) | overlaps(points, lw, weights, lw) |
+               overlaps(points, lw, pat, sizeof *pat) | overlaps(points, lw, rng, sizeof *rng);
+        if (imp != NULL)
+            hit |= overlaps(points, lw, imp, sizeof *imp);
     }
-    return 0;
+    return hit;
 }
 
 mcs_status mcs_pattern_draw(const mcs_pattern *pat, mcs_rng *rng, size_t k, size_t *bins,
@@ -193,15 +253,17 @@ mcs_status mcs_pattern_draw(const mcs_pattern *pat, mcs_rng *rng, size_t k, size
     if (draw_aliases(pat, rng, k, bins, weights, points))
         return MCS_ERR_ALIAS;
 
-    double beta = 0.5;
-    if (pat->kind == MCS_PATTERN_JITTER)
-        beta = mcs_rng_double_(rng);
-    else if (pat->kind != MCS_PATTERN_UNIFORM)
-        mcs_rng_fill_doubles_(rng, k, weights); /* each sample's v, read before its weight is written */
-    if (pat->importance == NULL)
-        draw_plain(pat, k, beta, bins, weights, points);
-    else
+    const int own_v = pat->kind != MCS_PATTERN_UNIFORM && pat->kind != MCS_PATTERN_JITTER;
+    const double beta = pat->kind == MCS_PATTERN_JITTER ? mcs_rng_double_(rng) : 0.5;
+    if (pat->importance == NULL && own_v) {
+        draw_own(pat, rng, bins, weights, points);
+    } else if (pat->importance == NULL) {
+        draw_beta(pat, beta, bins, weights, points);
+    } else {
+        if (own_v) /* each sample's v, read before its weight is written */
+            mcs_rng_fill_doubles_(rng, k, weights);
         draw_warped(pat, k, beta, bins, weights, points);
+    }
 
     if (pat->kind == MCS_PATTERN_HOMOGENIZED) {
         /* Cyclic shift by a whole number of bins, drawn after the strata. */
