@@ -4,6 +4,7 @@
 #include "rng_inline.h"
 
 #include <math.h>
+#include <string.h>
 
 const char *mcs_pattern_kind_str(mcs_pattern_kind kind)
 {
@@ -82,37 +83,78 @@ static double plain_point(size_t n, size_t b, double u, double t)
 /* The largest double below 1: where u would round up to 1, it stays inside. */
 #define MCS_BELOW_ONE 0x1.fffffffffffffp-1
 
-/* Bin floor(t) (t in [0, N]: the signed conversion is exact and one
- * instruction, where one to size_t is a compare and two on x86-64), clamped
- * to N - 1; weight 1; the point if asked. */
-static inline void place_plain(size_t n, size_t j, double u, double t, size_t *bins, double *vw,
-                               double *points)
+/* Bin floor(t), clamped to N - 1, as floor(min(t, N - 1)) (top = N - 1):
+ * the same for t in [0, N], and the clamp is one floating-point minimum
+ * beside the generator's integer work rather than a compare and a move
+ * among it (the draw is bound by integer instructions). t < 2^63, so the
+ * signed conversion is exact and one instruction, where one to size_t is a
+ * compare and two on x86-64. Weight 1; the point if asked. */
+static inline void place_plain(size_t n, double top, size_t j, double u, double t, size_t *bins,
+                               double *vw, double *points)
 {
-    size_t b = (size_t)(int64_t)t;
-    b = b < n ? b : n - 1u;
+    const double tc = t < top ? t : top; /* apart: GCC 12 made a branch of it inside the cast */
+    const size_t b = (size_t)(int64_t)tc;
     bins[j] = b;
     vw[j] = 1.0;
     if (points != NULL)
         points[j] = plain_point(n, b, u, t);
 }
 
-/* How a sample's v gives t (and u): random t = v N; strata t = (j + v) N / K
- * by one rounding from exact. When K is a power of two, (j + v) N / K is
- * (j + v) times N/K, N/K exact: scaling by a power of two commutes with the
- * rounding, so it is bit for bit the same and one dependent multiply
- * shorter; the division by K is then a multiplication by 1/K, exact too. */
+/* How draw_own forms a sample's t (and u) from its v: random t = v N;
+ * strata t = (j + v) N / K, by one rounding from exact. When K is a power
+ * of two, (j + v) N / K is (j + v) times N/K: N/K is exact, and scaling by
+ * a power of two commutes with rounding, so it is bit for bit the same and
+ * one dependent operation shorter; u = (j + v)/K is then exact. */
 typedef enum { OWN_RANDOM, OWN_POW2, OWN_DIV } own_mode;
 
-/* One sample of draw_own_body from its v. j < 2^30: the signed conversion
- * is exact and one instruction, where one from size_t is a test and two. */
-static MCS_ALWAYS_INLINE void place_own(own_mode mode, size_t n, size_t j, double v, double nd,
-                                        double kd, double inv_k, double nk, size_t *bins, double *w,
-                                        double *points)
+typedef struct {
+    size_t n;
+    double top, nd, kd, inv_k, nk; /* N - 1, N, K, 1/K, N/K (inv_k, nk: OWN_POW2) */
+} own_scale;
+
+/* 1/K for K a power of two, exactly, without a division: the exponent field
+ * of 2^-e is 2046 minus that of 2^e, and both mantissas are zero (IEEE
+ * binary64, as everywhere in mcspec). */
+static double inverse_pow2(double kd)
 {
-    double jv = (double)(int64_t)j + v;
-    double t = mode == OWN_RANDOM ? v * nd : mode == OWN_POW2 ? jv * nk : jv * nd / kd;
-    double u = mode == OWN_RANDOM ? v : mode == OWN_POW2 ? jv * inv_k : jv / kd;
-    place_plain(n, j, mode == OWN_RANDOM || u < 1.0 ? u : MCS_BELOW_ONE, t, bins, w, points);
+    uint64_t bits;
+    memcpy(&bits, &kd, sizeof bits);
+    bits = (UINT64_C(2046) << 52) - bits;
+    double inv;
+    memcpy(&inv, &bits, sizeof inv);
+    return inv;
+}
+
+/* N, K < 2^31: the signed conversions are exact and one instruction each,
+ * where those from size_t are a test and two. */
+static own_scale own_scale_of(own_mode mode, size_t n, size_t k)
+{
+    own_scale sc = {n, (double)(int64_t)(n - 1u), (double)(int64_t)n, (double)(int64_t)k, 0.0, 0.0};
+    if (mode == OWN_POW2) {
+        sc.inv_k = inverse_pow2(sc.kd);
+        sc.nk = sc.nd * sc.inv_k;
+    }
+    return sc;
+}
+
+/* One sample of draw_own_body from its v. */
+static MCS_ALWAYS_INLINE void place_own(own_mode mode, const own_scale *sc, size_t j, double v,
+                                        size_t *bins, double *w, double *points)
+{
+    const double jv = (double)(int64_t)j + v;
+    double t, u;
+    if (mode == OWN_RANDOM) {
+        t = v * sc->nd;
+        u = v;
+    } else if (mode == OWN_POW2) {
+        t = jv * sc->nk;
+        u = jv * sc->inv_k;
+    } else {
+        t = jv * sc->nd / sc->kd;
+        u = jv / sc->kd;
+    }
+    place_plain(sc->n, sc->top, j, mode == OWN_RANDOM || u < 1.0 ? u : MCS_BELOW_ONE, t, bins, w,
+                points);
 }
 
 /* The samples that draw their own v (random, stratified, homogenized),
@@ -123,19 +165,19 @@ static MCS_ALWAYS_INLINE void place_own(own_mode mode, size_t n, size_t j, doubl
 static MCS_ALWAYS_INLINE void draw_own_body(own_mode mode, size_t n, size_t k, mcs_rng *rng,
                                             size_t *bins, double *w, double *points)
 {
-    const double nd = (double)n, kd = (double)k, inv_k = 1.0 / kd, nk = nd * inv_k;
+    const own_scale sc = own_scale_of(mode, n, k);
     const mcs_rng_lanes_ lanes = mcs_rng_lanes_of_(rng->inc);
     uint64_t s = rng->state;
     size_t j = 0;
     for (; j + 2u <= k; j += 2u) {
         double v0, v1;
         s = mcs_rng_two_doubles_(s, &lanes, &v0, &v1);
-        place_own(mode, n, j, v0, nd, kd, inv_k, nk, bins, w, points);
-        place_own(mode, n, j + 1u, v1, nd, kd, inv_k, nk, bins, w, points);
+        place_own(mode, &sc, j, v0, bins, w, points);
+        place_own(mode, &sc, j + 1u, v1, bins, w, points);
     }
     rng->state = s;
     if (j < k)
-        place_own(mode, n, j, mcs_rng_double_(rng), nd, kd, inv_k, nk, bins, w, points);
+        place_own(mode, &sc, j, mcs_rng_double_(rng), bins, w, points);
 }
 
 static void draw_own(const mcs_pattern *pat, mcs_rng *rng, size_t *bins, double *w,
@@ -166,16 +208,17 @@ static void draw_own(const mcs_pattern *pat, mcs_rng *rng, size_t *bins, double 
 static void draw_beta(const mcs_pattern *pat, double beta, size_t *bins, double *w, double *points)
 {
     const size_t n = pat->n, k = pat->k;
-    const double nd = (double)n, kd = (double)k, inv_k = 1.0 / kd, nk = nd * inv_k;
+    const double top = (double)(n - 1u), nd = (double)n, kd = (double)k;
     if ((k & (k - 1u)) == 0u) {
+        const double inv_k = inverse_pow2(kd), nk = nd * inv_k;
         for (size_t j = 0; j < k; ++j) {
             double jv = (double)j + beta, u = jv * inv_k;
-            place_plain(n, j, u < 1.0 ? u : MCS_BELOW_ONE, jv * nk, bins, w, points);
+            place_plain(n, top, j, u < 1.0 ? u : MCS_BELOW_ONE, jv * nk, bins, w, points);
         }
     } else {
         for (size_t j = 0; j < k; ++j) {
             double jv = (double)j + beta, u = jv / kd;
-            place_plain(n, j, u < 1.0 ? u : MCS_BELOW_ONE, jv * nd / kd, bins, w, points);
+            place_plain(n, top, j, u < 1.0 ? u : MCS_BELOW_ONE, jv * nd / kd, bins, w, points);
         }
     }
 }

@@ -46,14 +46,11 @@ static inline uint32_t mcs_rng_bounded_(mcs_rng *rng, uint32_t bound)
 }
 
 /* The double of the outputs of states hi and lo: 27 + 26 = 53 random bits,
- * so every double k / 2^53 in [0,1) is reachable. a 2^26 + b is below 2^53
- * and a 2^26 has no bit in common with b, so the sum is the integer a << 26
- * | b, converted exactly: one conversion where a * 2^26 + b took two and an
- * add. */
+ * so every double k / 2^53 in [0,1) is reachable. */
 static inline double mcs_rng_double_of_(uint64_t hi, uint64_t lo)
 {
-    uint64_t x = ((uint64_t)(mcs_rng_output_(hi) >> 5) << 26) | (mcs_rng_output_(lo) >> 6);
-    return (double)(int64_t)x * (1.0 / 9007199254740992.0);
+    double a = (double)(mcs_rng_output_(hi) >> 5), b = (double)(mcs_rng_output_(lo) >> 6);
+    return (a * 67108864.0 + b) * (1.0 / 9007199254740992.0);
 }
 
 static inline double mcs_rng_double_(mcs_rng *rng)
