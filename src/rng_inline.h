@@ -46,7 +46,10 @@ static inline uint32_t mcs_rng_bounded_(mcs_rng *rng, uint32_t bound)
 }
 
 /* The double of the outputs of states hi and lo: 27 + 26 = 53 random bits,
- * so every double k / 2^53 in [0,1) is reachable. */
+ * so every double k / 2^53 in [0,1) is reachable. a 2^26 + b is formed in
+ * floating point, exactly: the integer a << 26 | b, converted once, is the
+ * same bits, but the draw's loop is bound by integer instructions and ran
+ * 10% slower with it. */
 static inline double mcs_rng_double_of_(uint64_t hi, uint64_t lo)
 {
     double a = (double)(mcs_rng_output_(hi) >> 5), b = (double)(mcs_rng_output_(lo) >> 6);
@@ -60,37 +63,38 @@ static inline double mcs_rng_double_(mcs_rng *rng)
     return mcs_rng_double_of_(s, s1);
 }
 
-/* a^m (mod 2^64) and 1 + a + ... + a^(m-1), constants: s_{i+m} = a^m s_i + c
- * (1 + a + ... + a^(m-1)), so every lane's increment is one multiply of c. */
+/* a^2, a^4 (mod 2^64) and 1 + a + a^2 + a^3, constants: s_{i+m} = a^m s_i +
+ * c (1 + a + ... + a^(m-1)), one multiply-add from s_i. */
 #define MCS_PCG_MULT2 (MCS_PCG_MULT * MCS_PCG_MULT)
-#define MCS_PCG_MULT3 (MCS_PCG_MULT2 * MCS_PCG_MULT)
 #define MCS_PCG_MULT4 (MCS_PCG_MULT2 * MCS_PCG_MULT2)
-#define MCS_PCG_SUM2 (MCS_PCG_MULT + 1u)
-#define MCS_PCG_SUM3 (MCS_PCG_MULT2 + MCS_PCG_SUM2)
-#define MCS_PCG_SUM4 (MCS_PCG_MULT3 + MCS_PCG_SUM3)
+#define MCS_PCG_SUM4 ((MCS_PCG_MULT + 1u) * (MCS_PCG_MULT2 + 1u))
 
-/* The increments of states 1, 2, 3 and 4 steps on, for a generator of
- * increment c. */
+/* The increments of one, two and four steps, for a generator of increment c. */
 typedef struct {
-    uint64_t c1, c2, c3, c4;
+    uint64_t c1, c2, c4;
 } mcs_rng_lanes_;
 
 static inline mcs_rng_lanes_ mcs_rng_lanes_of_(uint64_t c)
 {
-    mcs_rng_lanes_ l = {c, c * MCS_PCG_SUM2, c * MCS_PCG_SUM3, c * MCS_PCG_SUM4};
+    mcs_rng_lanes_ l = {c, c * (MCS_PCG_MULT + 1u), c * MCS_PCG_SUM4};
     return l;
 }
 
 /* Two doubles from state s, bit for bit those of two mcs_rng_double_ calls;
  * returns the state four steps on. One step of the LCG is a multiply-add
- * that the next step waits for; here s_{i+1..i+4} are each one multiply-add
- * from s_i, side by side, so the chain a loop waits on is a quarter as long
- * and the sequence is unchanged. */
+ * that the next step waits for; the state four steps on is one multiply-add
+ * from s, so the chain a loop waits on is a quarter as long and the
+ * sequence is unchanged. s_{i+1} and s_{i+2} are one multiply-add from s_i
+ * too, s_{i+3} one step from s_{i+2}: a jump to it (a^3 and its increment)
+ * would hold two more registers, which the draw's loop has not got on
+ * x86-64 (it reloaded constants every turn), and a step from s_{i+1} to
+ * s_{i+2} made the chain inside a turn long enough to cost 10% at K = 64. */
 static inline uint64_t mcs_rng_two_doubles_(uint64_t s, const mcs_rng_lanes_ *l, double *v0,
                                             double *v1)
 {
+    const uint64_t s2 = s * MCS_PCG_MULT2 + l->c2;
     *v0 = mcs_rng_double_of_(s, s * MCS_PCG_MULT + l->c1);
-    *v1 = mcs_rng_double_of_(s * MCS_PCG_MULT2 + l->c2, s * MCS_PCG_MULT3 + l->c3);
+    *v1 = mcs_rng_double_of_(s2, s2 * MCS_PCG_MULT + l->c1);
     return s * MCS_PCG_MULT4 + l->c4;
 }
 
