@@ -171,11 +171,12 @@ static MCS_ALWAYS_INLINE void draw_own_body(own_mode mode, size_t n, size_t k, m
     uint64_t s = rng->state;
     size_t j = 0;
     double jd = 0.0; /* j, counted in floating point: the integer units are the busy ones */
-    for (; j + 2u <= k; j += 2u, jd += 2.0) {
+    for (; j + 2u <= k; j += 2u) {
         double v0, v1;
         s = mcs_rng_two_doubles_(s, &lanes, &v0, &v1);
         place_own(mode, &sc, j, jd, v0, bins, w, points);
         place_own(mode, &sc, j + 1u, jd + 1.0, v1, bins, w, points);
+        jd += 2.0;
     }
     rng->state = s;
     if (j < k)
