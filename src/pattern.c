@@ -184,43 +184,46 @@ static MCS_ALWAYS_INLINE void draw_own_body(own_mode mode, size_t n, size_t k, m
 }
 
 /* One copy of draw_own_body per mode, each with and without points. */
-static MCS_NOINLINE void draw_own_random(size_t n, size_t k, mcs_rng *rng, size_t *bins, double *w,
+static MCS_NOINLINE mcs_status draw_own_random(size_t n, size_t k, mcs_rng *rng, size_t *bins, double *w,
                                          double *points)
 {
     if (points == NULL)
         draw_own_body(OWN_RANDOM, n, k, rng, bins, w, NULL);
     else
         draw_own_body(OWN_RANDOM, n, k, rng, bins, w, points);
+    return MCS_OK;
 }
 
-static MCS_NOINLINE void draw_own_pow2(size_t n, size_t k, mcs_rng *rng, size_t *bins, double *w,
+static MCS_NOINLINE mcs_status draw_own_pow2(size_t n, size_t k, mcs_rng *rng, size_t *bins, double *w,
                                        double *points)
 {
     if (points == NULL)
         draw_own_body(OWN_POW2, n, k, rng, bins, w, NULL);
     else
         draw_own_body(OWN_POW2, n, k, rng, bins, w, points);
+    return MCS_OK;
 }
 
-static MCS_NOINLINE void draw_own_div(size_t n, size_t k, mcs_rng *rng, size_t *bins, double *w,
+static MCS_NOINLINE mcs_status draw_own_div(size_t n, size_t k, mcs_rng *rng, size_t *bins, double *w,
                                       double *points)
 {
     if (points == NULL)
         draw_own_body(OWN_DIV, n, k, rng, bins, w, NULL);
     else
         draw_own_body(OWN_DIV, n, k, rng, bins, w, points);
+    return MCS_OK;
 }
 
-static void draw_own(const mcs_pattern *pat, mcs_rng *rng, size_t *bins, double *w,
-                     double *points)
+/* Each returns MCS_OK, so that mcs_pattern_draw ends in a jump to it. */
+static MCS_ALWAYS_INLINE mcs_status draw_own(const mcs_pattern *pat, mcs_rng *rng, size_t *bins,
+                                             double *w, double *points)
 {
     const size_t n = pat->n, k = pat->k;
     if (pat->kind == MCS_PATTERN_RANDOM)
-        draw_own_random(n, k, rng, bins, w, points);
-    else if ((k & (k - 1u)) == 0u)
-        draw_own_pow2(n, k, rng, bins, w, points);
-    else
-        draw_own_div(n, k, rng, bins, w, points);
+        return draw_own_random(n, k, rng, bins, w, points);
+    if ((k & (k - 1u)) == 0u)
+        return draw_own_pow2(n, k, rng, bins, w, points);
+    return draw_own_div(n, k, rng, bins, w, points);
 }
 
 /* Uniform (beta 1/2) and jitter (the trial's beta) without importance: u =
@@ -306,14 +309,14 @@ static int draw_aliases(const mcs_pattern *pat, const mcs_rng *rng, size_t k,
 /* Every draw but random and stratified without importance: those two are
  * the hot ones (a trial of K = 8 takes ~20 ns), drawn by a call that
  * mcs_pattern_draw makes last, so that it needs no frame of its own. */
-static MCS_NOINLINE void draw_other(const mcs_pattern *pat, mcs_rng *rng, size_t *bins,
-                                    double *weights, double *points)
+static MCS_NOINLINE mcs_status draw_other(const mcs_pattern *pat, mcs_rng *rng, size_t *bins,
+                                          double *weights, double *points)
 {
     const size_t k = pat->k;
     const int own_v = pat->kind != MCS_PATTERN_UNIFORM && pat->kind != MCS_PATTERN_JITTER;
     const double beta = pat->kind == MCS_PATTERN_JITTER ? mcs_rng_double_(rng) : 0.5;
     if (pat->importance == NULL && own_v) {
-        draw_own(pat, rng, bins, weights, points);
+        (void)draw_own(pat, rng, bins, weights, points);
     } else if (pat->importance == NULL) {
         draw_beta(pat, beta, bins, weights, points);
     } else {
@@ -336,6 +339,7 @@ static MCS_NOINLINE void draw_other(const mcs_pattern *pat, mcs_rng *rng, size_t
             bins[j] = nb;
         }
     }
+    return MCS_OK;
 }
 
 mcs_status mcs_pattern_draw(const mcs_pattern *pat, mcs_rng *rng, size_t k, size_t *bins,
@@ -352,10 +356,8 @@ mcs_status mcs_pattern_draw(const mcs_pattern *pat, mcs_rng *rng, size_t k, size
         return MCS_ERR_ALIAS;
     if (pat->importance == NULL &&
         (pat->kind == MCS_PATTERN_RANDOM || pat->kind == MCS_PATTERN_STRATIFIED))
-        draw_own(pat, rng, bins, weights, points);
-    else
-        draw_other(pat, rng, bins, weights, points);
-    return MCS_OK;
+        return draw_own(pat, rng, bins, weights, points);
+    return draw_other(pat, rng, bins, weights, points);
 }
 
 /* The body of both bin_points calls, over double or float points
