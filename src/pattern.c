@@ -184,8 +184,8 @@ static MCS_ALWAYS_INLINE void draw_own_body(own_mode mode, size_t n, size_t k, m
 }
 
 /* One copy of draw_own_body per mode, each with and without points. */
-static MCS_NOINLINE mcs_status draw_own_random(size_t n, size_t k, mcs_rng *rng, size_t *bins, double *w,
-                                         double *points)
+static MCS_NOINLINE mcs_status draw_own_random(size_t n, size_t k, mcs_rng *rng, size_t *bins,
+                                               double *w, double *points)
 {
     if (points == NULL)
         draw_own_body(OWN_RANDOM, n, k, rng, bins, w, NULL);
@@ -194,8 +194,8 @@ static MCS_NOINLINE mcs_status draw_own_random(size_t n, size_t k, mcs_rng *rng,
     return MCS_OK;
 }
 
-static MCS_NOINLINE mcs_status draw_own_pow2(size_t n, size_t k, mcs_rng *rng, size_t *bins, double *w,
-                                       double *points)
+static MCS_NOINLINE mcs_status draw_own_pow2(size_t n, size_t k, mcs_rng *rng, size_t *bins,
+                                             double *w, double *points)
 {
     if (points == NULL)
         draw_own_body(OWN_POW2, n, k, rng, bins, w, NULL);
@@ -204,8 +204,8 @@ static MCS_NOINLINE mcs_status draw_own_pow2(size_t n, size_t k, mcs_rng *rng, s
     return MCS_OK;
 }
 
-static MCS_NOINLINE mcs_status draw_own_div(size_t n, size_t k, mcs_rng *rng, size_t *bins, double *w,
-                                      double *points)
+static MCS_NOINLINE mcs_status draw_own_div(size_t n, size_t k, mcs_rng *rng, size_t *bins,
+                                            double *w, double *points)
 {
     if (points == NULL)
         draw_own_body(OWN_DIV, n, k, rng, bins, w, NULL);
@@ -275,8 +275,9 @@ static mcs_status check_drawable(const mcs_pattern *pat, const mcs_rng *rng)
     return mcs_rng_is_seeded_(rng) ? MCS_OK : MCS_ERR_UNINIT;
 }
 
-/* mcs_overlap_ for two lengths known to be nonzero, as a value rather than
- * branches: the draw tests up to twelve pairs per call. */
+/* mcs_overlap_ for two lengths known to be nonzero (no tests for zero),
+ * combined by | below rather than ||: the draw tests up to twelve pairs per
+ * call, and every pair is tested on the way to a draw anyway. */
 static inline int overlaps(const void *a, size_t a_bytes, const void *b, size_t b_bytes)
 {
     const uintptr_t pa = (uintptr_t)a, pb = (uintptr_t)b;
@@ -306,9 +307,9 @@ static int draw_aliases(const mcs_pattern *pat, const mcs_rng *rng, size_t k,
     return hit;
 }
 
-/* Every draw but random and stratified without importance: those two are
- * the hot ones (a trial of K = 8 takes ~20 ns), drawn by a call that
- * mcs_pattern_draw makes last, so that it needs no frame of its own. */
+/* Every draw but random and stratified without importance. Those two are
+ * the hot ones (a trial of K = 8 takes ~20 ns): mcs_pattern_draw ends in a
+ * jump to their own copy of the loop, with no frame of its own around it. */
 static MCS_NOINLINE mcs_status draw_other(const mcs_pattern *pat, mcs_rng *rng, size_t *bins,
                                           double *weights, double *points)
 {

@@ -1,8 +1,10 @@
 /* mcs_pattern_draw against a one-sample-at-a-time reference written from
- * its documentation: the fast draw (PCG32 steps formed several at a time,
- * division by a power-of-two K as a multiplication) must give bit for bit the
- * bins, weights and points of the plain definition, and leave the generator
- * where the plain definition leaves it. */
+ * its documentation: the fast draw (PCG32 states formed by jumps of one, two
+ * and four steps, division by a power-of-two K as a multiplication, the bin
+ * clamp as a floating-point minimum) must give bit for bit the bins, weights
+ * and points of the plain definition, with and without points, and leave the
+ * generator where the plain definition leaves it. Its alias rule is checked
+ * against byte intervals. */
 #include "mcspec.h"
 #include "unity.h"
 
