@@ -2,8 +2,10 @@
 #include "importance_internal.h"
 #include "internal.h"
 #include "rng_inline.h"
+#include "simd.h"
 
 #include <math.h>
+#include <string.h>
 
 const char *mcs_pattern_kind_str(mcs_pattern_kind kind)
 {
@@ -82,56 +84,170 @@ static double plain_point(size_t n, size_t b, double u, double t)
 /* The largest double below 1: where u would round up to 1, it stays inside. */
 #define MCS_BELOW_ONE 0x1.fffffffffffffp-1
 
-/* Bin floor(t) (t in [0, N]: the signed conversion is exact and one
- * instruction, where one to size_t is a compare and two on x86-64), clamped
- * to N - 1; weight 1; the point if asked. */
-static inline void place_plain(size_t n, size_t j, double u, double t, size_t *bins, double *vw,
-                               double *points)
+/* Bin floor(t), clamped to N - 1, as floor(min(t, N - 1)) (top = N - 1):
+ * the same for t in [0, N], and the clamp is one floating-point minimum
+ * beside the generator's integer work rather than a compare and a move
+ * among it (the draw is bound by integer instructions). t < 2^63, so the
+ * signed conversion is exact and one instruction, where one to size_t is a
+ * compare and two on x86-64. Weight 1; the point if asked. */
+static inline void place_plain(size_t n, double top, size_t j, double u, double t, size_t *bins,
+                               double *vw, double *points)
 {
-    size_t b = (size_t)(int64_t)t;
-    b = b < n ? b : n - 1u;
+    const double tc = t < top ? t : top; /* apart: GCC 12 made a branch of it inside the cast */
+    const size_t b = (size_t)(int64_t)tc;
     bins[j] = b;
     vw[j] = 1.0;
     if (points != NULL)
         points[j] = plain_point(n, b, u, t);
 }
 
-/* The samples without importance. Random: u = v, t = u N. Strata: u = (j +
- * v)/K and t = (j + v) N / K, each by one rounding from exact; when K is a
- * power of two the division is a multiplication by 1/K, exact and bit for
- * bit the same, and several times cheaper. v is each sample's own (random,
- * stratified, homogenized: vw holds them on entry) or the trial's beta
- * (uniform 1/2, jitter); vw holds the weights on return. One loop per case,
- * so none tests the case per sample (one with a select was 6-8% slower). */
-static void draw_plain(const mcs_pattern *pat, size_t k, double beta, size_t *bins, double *vw,
-                       double *points)
+/* How draw_own forms a sample's t (and u) from its v: random t = v N;
+ * strata t = (j + v) N / K, by one rounding from exact. When K is a power
+ * of two, (j + v) N / K is (j + v) times N/K: N/K is exact, and scaling by
+ * a power of two commutes with rounding, so it is bit for bit the same and
+ * one dependent operation shorter; u = (j + v)/K is then exact. */
+typedef enum { OWN_RANDOM, OWN_POW2, OWN_DIV } own_mode;
+
+typedef struct {
+    size_t n;
+    double top, nd, kd, inv_k, nk; /* N - 1, N, K, 1/K, N/K (inv_k, nk: OWN_POW2) */
+} own_scale;
+
+/* 1/K for K a power of two, exactly, without a division: the exponent field
+ * of 2^-e is 2046 minus that of 2^e, and both mantissas are zero (IEEE
+ * binary64, as everywhere in mcspec). */
+static double inverse_pow2(double kd)
 {
-    const size_t n = pat->n;
-    const double nd = (double)n, kd = (double)k, inv_k = 1.0 / kd;
-    const int pow2 = (k & (k - 1u)) == 0u;
-    const int own_v = pat->kind != MCS_PATTERN_UNIFORM && pat->kind != MCS_PATTERN_JITTER;
-    if (pat->kind == MCS_PATTERN_RANDOM) {
-        for (size_t j = 0; j < k; ++j)
-            place_plain(n, j, vw[j], vw[j] * nd, bins, vw, points);
-    } else if (own_v && pow2) {
-        for (size_t j = 0; j < k; ++j) {
-            double jv = (double)j + vw[j], u = jv * inv_k;
-            place_plain(n, j, u < 1.0 ? u : MCS_BELOW_ONE, jv * nd * inv_k, bins, vw, points);
-        }
-    } else if (pow2) { /* uniform and jitter: one beta for the trial */
+    uint64_t bits;
+    memcpy(&bits, &kd, sizeof bits);
+    bits = (UINT64_C(2046) << 52) - bits;
+    double inv;
+    memcpy(&inv, &bits, sizeof inv);
+    return inv;
+}
+
+/* N, K < 2^31: the signed conversions are exact and one instruction each,
+ * where those from size_t are a test and two. */
+static own_scale own_scale_of(own_mode mode, size_t n, size_t k)
+{
+    own_scale sc = {n, (double)(int64_t)(n - 1u), (double)(int64_t)n, (double)(int64_t)k, 0.0, 0.0};
+    if (mode == OWN_POW2) {
+        sc.inv_k = inverse_pow2(sc.kd);
+        sc.nk = sc.nd * sc.inv_k;
+    }
+    return sc;
+}
+
+/* Sample j of draw_own_body from its v (jd = j, exactly). */
+static MCS_ALWAYS_INLINE void place_own(own_mode mode, const own_scale *sc, size_t j, double jd,
+                                        double v, size_t *bins, double *w, double *points)
+{
+    const double jv = jd + v;
+    double t, u;
+    if (mode == OWN_RANDOM) {
+        t = v * sc->nd;
+        u = v;
+    } else if (mode == OWN_POW2) {
+        t = jv * sc->nk;
+        u = jv * sc->inv_k;
+    } else {
+        t = jv * sc->nd / sc->kd;
+        u = jv / sc->kd;
+    }
+    place_plain(sc->n, sc->top, j, mode == OWN_RANDOM || u < 1.0 ? u : MCS_BELOW_ONE, t, bins, w,
+                points);
+}
+
+/* The samples that draw their own v (random, stratified, homogenized),
+ * without importance: the generator's doubles go straight to the bins, with
+ * no pass through memory, two per turn of the loop (rng_inline.h). mode and
+ * whether points is NULL are constants in every copy, so no per-sample test
+ * is left (the bench draws without points). */
+static MCS_ALWAYS_INLINE void draw_own_body(own_mode mode, size_t n, size_t k, mcs_rng *rng,
+                                            size_t *bins, double *w, double *points)
+{
+    const own_scale sc = own_scale_of(mode, n, k);
+    const mcs_rng_lanes_ lanes = mcs_rng_lanes_of_(rng->inc);
+    uint64_t s = rng->state;
+    size_t j = 0;
+    double jd = 0.0; /* j, counted in floating point: the integer units are the busy ones */
+    for (; j + 2u <= k; j += 2u) {
+        double v0, v1;
+        s = mcs_rng_two_doubles_(s, &lanes, &v0, &v1);
+        place_own(mode, &sc, j, jd, v0, bins, w, points);
+        place_own(mode, &sc, j + 1u, jd + 1.0, v1, bins, w, points);
+        jd += 2.0;
+    }
+    rng->state = s;
+    if (j < k)
+        place_own(mode, &sc, j, jd, mcs_rng_double_(rng), bins, w, points);
+}
+
+/* One copy of draw_own_body per mode, each with and without points. */
+static MCS_NOINLINE mcs_status draw_own_random(size_t n, size_t k, mcs_rng *rng, size_t *bins,
+                                               double *w, double *points)
+{
+    if (points == NULL)
+        draw_own_body(OWN_RANDOM, n, k, rng, bins, w, NULL);
+    else
+        draw_own_body(OWN_RANDOM, n, k, rng, bins, w, points);
+    return MCS_OK;
+}
+
+static MCS_NOINLINE mcs_status draw_own_pow2(size_t n, size_t k, mcs_rng *rng, size_t *bins,
+                                             double *w, double *points)
+{
+    if (points == NULL)
+        draw_own_body(OWN_POW2, n, k, rng, bins, w, NULL);
+    else
+        draw_own_body(OWN_POW2, n, k, rng, bins, w, points);
+    return MCS_OK;
+}
+
+static MCS_NOINLINE mcs_status draw_own_div(size_t n, size_t k, mcs_rng *rng, size_t *bins,
+                                            double *w, double *points)
+{
+    if (points == NULL)
+        draw_own_body(OWN_DIV, n, k, rng, bins, w, NULL);
+    else
+        draw_own_body(OWN_DIV, n, k, rng, bins, w, points);
+    return MCS_OK;
+}
+
+/* Each returns MCS_OK, so that mcs_pattern_draw ends in a jump to it. */
+static MCS_ALWAYS_INLINE mcs_status draw_own(const mcs_pattern *pat, mcs_rng *rng, size_t *bins,
+                                             double *w, double *points)
+{
+    const size_t n = pat->n, k = pat->k;
+    if (pat->kind == MCS_PATTERN_RANDOM)
+        return draw_own_random(n, k, rng, bins, w, points);
+    if ((k & (k - 1u)) == 0u)
+        return draw_own_pow2(n, k, rng, bins, w, points);
+    return draw_own_div(n, k, rng, bins, w, points);
+}
+
+/* Uniform (beta 1/2) and jitter (the trial's beta) without importance: u =
+ * (j + beta)/K and t = (j + beta) N / K, as draw_own's strata. */
+static void draw_beta(const mcs_pattern *pat, double beta, size_t *bins, double *w, double *points)
+{
+    const size_t n = pat->n, k = pat->k;
+    const double top = (double)(n - 1u), nd = (double)n, kd = (double)k;
+    if ((k & (k - 1u)) == 0u) {
+        const double inv_k = inverse_pow2(kd), nk = nd * inv_k;
         for (size_t j = 0; j < k; ++j) {
             double jv = (double)j + beta, u = jv * inv_k;
-            place_plain(n, j, u < 1.0 ? u : MCS_BELOW_ONE, jv * nd * inv_k, bins, vw, points);
+            place_plain(n, top, j, u < 1.0 ? u : MCS_BELOW_ONE, jv * nk, bins, w, points);
         }
     } else {
         for (size_t j = 0; j < k; ++j) {
-            double jv = (double)j + (own_v ? vw[j] : beta), u = jv / kd;
-            place_plain(n, j, u < 1.0 ? u : MCS_BELOW_ONE, jv * nd / kd, bins, vw, points);
+            double jv = (double)j + beta, u = jv / kd;
+            place_plain(n, top, j, u < 1.0 ? u : MCS_BELOW_ONE, jv * nd / kd, bins, w, points);
         }
     }
 }
 
-/* The samples through the importance warp (u as in draw_plain). */
+/* The samples through the importance warp (u as in draw_own, v in vw on
+ * entry unless the kind has one beta per trial). */
 static void draw_warped(const mcs_pattern *pat, size_t k, double beta, size_t *bins, double *vw,
                         double *points)
 {
@@ -159,49 +275,56 @@ static mcs_status check_drawable(const mcs_pattern *pat, const mcs_rng *rng)
     return mcs_rng_is_seeded_(rng) ? MCS_OK : MCS_ERR_UNINIT;
 }
 
+/* mcs_overlap_ for two lengths known to be nonzero (no tests for zero),
+ * combined by | below rather than ||: the draw tests up to twelve pairs per
+ * call, and every pair is tested on the way to a draw anyway. */
+static inline int overlaps(const void *a, size_t a_bytes, const void *b, size_t b_bytes)
+{
+    const uintptr_t pa = (uintptr_t)a, pb = (uintptr_t)b;
+    return pa >= pb ? pa - pb < b_bytes : pb - pa < a_bytes;
+}
+
 /* The draw's outputs overlap each other, or an object it reads while writing
- * them: each output is written sample by sample, so no overlap can work. */
+ * them: each output is written sample by sample, so no overlap can work.
+ * bins and weights are k >= 1 long; points and the importance function are
+ * tested only when present (mcs_overlap_ gives 0 for their zero length). */
 static int draw_aliases(const mcs_pattern *pat, const mcs_rng *rng, size_t k,
                         const size_t *bins, const double *weights, const double *points)
 {
-    const void *out[3] = {bins, weights, points};
-    const size_t len[3] = {mcs_bytes_(k, sizeof *bins), mcs_bytes_(k, sizeof *weights),
-                           points != NULL ? mcs_bytes_(k, sizeof *points) : 0u};
-    const size_t imp_len = pat->importance != NULL ? sizeof *pat->importance : 0u;
-    for (size_t a = 0; a < 3u; ++a) {
-        for (size_t b = a + 1u; b < 3u; ++b)
-            if (mcs_overlap_(out[a], len[a], out[b], len[b]))
-                return 1;
-        if (mcs_overlap_(out[a], len[a], pat, sizeof *pat) ||
-            mcs_overlap_(out[a], len[a], rng, sizeof *rng) ||
-            mcs_overlap_(out[a], len[a], pat->importance, imp_len))
-            return 1;
+    const size_t lb = mcs_bytes_(k, sizeof *bins), lw = mcs_bytes_(k, sizeof *weights);
+    const mcs_importance *imp = pat->importance;
+    int hit = overlaps(bins, lb, weights, lw) | overlaps(bins, lb, pat, sizeof *pat) |
+              overlaps(bins, lb, rng, sizeof *rng) | overlaps(weights, lw, pat, sizeof *pat) |
+              overlaps(weights, lw, rng, sizeof *rng);
+    if (imp != NULL)
+        hit |= overlaps(bins, lb, imp, sizeof *imp) | overlaps(weights, lw, imp, sizeof *imp);
+    if (points != NULL) { /* as long as weights */
+        hit |= overlaps(points, lw, bins, lb) | overlaps(points, lw, weights, lw) |
+               overlaps(points, lw, pat, sizeof *pat) | overlaps(points, lw, rng, sizeof *rng);
+        if (imp != NULL)
+            hit |= overlaps(points, lw, imp, sizeof *imp);
     }
-    return 0;
+    return hit;
 }
 
-mcs_status mcs_pattern_draw(const mcs_pattern *pat, mcs_rng *rng, size_t k, size_t *bins,
-                            double *weights, double *points)
+/* Every draw but random and stratified without importance. Those two are
+ * the hot ones (a trial of K = 8 takes ~20 ns): mcs_pattern_draw ends in a
+ * jump to their own copy of the loop, with no frame of its own around it. */
+static MCS_NOINLINE mcs_status draw_other(const mcs_pattern *pat, mcs_rng *rng, size_t *bins,
+                                          double *weights, double *points)
 {
-    if (pat == NULL || rng == NULL || bins == NULL || weights == NULL)
-        return MCS_ERR_NULL;
-    mcs_status st = check_drawable(pat, rng);
-    if (st != MCS_OK)
-        return st;
-    if (k != pat->k)
-        return MCS_ERR_MISMATCH;
-    if (draw_aliases(pat, rng, k, bins, weights, points))
-        return MCS_ERR_ALIAS;
-
-    double beta = 0.5;
-    if (pat->kind == MCS_PATTERN_JITTER)
-        beta = mcs_rng_double_(rng);
-    else if (pat->kind != MCS_PATTERN_UNIFORM)
-        mcs_rng_fill_doubles_(rng, k, weights); /* each sample's v, read before its weight is written */
-    if (pat->importance == NULL)
-        draw_plain(pat, k, beta, bins, weights, points);
-    else
+    const size_t k = pat->k;
+    const int own_v = pat->kind != MCS_PATTERN_UNIFORM && pat->kind != MCS_PATTERN_JITTER;
+    const double beta = pat->kind == MCS_PATTERN_JITTER ? mcs_rng_double_(rng) : 0.5;
+    if (pat->importance == NULL && own_v) {
+        (void)draw_own(pat, rng, bins, weights, points);
+    } else if (pat->importance == NULL) {
+        draw_beta(pat, beta, bins, weights, points);
+    } else {
+        if (own_v) /* each sample's v, read before its weight is written */
+            mcs_rng_fill_doubles_(rng, k, weights);
         draw_warped(pat, k, beta, bins, weights, points);
+    }
 
     if (pat->kind == MCS_PATTERN_HOMOGENIZED) {
         /* Cyclic shift by a whole number of bins, drawn after the strata. */
@@ -218,6 +341,24 @@ mcs_status mcs_pattern_draw(const mcs_pattern *pat, mcs_rng *rng, size_t k, size
         }
     }
     return MCS_OK;
+}
+
+mcs_status mcs_pattern_draw(const mcs_pattern *pat, mcs_rng *rng, size_t k, size_t *bins,
+                            double *weights, double *points)
+{
+    if (pat == NULL || rng == NULL || bins == NULL || weights == NULL)
+        return MCS_ERR_NULL;
+    mcs_status st = check_drawable(pat, rng);
+    if (st != MCS_OK)
+        return st;
+    if (k != pat->k)
+        return MCS_ERR_MISMATCH;
+    if (draw_aliases(pat, rng, k, bins, weights, points))
+        return MCS_ERR_ALIAS;
+    if (pat->importance == NULL &&
+        (pat->kind == MCS_PATTERN_RANDOM || pat->kind == MCS_PATTERN_STRATIFIED))
+        return draw_own(pat, rng, bins, weights, points);
+    return draw_other(pat, rng, bins, weights, points);
 }
 
 /* The body of both bin_points calls, over double or float points

@@ -3,6 +3,7 @@
 #ifndef MCSPEC_RNG_INLINE_H
 #define MCSPEC_RNG_INLINE_H
 
+#include <stddef.h>
 #include <stdint.h>
 #include "mcspec/rng.h"
 
@@ -44,36 +45,68 @@ static inline uint32_t mcs_rng_bounded_(mcs_rng *rng, uint32_t bound)
     }
 }
 
-/* 27 + 26 = 53 random bits, so every double k / 2^53 in [0,1) is reachable. */
+/* The double of the outputs of states hi and lo: 27 + 26 = 53 random bits,
+ * so every double k / 2^53 in [0,1) is reachable. a 2^26 + b is formed in
+ * floating point, exactly: the integer a << 26 | b, converted once, is the
+ * same bits, but the draw's loop is bound by integer instructions and ran
+ * 3% slower with it. */
+static inline double mcs_rng_double_of_(uint64_t hi, uint64_t lo)
+{
+    double a = (double)(mcs_rng_output_(hi) >> 5), b = (double)(mcs_rng_output_(lo) >> 6);
+    return (a * 67108864.0 + b) * (1.0 / 9007199254740992.0);
+}
+
 static inline double mcs_rng_double_(mcs_rng *rng)
 {
-    uint32_t a = mcs_rng_next_(rng) >> 5;
-    uint32_t b = mcs_rng_next_(rng) >> 6;
-    return ((double)a * 67108864.0 + (double)b) * (1.0 / 9007199254740992.0);
+    uint64_t s = rng->state, s1 = s * MCS_PCG_MULT + rng->inc;
+    rng->state = s1 * MCS_PCG_MULT + rng->inc;
+    return mcs_rng_double_of_(s, s1);
+}
+
+/* a^2, a^4 (mod 2^64) and 1 + a + a^2 + a^3, constants: s_{i+m} = a^m s_i +
+ * c (1 + a + ... + a^(m-1)), one multiply-add from s_i. */
+#define MCS_PCG_MULT2 (MCS_PCG_MULT * MCS_PCG_MULT)
+#define MCS_PCG_MULT4 (MCS_PCG_MULT2 * MCS_PCG_MULT2)
+#define MCS_PCG_SUM4 ((MCS_PCG_MULT + 1u) * (MCS_PCG_MULT2 + 1u))
+
+/* The increments of one, two and four steps, for a generator of increment c. */
+typedef struct {
+    uint64_t c1, c2, c4;
+} mcs_rng_lanes_;
+
+static inline mcs_rng_lanes_ mcs_rng_lanes_of_(uint64_t c)
+{
+    mcs_rng_lanes_ l = {c, c * (MCS_PCG_MULT + 1u), c * MCS_PCG_SUM4};
+    return l;
+}
+
+/* Two doubles from state s, bit for bit those of two mcs_rng_double_ calls;
+ * returns the state four steps on. One step of the LCG is a multiply-add
+ * that the next step waits for; the state four steps on is one multiply-add
+ * from s, so the chain a loop waits on is a quarter as long and the
+ * sequence is unchanged. s_{i+1} and s_{i+2} are one multiply-add from s_i
+ * too, s_{i+3} one step from s_{i+2}: a jump to it (a^3 and its increment)
+ * would hold two more registers, which the draw's loop has not got on
+ * x86-64 (it reloaded constants every turn), and a step from s_{i+1} to
+ * s_{i+2} made the chain inside a turn long enough to cost 10% at K = 64. */
+static inline uint64_t mcs_rng_two_doubles_(uint64_t s, const mcs_rng_lanes_ *l, double *v0,
+                                            double *v1)
+{
+    const uint64_t s2 = s * MCS_PCG_MULT2 + l->c2;
+    *v0 = mcs_rng_double_of_(s, s * MCS_PCG_MULT + l->c1);
+    *v1 = mcs_rng_double_of_(s2, s2 * MCS_PCG_MULT + l->c1);
+    return s * MCS_PCG_MULT4 + l->c4;
 }
 
 /* count doubles, bit for bit those of count mcs_rng_double_ calls, leaving
- * the same state. One step of the LCG is a multiply-add that the next step
- * waits for; two samples take four steps, and s_{i+4} = a^4 s_i + c (a^3 +
- * a^2 + a + 1) (mod 2^64) follows from s_i in one multiply-add, while s_{i+1},
- * s_{i+2}, s_{i+3} are formed from s_i beside it: the chain the loop waits
- * on is a quarter as long, and the sequence is unchanged. */
+ * the same state. */
 static inline void mcs_rng_fill_doubles_(mcs_rng *rng, size_t count, double *out)
 {
-    const uint64_t a = MCS_PCG_MULT, c = rng->inc;
-    const uint64_t a2 = a * a, c2 = c * (a + 1u);
-    const uint64_t a3 = a2 * a, c3 = c2 * a + c;
-    const uint64_t a4 = a2 * a2, c4 = c2 * (a2 + 1u);
+    const mcs_rng_lanes_ l = mcs_rng_lanes_of_(rng->inc);
     uint64_t s = rng->state;
     size_t j = 0;
-    for (; j + 2u <= count; j += 2u) {
-        uint64_t s1 = s * a + c, s2 = s * a2 + c2, s3 = s * a3 + c3;
-        double h0 = (double)(mcs_rng_output_(s) >> 5), l0 = (double)(mcs_rng_output_(s1) >> 6);
-        double h1 = (double)(mcs_rng_output_(s2) >> 5), l1 = (double)(mcs_rng_output_(s3) >> 6);
-        out[j] = (h0 * 67108864.0 + l0) * (1.0 / 9007199254740992.0);
-        out[j + 1u] = (h1 * 67108864.0 + l1) * (1.0 / 9007199254740992.0);
-        s = s * a4 + c4;
-    }
+    for (; j + 2u <= count; j += 2u)
+        s = mcs_rng_two_doubles_(s, &l, &out[j], &out[j + 1u]);
     rng->state = s;
     if (j < count)
         out[j] = mcs_rng_double_(rng);

@@ -1,8 +1,10 @@
 /* mcs_pattern_draw against a one-sample-at-a-time reference written from
- * its documentation: the fast draw (PCG32 steps formed several at a time,
- * division by a power-of-two K as a multiplication) must give bit for bit the
- * bins, weights and points of the plain definition, and leave the generator
- * where the plain definition leaves it. */
+ * its documentation: the fast draw (PCG32 states formed by jumps of one, two
+ * and four steps, division by a power-of-two K as a multiplication, the bin
+ * clamp as a floating-point minimum) must give bit for bit the bins, weights
+ * and points of the plain definition, with and without points, and leave the
+ * generator where the plain definition leaves it. Its alias rule is checked
+ * against byte intervals. */
 #include "mcspec.h"
 #include "unity.h"
 
@@ -58,6 +60,8 @@ static void reference_draw(mcs_pattern_kind kind, size_t n, size_t k, mcs_rng *r
     }
 }
 
+/* Trials with points, then without (the draw has a copy of its loop for
+ * each: the one without is the spectra's and the bench's). */
 static void check_kind(mcs_pattern_kind kind, size_t n, size_t k)
 {
     mcs_pattern pat;
@@ -66,11 +70,13 @@ static void check_kind(mcs_pattern_kind kind, size_t n, size_t k)
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_rng_seed(&fast, 1234u + k, 77u + n));
     slow = fast;
     for (int trial = 0; trial < 20; ++trial) {
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_draw(&pat, &fast, k, bins, weights, points));
+        double *out = trial < 10 ? points : NULL;
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_draw(&pat, &fast, k, bins, weights, out));
         reference_draw(kind, n, k, &slow);
         TEST_ASSERT_EQUAL_MEMORY(ref_bins, bins, k * sizeof bins[0]);
         TEST_ASSERT_EQUAL_MEMORY(ref_weights, weights, k * sizeof weights[0]);
-        TEST_ASSERT_EQUAL_MEMORY(ref_points, points, k * sizeof points[0]);
+        if (out != NULL)
+            TEST_ASSERT_EQUAL_MEMORY(ref_points, points, k * sizeof points[0]);
         TEST_ASSERT_EQUAL_MEMORY(&slow, &fast, sizeof fast);
     }
 }
@@ -82,7 +88,7 @@ static void test_every_kind_draws_bit_for_bit_the_documented_samples_and_leaves_
     /* Powers of two (multiplication by 1/K), odd K (a lone last sample in
      * the generator's pairs), K above and below N, N/K even (edges). */
     static const size_t ns[] = {1u, 24u, 1000u, 4096u, 4093u};
-    static const size_t ks[] = {1u, 2u, 5u, 6u, 7u, 8u, 64u, 255u, 256u};
+    static const size_t ks[] = {1u, 2u, 5u, 6u, 7u, 8u, 16u, 64u, 255u, 256u};
     for (size_t a = 0; a < sizeof kinds / sizeof kinds[0]; ++a)
         for (size_t b = 0; b < sizeof ns / sizeof ns[0]; ++b)
             for (size_t c = 0; c < sizeof ks / sizeof ks[0]; ++c)
@@ -104,6 +110,109 @@ static void test_the_homogenized_draw_uses_as_many_generator_steps_as_the_strati
     TEST_ASSERT_EQUAL_MEMORY(&r2, &r1, sizeof r1);
     for (size_t j = 0; j < 7u; ++j)
         TEST_ASSERT_EQUAL_UINT((ref_bins[j] + shift) % 100u, bins[j]);
+}
+
+/* The alias rule of mcs_pattern_draw, by byte intervals: an output (bins,
+ * weights, points when given) may not share a byte with another output, the
+ * pattern, the generator or the importance function. Every object lives in
+ * one arena; each output in turn is moved to just before, into the first
+ * and last 8 bytes of, and just after each other object, and the draw must
+ * refuse exactly the overlapping placements, writing nothing (arena byte
+ * for byte, the generator in it included). */
+#define ALIAS_K 6u
+#define ALIAS_GAP 256u
+enum { R_PAT, R_RNG, R_IMP, R_BINS, R_W, R_PTS, R_COUNT };
+
+static double arena[(sizeof(mcs_importance) + 8u * ALIAS_GAP) / sizeof(double)];
+static double arena_copy[sizeof arena / sizeof arena[0]];
+
+static int bytes_overlap(size_t a, size_t a_len, size_t b, size_t b_len)
+{
+    return a_len > 0u && b_len > 0u && a < b + b_len && b < a + a_len;
+}
+
+/* Whether a draw with the regions at off[] (lengths len[]) must be refused. */
+static int draw_must_refuse(const size_t *off, const size_t *len)
+{
+    for (int o = R_BINS; o < R_COUNT; ++o)
+        for (int r = R_PAT; r < R_COUNT; ++r)
+            if (r != o && bytes_overlap(off[o], len[o], off[r], len[r]))
+                return 1;
+    return 0;
+}
+
+static void check_alias_layout(mcs_pattern_kind kind, int with_imp, int with_pts, const size_t *off,
+                               const size_t *len)
+{
+    unsigned char *base = (unsigned char *)arena;
+    const size_t pat_k = ALIAS_K;
+    mcs_pattern pat;
+    mcs_rng rng;
+    mcs_importance *imp = (mcs_importance *)(void *)(base + off[R_IMP]);
+    double wts[8] = {1, 2, 3, 1, 2, 3, 1, 2};
+    memset(arena, 0x5a, sizeof arena);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_init(imp, 8u, wts));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_init(&pat, kind, 8u, pat_k, with_imp ? imp : NULL));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_rng_seed(&rng, 5u, 6u));
+    memcpy(base + off[R_PAT], &pat, sizeof pat);
+    memcpy(base + off[R_RNG], &rng, sizeof rng);
+    memcpy(arena_copy, arena, sizeof arena);
+    mcs_status st = mcs_pattern_draw((const mcs_pattern *)(void *)(base + off[R_PAT]),
+                                     (mcs_rng *)(void *)(base + off[R_RNG]), pat_k,
+                                     (size_t *)(void *)(base + off[R_BINS]),
+                                     (double *)(void *)(base + off[R_W]),
+                                     with_pts ? (double *)(void *)(base + off[R_PTS]) : NULL);
+    if (draw_must_refuse(off, len)) {
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, st);
+        TEST_ASSERT_EQUAL_MEMORY(arena_copy, arena, sizeof arena);
+    } else {
+        TEST_ASSERT_EQUAL_INT(MCS_OK, st);
+    }
+}
+
+static void test_the_draw_refuses_exactly_the_outputs_that_share_a_byte_with_what_it_touches(void)
+{
+    static const mcs_pattern_kind kinds[] = {MCS_PATTERN_RANDOM, MCS_PATTERN_STRATIFIED,
+                                             MCS_PATTERN_HOMOGENIZED, MCS_PATTERN_UNIFORM,
+                                             MCS_PATTERN_JITTER};
+    /* Homes in order, ALIAS_GAP apart (more than any output is long). */
+    const size_t sizes[R_COUNT] = {sizeof(mcs_pattern), sizeof(mcs_rng), sizeof(mcs_importance),
+                                   ALIAS_K * sizeof(size_t), ALIAS_K * sizeof(double),
+                                   ALIAS_K * sizeof(double)};
+    size_t home[R_COUNT], at = ALIAS_GAP;
+    for (int r = 0; r < R_COUNT; ++r) {
+        home[r] = at;
+        at += (sizes[r] + ALIAS_GAP + 7u) / 8u * 8u;
+    }
+    TEST_ASSERT_TRUE(at <= sizeof arena);
+    size_t refused = 0, accepted = 0;
+    for (size_t a = 0; a < sizeof kinds / sizeof kinds[0]; ++a)
+        for (int flags = 0; flags < 4; ++flags) {
+            const int with_imp = flags & 1, with_pts = flags >> 1;
+            if (with_imp && kinds[a] == MCS_PATTERN_HOMOGENIZED)
+                continue;
+            size_t len[R_COUNT];
+            memcpy(len, sizes, sizeof len);
+            len[R_IMP] = with_imp ? sizes[R_IMP] : 0u;
+            len[R_PTS] = with_pts ? sizes[R_PTS] : 0u;
+            for (int o = R_BINS; o < R_COUNT; ++o) {
+                if (len[o] == 0u)
+                    continue;
+                for (int r = R_PAT; r < R_COUNT; ++r) {
+                    const size_t r_end = home[r] + (sizes[r] + 7u) / 8u * 8u;
+                    const size_t at_r[5] = {home[r] - len[o], home[r] - len[o] + 8u, home[r],
+                                            r_end - 8u, r_end};
+                    for (int d = 0; d < 5 && r != o; ++d) {
+                        size_t off[R_COUNT];
+                        memcpy(off, home, sizeof off);
+                        off[o] = at_r[d];
+                        check_alias_layout(kinds[a], with_imp, with_pts, off, len);
+                        draw_must_refuse(off, len) ? ++refused : ++accepted;
+                    }
+                }
+            }
+        }
+    TEST_ASSERT_TRUE(refused > 100u && accepted > 100u);
 }
 
 /* fuzz_api: an importance object with a valid n but p_n = 0 (zeroed) gave
@@ -133,6 +242,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_every_kind_draws_bit_for_bit_the_documented_samples_and_leaves_the_rng_alike);
     RUN_TEST(test_the_homogenized_draw_uses_as_many_generator_steps_as_the_stratified_one_plus_its_shift);
+    RUN_TEST(test_the_draw_refuses_exactly_the_outputs_that_share_a_byte_with_what_it_touches);
     RUN_TEST(test_bin_points_refuses_a_corrupted_importance_object_writing_nothing);
     return UNITY_END();
 }
