@@ -308,15 +308,17 @@ fftw_install() {
     [ -z "$touched" ] || { echo "the default build was written to:"; echo "$touched"; return 1; }
 }
 # fftw_package PREFIX: -lfftw3 in mcspec.pc's Libs.private (and not Libs);
-# fftw3 in the package's link interface of the archive.
+# fftw3 in the package's link interface of the archive, before m (which
+# libfftw3.a calls: a C consumer linked -static needs that order; the C++
+# consumer cannot show it, as g++ puts -lm at the end of every link).
 fftw_package() {
     need_fftw || return 1
     pc=$1/lib/pkgconfig/mcspec.pc
     grep '^Libs' "$pc"
     grep -q '^Libs.private:.* -lfftw3' "$pc" || { echo "mcspec.pc: no -lfftw3 in Libs.private"; return 1; }
     ! grep -q '^Libs:.*fftw' "$pc" || { echo "mcspec.pc: fftw3 in Libs"; return 1; }
-    grep -q '^set(_mcspec_static_libs.* fftw3' "$1/lib/cmake/mcspec/mcspecConfig.cmake" ||
-        { echo "mcspecConfig.cmake: fftw3 not in the archive's link libraries"; return 1; }
+    grep -q '^set(_mcspec_static_libs fftw3 m)' "$1/lib/cmake/mcspec/mcspecConfig.cmake" ||
+        { echo "mcspecConfig.cmake: the archive's link libraries are not fftw3 then m"; return 1; }
 }
 # Fully static (libmcspec.a, libfftw3.a, libm.a): the flags pkg-config gives
 # must name every library, in an order that resolves.
