@@ -103,8 +103,9 @@ static int check_backend(const char *want)
         ++bad;
     }
     if ((check_plan.path == MCS_DFT_PATH_FFTW) != fftw_wanted) {
-        printf("FAIL the N = %u plan is on path %d, %s the FFTW path (%d)\n", (unsigned)CHECK_N,
-               (int)check_plan.path, fftw_wanted ? "not" : "yet", (int)MCS_DFT_PATH_FFTW);
+        printf("FAIL the N = %u plan is on path %d, expected %sthe FFTW path (%d)\n",
+               (unsigned)CHECK_N, (int)check_plan.path, fftw_wanted ? "" : "any but ",
+               (int)MCS_DFT_PATH_FFTW);
         ++bad;
     }
     if (bad == 0)
