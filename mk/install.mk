@@ -57,17 +57,18 @@ $(GEN_CAPS): $(LIB)
 	    exit 1; }
 	@mv -f $@.tmp $@
 
-# What a static link needs beyond libmcspec.a and libm: the FFTW back end's
-# library with FFT=fftw (mk/fft.mk), nothing with KissFFT. As linker flags
-# for mcspec.pc's Libs.private (after -lm, so with a leading space) and as a
-# CMake list for the package.
-FFT_LIBS       := $(if $(LIB_LIBS), $(LIB_LIBS))
-FFT_CMAKE_LIBS := $(patsubst -l%,%,$(LIB_LIBS))
+# What a static link needs beyond libmcspec.a: the FFTW back end's library
+# with FFT=fftw (mk/fft.mk), nothing with KissFFT, then libm. As mcspec.pc's
+# Libs.private and as a CMake list for the package.
+# -lfftw3 goes before -lm: libfftw3.a calls libm too, and a fully static
+# link (-static) resolves only against the libraries after the caller.
+LIBS_PRIVATE      := $(strip $(LIB_LIBS) -lm)
+STATIC_CMAKE_LIBS := $(patsubst -l%,%,$(LIBS_PRIVATE))
 
 # Substitutes @NAME@ in a template: $(call mcs_subst,template,extra sed args).
 mcs_subst = sed -f $(GEN_CAPS) -e 's|@VERSION@|$(VERSION)|g' \
         -e 's|@VERSION_MAJOR@|$(VERSION_MAJOR)|g' -e 's|@VERSION_MINOR@|$(VERSION_MINOR)|g' \
-        -e 's|@FFT_LIBS@|$(FFT_LIBS)|g' -e 's|@FFT_CMAKE_LIBS@|$(FFT_CMAKE_LIBS)|g' $(2) $(1)
+        -e 's|@LIBS_PRIVATE@|$(LIBS_PRIVATE)|g' -e 's|@STATIC_CMAKE_LIBS@|$(STATIC_CMAKE_LIBS)|g' $(2) $(1)
 
 # config.h with the capacities block spliced in after its "mcspec-install:" line.
 $(GEN_CONFIG_H): include/mcspec/config.h cmake/capacities.h.in $(GEN_CAPS)

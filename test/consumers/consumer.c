@@ -3,7 +3,8 @@
  * add_subdirectory and FetchContent, and with mismatched capacities (which
  * must not build). Exit status 0 when every check of mcspec_checks.h holds.
  * With EXPECT_MAX_N or EXPECT_MAX_SIDE defined it also checks that capacity
- * (the one its build passed it). */
+ * (the one its build passed it); with EXPECT_DFT_BACKEND (kissfft or fftw3)
+ * the DFT back end. */
 #include "mcspec_checks.h"
 
 int main(void)

@@ -1,7 +1,8 @@
 /* The checks every consumer program runs against the mcspec it was built
  * with (C11 and C++17 alike): the version it reports, the DFT of a cosine,
  * the power spectrum of two known trials through both of the spectrum's
- * paths, and a rejected input. Every expected value is a closed form
+ * paths, and a rejected input (check_backend: the DFT back end, when the
+ * build says which to expect). Every expected value is a closed form
  * computed here, independently of the library:
  * - s_n = cos(2 pi 5 n / 64): S_5 = S_59 = sqrt(64) / 2 = 4, every other S_k 0;
  * - one sample at bin 3: |S_k|^2 = 1/N for every k;
@@ -85,6 +86,35 @@ static int check_spectrum(void)
     return bad;
 }
 
+#ifdef EXPECT_DFT_BACKEND
+/* The back end the consumer's build expects, EXPECT_DFT_BACKEND as a bare
+ * token (kissfft or fftw3: -DEXPECT_DFT_BACKEND=fftw3), against
+ * mcs_dft_backend(); and the plan check_dft ran, so the transform it found
+ * right is the back end's own: the FFTW path exactly when it is fftw3. */
+#define CHECK_STR_(x) #x
+#define CHECK_STR(x) CHECK_STR_(x)
+
+static int check_backend(const char *want)
+{
+    const int fftw_wanted = strcmp(want, "fftw3") == 0;
+    int bad = 0;
+    if (strcmp(mcs_dft_backend(), want) != 0) {
+        printf("FAIL mcs_dft_backend() is %s, expected %s\n", mcs_dft_backend(), want);
+        ++bad;
+    }
+    if ((check_plan.path == MCS_DFT_PATH_FFTW) != fftw_wanted) {
+        printf("FAIL the N = %u plan is on path %d, expected %sthe FFTW path (%d)\n",
+               (unsigned)CHECK_N, (int)check_plan.path, fftw_wanted ? "" : "any but ",
+               (int)MCS_DFT_PATH_FFTW);
+        ++bad;
+    }
+    if (bad == 0)
+        printf("DFT back end %s, N = %u transformed on path %d\n", mcs_dft_backend(),
+               (unsigned)CHECK_N, (int)check_plan.path);
+    return bad;
+}
+#endif
+
 static int mcspec_checks(void)
 {
     int bad = 0;
@@ -93,6 +123,9 @@ static int mcspec_checks(void)
         ++bad;
     }
     bad += check_dft();
+#ifdef EXPECT_DFT_BACKEND
+    bad += check_backend(CHECK_STR(EXPECT_DFT_BACKEND));
+#endif
     bad += check_spectrum();
     {
         const size_t out_of_range[1] = {CHECK_N};

@@ -27,6 +27,13 @@
 #     the API, carries those capacities in mcspec.pc and the package, and
 #     serves the C++ consumer; a C consumer takes mcspec by add_subdirectory
 #     and by FetchContent.
+#  5. The FFTW back end (mk/fft.mk), which must reach static consumers as
+#     -lfftw3 (mcspec.pc's Libs.private, the package's link interface):
+#     make FFT=fftw install (built once, in build/fftw/, the default build
+#     untouched) serves the C consumer through pkg-config, fully static and
+#     shared, with mcs_dft_backend() = "fftw3" and the transform right; and
+#     the CMake build with -DMCSPEC_FFT=fftw serves the C++ consumer static.
+#     Without FFTW (no fftw3.h or libfftw3) these checks fail, saying so.
 # Prints one line per check and "N passed, N failed"; exit 1 on any failure.
 set -u
 
@@ -158,12 +165,12 @@ links_static() { ! readelf -d "$1" | grep -q 'libmcspec'; }
 
 build_c_shared() {
     # shellcheck disable=SC2086 # flag lists
-    $CC $cflags $pc_cflags "$here/consumer.c" -o "$tmp/c_shared" $pc_libs -Wl,-rpath,"$libdir" -lm &&
+    $CC $cflags $pc_cflags -DEXPECT_DFT_BACKEND=kissfft "$here/consumer.c" -o "$tmp/c_shared" $pc_libs -Wl,-rpath,"$libdir" -lm &&
         links_shared "$tmp/c_shared" && "$tmp/c_shared"
 }
 build_c_static() {
     # shellcheck disable=SC2086
-    $CC $cflags $pc_cflags "$here/consumer.c" -o "$tmp/c_static" $pc_libs_L -Wl,-Bstatic -lmcspec \
+    $CC $cflags $pc_cflags -DEXPECT_DFT_BACKEND=kissfft "$here/consumer.c" -o "$tmp/c_static" $pc_libs_L -Wl,-Bstatic -lmcspec \
         -Wl,-Bdynamic -lm && links_static "$tmp/c_static" && "$tmp/c_static"
 }
 check "C consumer, pkg-config, shared (NEEDED libmcspec.so.$major)" build_c_shared
@@ -281,6 +288,77 @@ check "C consumer, add_subdirectory(mcspec)" subdir "$tmp/subdir"
 check "C consumer, FetchContent(mcspec), MCSPEC_MAX_N=256 MCSPEC_MAX_SIDE=16 shared" \
     subdir "$tmp/fetch" -DUSE_FETCHCONTENT=ON -DMCSPEC_MAX_N=256 -DEXPECT_MAX_N=256 \
         -DMCSPEC_MAX_SIDE=16 -DEXPECT_MAX_SIDE=16 -DBUILD_SHARED_LIBS=ON
+
+# ------------------------------------------------------------ 5. FFTW
+fftwprefix=$tmp/fftwprefix
+cmfftw=$tmp/cmfftw
+have_fftw=$(sh tools/bench_deps.sh fftw "$CC")
+need_fftw() {
+    [ "$have_fftw" = 1 ] ||
+        { echo "no FFTW 3: $CC cannot build a program with <fftw3.h> and -lfftw3 (install libfftw3-dev)"; return 1; }
+}
+# The default build's tree (that of BUILD_LIB) is not written to: FFT=fftw
+# builds in its fftw/ subdirectory.
+fftw_install() {
+    need_fftw || return 1
+    bdir=$(dirname "$BUILD_LIB")
+    touch "$tmp/fftw.stamp"
+    "$MAKE" --no-print-directory FFT=fftw install PREFIX="$fftwprefix" || return 1
+    touched=$(find "$bdir" -path "$bdir/fftw" -prune -o -type f -newer "$tmp/fftw.stamp" -print)
+    [ -z "$touched" ] || { echo "the default build was written to:"; echo "$touched"; return 1; }
+}
+# fftw_package PREFIX: -lfftw3 in mcspec.pc's Libs.private (and not Libs);
+# fftw3 in the package's link interface of the archive, before m (which
+# libfftw3.a calls: a C consumer linked -static needs that order; the C++
+# consumer cannot show it, as g++ puts -lm at the end of every link).
+fftw_package() {
+    need_fftw || return 1
+    pc=$1/lib/pkgconfig/mcspec.pc
+    grep '^Libs' "$pc"
+    grep -q '^Libs.private:.* -lfftw3' "$pc" || { echo "mcspec.pc: no -lfftw3 in Libs.private"; return 1; }
+    ! grep -q '^Libs:.*fftw' "$pc" || { echo "mcspec.pc: fftw3 in Libs"; return 1; }
+    grep -q '^set(_mcspec_static_libs fftw3 m)' "$1/lib/cmake/mcspec/mcspecConfig.cmake" ||
+        { echo "mcspecConfig.cmake: the archive's link libraries are not fftw3 then m"; return 1; }
+}
+# Fully static (libmcspec.a, libfftw3.a, libm.a): the flags pkg-config gives
+# must name every library, in an order that resolves.
+fftw_c_static() {
+    need_fftw || return 1
+    # shellcheck disable=SC2046,SC2086
+    $CC $cflags -static -DEXPECT_DFT_BACKEND=fftw3 "$here/consumer.c" -o "$tmp/fftw_static" \
+        $(PKG_CONFIG_PATH="$fftwprefix/lib/pkgconfig" pkg-config --static --cflags --libs mcspec) &&
+        ! readelf -d "$tmp/fftw_static" | grep -q NEEDED && "$tmp/fftw_static"
+}
+fftw_c_shared() {
+    need_fftw || return 1
+    # shellcheck disable=SC2046,SC2086
+    $CC $cflags -DEXPECT_DFT_BACKEND=fftw3 "$here/consumer.c" -o "$tmp/fftw_shared" \
+        $(PKG_CONFIG_PATH="$fftwprefix/lib/pkgconfig" pkg-config --cflags --libs mcspec) \
+        -Wl,-rpath,"$fftwprefix/lib" -lm &&
+        links_shared "$tmp/fftw_shared" && "$tmp/fftw_shared"
+}
+fftw_cmake_lib() {
+    need_fftw || return 1
+    "$CMAKE" -S "$root" -B "$tmp/cm_fftw" -DCMAKE_C_COMPILER="$CC" -DCMAKE_INSTALL_PREFIX="$cmfftw" \
+        -DMCSPEC_WERROR="${WERROR:-OFF}" -DMCSPEC_FFT=fftw -DBUILD_SHARED_LIBS=OFF &&
+        "$CMAKE" --build "$tmp/cm_fftw" && "$CMAKE" --install "$tmp/cm_fftw"
+}
+fftw_cxx_static() {
+    need_fftw || return 1
+    build_cxx "$tmp/cxx_fftw" "$cmfftw" -DMCSPEC_USE_STATIC=ON -DEXPECT_DFT_BACKEND=fftw3 &&
+        links_static "$tmp/cxx_fftw/cxx_consumer"
+}
+check "make FFT=fftw install PREFIX=<tmp2> (in build/fftw/, the default build untouched)" fftw_install
+check "FFT=fftw install: -lfftw3 in mcspec.pc's Libs.private (not Libs) and the package's archive link" \
+    fftw_package "$fftwprefix"
+check "C consumer, pkg-config --static, linked -static: back end fftw3, transform right" fftw_c_static
+check "C consumer, pkg-config, shared (NEEDED libmcspec.so.$major): back end fftw3, transform right" \
+    fftw_c_shared
+check "CMake: libmcspec static, MCSPEC_FFT=fftw, built and installed" fftw_cmake_lib
+check "CMake FFTW install: -lfftw3 in mcspec.pc's Libs.private (not Libs) and the package's archive link" \
+    fftw_package "$cmfftw"
+check "C++17 consumer against the CMake FFTW install (static): back end fftw3, transform right" \
+    fftw_cxx_static
 
 echo "check-install: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -1,7 +1,7 @@
 // A C++17 program using mcspec through find_package(mcspec) and the
 // imported target mcspec::mcspec (test/consumers/run.sh builds it against
 // the installed package only). Exit status 0 when mcspec_checks.h holds and
-// the capacities the package passed are the ones expected.
+// the capacities the package passed and the DFT back end are the ones expected.
 #include <array>
 #include <cstdio>
 #include <string_view>
