@@ -4,6 +4,8 @@
 #include "theory_internal.h"
 #include "readout.h"
 
+#include <float.h>
+
 /* ---- set-up ---------------------------------------------------------------- */
 
 /* The bins as mcs_theory sees them (the same inline arithmetic), and <s_n> as
@@ -53,14 +55,50 @@ mcs_status mcs_theory_spectrum_init(mcs_theory_spectrum *ts, const mcs_pattern *
 
 /* ---- checks ---------------------------------------------------------------- */
 
-/* Outputs given (else NULL), ts set up (else UNINIT). */
+/* Bounds every body mcs_theory_spectrum_init writes keeps: 1/p_b <= 2^32
+ * (p_b >= N g_b with g_b >= MCS_IMPORTANCE_MIN_G = 2^-32 but for the 2^-53
+ * rounding of the CDF), |<s_b>| <= K max 1/p_b < 2^63. */
+#define MAX_INV_P 0x1p33
+#define MAX_MEAN_S 0x1p64
+
+static int in_range(double x, double lo, double hi)
+{
+    return x >= lo && x <= hi; /* NaN is in no range */
+}
+
+/* The body as mcs_theory_spectrum_init writes it: edges rising from 0 to K,
+ * lengths in [0, 1], weights 1/p_b in (0, 2^33], means and twiddles
+ * bounded, and (jitter) every breakpoint an edge index in [1, N). Then every
+ * covariance term is a weight >= 0 times a squared deviation (the strata
+ * overlaps are >= 0 because the edges rise), so variances and powers are
+ * sums of non-negative finite terms: >= 0 with no rounding to clamp, and
+ * finite; and the breakpoints index inside the object. O(N), as every
+ * read-out is at least. */
+static int body_is_sound(const mcs_theory_spectrum *ts)
+{
+    const size_t n = ts->n;
+    int sound = ts->edge[0] == 0.0 && ts->edge[n] == (double)ts->k;
+    for (size_t b = 0; b < n; ++b) {
+        sound &= ts->edge[b] <= ts->edge[b + 1u];
+        sound &= in_range(ts->length[b], 0.0, 1.0);
+        sound &= in_range(ts->inv_p[b], DBL_MIN, MAX_INV_P);
+        sound &= in_range(ts->mean_s[b], -MAX_MEAN_S, MAX_MEAN_S);
+        sound &= in_range(ts->cos_table[b], -1.0, 1.0) & in_range(ts->sin_table[b], -1.0, 1.0);
+    }
+    for (size_t i = 0; ts->kind == MCS_PATTERN_JITTER && i + 1u < n; ++i)
+        sound &= ts->order[i] >= 1u && ts->order[i] < n;
+    return sound;
+}
+
+/* Outputs given (else NULL), ts set up (else UNINIT), its body one init
+ * writes (else INVARIANT: a corrupted object, refused before it is read). */
 static mcs_status check_ts(int outputs, const mcs_theory_spectrum *ts)
 {
     if (!outputs || ts == NULL)
         return MCS_ERR_NULL;
     if (ts->n == 0u || ts->n > (size_t)MCS_MAX_N || ts->k == 0u || !mcs_kind_is_valid_(ts->kind))
         return MCS_ERR_UNINIT;
-    return MCS_OK;
+    return body_is_sound(ts) ? MCS_OK : MCS_ERR_INVARIANT;
 }
 
 /* check_ts, then frequencies below N (else FREQ_RANGE). */
@@ -197,6 +235,8 @@ mcs_status mcs_theory_spectrum_cross(const mcs_theory_spectrum *ts, size_t freq_
     mcs_status st = check_complex(ts, freq_k, freq_l, re, im);
     if (st != MCS_OK)
         return st;
+    if (freq_k == freq_l) /* <|S_k|^2>: the power read-out itself, real */
+        return set_complex(re, im, power_at(ts, freq_k), 0.0);
     double cr, ci, kr, ki, lr, li;
     covariance_at(ts, freq_k, freq_l, &cr, &ci);
     mean_at(ts, freq_k, &kr, &ki);
