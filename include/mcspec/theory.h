@@ -222,10 +222,11 @@ mcs_status mcs_theory_spectrum_init(mcs_theory_spectrum *ts, const mcs_pattern *
 /* The three calls with a complex result (re, im) below compute it first and
  * write it last, so re and im may be any two doubles, even inside ts; the
  * same double for both is MCS_ERR_ALIAS (it cannot hold both parts).
- * Every read-out below returns MCS_ERR_INVARIANT, writing nothing, for a
- * *ts whose arrays hold values mcs_theory_spectrum_init does not write (a
- * corrupted object); on any other, powers and variances are >= 0 exactly
- * (sums of non-negative terms: nothing to clamp). */
+ * On any *ts mcs_theory_spectrum_init wrote, powers and variances are >= 0
+ * exactly (sums of non-negative terms: nothing to clamp) and every result is
+ * finite; every read-out below returns MCS_ERR_INVARIANT, writing nothing,
+ * where a corrupted *ts would give a non-finite result, a negative power or
+ * variance, or an index outside the object. */
 
 /* <S_freq> (eq. 15). O(N). MCS_ERR_FREQ_RANGE (freq >= N), MCS_ERR_ALIAS. */
 mcs_status mcs_theory_spectrum_mean(const mcs_theory_spectrum *ts, size_t freq, double *re,
