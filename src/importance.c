@@ -130,7 +130,9 @@ void mcs_importance_warp_unchecked(const mcs_importance *imp, double u, double *
     }
     double width = imp->cdf[lo + 1u] - imp->cdf[lo];
     double t = width > 0.0 ? (u - imp->cdf[lo]) / width : 0.0;
-    if (t < 0.0)
+    /* In [0, 1) from a CDF init wrote; NaN only from a corrupted one (an
+     * entry of -inf: inf / inf), which still gets a point in bin lo. */
+    if (!(t >= 0.0))
         t = 0.0;
     if (t >= 1.0)
         t = nextafter(1.0, 0.0);

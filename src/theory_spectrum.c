@@ -4,6 +4,8 @@
 #include "theory_internal.h"
 #include "readout.h"
 
+#include <float.h>
+
 /* ---- set-up ---------------------------------------------------------------- */
 
 /* The bins as mcs_theory sees them (the same inline arithmetic), and <s_n> as
@@ -53,14 +55,58 @@ mcs_status mcs_theory_spectrum_init(mcs_theory_spectrum *ts, const mcs_pattern *
 
 /* ---- checks ---------------------------------------------------------------- */
 
-/* Outputs given (else NULL), ts set up (else UNINIT). */
+/* Bounds every body mcs_theory_spectrum_init writes keeps: 1/p_b <= 2^32
+ * (p_b >= N g_b with g_b >= MCS_IMPORTANCE_MIN_G = 2^-32 but for the 2^-53
+ * rounding of the CDF), |<s_b>| <= K max 1/p_b < 2^63. */
+#define MAX_INV_P 0x1p33
+#define MAX_MEAN_S 0x1p64
+
+static int in_range(double x, double lo, double hi)
+{
+    return x >= lo && x <= hi; /* NaN is in no range */
+}
+
+/* The body as mcs_theory_spectrum_init writes it: edges rising from 0 to K,
+ * lengths in [0, 1], weights 1/p_b in (0, 2^33], means and twiddles
+ * bounded. Then every covariance term is a weight >= 0 times a squared
+ * deviation (the strata overlaps are >= 0 because the edges rise), so
+ * variances and powers are sums of non-negative finite terms: >= 0 with no
+ * rounding to clamp, and finite. O(N): checked where N results are written
+ * (mcs_theory_power_spectrum); a single read-out checks its result instead
+ * (set_real, set_complex), which costs nothing beside its O(N) sums. */
+static int body_is_sound(const mcs_theory_spectrum *ts)
+{
+    const size_t n = ts->n;
+    int sound = ts->edge[0] == 0.0 && ts->edge[n] == (double)ts->k;
+    for (size_t b = 0; b < n; ++b) {
+        sound &= ts->edge[b] <= ts->edge[b + 1u];
+        sound &= in_range(ts->length[b], 0.0, 1.0);
+        sound &= in_range(ts->inv_p[b], DBL_MIN, MAX_INV_P);
+        sound &= in_range(ts->mean_s[b], -MAX_MEAN_S, MAX_MEAN_S);
+        sound &= in_range(ts->cos_table[b], -1.0, 1.0) & in_range(ts->sin_table[b], -1.0, 1.0);
+    }
+    return sound;
+}
+
+/* Jitter's breakpoints index the edges: each in [1, N), or a read would
+ * leave the object (a corrupted entry read far outside it). */
+static int order_is_sound(const mcs_theory_spectrum *ts)
+{
+    int sound = 1;
+    for (size_t i = 0; ts->kind == MCS_PATTERN_JITTER && i + 1u < ts->n; ++i)
+        sound &= ts->order[i] - 1u < ts->n - 1u; /* 1 <= order < N, one unsigned compare */
+    return sound;
+}
+
+/* Outputs given (else NULL), ts set up (else UNINIT), its indices inside
+ * the object (else INVARIANT: a corrupted object, refused before a read). */
 static mcs_status check_ts(int outputs, const mcs_theory_spectrum *ts)
 {
     if (!outputs || ts == NULL)
         return MCS_ERR_NULL;
     if (ts->n == 0u || ts->n > (size_t)MCS_MAX_N || ts->k == 0u || !mcs_kind_is_valid_(ts->kind))
         return MCS_ERR_UNINIT;
-    return MCS_OK;
+    return order_is_sound(ts) ? MCS_OK : MCS_ERR_INVARIANT;
 }
 
 /* check_ts, then frequencies below N (else FREQ_RANGE). */
@@ -85,12 +131,24 @@ static mcs_status check_complex(const mcs_theory_spectrum *ts, size_t freq_k, si
 }
 
 /* Writes a complex result computed into locals: last, so re and im may lie
- * anywhere (but on each other), even in the object just read. */
-static mcs_status set_complex(double *re, double *im, double r, double i)
+ * anywhere (but on each other), even in the object just read. A result
+ * that is not finite, or a negative variance or power (real: nonneg), comes
+ * only from a body init does not write (see body_is_sound): INVARIANT, and
+ * nothing is written. */
+static mcs_status set_complex(double *re, double *im, double r, double i, int nonneg)
 {
+    if (!(isfinite(r) && isfinite(i)) || (nonneg && !(r >= 0.0)))
+        return MCS_ERR_INVARIANT;
     *re = r;
     *im = i;
     return MCS_OK;
+}
+
+/* A real result, checked as set_complex. */
+static mcs_status set_real(double *out, double v, int nonneg)
+{
+    double zero = 0.0;
+    return set_complex(out, &zero, v, 0.0, nonneg);
 }
 
 /* check_ts, then n (MISMATCH), k (K_RANGE, MISMATCH), f and g finite
@@ -159,13 +217,13 @@ mcs_status mcs_theory_spectrum_mean(const mcs_theory_spectrum *ts, size_t freq, 
         return st;
     double r, i;
     mean_at(ts, freq, &r, &i);
-    return set_complex(re, im, r, i);
+    return set_complex(re, im, r, i, 0);
 }
 
 mcs_status mcs_theory_spectrum_power(const mcs_theory_spectrum *ts, size_t freq, double *out)
 {
     mcs_status st = check_freqs(out != NULL, ts, freq, freq);
-    return st == MCS_OK ? mcs_set_(out, power_at(ts, freq)) : st;
+    return st == MCS_OK ? set_real(out, power_at(ts, freq), 1) : st;
 }
 
 mcs_status mcs_theory_power_spectrum(const mcs_theory_spectrum *ts, size_t n, double *power)
@@ -173,6 +231,8 @@ mcs_status mcs_theory_power_spectrum(const mcs_theory_spectrum *ts, size_t n, do
     mcs_status st = check_ts(power != NULL, ts);
     if (st == MCS_OK && n != ts->n)
         st = MCS_ERR_MISMATCH;
+    if (st == MCS_OK && !body_is_sound(ts))
+        st = MCS_ERR_INVARIANT; /* N results: the body, before any is written */
     if (st != MCS_OK)
         return st;
     for (size_t q = 0; q < n; ++q)
@@ -188,7 +248,7 @@ mcs_status mcs_theory_spectrum_covariance(const mcs_theory_spectrum *ts, size_t 
         return st;
     double r, i;
     covariance_at(ts, freq_k, freq_l, &r, &i);
-    return set_complex(re, im, r, i);
+    return set_complex(re, im, r, i, freq_k == freq_l);
 }
 
 mcs_status mcs_theory_spectrum_cross(const mcs_theory_spectrum *ts, size_t freq_k,
@@ -197,12 +257,14 @@ mcs_status mcs_theory_spectrum_cross(const mcs_theory_spectrum *ts, size_t freq_
     mcs_status st = check_complex(ts, freq_k, freq_l, re, im);
     if (st != MCS_OK)
         return st;
+    if (freq_k == freq_l) /* <|S_k|^2>: the power read-out itself, real */
+        return set_complex(re, im, power_at(ts, freq_k), 0.0, 1);
     double cr, ci, kr, ki, lr, li;
     covariance_at(ts, freq_k, freq_l, &cr, &ci);
     mean_at(ts, freq_k, &kr, &ki);
     mean_at(ts, freq_l, &lr, &li);
     /* + <S_k><S_l>* = (kr + i ki)(lr - i li) */
-    return set_complex(re, im, cr + (kr * lr + ki * li), ci + (ki * lr - kr * li));
+    return set_complex(re, im, cr + (kr * lr + ki * li), ci + (ki * lr - kr * li), 0);
 }
 
 /* ---- the estimator ---------------------------------------------------------- */
@@ -216,8 +278,7 @@ mcs_status mcs_theory_spectrum_estimator_mean(const mcs_theory_spectrum *ts, siz
     double sum = 0.0;
     for (size_t b = 0; b < n; ++b)
         sum += f[b] * ts->mean_s[b];
-    *out = sum / (double)k;
-    return MCS_OK;
+    return set_real(out, sum / (double)k, 0);
 }
 
 /* (1/K^2) Cov(sum f s, sum g s): I = (1/K) sum f s. */
@@ -234,7 +295,7 @@ mcs_status mcs_theory_spectrum_variance(const mcs_theory_spectrum *ts, size_t n,
                                         const double *f, double *out)
 {
     mcs_status st = check_integrands(out != NULL, ts, n, k, f, NULL);
-    return st == MCS_OK ? mcs_set_(out, estimator_cov(ts, f, f)) : st;
+    return st == MCS_OK ? set_real(out, estimator_cov(ts, f, f), 1) : st;
 }
 
 mcs_status mcs_theory_spectrum_estimator_covariance(const mcs_theory_spectrum *ts, size_t n,
@@ -242,5 +303,5 @@ mcs_status mcs_theory_spectrum_estimator_covariance(const mcs_theory_spectrum *t
                                                     double *out)
 {
     mcs_status st = check_integrands(out != NULL && g != NULL, ts, n, k, f, g);
-    return st == MCS_OK ? mcs_set_(out, estimator_cov(ts, f, g)) : st;
+    return st == MCS_OK ? set_real(out, estimator_cov(ts, f, g), 0) : st;
 }

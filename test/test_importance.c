@@ -234,6 +234,37 @@ static void test_q_of_a_corrupted_object_is_refused_not_nan(void)
     TEST_ASSERT_EQUAL_DOUBLE(8.0, im);
 }
 
+/* A CDF entry of -inf (a corrupted object: init writes none) at the search's
+ * lower end made t = (u + inf) / inf NaN, and the warp and the draw returned
+ * a NaN point with MCS_OK. Whatever the CDF holds, the point lies in the bin
+ * the search returned. */
+static void test_a_corrupted_cdf_entry_still_gives_a_point_inside_the_returned_bin(void)
+{
+    const double w[8] = {1.0, 2.0, 3.0, 4.0, 4.0, 3.0, 2.0, 1.0};
+    static const double bad[4] = {-(double)INFINITY, (double)INFINITY, (double)NAN, -1e300};
+    for (int i = 0; i < 4; ++i)
+        for (size_t at = 1; at < 8u; ++at) {
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_init(&imp, 8u, w));
+            mcs_pattern pat;
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_init(&pat, MCS_PATTERN_STRATIFIED, 8u, 16u, &imp));
+            imp.cdf[at] = bad[i];
+            for (int j = 0; j < 64; ++j) {
+                double x = -1.0;
+                size_t bin = 99u;
+                TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_warp(&imp, (j + 0.5) / 64.0, &x, &bin));
+                TEST_ASSERT_TRUE(bin < 8u && x >= 0.0 && x < 1.0 && (size_t)(x * 8.0) == bin);
+            }
+            mcs_rng rng;
+            mcs_rng_seed(&rng, 5u, at);
+            size_t bins[16];
+            double weights[16], points[16];
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_draw(&pat, &rng, 16u, bins, weights, points));
+            for (size_t j = 0; j < 16u; ++j)
+                TEST_ASSERT_TRUE(points[j] >= 0.0 && points[j] < 1.0 &&
+                                 (size_t)(points[j] * 8.0) == bins[j]);
+        }
+}
+
 /* Grid points k / 2^53 (the generator's u) in [a, b), a and b in [0, 1]. */
 static double grid_count(double a, double b)
 {
@@ -282,5 +313,6 @@ int main(void)
     RUN_TEST(test_bin_probabilities_are_the_stored_g_so_the_estimator_is_unbiased);
     RUN_TEST(test_one_storage_for_two_outputs_is_refused);
     RUN_TEST(test_q_of_a_corrupted_object_is_refused_not_nan);
+    RUN_TEST(test_a_corrupted_cdf_entry_still_gives_a_point_inside_the_returned_bin);
     return UNITY_END();
 }

@@ -221,7 +221,12 @@ mcs_status mcs_theory_spectrum_init(mcs_theory_spectrum *ts, const mcs_pattern *
 
 /* The three calls with a complex result (re, im) below compute it first and
  * write it last, so re and im may be any two doubles, even inside ts; the
- * same double for both is MCS_ERR_ALIAS (it cannot hold both parts). */
+ * same double for both is MCS_ERR_ALIAS (it cannot hold both parts).
+ * On any *ts mcs_theory_spectrum_init wrote, powers and variances are >= 0
+ * exactly (sums of non-negative terms: nothing to clamp) and every result is
+ * finite; every read-out below returns MCS_ERR_INVARIANT, writing nothing,
+ * where a corrupted *ts would give a non-finite result, a negative power or
+ * variance, or an index outside the object. */
 
 /* <S_freq> (eq. 15). O(N). MCS_ERR_FREQ_RANGE (freq >= N), MCS_ERR_ALIAS. */
 mcs_status mcs_theory_spectrum_mean(const mcs_theory_spectrum *ts, size_t freq, double *re,
@@ -235,7 +240,8 @@ mcs_status mcs_theory_spectrum_power(const mcs_theory_spectrum *ts, size_t freq,
  * equal to the pattern's N (else MCS_ERR_MISMATCH). O(N^2). */
 mcs_status mcs_theory_power_spectrum(const mcs_theory_spectrum *ts, size_t n, double *power);
 
-/* <S_k S_l*> (eq. 16) for k = freq_k, l = freq_l. O(N) (homogenized: its
+/* <S_k S_l*> (eq. 16) for k = freq_k, l = freq_l; at k = l the power
+ * read-out bit for bit, imaginary part 0. O(N) (homogenized: its
  * covariance is circulant, so Cov(S_k, S_l) = 0 for k != l).
  * MCS_ERR_FREQ_RANGE, MCS_ERR_ALIAS. */
 mcs_status mcs_theory_spectrum_cross(const mcs_theory_spectrum *ts, size_t freq_k,
