@@ -269,8 +269,10 @@ static mcs_status check_drawable(const mcs_pattern *pat, const mcs_rng *rng)
     if (pat->n == 0u || pat->n > (size_t)MCS_MAX_N || pat->k == 0u ||
         pat->k > (size_t)MCS_MAX_K || !mcs_kind_is_valid_(pat->kind))
         return MCS_ERR_UNINIT;
-    if (pat->importance != NULL && (!mcs_importance_is_valid_(pat->importance) ||
-                                    pat->importance->n != pat->n))
+    /* init never pairs homogenized strata with an importance function */
+    if (pat->importance != NULL &&
+        (!mcs_importance_is_valid_(pat->importance) || pat->importance->n != pat->n ||
+         pat->kind == MCS_PATTERN_HOMOGENIZED))
         return MCS_ERR_UNINIT;
     return mcs_rng_is_seeded_(rng) ? MCS_OK : MCS_ERR_UNINIT;
 }

@@ -361,6 +361,25 @@ static void test_a_never_seeded_rng_is_refused_by_every_kind(void)
     }
 }
 
+/* init refuses homogenized strata with an importance function; a pattern
+ * edited into that state afterwards is refused by the draw, nothing written. */
+static void test_a_homogenized_pattern_given_an_importance_object_later_is_refused(void)
+{
+    mcs_pattern pat;
+    mcs_rng rng, before;
+    lumpy_importance(10u);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_init(&pat, MCS_PATTERN_HOMOGENIZED, 10u, 3u, NULL));
+    pat.importance = &imp;
+    mcs_rng_seed(&rng, 1u, 1u);
+    before = rng;
+    for (size_t j = 0; j <= 3u; ++j)
+        set_guards(j);
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_UNINIT, mcs_pattern_draw(&pat, &rng, 3u, bins, weights, points));
+    for (size_t j = 0; j <= 3u; ++j)
+        assert_guards(j);
+    TEST_ASSERT_EQUAL_MEMORY(&before, &rng, sizeof rng);
+}
+
 /* Issue 10 item 4: K is bounded by MCS_MAX_K (pattern.h says why). */
 static void test_k_above_the_documented_maximum_is_refused(void)
 {
@@ -489,6 +508,7 @@ int main(void)
     RUN_TEST(test_bad_draw_writes_nothing_and_does_not_advance_the_rng);
     RUN_TEST(test_bad_points_or_bins_return_an_error_and_leave_outputs_untouched);
     RUN_TEST(test_a_never_seeded_rng_is_refused_by_every_kind);
+    RUN_TEST(test_a_homogenized_pattern_given_an_importance_object_later_is_refused);
     RUN_TEST(test_k_above_the_documented_maximum_is_refused);
     RUN_TEST(test_overlapping_arrays_are_refused_and_nothing_is_written);
     RUN_TEST(test_a_flat_importance_function_reproduces_the_pattern_without_one);

@@ -64,8 +64,8 @@ mcs_status mcs_pattern_init(mcs_pattern *pat, mcs_pattern_kind kind, size_t n, s
  * importance) and, if points is not NULL, points[k] (x_j in [0,1), floor(N x_j) = n_j).
  * k must equal pat->k (it is the length of every caller array). The three
  * arrays must not overlap each other, *pat, *rng or the importance function.
- * MCS_ERR_NULL, MCS_ERR_MISMATCH (k != pat->k), MCS_ERR_UNINIT (pat, or an
- * rng never seeded), MCS_ERR_ALIAS (overlap). On error nothing is written
+ * MCS_ERR_NULL, MCS_ERR_MISMATCH (k != pat->k), MCS_ERR_UNINIT (pat not as
+ * init leaves one, or an rng never seeded), MCS_ERR_ALIAS (overlap). On error nothing is written
  * and rng is not advanced. */
 mcs_status mcs_pattern_draw(const mcs_pattern *pat, mcs_rng *rng, size_t k, size_t *bins,
                             double *weights, double *points);
