@@ -290,14 +290,21 @@ static mcs_status cross_value(const mcs_readout *view, size_t freq_k, size_t fre
     return MCS_OK;
 }
 
-/* <|S_k|^2> as a complex_at (k = l): a second moment, never negative but for
- * rounding (exact moments; see mcs_readout_nonnegative). */
+/* <|S_k|^2> as a complex_at (k = l): real, and a second moment, never
+ * negative but for rounding (see mcs_readout_nonnegative). Exact moments
+ * below minus the rounding bound are no moments any pattern has: the object
+ * holds values no call produced (as the cross matrix's diagonal reads it). */
 static mcs_status power_value(const mcs_readout *view, size_t freq_k, size_t freq_l,
                               double *re, double *im)
 {
     mcs_readout_cross_at(view, freq_k, freq_l, re, im);
-    if (*re < 0.0)
-        *re = mcs_readout_nonnegative(view, *re, power_bound(view));
+    *im = 0.0; /* <s s^T> is symmetric: the imaginary part is rounding */
+    if (*re < 0.0) {
+        const double bound = power_bound(view);
+        if (view->k != 0u && !(*re >= -bound))
+            return MCS_ERR_INVARIANT;
+        *re = mcs_readout_nonnegative(view, *re, bound);
+    }
     return MCS_OK;
 }
 

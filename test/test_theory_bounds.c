@@ -169,6 +169,35 @@ static void test_the_cross_matrix_diagonal_and_cross_k_k_are_the_power_and_never
     }
 }
 
+/* A power no moments give (below minus its rounding bound: only a corrupted
+ * object) is refused by mcs_theory_power and mcs_theory_cross(k, k) as the
+ * cross matrix refuses it, nothing written; cross(k, k) is real exactly. */
+static void test_a_power_below_its_rounding_bound_is_refused_and_cross_k_k_is_real(void)
+{
+    static double w[8] = {1.0, 2.0, 3.0, 1.0, 5.0, 1.0, 2.0, 4.0};
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_init(&imp, 8u, w));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_init(&pat, MCS_PATTERN_STRATIFIED, 8u, 3u, &imp));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_theory_init(&th, &pat));
+    for (size_t q = 0; q < 8u; ++q) {
+        double cr = SENTINEL, ci = SENTINEL;
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_theory_cross(&th, q, q, &cr, &ci));
+        TEST_ASSERT_EQUAL_DOUBLE(0.0, ci);
+        TEST_ASSERT_FALSE(signbit(ci));
+    }
+    /* <s_3 s_3> far below any <s_3>^2: the power is negative at every k */
+    th.second[3u * 8u + 3u] = -50.0;
+    th_copy = th;
+    for (size_t q = 0; q < 8u; ++q) {
+        double p = SENTINEL, cr = SENTINEL, ci = SENTINEL;
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_INVARIANT, mcs_theory_power(&th, q, &p));
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_INVARIANT, mcs_theory_cross(&th, q, q, &cr, &ci));
+        TEST_ASSERT_EQUAL_DOUBLE(SENTINEL, p);
+        TEST_ASSERT_EQUAL_DOUBLE(SENTINEL, cr);
+        TEST_ASSERT_EQUAL_DOUBLE(SENTINEL, ci);
+    }
+    TEST_ASSERT_EQUAL_MEMORY(&th_copy, &th, sizeof th);
+}
+
 /* ---- item 5: integrands up to the bound ----------------------------------- */
 
 static double f_max[MCS_MAX_N], g_max[MCS_MAX_N], f_over[MCS_MAX_N];
@@ -256,6 +285,7 @@ int main(void)
     RUN_TEST(test_uniform_theory_at_the_largest_k_is_quick_and_exact);
     RUN_TEST(test_a_pattern_k_above_the_largest_is_refused_by_both_inits);
     RUN_TEST(test_the_cross_matrix_diagonal_and_cross_k_k_are_the_power_and_never_negative);
+    RUN_TEST(test_a_power_below_its_rounding_bound_is_refused_and_cross_k_k_is_real);
     RUN_TEST(test_integrands_up_to_the_bound_read_out_finite_for_the_heaviest_pattern);
     RUN_TEST(test_a_complex_result_into_one_double_is_refused_and_elsewhere_is_written);
     return UNITY_END();
