@@ -158,8 +158,11 @@ static void scatter_bins(double *restrict s, size_t k, const size_t *restrict bi
 
 void mcs_spectrum_fft_(mcs_spectrum *acc, const mcs_spectrum_trial_ *t)
 {
-    if (t->bins != NULL) /* weights given with bins */
+    if (t->bins != NULL && t->k > acc->n) /* weights given with bins, in runs */
         scatter_bins(acc->s, t->k, t->bins, t->weights);
+    else if (t->bins != NULL) /* a bin seldom twice in a row: no test for it */
+        for (size_t j = 0; j < t->k; ++j)
+            acc->s[t->bins[j]] += t->weights[j];
     else
         scatter_points(acc, t, 0);
     mcs_dft_half_(&acc->plan, acc->s, acc->re, acc->im);
