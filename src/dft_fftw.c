@@ -85,8 +85,16 @@ void mcs_dft_fftw_half_(mcs_dft *plan, const double *s, double *re, double *im, 
     const size_t n = plan->n, h = n / 2u;
     double *in = aligned(plan->work);
     double *out = aligned(in + n);
-    memcpy(in, s, n * sizeof in[0]); /* s is read in full first: it may alias re or im */
-    fftw_execute_dft_r2c(plans[n], in, (fftw_complex *)out);
+    /* FFTW runs a plan on other arrays of the planned arrays' alignment (its
+     * fftw_malloc'd ones: 0): s itself when it has that alignment, a copy
+     * otherwise. r2c out of place leaves its input as it was, and s is read
+     * in full before re or im (which may alias it) are written. */
+    const double *src = s;
+    if (fftw_alignment_of((double *)(uintptr_t)s) != 0) {
+        memcpy(in, s, n * sizeof in[0]);
+        src = in;
+    }
+    fftw_execute_dft_r2c(plans[n], (double *)(uintptr_t)src, (fftw_complex *)out);
     for (size_t k = 0; k <= h; ++k)
         re[k] = scale * out[2u * k];
     if (im != NULL) {
