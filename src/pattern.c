@@ -184,35 +184,20 @@ static MCS_ALWAYS_INLINE void draw_own_body(own_mode mode, size_t n, size_t k, m
 }
 
 /* One copy of draw_own_body per mode, each with and without points. */
-static MCS_NOINLINE mcs_status draw_own_random(size_t n, size_t k, mcs_rng *rng, size_t *bins,
-                                               double *w, double *points)
-{
-    if (points == NULL)
-        draw_own_body(OWN_RANDOM, n, k, rng, bins, w, NULL);
-    else
-        draw_own_body(OWN_RANDOM, n, k, rng, bins, w, points);
-    return MCS_OK;
-}
-
-static MCS_NOINLINE mcs_status draw_own_pow2(size_t n, size_t k, mcs_rng *rng, size_t *bins,
-                                             double *w, double *points)
-{
-    if (points == NULL)
-        draw_own_body(OWN_POW2, n, k, rng, bins, w, NULL);
-    else
-        draw_own_body(OWN_POW2, n, k, rng, bins, w, points);
-    return MCS_OK;
-}
-
-static MCS_NOINLINE mcs_status draw_own_div(size_t n, size_t k, mcs_rng *rng, size_t *bins,
-                                            double *w, double *points)
-{
-    if (points == NULL)
-        draw_own_body(OWN_DIV, n, k, rng, bins, w, NULL);
-    else
-        draw_own_body(OWN_DIV, n, k, rng, bins, w, points);
-    return MCS_OK;
-}
+#define MCS_DRAW_OWN_(name, mode)                                                           \
+    static MCS_NOINLINE mcs_status name(size_t n, size_t k, mcs_rng *rng, size_t *bins,     \
+                                        double *w, double *points)                          \
+    {                                                                                       \
+        if (points == NULL)                                                                 \
+            draw_own_body(mode, n, k, rng, bins, w, NULL);                                  \
+        else                                                                                \
+            draw_own_body(mode, n, k, rng, bins, w, points);                                \
+        return MCS_OK;                                                                      \
+    }
+MCS_DRAW_OWN_(draw_own_random, OWN_RANDOM)
+MCS_DRAW_OWN_(draw_own_pow2, OWN_POW2)
+MCS_DRAW_OWN_(draw_own_div, OWN_DIV)
+#undef MCS_DRAW_OWN_
 
 /* Each returns MCS_OK, so that mcs_pattern_draw ends in a jump to it. */
 static MCS_ALWAYS_INLINE mcs_status draw_own(const mcs_pattern *pat, mcs_rng *rng, size_t *bins,
