@@ -80,6 +80,25 @@ int mcs_dft_fftw_prepare_(mcs_dft *plan, size_t n)
     return ready;
 }
 
+/* re[k], im[k] = scale times the parts of FFTW's interleaved out[2k],
+ * out[2k + 1], k < count: groups of four with a fixed count, which the
+ * compiler vectorises at -O2 (the loop with a variable count it left scalar:
+ * about 13 instructions a frequency); then the rest. */
+static void split_scaled(size_t count, const double *restrict out, double scale,
+                         double *restrict re, double *restrict im)
+{
+    size_t k = 0;
+    for (; k + 4u <= count; k += 4u)
+        for (size_t i = 0; i < 4u; ++i) {
+            re[k + i] = scale * out[2u * (k + i)];
+            im[k + i] = scale * out[2u * (k + i) + 1u];
+        }
+    for (; k < count; ++k) {
+        re[k] = scale * out[2u * k];
+        im[k] = scale * out[2u * k + 1u];
+    }
+}
+
 void mcs_dft_fftw_half_(mcs_dft *plan, const double *s, double *re, double *im, double scale)
 {
     const size_t n = plan->n, h = n / 2u;
@@ -95,14 +114,14 @@ void mcs_dft_fftw_half_(mcs_dft *plan, const double *s, double *re, double *im, 
         src = in;
     }
     fftw_execute_dft_r2c(plans[n], (double *)(uintptr_t)src, (fftw_complex *)out);
-    for (size_t k = 0; k <= h; ++k)
-        re[k] = scale * out[2u * k];
     if (im != NULL) {
-        for (size_t k = 1; k <= h; ++k)
-            im[k] = scale * out[2u * k + 1u];
+        split_scaled(h + 1u, out, scale, re, im);
         im[0] = 0.0; /* exactly real, as on the KissFFT paths */
         if (n % 2u == 0u)
             im[h] = 0.0;
+    } else {
+        for (size_t k = 0; k <= h; ++k)
+            re[k] = scale * out[2u * k];
     }
 }
 
