@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "dft_internal.h"
+#include "simd.h"
 #include "spectrum_internal.h"
 
 /* The object's own invariants: a set-up accumulator with a working plan, a
@@ -103,7 +104,7 @@ static mcs_status check_sum(size_t k, const double *w)
  * partial sums keep the adds apart). Only a trial that fails is checked
  * again sample by sample, for the status of its first bad sample (a bin out
  * of range, then a weight not finite, then a negative one). */
-static mcs_status check_bins(size_t n, size_t k, const size_t *b, const double *w)
+static int bins_ok(size_t n, size_t k, const size_t *b, const double *w, double *sum)
 {
     size_t bad = 0u, j = 0;
     double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
@@ -121,8 +122,22 @@ static mcs_status check_bins(size_t n, size_t k, const size_t *b, const double *
         bad |= (size_t)(b[j] >= n) | (size_t)(w[j] < 0.0);
         s0 += w[j];
     }
-    const double sum = (s0 + s1) + (s2 + s3);
-    if (bad == 0u && sum <= MCS_SPECTRUM_MAX_SUM)
+    *sum = (s0 + s1) + (s2 + s3);
+    return bad == 0u;
+}
+
+/* The scan by the object's copy (the AVX2 one: spectrum_kernels.c). */
+static mcs_status check_bins(const mcs_spectrum *acc, size_t k, const size_t *b, const double *w)
+{
+    const size_t n = acc->n;
+    double sum;
+#if MCS_AVX2_CLONES
+    const int ok = acc->simd ? mcs_spectrum_bins_ok_avx2_(n, k, b, w, &sum)
+                             : bins_ok(n, k, b, w, &sum);
+#else
+    const int ok = bins_ok(n, k, b, w, &sum);
+#endif
+    if (ok && sum <= MCS_SPECTRUM_MAX_SUM)
         return MCS_OK;
     mcs_status st = mcs_check_sparse_(n, k, b, w);
     return st != MCS_OK ? st : check_sum(k, w);
@@ -153,7 +168,7 @@ static mcs_status check_trial(const mcs_spectrum *acc, const mcs_spectrum_trial_
         inside(acc, mcs_points_addr_(t->points), mcs_points_bytes_(t->points, t->k)) ||
         inside(acc, t->weights, mcs_bytes_(t->k, sizeof t->weights[0])))
         return MCS_ERR_ALIAS;
-    return t->bins != NULL ? check_bins(acc->n, t->k, t->bins, t->weights) : check_points(t);
+    return t->bins != NULL ? check_bins(acc, t->k, t->bins, t->weights) : check_points(t);
 }
 
 /* One checked trial down the path the policy gives it. */

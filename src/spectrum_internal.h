@@ -56,6 +56,13 @@ static inline uint64_t mcs_spectrum_closed_(const mcs_spectrum *acc)
  * fused (one unit of weight 1). */
 void mcs_spectrum_sparse_(mcs_spectrum *acc, const mcs_spectrum_trial_ *t);
 
+/* spectrum.c's scan of a trial's bins and weights for an object with AVX2
+ * (acc->simd): 1 when every bin is below N and no weight is negative, and
+ * in *sum the weights' sum by the same four partial sums, so the same bits.
+ * Only where MCS_AVX2_CLONES (simd.h). */
+int mcs_spectrum_bins_ok_avx2_(size_t n, size_t k, const size_t *b, const double *w,
+                               double *sum);
+
 /* The FFT path for one trial: scatter into acc->s, one DFT, the update,
  * acc->s cleared again (one unit of weight 1). */
 void mcs_spectrum_fft_(mcs_spectrum *acc, const mcs_spectrum_trial_ *t);

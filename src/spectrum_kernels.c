@@ -37,6 +37,32 @@ static unit_factors factors(double w, double w_old)
 #define MCS_SIMD_BODY "spectrum_simd.h"
 #include "simd_clones.h"
 
+#if MCS_AVX2_CLONES
+/* Lanes of a fixed count of four, which the compiler vectorises for AVX2
+ * (64-bit compares; 42 against 123 ns at K = 256). The baseline ISA has no
+ * 64-bit compare: there the scalar scan of spectrum.c is the faster one. */
+MCS_AVX2_BEGIN
+int mcs_spectrum_bins_ok_avx2_(size_t n, size_t k, const size_t *restrict b,
+                               const double *restrict w, double *sum)
+{
+    uint64_t bad[4] = {0u, 0u, 0u, 0u};
+    double s[4] = {0.0, 0.0, 0.0, 0.0};
+    size_t j = 0;
+    for (; j + 4u <= k; j += 4u)
+        for (size_t i = 0; i < 4u; ++i) {
+            bad[i] |= (uint64_t)(b[j + i] >= n) | (uint64_t)(w[j + i] < 0.0);
+            s[i] += w[j + i];
+        }
+    for (; j < k; ++j) {
+        bad[0] |= (uint64_t)(b[j] >= n) | (uint64_t)(w[j] < 0.0);
+        s[0] += w[j];
+    }
+    *sum = (s[0] + s[1]) + (s[2] + s[3]);
+    return (bad[0] | bad[1] | bad[2] | bad[3]) == 0u;
+}
+MCS_AVX2_END
+#endif
+
 /* The update of every stored frequency from acc->re, acc->im (and the power
  * xp, or |S_k|^2 without it), by the object's kernels. */
 static void update_all(mcs_spectrum *acc, const double *xp, unit_factors u)

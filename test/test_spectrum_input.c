@@ -111,6 +111,39 @@ static void test_bad_input_returns_an_error_and_changes_nothing(void)
     EXPECT_UNCHANGED(MCS_ERR_NULL, mcs_spectrum_merge(NULL, &acc));
 }
 
+/* The scan of bins and weights has two copies (spectrum.c's scalar one, an
+ * AVX2 one): a bad sample at any position, in a lane or in the tail, gets
+ * the same status from both and changes nothing; a good trial passes both. */
+static void test_both_scans_find_a_bad_sample_at_every_position(void)
+{
+    static const double bad_w[3] = {NAN, INFINITY, -1.0};
+    static const mcs_status bad_st[3] = {MCS_ERR_NOT_FINITE, MCS_ERR_NOT_FINITE,
+                                         MCS_ERR_NEGATIVE};
+    size_t b[11];
+    double w[11];
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc, 20u));
+    const int copies = acc.simd ? 2 : 1; /* this CPU runs the AVX2 copy too */
+    for (int c = 0; c < copies; ++c)
+        for (size_t pos = 0; pos < 11u; ++pos)
+            for (int bad = 0; bad < 5; ++bad) {
+                init_with(&acc, 20u, MCS_SPECTRUM_PATH_FFT, 0u);
+                acc.simd = c;
+                for (size_t j = 0; j < 11u; ++j) {
+                    b[j] = (j * 7u) % 20u;
+                    w[j] = 0.5 + (double)j;
+                }
+                if (bad < 3)
+                    w[pos] = bad_w[bad];
+                else
+                    b[pos] = bad == 3 ? 20u : SIZE_MAX;
+                EXPECT_UNCHANGED(bad < 3 ? bad_st[bad] : MCS_ERR_BIN_RANGE,
+                                 mcs_spectrum_add_bins(&acc, 11u, b, w));
+                b[pos] = (pos * 7u) % 20u;
+                w[pos] = 0.5 + (double)pos;
+                TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_bins(&acc, 11u, b, w));
+            }
+}
+
 /* Issue 10, item 1: finite weights whose sum overflows in one bin made the
  * FFT path's DFT fail; the add still returned MCS_OK, counted the trial and
  * took the previous trial's spectrum. Item 5: the largest accepted input is
@@ -324,6 +357,7 @@ int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_bad_input_returns_an_error_and_changes_nothing);
+    RUN_TEST(test_both_scans_find_a_bad_sample_at_every_position);
     RUN_TEST(test_a_trial_whose_weights_overflow_is_refused_on_every_path);
     RUN_TEST(test_read_outs_stay_finite_at_the_largest_accepted_input);
     RUN_TEST(test_aliasing_the_accumulator_is_refused);
