@@ -110,11 +110,33 @@ mcs_status mcs_io_load_spectrum(mcs_spectrum *acc, size_t len, const void *buf)
     return mcs_io_load(&kind_spectrum, acc, len, buf);
 }
 
-/* ---- moment: shift[N], then sum_d[N], lo_d[N] and the upper triangles of
- * sum_dd and lo_dd row by row (moment.h: sums of d = s - c, c the first
- * trial, with their Kahan compensations, so a loaded object is the saved one
- * and merges bit for bit like it). c is a trial's s (weights >= 0); the sums
- * of d are 0 before 2 trials. ---- */
+/* ---- moment: batch_count, batch_sparse, shift[N], then sum_d[N], lo_d[N]
+ * and the upper triangles of sum_dd and lo_dd row by row, then the open
+ * batch: batch_s[N], batch_d[N] and batch_w[N][N] whole (moment.h: sums of
+ * d = s - c, c the first trial, with their Kahan compensations, and the open
+ * batch of plain sums, so a loaded object is the saved one and reads out,
+ * merges and adds like it, bit for bit). c is a trial's s (weights >= 0);
+ * the sums of d are 0 before 2 trials. ---- */
+
+enum { MO_BATCH, MO_SPARSE, MO_SHIFT };
+
+/* The moment's own invariants (moment.c, moment_check): a batch below
+ * MCS_MOMENT_BATCH trials and below the count (the first trial is the
+ * shift), its sparse trials among them, and an empty batch (or one without
+ * sparse trials) holding no sums (no batch_s). Values are finite here. */
+static int moment_ok(const io_values *values, uint64_t count)
+{
+    const size_t n = values->size[SZ_N];
+    const double batch = mcs_io_value(values, MO_BATCH);
+    const double sparse = mcs_io_value(values, MO_SPARSE);
+    const size_t open_at = MO_SHIFT + 3u * n + n * (n + 1u); /* batch_s[0] */
+    if (batch >= (double)MCS_MOMENT_BATCH || sparse > batch ||
+        (batch != 0.0 && batch >= (double)count))
+        return 0;
+    if (batch == 0.0)
+        return sp_zero(values, open_at, 2u * n + n * n);
+    return sparse != 0.0 || sp_zero(values, open_at, n);
+}
 
 static mcs_status sizes_moment(const uint64_t *shape, size_t *size)
 {
@@ -133,12 +155,17 @@ static mcs_status init_moment(void *obj, const uint64_t *shape)
 
 static const io_kind kind_moment = {
     MCS_IO_KIND_MOMENT, 1u, sizes_moment, {offsetof(mcs_moment, n)},
-    count_moment, init_moment, offsetof(mcs_moment, count), NULL, 5u,
-    {IO_ARRAY(mcs_moment, shift, SZ_N, IO_RULE_NONNEG),
+    count_moment, init_moment, offsetof(mcs_moment, count), moment_ok, 10u,
+    {IO_COUNT(mcs_moment, batch_count, IO_RULE_SPREAD),
+     IO_COUNT(mcs_moment, batch_sparse, IO_RULE_SPREAD),
+     IO_ARRAY(mcs_moment, shift, SZ_N, IO_RULE_NONNEG),
      IO_ARRAY(mcs_moment, sum_d, SZ_N, IO_RULE_SPREAD),
      IO_ARRAY(mcs_moment, lo_d, SZ_N, IO_RULE_SPREAD),
      IO_UPPER(mcs_moment, sum_dd, SZ_N, IO_RULE_SPREAD),
-     IO_UPPER(mcs_moment, lo_dd, SZ_N, IO_RULE_SPREAD)}};
+     IO_UPPER(mcs_moment, lo_dd, SZ_N, IO_RULE_SPREAD),
+     IO_ARRAY(mcs_moment, batch_s, SZ_N, IO_RULE_M2),
+     IO_ARRAY(mcs_moment, batch_d, SZ_N, IO_RULE_SPREAD),
+     IO_GRID(mcs_moment, batch_w, SZ_N, SZ_N, SZ_N, IO_RULE_SPREAD)}};
 
 mcs_status mcs_io_save_moment(const mcs_moment *acc, size_t cap, void *buf, size_t *len)
 {

@@ -27,11 +27,86 @@ void mcs_readout_dft(const mcs_readout *view, const double *x, size_t freq, doub
     *im = i * scale;
 }
 
+/* first[bin] and second[bin_m * N + bin_n] with a moment accumulator's open
+ * batch added (readout.h): the sums a fold would give, read without writing. */
+static double first_entry(const mcs_readout *view, size_t bin)
+{
+    const double x = view->first[bin];
+    return view->batch_w == NULL ? x
+                                 : x + mcs_batch_first_(view->batch_s, view->batch_d,
+                                                        view->shift, view->batch_sparse, bin);
+}
+
+static double second_entry(const mcs_readout *view, size_t bin_m, size_t bin_n)
+{
+    const double x = view->second[bin_m * view->n + bin_n];
+    return view->batch_w == NULL ? x
+                                 : x + mcs_batch_second_(view->batch_w, view->batch_s,
+                                                         view->shift, view->batch_sparse,
+                                                         view->n, bin_m, bin_n);
+}
+
+/* Eq. 7 of first_entry at one frequency (as mcs_readout_dft). */
+static void first_dft(const mcs_readout *view, size_t freq, double *re, double *im)
+{
+    if (view->batch_w == NULL) {
+        mcs_readout_dft(view, view->first, freq, re, im);
+        return;
+    }
+    const size_t n = view->n;
+    size_t idx = 0;
+    double r = 0.0, i = 0.0;
+    for (size_t t = 0; t < n; ++t) {
+        const double x = first_entry(view, t);
+        r += view->cos_table[idx] * x;
+        i -= view->sin_table[idx] * x;
+        idx += freq;
+        if (idx >= n)
+            idx -= n;
+    }
+    const double scale = 1.0 / sqrt((double)n);
+    *re = r * scale;
+    *im = i * scale;
+}
+
+/* A bound on the rounding an open batch adds to every sum of |second| the
+ * bounds below take, in units of eps: each batch_w entry sums at most
+ * batch_terms products, whose magnitudes sum to at most sqrt(D_m D_n)
+ * (Cauchy-Schwarz, D_m = 2 batch_w[m][m] the sum of the squares), and the
+ * batch's d sums are formed with a few more roundings of |bs_m c_n|
+ * + |c_m bs_n| + B |c_m c_n|. Returned: that bound for the sum over every
+ * (m, n) of g_m h_n times the error of entry (m, n), g and h given as their
+ * O(N) sums sum g_m sqrt(D_m), sum g_m |bs_m|, sum g_m |c_m| (and h's). */
+typedef struct {
+    double root, bs, c;
+} batch_weights;
+
+static batch_weights batch_sums(const mcs_readout *view, const double *g)
+{
+    batch_weights r = {0.0, 0.0, 0.0};
+    for (size_t m = 0; m < view->n; ++m) {
+        const double gm = g != NULL ? fabs(g[m]) : 1.0;
+        r.root += gm * sqrt(2.0 * fabs(view->batch_w[m * view->n + m]));
+        r.bs += gm * fabs(view->batch_s[m]);
+        r.c += gm * fabs(view->shift[m]);
+    }
+    return r;
+}
+
+static double batch_rounding(const mcs_readout *view, const double *g, const double *h)
+{
+    if (view->batch_w == NULL)
+        return 0.0;
+    const batch_weights a = batch_sums(view, g), b = batch_sums(view, h);
+    return (2.0 * view->batch_terms + 8.0) * DBL_EPSILON *
+           (a.root * b.root + a.bs * b.c + a.c * b.bs + view->batch_sparse * a.c * b.c);
+}
+
 /* The transform of first * scale: <S_k> without a shift, <D_k> (d = s - c)
  * with one. */
 static void first_mean_at(const mcs_readout *view, size_t freq, double *re, double *im)
 {
-    mcs_readout_dft(view, view->first, freq, re, im);
+    first_dft(view, freq, re, im);
     *re *= view->scale;
     *im *= view->scale;
 }
@@ -52,7 +127,7 @@ static void mean_at(const mcs_readout *view, size_t freq, double *re, double *im
 /* <s_bin>. */
 static double mean_entry(const mcs_readout *view, size_t bin)
 {
-    const double m = view->first[bin] * view->scale;
+    const double m = first_entry(view, bin) * view->scale;
     return view->shift != NULL ? view->shift[bin] + m : m;
 }
 
@@ -76,12 +151,12 @@ static void second_at(const mcs_readout *view, size_t freq_k, size_t freq_l, dou
     size_t idx_m = 0;
     double r = 0.0, i = 0.0;
     for (size_t m = 0; m < n; ++m) {
-        const double *row = &view->second[m * n];
         double rr = 0.0, ri = 0.0;
         size_t idx = 0;
         for (size_t b = 0; b < n; ++b) {
-            rr += ct[idx] * row[b];
-            ri += st[idx] * row[b];
+            const double x = second_entry(view, m, b);
+            rr += ct[idx] * x;
+            ri += st[idx] * x;
             idx += freq_l;
             if (idx >= n)
                 idx -= n;
@@ -132,13 +207,15 @@ static double variance_rounding(const mcs_readout *view)
 {
     const size_t n = view->n;
     double a = 0.0, b = 0.0;
-    for (size_t j = 0; j < n * n; ++j)
-        a += fabs(view->second[j]);
+    for (size_t m = 0; m < n; ++m)
+        for (size_t c = 0; c < n; ++c)
+            a += fabs(second_entry(view, m, c));
     for (size_t j = 0; j < n; ++j)
-        b += fabs(view->first[j]);
+        b += fabs(first_entry(view, j));
     a *= view->scale;
     b *= view->scale;
-    return 4.0 * ((double)n + 2.0) * DBL_EPSILON * (a + b * b) / (double)n;
+    return 4.0 * ((double)n + 2.0) * DBL_EPSILON * (a + b * b) / (double)n +
+           batch_rounding(view, NULL, NULL) * view->scale / (double)n;
 }
 
 /* A variance is >= 0: a value below 0 within the rounding bound tol is
@@ -161,11 +238,10 @@ double mcs_readout_form(const mcs_readout *view, size_t k, const double *f, cons
     const double sc = view->scale;
     double sum = 0.0;
     for (size_t m = 0; m < n; ++m) {
-        const double *row = &view->second[m * n];
-        const double mean_m = view->first[m] * sc;
+        const double mean_m = first_entry(view, m) * sc;
         double acc = 0.0;
         for (size_t b = 0; b < n; ++b)
-            acc += (row[b] * sc - mean_m * (view->first[b] * sc)) * g[b];
+            acc += (second_entry(view, m, b) * sc - mean_m * (first_entry(view, b) * sc)) * g[b];
         sum += f[m] * acc;
     }
     const double kd = (double)k;
@@ -184,15 +260,16 @@ double mcs_readout_form_bound(const mcs_readout *view, size_t k, const double *f
     const double sc = view->scale;
     double sum = 0.0;
     for (size_t m = 0; m < n; ++m) {
-        const double *row = &view->second[m * n];
-        const double mean_m = fabs(view->first[m] * sc);
+        const double mean_m = fabs(first_entry(view, m) * sc);
         double acc = 0.0;
         for (size_t b = 0; b < n; ++b)
-            acc += (fabs(row[b] * sc) + mean_m * fabs(view->first[b] * sc)) * fabs(g[b]);
+            acc += (fabs(second_entry(view, m, b) * sc) + mean_m * fabs(first_entry(view, b) * sc)) *
+                   fabs(g[b]);
         sum += fabs(f[m]) * acc;
     }
     const double kd = (double)k;
-    return (2.0 * (double)n + 16.0) * DBL_EPSILON * sum / (kd * kd);
+    return ((2.0 * (double)n + 16.0) * DBL_EPSILON * sum + batch_rounding(view, f, g) * sc) /
+           (kd * kd);
 }
 
 double mcs_readout_nonnegative(const mcs_readout *view, double value, double bound)
@@ -204,9 +281,12 @@ double mcs_readout_nonnegative(const mcs_readout *view, double value, double bou
 static double power_bound(const mcs_readout *view)
 {
     double sum = 0.0;
-    for (size_t j = 0; j < view->n * view->n; ++j)
-        sum += fabs(view->second[j] * view->scale);
-    return (2.0 * (double)view->n + 16.0) * DBL_EPSILON * sum / (double)view->n;
+    for (size_t m = 0; m < view->n; ++m)
+        for (size_t c = 0; c < view->n; ++c)
+            sum += fabs(second_entry(view, m, c) * view->scale);
+    return ((2.0 * (double)view->n + 16.0) * DBL_EPSILON * sum +
+            batch_rounding(view, NULL, NULL) * view->scale) /
+           (double)view->n;
 }
 
 /* ---- checked read-outs ---------------------------------------------------- */
@@ -238,10 +318,10 @@ mcs_status mcs_readout_bin_second(const mcs_readout_source *src, size_t bin_m,
     mcs_status st = open_for(out != NULL, src, bin_m, bin_n, MCS_ERR_BIN_RANGE, &v);
     if (st != MCS_OK)
         return st;
-    double x = v.second[bin_m * v.n + bin_n] * v.scale;
+    double x = second_entry(&v, bin_m, bin_n) * v.scale;
     if (v.shift != NULL) /* <s_m s_n> = Cov(d)_mn + <s_m><s_n> */
         x += mean_entry(&v, bin_m) * mean_entry(&v, bin_n) -
-             (v.first[bin_m] * v.scale) * (v.first[bin_n] * v.scale);
+             (first_entry(&v, bin_m) * v.scale) * (first_entry(&v, bin_n) * v.scale);
     return mcs_set_(out, x);
 }
 
@@ -358,12 +438,12 @@ static void chunk_of_g(const mcs_readout *view, size_t l, size_t m0, size_t len,
 {
     const size_t n = view->n;
     for (size_t q = 0; q < len; ++q) {
-        const double *row = &view->second[(m0 + q) * n];
         double ar = 0.0, ai = 0.0;
         size_t idx = 0u;
         for (size_t c = 0; c < n; ++c) {
-            ar += row[c] * view->cos_table[idx];
-            ai += row[c] * view->sin_table[idx];
+            const double x = second_entry(view, m0 + q, c);
+            ar += x * view->cos_table[idx];
+            ai += x * view->sin_table[idx];
             idx += l;
             idx = idx >= n ? idx - n : idx;
         }
@@ -431,11 +511,13 @@ static mcs_status open_matrix(const mcs_readout_source *src, size_t n, const dou
     if (st != MCS_OK)
         return st;
     const size_t nn = n * n * sizeof(double), n1 = n * sizeof(double);
-    const void *in[5] = {view->first, view->second, view->cos_table, view->sin_table,
-                         view->shift};
-    const size_t len[5] = {n1, nn, n1, n1, view->shift != NULL ? n1 : 0u};
+    const int open = view->batch_w != NULL;
+    const void *in[8] = {view->first,   view->second,  view->cos_table, view->sin_table,
+                         view->shift,   view->batch_w, view->batch_s,   view->batch_d};
+    const size_t len[8] = {n1, nn, n1, n1, view->shift != NULL ? n1 : 0u,
+                           open ? nn : 0u, open ? n1 : 0u, open ? n1 : 0u};
     int alias = mcs_overlap_(re, nn, im, nn);
-    for (size_t a = 0; a < 5u; ++a)
+    for (size_t a = 0; a < 8u; ++a)
         alias |= mcs_overlap_(re, nn, in[a], len[a]) || mcs_overlap_(im, nn, in[a], len[a]);
     return alias ? MCS_ERR_ALIAS : MCS_OK;
 }

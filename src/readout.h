@@ -25,7 +25,32 @@ typedef struct {
     const double *cos_table; /* cos(2 pi j / N), j < N */
     const double *sin_table; /* sin(2 pi j / N), j < N */
     const double *shift;   /* [n] c, or NULL: first and second are of s itself */
+    /* The open batch of a moment accumulator, added to first and second at
+     * read-out (mcs_batch_first_, mcs_batch_second_); batch_w NULL: none. */
+    const double *batch_w; /* [n * n] half products */
+    const double *batch_s; /* [n] sum of s over the batch's sparse trials */
+    const double *batch_d; /* [n] sum of d over its dense trials */
+    double batch_sparse;   /* its sparse trials */
+    double batch_terms;    /* most terms any batch_w entry can have summed */
 } mcs_readout;
+
+/* What an open batch adds to the sums of d (moment.h): its dense trials
+ * gave d and half of d d^T directly; its B sparse trials gave s and half of
+ * s s^T, whose d sums are sum s - B c and sum s s^T - (sum s) c^T
+ * - c (sum s)^T + B c c^T. Written so that (m, q) and (q, m) round alike:
+ * the sums stay exactly symmetric. */
+static inline double mcs_batch_first_(const double *bs, const double *bd, const double *c,
+                                      double sparse, size_t m)
+{
+    return bd[m] + (bs[m] - sparse * c[m]);
+}
+
+static inline double mcs_batch_second_(const double *w, const double *bs, const double *c,
+                                       double sparse, size_t n, size_t m, size_t q)
+{
+    return (w[m * n + q] + w[q * n + m]) - (bs[m] * c[q] + c[m] * bs[q]) +
+           sparse * (c[m] * c[q]);
+}
 
 /* Checks obj and fills *view: MCS_ERR_UNINIT, MCS_ERR_EMPTY (no trials yet). */
 typedef mcs_status (*mcs_readout_open)(const void *obj, mcs_readout *view);

@@ -165,8 +165,13 @@ mcs_status mcs_readout_open_theory(const void *obj, mcs_readout *view)
     const mcs_theory *th = (const mcs_theory *)obj;
     if (!theory_is_valid(th))
         return MCS_ERR_UNINIT;
-    *view = (mcs_readout){th->n,      th->k,         1.0,           th->mean_s,
-                          th->second, th->cos_table, th->sin_table, NULL};
+    *view = (mcs_readout){.n = th->n,
+                          .k = th->k,
+                          .scale = 1.0,
+                          .first = th->mean_s,
+                          .second = th->second,
+                          .cos_table = th->cos_table,
+                          .sin_table = th->sin_table};
     return MCS_OK;
 }
 

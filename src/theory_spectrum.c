@@ -176,8 +176,12 @@ static mcs_status check_integrands(int outputs, const mcs_theory_spectrum *ts, s
  * N x N moments, so both give <S_k> to the last bit. */
 static void mean_at(const mcs_theory_spectrum *ts, size_t freq, double *re, double *im)
 {
-    const mcs_readout view = {ts->n,         ts->k,         1.0, ts->mean_s, NULL,
-                              ts->cos_table, ts->sin_table, NULL};
+    const mcs_readout view = {.n = ts->n,
+                              .k = ts->k,
+                              .scale = 1.0,
+                              .first = ts->mean_s,
+                              .cos_table = ts->cos_table,
+                              .sin_table = ts->sin_table};
     mcs_readout_dft(&view, ts->mean_s, freq, re, im);
 }
 

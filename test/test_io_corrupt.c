@@ -155,7 +155,7 @@ static void test_sizes_above_this_builds_capacities_are_refused(void)
         const uint64_t sn = n + d, cn = c + d, p1 = f1 + d, p2 = f2 + d;
         const uint64_t side_x[2] = {s + d, 2u}, side_y[2] = {3u, s + d};
         shape_case(0u, &sn, IO_SPECTRUM_VALUES(sn), range);
-        shape_case(1u, &cn, 3u * cn + cn * (cn + 1u), range);
+        shape_case(1u, &cn, IO_MOMENT_VALUES(cn), range);
         shape_case(2u, &sn, 2u * sn + 2u * (sn / 2u + 1u) + 2u, range);
         shape_case(4u, &p1, 2u * (p1 + 1u), freq);
         shape_case(5u, &p2, 2u * (2u * p2 + 1u) * (p2 + 1u) + 2u * (p2 + 1u), freq);

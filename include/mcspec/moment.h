@@ -7,22 +7,30 @@
  * what a non-stationary pattern (stratified, importance sampled) needs. For
  * the power spectrum alone at any N, see autocorr.h.
  *
- * Accuracy: the sums are of d = s - c, c the s of the first trial added (a
- * fixed shift), with Kahan compensation. Covariances are shift-free, so they
- * are read from the small d sums instead of as <s_m s_n> - <s_m><s_n>, which
- * cancelled: at N = 3, K = 1000 (jitter with importance, s_n ~ 333, power at
- * k = 1 ~ 0.8) the old plain sums drifted from the spectrum accumulator by
- * 4e-3 after 40 000 trials, and kept drifting. Now the error grows neither
- * with K nor with the trial count. A trial costs O(K + N + L^2), L the bins
- * where s differs from c (at most the bins of the trial and of the first).
+ * Accuracy and speed: the closed sums are of d = s - c, c the s of the first
+ * trial added (a fixed shift), with Kahan compensation. Covariances are
+ * shift-free, so they are read from the small d sums instead of as
+ * <s_m s_n> - <s_m><s_n>, which cancelled: at N = 3, K = 1000 (jitter with
+ * importance, s_n ~ 333, power at k = 1 ~ 0.8) plain sums of s s^T drifted
+ * from the spectrum accumulator by 4e-3 after 40 000 trials, and kept
+ * drifting. Trials go first into an open batch of plain sums, folded into the
+ * compensated ones every MCS_MOMENT_BATCH trials, so the error grows neither
+ * with K nor with the trial count, and a trial costs what a plain loop does:
+ *   - a trial of few samples (K (K + 1) / 2 pair products below about N^2 / 8,
+ *     the rule measured by `make bench`) adds w_i w_j for every pair of its
+ *     samples and s: O(K^2), N not involved;
+ *   - a larger one adds d d^T densely, one vectorised row per bin where d is
+ *     not 0: O(N^2) at most, none where s equals c.
+ * Read-outs, merges and records include the open batch: nothing needs
+ * flushing, and a saved and loaded object is the same to the bit.
  *
  * The read-out calls are the same, with the same arguments, as those of the
  * exact moments in theory.h (mcs_theory_*), and run the same code: measured
  * and exact are the same call on two objects.
  *
- * Size: 8 * MCS_MAX_COV_N * (2 MCS_MAX_COV_N + 7) bytes and a header (69 136
- * at the default 64 on x86-64; the compensation doubles the N x N part). It
- * holds no pointers. */
+ * Size: 8 * MCS_MAX_COV_N * (3 MCS_MAX_COV_N + 8) bytes and a header (102 448
+ * at the default 64 on x86-64; the compensation and the open batch each add
+ * an N x N array). It holds no pointers. */
 #ifndef MCSPEC_MOMENT_H
 #define MCSPEC_MOMENT_H
 
@@ -42,19 +50,30 @@ extern "C" {
  * A pattern's trial weighs at most 2^62 (pattern.h). */
 #define MCS_MOMENT_MAX_TRIAL 1.684996666696915e+66
 
+/* Trials in an open batch before it is folded into the compensated sums: a
+ * fold costs O(N^2), a few nanoseconds a trial at N = 64 over this many. */
+#define MCS_MOMENT_BATCH 16384u
+
 typedef struct {
     size_t n;                                      /* N, 1..MCS_MAX_COV_N; 0 before init */
     uint64_t count;                                /* trials added, at most MCS_MAX_COUNT */
+    uint64_t batch_count;                          /* of which in the open batch, below
+                                                      MCS_MOMENT_BATCH (and below count) */
+    uint64_t batch_sparse;                         /* of those, added as products of s */
+    int simd;                                      /* kernels: 0 baseline, 1 AVX2 (set at init) */
     double shift[MCS_MAX_COV_N];                   /* c: s of the first trial (0 before it) */
-    double sum_d[MCS_MAX_COV_N];                   /* sum over trials of d_n = s_n - c_n */
+    double sum_d[MCS_MAX_COV_N];                   /* sum over closed trials of d_n = s_n - c_n */
     double sum_dd[MCS_MAX_COV_N * MCS_MAX_COV_N];  /* sum of d_m d_n at [bin_m * N + bin_n]
                                                       (both triangles, exactly symmetric) */
     double lo_d[MCS_MAX_COV_N];                    /* Kahan compensation of sum_d */
     double lo_dd[MCS_MAX_COV_N * MCS_MAX_COV_N];   /* Kahan compensation of sum_dd */
+    double batch_s[MCS_MAX_COV_N];                 /* open batch: sum of s over its sparse trials */
+    double batch_d[MCS_MAX_COV_N];                 /* sum of d over its dense trials */
+    double batch_w[MCS_MAX_COV_N * MCS_MAX_COV_N]; /* half products: batch_w + batch_w^T is the
+                                                      sum of s s^T (sparse) and d d^T (dense) */
     double cos_table[MCS_MAX_COV_N];               /* cos(2 pi j / N) */
     double sin_table[MCS_MAX_COV_N];               /* sin(2 pi j / N) */
-    double work[MCS_MAX_COV_N];                    /* scratch of one add: the trial's d */
-    size_t work_bins[MCS_MAX_COV_N];               /* scratch: the bins where d != 0 */
+    double work[MCS_MAX_COV_N];                    /* scratch of one add: the trial's s, then d */
 } mcs_moment;
 
 /* Every call below returns MCS_ERR_UNINIT for an object not set up by

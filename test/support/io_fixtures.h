@@ -16,7 +16,9 @@
 
 /* Record sizes by docs/format.md. */
 #define IO_SPECTRUM_BYTES(n) (60u + 40u * ((n) / 2u + 1u) + 24u * (n))
-#define IO_MOMENT_BYTES(n) (44u + 8u * (3u * (n) + (n) * ((n) + 1u)))
+#define IO_MOMENT_BYTES(n) (44u + 8u * (IO_MOMENT_VALUES(n)))
+/* counts, shift, sum_d, lo_d, two upper triangles, batch_s, batch_d, batch_w */
+#define IO_MOMENT_VALUES(n) (2u + 5u * (n) + (n) * ((n) + 1u) + (n) * (n))
 #define IO_AUTOCORR_BYTES(n) (44u + 8u * (2u * (n) + 2u * ((n) / 2u + 1u) + 2u))
 #define IO_WELFORD_BYTES 68u
 #define IO_POINTSET_BYTES(f) (44u + 16u * ((f) + 1u))
