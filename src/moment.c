@@ -137,7 +137,14 @@ static void add_sparse(mcs_moment *acc, size_t k, const size_t *bins, const doub
         double *restrict row = &w[bj * n];
         acc->batch_s[bj] += wj;
         row[bj] += 0.5 * (wj * wj);
-        for (size_t i = j + 1u; i < k; ++i)
+        size_t i = j + 1u;
+        for (; i + 2u <= k; i += 2u) { /* two pairs a step: less loop overhead */
+            const size_t b0 = bins[i], b1 = bins[i + 1u];
+            const double p0 = wj * weights[i], p1 = wj * weights[i + 1u];
+            row[b0] += p0;
+            row[b1] += p1;
+        }
+        if (i < k)
             row[bins[i]] += wj * weights[i];
     }
     acc->batch_sparse += 1u;
