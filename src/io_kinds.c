@@ -122,8 +122,9 @@ enum { MO_BATCH, MO_SPARSE, MO_SHIFT };
 
 /* The moment's own invariants (moment.c, moment_check): a batch below
  * MCS_MOMENT_BATCH trials and below the count (the first trial is the
- * shift), its sparse trials among them, and an empty batch (or one without
- * sparse trials) holding no sums (no batch_s). Values are finite here. */
+ * shift), its sparse trials among them, and no sums without their trials:
+ * none in an empty batch, no batch_s without sparse trials, no batch_d
+ * without dense ones. Values are finite here. */
 static int moment_ok(const io_values *values, uint64_t count)
 {
     const size_t n = values->size[SZ_N];
@@ -135,7 +136,8 @@ static int moment_ok(const io_values *values, uint64_t count)
         return 0;
     if (batch == 0.0)
         return sp_zero(values, open_at, 2u * n + n * n);
-    return sparse != 0.0 || sp_zero(values, open_at, n);
+    return (sparse != 0.0 || sp_zero(values, open_at, n)) &&
+           (sparse != batch || sp_zero(values, open_at + n, n));
 }
 
 static mcs_status sizes_moment(const uint64_t *shape, size_t *size)

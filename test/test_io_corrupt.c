@@ -240,8 +240,19 @@ static void test_broken_invariants_are_refused(void)
     expect_value(0u, len, h0 + 3u * h1 + 1u, 1.0000001 * big, MCS_ERR_INVARIANT);
     expect_value(0u, len, h0 + 5u * h1 + 3u * 14u - 2u, -1.0, MCS_ERR_INVARIANT); /* open_pairs */
     len = save_a(&io_kinds[1], rec);
-    expect_value(1u, len, 2u, -1.0, MCS_ERR_INVARIANT);  /* shift: a trial's s */
-    expect_value(1u, len, 14u + 3u, -2.0, MCS_OK);       /* sum_d: deviations, either sign */
+    /* moment: batch_count, batch_sparse, shift, sum_d, lo_d, two triangles, the batch */
+    const size_t mo_batch = 2u + 3u * 14u + 14u * 15u, mo_w = mo_batch + 2u * 14u;
+    const double open = (double)set_a.mom.batch_count, sparse = (double)set_a.mom.batch_sparse;
+    TEST_ASSERT_TRUE(open == 39.0 && sparse == open); /* every trial but the first, as s */
+    expect_value(1u, len, 2u + 2u, -1.0, MCS_ERR_INVARIANT);  /* shift: a trial's s */
+    expect_value(1u, len, 2u + 14u + 3u, -2.0, MCS_OK);       /* sum_d: deviations, either sign */
+    expect_value(1u, len, 0u, 40.0, MCS_ERR_INVARIANT);       /* the first trial is no batch's */
+    expect_value(1u, len, 0u, 0.0, MCS_ERR_INVARIANT);        /* an empty batch with sums */
+    expect_value(1u, len, 1u, open + 1.0, MCS_ERR_INVARIANT); /* more sparse trials than trials */
+    expect_value(1u, len, 1u, 0.0, MCS_ERR_INVARIANT);        /* sums of s without s trials */
+    expect_value(1u, len, mo_batch + 3u, -1.0, MCS_ERR_INVARIANT); /* batch_s: sums of s */
+    expect_value(1u, len, mo_batch + 14u + 3u, -1.0, MCS_ERR_INVARIANT); /* batch_d: no d trial */
+    expect_value(1u, len, mo_w + 14u * 14u - 2u, -1.0, MCS_OK);    /* batch_w: so are d d^T */
     len = save_a(&io_kinds[2], rec);
     expect_value(2u, len, 2u, -1.0, MCS_ERR_INVARIANT);               /* sum_s */
     expect_value(2u, len, 14u, -1.0, MCS_ERR_INVARIANT);              /* sum_dc */
