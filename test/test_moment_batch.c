@@ -23,11 +23,12 @@ static uint8_t rec[1u << 17], rec2[1u << 17];
 
 /* Trial t of a fixed sequence, as s[N] and (for the sparse form) bins and
  * weights: four shapes in turn, so every kernel sees trials: 3 random
- * samples (pairs of samples), 12 (dense rows of s: fewer bins than d), one
- * sample in each bin (dense rows of d: as many bins as s), and a dense s
- * given whole (rows of d). */
+ * samples (pairs of samples), 16 (past the pairs' rule at N = 16: dense
+ * rows of s, which has fewer bins than d), one sample in each bin (dense
+ * rows of d: as many bins as s), and a dense s given whole (rows of d). */
 typedef struct {
     size_t k;
+    int per_bin; /* one sample in each bin */
     size_t bins[N];
     double weights[N];
     double s[N];
@@ -35,8 +36,9 @@ typedef struct {
 
 static void make_trial(mcs_rng *rng, size_t t, trial *out)
 {
-    static const size_t ks[4] = {3u, 12u, N, 0u};
+    static const size_t ks[4] = {3u, N, N, 0u};
     out->k = ks[t % 4u];
+    out->per_bin = t % 4u >= 2u;
     memset(out->s, 0, sizeof out->s);
     const size_t samples = out->k != 0u ? out->k : N;
     for (size_t j = 0; j < samples; ++j) {
@@ -44,7 +46,7 @@ static void make_trial(mcs_rng *rng, size_t t, trial *out)
         double u = 0.0;
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_rng_bounded(rng, N, &b));
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_rng_double(rng, &u));
-        out->bins[j] = out->k != 0u && out->k != N ? (size_t)b : j; /* one per bin */
+        out->bins[j] = out->per_bin ? j : (size_t)b;
         out->weights[j] = 0.5 + 1.5 * u;
         out->s[out->bins[j]] += out->weights[j];
     }
@@ -103,8 +105,8 @@ static void test_read_outs_see_the_open_batch_before_and_after_it_is_folded(void
         add_trial(&mom, &tr);
         add_reference(&tr);
         if (t > 1u && mom.batch_count == open + 1u) {
-            saw_s |= tr.k == 12u && mom.batch_sparse == sparse + 1u; /* dense rows of s */
-            saw_d |= tr.k == N && mom.batch_sparse == sparse;        /* dense rows of d */
+            saw_s |= tr.k == N && !tr.per_bin && mom.batch_sparse == sparse + 1u; /* rows of s */
+            saw_d |= tr.k == N && tr.per_bin && mom.batch_sparse == sparse;       /* rows of d */
         }
         if (t == 1u) {
             TEST_ASSERT_EQUAL_UINT64(0u, mom.batch_count); /* the first trial is the shift */

@@ -16,9 +16,9 @@
  * drifting. Trials go first into an open batch of plain sums, folded into the
  * compensated ones every MCS_MOMENT_BATCH trials, so the error grows neither
  * with K nor with the trial count, and a trial costs what a plain loop does:
- *   - a trial of few samples (K (K + 1) / 2 pair products below about N^2 / 8,
- *     the rule measured by `make bench`) adds w_i w_j for every pair of its
- *     samples and s: O(K^2), N not involved;
+ *   - a trial of few samples (K (K + 1) / 2 pair products at most
+ *     N^2 / 32 + 7 N, where the two kernels cost the same) adds w_i w_j for
+ *     every pair of its samples and s: O(K^2), N not involved;
  *   - a larger one adds d d^T densely, one vectorised row per bin where d is
  *     not 0: O(N^2) at most, none where s equals c.
  * Read-outs, merges and records include the open batch: nothing needs
