@@ -28,7 +28,7 @@
  * exact moments in theory.h (mcs_theory_*), and run the same code: measured
  * and exact are the same call on two objects.
  *
- * Size: 8 * MCS_MAX_COV_N * (3 MCS_MAX_COV_N + 8) bytes and a header (102 448
+ * Size: 8 * MCS_MAX_COV_N * (3 MCS_MAX_COV_N + 8) bytes and a 40-byte header (102 440
  * at the default 64 on x86-64; the compensation and the open batch each add
  * an N x N array). It holds no pointers. */
 #ifndef MCSPEC_MOMENT_H
