@@ -27,29 +27,34 @@ void mcs_readout_dft(const mcs_readout *view, const double *x, size_t freq, doub
     *im = i * scale;
 }
 
+/* An open batch to add (it comes with a shift: the accumulator's view). */
+static int has_batch(const mcs_readout *view)
+{
+    return view->batch_w != NULL && view->shift != NULL;
+}
+
 /* first[bin] and second[bin_m * N + bin_n] with a moment accumulator's open
  * batch added (readout.h): the sums a fold would give, read without writing. */
 static double first_entry(const mcs_readout *view, size_t bin)
 {
     const double x = view->first[bin];
-    return view->batch_w == NULL ? x
-                                 : x + mcs_batch_first_(view->batch_s, view->batch_d,
-                                                        view->shift, view->batch_sparse, bin);
+    return !has_batch(view) ? x
+                            : x + mcs_batch_first_(view->batch_s, view->batch_d, view->shift,
+                                                   view->batch_sparse, bin);
 }
 
 static double second_entry(const mcs_readout *view, size_t bin_m, size_t bin_n)
 {
     const double x = view->second[bin_m * view->n + bin_n];
-    return view->batch_w == NULL ? x
-                                 : x + mcs_batch_second_(view->batch_w, view->batch_s,
-                                                         view->shift, view->batch_sparse,
-                                                         view->n, bin_m, bin_n);
+    return !has_batch(view) ? x
+                            : x + mcs_batch_second_(view->batch_w, view->batch_s, view->shift,
+                                                    view->batch_sparse, view->n, bin_m, bin_n);
 }
 
 /* Eq. 7 of first_entry at one frequency (as mcs_readout_dft). */
 static void first_dft(const mcs_readout *view, size_t freq, double *re, double *im)
 {
-    if (view->batch_w == NULL) {
+    if (!has_batch(view)) {
         mcs_readout_dft(view, view->first, freq, re, im);
         return;
     }
@@ -95,7 +100,7 @@ static batch_weights batch_sums(const mcs_readout *view, const double *g)
 
 static double batch_rounding(const mcs_readout *view, const double *g, const double *h)
 {
-    if (view->batch_w == NULL)
+    if (!has_batch(view))
         return 0.0;
     const batch_weights a = batch_sums(view, g), b = batch_sums(view, h);
     return (2.0 * view->batch_terms + 8.0) * DBL_EPSILON *
