@@ -13,15 +13,30 @@
  * squares of transforms of N values included, stays finite on any object. */
 #define MCS_STORED_LIMIT_ 3.273390607896142e+150 /* 2^500 */
 
-/* Every x[len] finite and at most MCS_STORED_LIMIT_ in magnitude (NaN fails
- * the compare). */
-static inline int mcs_all_stored_(size_t len, const double *x)
+/* Every x[len] finite and at most limit in magnitude (NaN fails the
+ * compare). */
+static inline int mcs_all_below_(size_t len, const double *x, double limit)
 {
     int ok = 1;
     for (size_t j = 0; j < len; ++j)
-        ok &= fabs(x[j]) <= MCS_STORED_LIMIT_;
+        ok &= fabs(x[j]) <= limit;
     return ok;
 }
+
+/* Every x[len] finite and at most MCS_STORED_LIMIT_ in magnitude. */
+static inline int mcs_all_stored_(size_t len, const double *x)
+{
+    return mcs_all_below_(len, x, MCS_STORED_LIMIT_);
+}
+
+/* The moment accumulator's values of one trial or one batch (moment.h), and
+ * the limits its read-outs and records hold them to: a trial's s and the
+ * shift are below 2^220 (MCS_MOMENT_MAX_TRIAL), a batch's sums of s and of d
+ * below 2^14 of them, its half products below 2^14 * 2^440. Within these,
+ * what a batch adds at read-out (up to 2^14 c_m c_n) stays far below
+ * MCS_STORED_LIMIT_, so every read-out stays finite as for the other sums. */
+#define MCS_MOMENT_LIMIT_S_ 1.7668470647783843e+72  /* 2^240: shift, batch_s, batch_d */
+#define MCS_MOMENT_LIMIT_W_ 2.977131414714806e+138  /* 2^460: batch_w */
 
 /* The checks every add shares once the object and the trial are valid: the
  * trial's total weight at most max_total (MAGNITUDE), the count (COUNT), and

@@ -7,6 +7,7 @@
  * field table and the two public wrappers, as below; the framing, checksum
  * and value checks of io.c need no change, nor does the version. */
 #include "io_internal.h"
+#include "acc_internal.h"
 
 #include <math.h>
 
@@ -124,7 +125,8 @@ enum { MO_BATCH, MO_SPARSE, MO_SHIFT };
  * MCS_MOMENT_BATCH trials and below the count (the first trial is the
  * shift), its sparse trials among them, and no sums without their trials:
  * none in an empty batch, no batch_s without sparse trials, no batch_d
- * without dense ones. Values are finite here. */
+ * without dense ones, and the shift and batch within the limits of
+ * acc_internal.h. Values are finite here. */
 static int moment_ok(const io_values *values, uint64_t count)
 {
     const size_t n = values->size[SZ_N];
@@ -134,6 +136,15 @@ static int moment_ok(const io_values *values, uint64_t count)
     if (batch >= (double)MCS_MOMENT_BATCH || sparse > batch ||
         (batch != 0.0 && batch >= (double)count))
         return 0;
+    /* the limits the read-outs hold these values to (acc_internal.h) */
+    for (size_t i = 0; i < n; ++i)
+        if (!(fabs(mcs_io_value(values, MO_SHIFT + i)) <= MCS_MOMENT_LIMIT_S_) ||
+            !(fabs(mcs_io_value(values, open_at + i)) <= MCS_MOMENT_LIMIT_S_) ||
+            !(fabs(mcs_io_value(values, open_at + n + i)) <= MCS_MOMENT_LIMIT_S_))
+            return 0;
+    for (size_t i = 0; i < n * n; ++i)
+        if (!(fabs(mcs_io_value(values, open_at + 2u * n + i)) <= MCS_MOMENT_LIMIT_W_))
+            return 0;
     if (batch == 0.0)
         return sp_zero(values, open_at, 2u * n + n * n);
     return (sparse != 0.0 || sp_zero(values, open_at, n)) &&

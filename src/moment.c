@@ -286,9 +286,11 @@ mcs_status mcs_readout_open_moment(const void *obj, mcs_readout *view)
     if (acc->count == 0u)
         return MCS_ERR_EMPTY;
     const size_t n = acc->n;
-    if (!mcs_all_stored_(n, acc->shift) || !mcs_all_stored_(n, acc->sum_d) ||
-        !mcs_all_stored_(n * n, acc->sum_dd) || !mcs_all_stored_(n, acc->batch_s) ||
-        !mcs_all_stored_(n, acc->batch_d) || !mcs_all_stored_(n * n, acc->batch_w))
+    if (!mcs_all_below_(n, acc->shift, MCS_MOMENT_LIMIT_S_) || !mcs_all_stored_(n, acc->sum_d) ||
+        !mcs_all_stored_(n * n, acc->sum_dd) ||
+        !mcs_all_below_(n, acc->batch_s, MCS_MOMENT_LIMIT_S_) ||
+        !mcs_all_below_(n, acc->batch_d, MCS_MOMENT_LIMIT_S_) ||
+        !mcs_all_below_(n * n, acc->batch_w, MCS_MOMENT_LIMIT_W_))
         return MCS_ERR_INVARIANT;
     /* k = 0: the accumulator does not know K, the caller names it */
     *view = (mcs_readout){.n = n,

@@ -253,6 +253,9 @@ static void test_broken_invariants_are_refused(void)
     expect_value(1u, len, mo_batch + 3u, -1.0, MCS_ERR_INVARIANT); /* batch_s: sums of s */
     expect_value(1u, len, mo_batch + 14u + 3u, -1.0, MCS_ERR_INVARIANT); /* batch_d: no d trial */
     expect_value(1u, len, mo_w + 14u * 14u - 2u, -1.0, MCS_OK);    /* batch_w: so are d d^T */
+    expect_value(1u, len, mo_w + 5u, 0x1p461, MCS_ERR_INVARIANT);   /* beyond 2^14 trials' */
+    expect_value(1u, len, mo_batch + 1u, 0x1p241, MCS_ERR_INVARIANT);
+    expect_value(1u, len, 2u + 5u, 0x1p241, MCS_ERR_INVARIANT);     /* a shift no trial gives */
     len = save_a(&io_kinds[2], rec);
     expect_value(2u, len, 2u, -1.0, MCS_ERR_INVARIANT);               /* sum_s */
     expect_value(2u, len, 14u, -1.0, MCS_ERR_INVARIANT);              /* sum_dc */

@@ -181,7 +181,7 @@ static void test_a_corrupted_batch_is_refused_and_nothing_changes(void)
         make_trial(&rng, t, &tr);
         add_trial(&mom, &tr);
     }
-    for (int c = 0; c < 6; ++c) {
+    for (int c = 0; c < 8; ++c) {
         memcpy(&mom2, &mom, sizeof mom2);
         switch (c) {
         case 0: mom2.batch_count = mom2.count; break; /* the first trial is no batch's */
@@ -189,7 +189,9 @@ static void test_a_corrupted_batch_is_refused_and_nothing_changes(void)
         case 2: mom2.batch_sparse = mom2.batch_count + 1u; break;
         case 3: mom2.simd = 2; break;
         case 4: mom2.batch_w[3u * N + 5u] = NAN; break;
-        default: mom2.batch_s[1] = INFINITY; break;
+        case 5: mom2.batch_s[1] = INFINITY; break;
+        case 6: mom2.batch_w[7] = 0x1p461; break; /* no 2^14 trials of 2^220 give it */
+        default: mom2.shift[2] = 0x1p241; break;   /* no trial gives it */
         }
         memcpy(&mom3, &mom2, sizeof mom3);
         double v = 7.0;
