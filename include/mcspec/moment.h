@@ -136,9 +136,15 @@ mcs_status mcs_moment_cross(const mcs_moment *acc, size_t freq_k, size_t freq_l,
 /* Cov(S_k, S_l) = <S_k S_l*> - <S_k><S_l>*. O(N^2). MCS_ERR_FREQ_RANGE.
  * On the diagonal (k = l, a variance) it is never negative: a value below 0
  * by no more than the read-out's rounding bound, 4 (N + 2) eps times
- * ((1/N) sum |Cov(d)_mn| + (sum |<d_n>|)^2 / N), is returned as 0; one below
+ * ((1/N) sum |<d_m d_n>| + (sum |<d_n>|)^2 / N), is returned as 0; one below
  * that is not rounding, and the object is refused (MCS_ERR_INVARIANT): its
- * sums are those of no data (overwritten, or a crafted record). */
+ * sums are those of no data (overwritten, or a crafted record). An open
+ * batch of B trials, B_s of them sparse, adds the bound of its plain sums,
+ * (2 B T + 8) eps / (N T_all) times ((sum_m sqrt(D_m))^2 + 2 (sum |bs_m|)
+ * (sum |c_m|) + B_s (sum |c_m|)^2): T the most pair products a sparse trial
+ * has (N^2 / 32 + 7 N), T_all the trials added, D_m the batch's sum of
+ * squares at bin m (Cauchy-Schwarz bounds every product sum by them), bs its
+ * sum of s. */
 mcs_status mcs_moment_covariance(const mcs_moment *acc, size_t freq_k, size_t freq_l,
                                  double *re, double *im);
 
