@@ -169,6 +169,28 @@ static void test_merges_and_records_include_the_open_batch(void)
     }
 }
 
+/* The dense rows have a baseline and an AVX2 copy (on x86-64), picked at
+ * init: the same trials through either give the same bits. Where the CPU
+ * has no AVX2 both objects run the baseline copy. */
+static void test_both_copies_of_the_row_kernel_give_the_same_bits(void)
+{
+    mcs_rng rng;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_rng_seed(&rng, 8u, 1u));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_init(&mom, N));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_init(&mom2, N));
+    mom2.simd = 0;
+    for (size_t t = 0; t < 200u; ++t) {
+        trial tr;
+        make_trial(&rng, t, &tr);
+        add_trial(&mom, &tr);
+        add_trial(&mom2, &tr);
+    }
+    TEST_ASSERT_TRUE(mom.batch_count == 199u && mom.batch_sparse > 0u);
+    TEST_ASSERT_EQUAL_MEMORY(mom.batch_w, mom2.batch_w, sizeof mom.batch_w);
+    TEST_ASSERT_EQUAL_MEMORY(mom.batch_s, mom2.batch_s, sizeof mom.batch_s);
+    TEST_ASSERT_EQUAL_MEMORY(mom.batch_d, mom2.batch_d, sizeof mom.batch_d);
+}
+
 /* A batch whose counts or values no trials give is refused by adds, merges
  * and read-outs alike, with nothing written. */
 static void test_a_corrupted_batch_is_refused_and_nothing_changes(void)
@@ -215,6 +237,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_read_outs_see_the_open_batch_before_and_after_it_is_folded);
     RUN_TEST(test_merges_and_records_include_the_open_batch);
+    RUN_TEST(test_both_copies_of_the_row_kernel_give_the_same_bits);
     RUN_TEST(test_a_corrupted_batch_is_refused_and_nothing_changes);
     return UNITY_END();
 }
