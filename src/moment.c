@@ -23,8 +23,8 @@ static mcs_status moment_check(const mcs_moment *acc)
 {
     mcs_status st = mcs_check_object_(acc, acc != NULL ? acc->n : 0u, (size_t)MCS_MAX_COV_N);
     if (st == MCS_OK &&
-        (acc->count > (uint64_t)MCS_MAX_COUNT || (acc->simd != 0 && acc->simd != 1) || acc->batch_count >= (uint64_t)MCS_MOMENT_BATCH ||
-         acc->batch_sparse > acc->batch_count ||
+        (acc->count > (uint64_t)MCS_MAX_COUNT || (acc->simd != 0 && acc->simd != 1) ||
+         acc->batch_count >= (uint64_t)MCS_MOMENT_BATCH || acc->batch_sparse > acc->batch_count ||
          (acc->batch_count != 0u && acc->batch_count >= acc->count)))
         st = MCS_ERR_INVARIANT;
     return st;
