@@ -174,16 +174,59 @@ static uint64_t *count_of(int type, void *o)
     }
 }
 
+/* The arrays of an object whose first N (or N^2) values its calls read: a
+ * double picked anywhere in the body of a large object seldom lands among
+ * them, so corruption picks one of these as often. Types not listed have no
+ * such arrays (or keep them behind their plans). */
+typedef struct {
+    size_t offset;
+    int square; /* N x N */
+} live_array;
+
+static const live_array live_mom[] = {
+    {offsetof(mcs_moment, shift), 0},   {offsetof(mcs_moment, sum_d), 0},
+    {offsetof(mcs_moment, sum_dd), 1},  {offsetof(mcs_moment, batch_s), 0},
+    {offsetof(mcs_moment, batch_d), 0}, {offsetof(mcs_moment, batch_w), 1}};
+static const live_array live_th[] = {{offsetof(mcs_theory, mean_s), 0},
+                                     {offsetof(mcs_theory, second), 1}};
+static const live_array live_ts[] = {
+    {offsetof(mcs_theory_spectrum, mean_s), 0}, {offsetof(mcs_theory_spectrum, edge), 0},
+    {offsetof(mcs_theory_spectrum, length), 0}, {offsetof(mcs_theory_spectrum, inv_p), 0}};
+
+/* One double among the values in use of o (type MOM, TH or TS) set to v;
+ * nothing for other types or an object whose N is out of range. */
+static void corrupt_live(int type, unsigned char *o, size_t at, double v)
+{
+    const live_array *list = NULL;
+    size_t len = 0u, n = 0u, cap = (size_t)MCS_MAX_COV_N;
+    switch (type) {
+    case MOM: list = live_mom, len = 6u, n = ((mcs_moment *)(void *)o)->n; break;
+    case TH: list = live_th, len = 2u, n = ((mcs_theory *)(void *)o)->n; break;
+    case TS:
+        list = live_ts, len = 4u, n = ((mcs_theory_spectrum *)(void *)o)->n;
+        cap = (size_t)MCS_MAX_N;
+        break;
+    default: return;
+    }
+    if (n == 0u || n > cap)
+        return;
+    const live_array *a = &list[at % len];
+    const size_t count = a->square ? n * n : n;
+    memcpy(o + a->offset + ((at / len) % count) * sizeof v, &v, sizeof v);
+}
+
 /* Corruption: zeroed, 0xFF, a flipped byte in the first 64 (the header:
- * sizes, counts, kinds, paths), or one double of the body set to a special
- * value. The pattern's importance pointer and the plans' KissFFT state are
- * left alone: no C library can validate a wild pointer or a foreign struct. */
+ * sizes, counts, kinds, paths), one double of the body or one of the values
+ * in use set to a special value. The pattern's importance pointer and the
+ * plans' KissFFT state are left alone: no C library can validate a wild
+ * pointer or a foreign struct. */
 static void corrupt(void)
 {
     int type = (int)(byte() % NTYPES);
     unsigned char *o = obj(type, byte());
     size_t bytes = obj_size[type], at = (size_t)word(2);
-    switch (byte() % 4u) {
+    switch (byte() % 5u) {
+    case 4: corrupt_live(type, o, at, dbl()); break;
     case 0: memset(o, 0, bytes); break;
     case 1: memset(o, 0xFF, bytes); break;
     case 2:
