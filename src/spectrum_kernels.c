@@ -94,6 +94,27 @@ static void update_trial(mcs_spectrum *acc)
     acc->units += 1u;
 }
 
+/* One per-trial unit from acc->s by the FFTW back end: its interleaved
+ * output goes straight into the update, which scales it (no split of S_k
+ * into acc->re, acc->im and no second pass over them: the fixed cost that
+ * decides small N). The same bits as mcs_dft_half_ then update_trial. */
+static void update_fftw(mcs_spectrum *acc)
+{
+    _Static_assert(BLOCK <= MCS_DFT_FFTW_PAD + 1, "a block's pad fits the FFTW window");
+    const size_t blocks = mcs_spectrum_blocks_(acc->n);
+    const double *o = mcs_dft_fftw_out_(&acc->plan, acc->s, blocks * BLOCK);
+    const double scale = 1.0 / sqrt((double)acc->n); /* eq. 7, as mcs_dft_half_ */
+    const unit_factors u = factors(1.0, (double)mcs_spectrum_closed_(acc));
+#if MCS_AVX2_CLONES
+    if (acc->simd)
+        update_interleaved_avx2(acc, blocks, o, scale, u);
+    else
+#endif
+        update_interleaved_generic(acc, blocks, o, scale, u);
+    acc->count += 1u;
+    acc->units += 1u;
+}
+
 /* ---------------------------------------------------------------- SPARSE */
 
 void mcs_spectrum_sparse_(mcs_spectrum *acc, const mcs_spectrum_trial_ *t)
@@ -191,8 +212,12 @@ void mcs_spectrum_fft_(mcs_spectrum *acc, const mcs_spectrum_trial_ *t)
             acc->s[t->bins[j]] += t->weights[j];
     else
         scatter_points(acc, t, 0);
-    mcs_dft_half_(&acc->plan, acc->s, acc->re, acc->im);
-    update_trial(acc);
+    if (acc->plan.path == MCS_DFT_PATH_FFTW)
+        update_fftw(acc);
+    else {
+        mcs_dft_half_(&acc->plan, acc->s, acc->re, acc->im);
+        update_trial(acc);
+    }
     /* s is 0 again: the touched bins only, or all of it when that is fewer
      * stores */
     if (t->k >= acc->n / 4u)

@@ -44,6 +44,34 @@ static inline void KERNEL(update_block)(mcs_spectrum *acc, size_t q0, const doub
     KERNEL(update_lanes)(acc, q0, xr, xi, xp, u);
 }
 
+/* One trial's update from an r2c output o of interleaved (re, im), not yet
+ * scaled (the FFTW back end's, mcs_dft_fftw_out_), whole blocks, pad
+ * entries 0: x = scale o, the values and operations of the split (re =
+ * scale out[2k], im = scale out[2k + 1]) and update_block, in one pass that
+ * stores no S_k. A leaf, as update_range. */
+MCS_NOINLINE static void KERNEL(update_interleaved)(mcs_spectrum *acc, size_t blocks,
+                                                    const double *restrict o, double scale,
+                                                    unit_factors u)
+{
+    for (size_t b = 0; b < blocks; ++b) {
+        const size_t q0 = b * BLOCK;
+        const double *restrict ob = o + 2u * q0;
+        double *restrict mr = acc->mean_re + q0, *restrict mi = acc->mean_im + q0;
+        double *restrict mp = acc->mean_pow + q0;
+        double *restrict m2s = acc->m2_s + q0, *restrict m2p = acc->m2_pow + q0;
+        for (size_t r = 0; r < BLOCK; ++r) {
+            const double xr = scale * ob[2u * r], xi = scale * ob[2u * r + 1u];
+            const double xp = xr * xr + xi * xi;
+            const double dr = xr - mr[r], di = xi - mi[r], dp = xp - mp[r];
+            mr[r] += u.f * dr;
+            mi[r] += u.f * di;
+            mp[r] += u.f * dp;
+            m2s[r] += u.g * (dr * dr + di * di);
+            m2p[r] += u.g * (dp * dp);
+        }
+    }
+}
+
 /* Blocks [b0, b1) from acc->re, acc->im (x = re + i im) and power xp, or
  * |x|^2 without xp. A leaf: no vector value lives across a call. */
 MCS_NOINLINE static void KERNEL(update_range)(mcs_spectrum *acc, size_t b0, size_t b1,
