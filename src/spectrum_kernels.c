@@ -203,13 +203,30 @@ static void scatter_bins(double *restrict s, size_t k, const size_t *restrict bi
     s[cur] = sum;
 }
 
+/* s_n += w_j over the trial's (bin, weight) pairs in index order, where a
+ * bin seldom comes twice in a row (no test for it). Four samples a pass, in
+ * order (a repeated bin reads the store before it), with s in a register:
+ * 5 instead of 8 instructions a sample. */
+static void scatter_apart(double *restrict s, size_t k, const size_t *restrict bins,
+                          const double *restrict w)
+{
+    size_t j = 0;
+    for (; j + 4u <= k; j += 4u) {
+        s[bins[j]] += w[j];
+        s[bins[j + 1u]] += w[j + 1u];
+        s[bins[j + 2u]] += w[j + 2u];
+        s[bins[j + 3u]] += w[j + 3u];
+    }
+    for (; j < k; ++j)
+        s[bins[j]] += w[j];
+}
+
 void mcs_spectrum_fft_(mcs_spectrum *acc, const mcs_spectrum_trial_ *t)
 {
     if (t->bins != NULL && t->k > acc->n) /* weights given with bins, in runs */
         scatter_bins(acc->s, t->k, t->bins, t->weights);
-    else if (t->bins != NULL) /* a bin seldom twice in a row: no test for it */
-        for (size_t j = 0; j < t->k; ++j)
-            acc->s[t->bins[j]] += t->weights[j];
+    else if (t->bins != NULL)
+        scatter_apart(acc->s, t->k, t->bins, t->weights);
     else
         scatter_points(acc, t, 0);
     if (acc->plan.path == MCS_DFT_PATH_FFTW)
