@@ -40,25 +40,36 @@ static unit_factors factors(double w, double w_old)
 #if MCS_AVX2_CLONES
 /* Lanes of a fixed count of four, which the compiler vectorises for AVX2
  * (64-bit compares; 42 against 123 ns at K = 256). The baseline ISA has no
- * 64-bit compare: there the scalar scan of spectrum.c is the faster one. */
+ * 64-bit compare: there the scalar scan of spectrum.c is the faster one.
+ * Lane i keeps an all-ones mask while its bins are below N and its weights
+ * >= 0 (NaN fails that, as the sum would), which needs no conversion to 0
+ * or 1 (2.4 instead of 3.5 instructions a sample), and sums w[j + i] in
+ * index order: the four sums are those of spectrum.c's scan. */
+static MCS_ALWAYS_INLINE void scan_group(size_t n, const size_t *restrict b,
+                                         const double *restrict w, uint64_t *restrict ok,
+                                         double *restrict s)
+{
+    for (size_t i = 0; i < 4u; ++i) {
+        ok[i] &= (uint64_t)0 - (uint64_t)((b[i] < n) & (w[i] >= 0.0));
+        s[i] += w[i];
+    }
+}
+
 MCS_AVX2_BEGIN
 int mcs_spectrum_bins_ok_avx2_(size_t n, size_t k, const size_t *restrict b,
                                const double *restrict w, double *sum)
 {
-    uint64_t bad[4] = {0u, 0u, 0u, 0u};
+    uint64_t ok[4] = {UINT64_MAX, UINT64_MAX, UINT64_MAX, UINT64_MAX};
     double s[4] = {0.0, 0.0, 0.0, 0.0};
     size_t j = 0;
     for (; j + 4u <= k; j += 4u)
-        for (size_t i = 0; i < 4u; ++i) {
-            bad[i] |= (uint64_t)(b[j + i] >= n) | (uint64_t)(w[j + i] < 0.0);
-            s[i] += w[j + i];
-        }
+        scan_group(n, b + j, w + j, ok, s);
     for (; j < k; ++j) {
-        bad[0] |= (uint64_t)(b[j] >= n) | (uint64_t)(w[j] < 0.0);
+        ok[0] &= (uint64_t)0 - (uint64_t)((b[j] < n) & (w[j] >= 0.0));
         s[0] += w[j];
     }
     *sum = (s[0] + s[1]) + (s[2] + s[3]);
-    return (bad[0] | bad[1] | bad[2] | bad[3]) == 0u;
+    return (ok[0] & ok[1] & ok[2] & ok[3]) == UINT64_MAX;
 }
 MCS_AVX2_END
 #endif
