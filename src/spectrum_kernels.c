@@ -111,17 +111,19 @@ static void update_trial(mcs_spectrum *acc)
  * decides small N). The same bits as mcs_dft_half_ then update_trial. */
 static void update_fftw(mcs_spectrum *acc)
 {
-    _Static_assert(BLOCK <= MCS_DFT_FFTW_PAD + 1, "a block's pad fits the FFTW window");
-    const size_t blocks = mcs_spectrum_blocks_(acc->n);
-    const double *o = mcs_dft_fftw_out_(&acc->plan, acc->s, blocks * BLOCK);
+    /* frequencies 0..N/2 in whole groups, inside the stored ones */
+    const size_t count = (acc->n / 2u + MCS_UPDATE_GROUP_) / MCS_UPDATE_GROUP_ * MCS_UPDATE_GROUP_;
+    _Static_assert(MCS_UPDATE_GROUP_ <= MCS_DFT_FFTW_PAD + 1u, "a group's pad fits FFTW's window");
+    _Static_assert(BLOCK % MCS_UPDATE_GROUP_ == 0, "groups tile the stored frequencies");
+    const double *o = mcs_dft_fftw_out_(&acc->plan, acc->s, count);
     const double scale = 1.0 / sqrt((double)acc->n); /* eq. 7, as mcs_dft_half_ */
     const unit_factors u = factors(1.0, (double)mcs_spectrum_closed_(acc));
 #if MCS_AVX2_CLONES
     if (acc->simd)
-        update_interleaved_avx2(acc, blocks, o, scale, u);
+        update_interleaved_avx2(acc, count, o, scale, u);
     else
 #endif
-        update_interleaved_generic(acc, blocks, o, scale, u);
+        update_interleaved_generic(acc, count, o, scale, u);
     acc->count += 1u;
     acc->units += 1u;
 }
