@@ -175,14 +175,6 @@ int mcs_dft_fftw_is_ready_(size_t n)
     return 0;
 }
 
-const double *mcs_dft_fftw_out_(mcs_dft *plan, const double *s, size_t count)
-{
-    (void)plan;
-    (void)s;
-    (void)count;
-    return NULL;
-}
-
 const char *mcs_dft_fftw_name_(void)
 {
     return "kissfft";

@@ -57,7 +57,7 @@ const char *mcs_dft_fftw_name_(void);
  * Im of k = 0 and N/2 exactly 0, entries k > N/2 zero. For a caller that
  * scales and splits in its own pass over the values (the spectrum FFT path:
  * its update reads them once). Points into plan->work, valid until the next
- * transform with plan. NULL in the default build. */
+ * transform with plan. FFTW builds (MCS_DFT_FFTW) only. */
 const double *mcs_dft_fftw_out_(mcs_dft *plan, const double *s, size_t count);
 
 #endif /* MCSPEC_DFT_INTERNAL_H */

@@ -105,6 +105,7 @@ static void update_trial(mcs_spectrum *acc)
     acc->units += 1u;
 }
 
+#if defined(MCS_DFT_FFTW) /* the FFTW back end (make FFT=fftw) only */
 /* One per-trial unit from acc->s by the FFTW back end: its interleaved
  * output goes straight into the update, which scales it (no split of S_k
  * into acc->re, acc->im and no second pass over them: the fixed cost that
@@ -127,6 +128,7 @@ static void update_fftw(mcs_spectrum *acc)
     acc->count += 1u;
     acc->units += 1u;
 }
+#endif
 
 /* ---------------------------------------------------------------- SPARSE */
 
@@ -239,9 +241,12 @@ void mcs_spectrum_fft_(mcs_spectrum *acc, const mcs_spectrum_trial_ *t)
         scatter_apart(acc->s, t->k, t->bins, t->weights);
     else
         scatter_points(acc, t, 0);
+#if defined(MCS_DFT_FFTW)
     if (acc->plan.path == MCS_DFT_PATH_FFTW)
         update_fftw(acc);
-    else {
+    else
+#endif
+    {
         mcs_dft_half_(&acc->plan, acc->s, acc->re, acc->im);
         update_trial(acc);
     }

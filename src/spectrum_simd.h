@@ -44,6 +44,7 @@ static inline void KERNEL(update_block)(mcs_spectrum *acc, size_t q0, const doub
     KERNEL(update_lanes)(acc, q0, xr, xi, xp, u);
 }
 
+#if defined(MCS_DFT_FFTW) /* the FFTW back end only: spectrum_kernels.c's update_fftw */
 /* Lanes of the FFT path's update from FFTW's output (update_interleaved): a
  * group of four is one AVX2 vector, and a group, not a block of eight, is
  * the unit of the pad (N = 64: 9 groups for the 33 frequencies, 10 in
@@ -77,6 +78,7 @@ MCS_NOINLINE static void KERNEL(update_interleaved)(mcs_spectrum *acc, size_t co
         }
     }
 }
+#endif
 
 /* Blocks [b0, b1) from acc->re, acc->im (x = re + i im) and power xp, or
  * |x|^2 without xp. A leaf: no vector value lives across a call. */
