@@ -33,7 +33,8 @@ static void lock_init(void)
 }
 
 /* The window: in[n] from the first 64-byte boundary of plan->work, the
- * n/2 + 1 complex outputs from the next one after it. */
+ * n/2 + 1 complex outputs and MCS_DFT_FFTW_PAD more (zeros for a caller's
+ * whole blocks, mcs_dft_fftw_out_) from the next one after it. */
 static double *aligned(double *p)
 {
     const uintptr_t a = (uintptr_t)p, mis = a % 64u;
@@ -43,7 +44,7 @@ static double *aligned(double *p)
 /* Doubles of the window: in, then out, each after up to 7 pad doubles. */
 static size_t window_doubles(size_t n)
 {
-    return (n + 7u) + (2u * (n / 2u + 1u) + 7u);
+    return (n + 7u) + (2u * (n / 2u + 1u + MCS_DFT_FFTW_PAD) + 7u);
 }
 
 int mcs_dft_fftw_is_ready_(size_t n)
@@ -99,9 +100,10 @@ static void split_scaled(size_t count, const double *restrict out, double scale,
     }
 }
 
-void mcs_dft_fftw_half_(mcs_dft *plan, const double *s, double *re, double *im, double scale)
+/* The r2c of s into the output window; returns the window. */
+static double *transform(mcs_dft *plan, const double *s)
 {
-    const size_t n = plan->n, h = n / 2u;
+    const size_t n = plan->n;
     double *in = aligned(plan->work);
     double *out = aligned(in + n);
     /* FFTW runs a plan on other arrays of the planned arrays' alignment (its
@@ -114,6 +116,25 @@ void mcs_dft_fftw_half_(mcs_dft *plan, const double *s, double *re, double *im, 
         src = in;
     }
     fftw_execute_dft_r2c(plans[n], (double *)(uintptr_t)src, (fftw_complex *)out);
+    return out;
+}
+
+const double *mcs_dft_fftw_out_(mcs_dft *plan, const double *s, size_t count)
+{
+    const size_t n = plan->n, h = n / 2u;
+    double *out = transform(plan, s);
+    out[1] = 0.0; /* exactly real, as on the KissFFT paths */
+    if (n % 2u == 0u)
+        out[2u * h + 1u] = 0.0;
+    for (size_t k = h + 1u; k < count; ++k)
+        out[2u * k] = out[2u * k + 1u] = 0.0;
+    return out;
+}
+
+void mcs_dft_fftw_half_(mcs_dft *plan, const double *s, double *re, double *im, double scale)
+{
+    const size_t n = plan->n, h = n / 2u;
+    const double *out = transform(plan, s);
     if (im != NULL) {
         split_scaled(h + 1u, out, scale, re, im);
         im[0] = 0.0; /* exactly real, as on the KissFFT paths */

@@ -48,4 +48,16 @@ void mcs_dft_fftw_half_(mcs_dft *plan, const double *s, double *re, double *im, 
 int mcs_dft_fftw_is_ready_(size_t n); /* 1 if a plan for n was made in this process */
 const char *mcs_dft_fftw_name_(void);
 
+/* Complex entries past N/2 that mcs_dft_fftw_out_ can zero. */
+#define MCS_DFT_FFTW_PAD 8u
+
+/* The FFTW back end's r2c of s (plan->path MCS_DFT_PATH_FFTW; preconditions
+ * as mcs_dft_half_) without the scale or the split: sqrt(N) S_k of eq. 7 as
+ * interleaved (re, im) for k < count, count <= N/2 + 1 + MCS_DFT_FFTW_PAD,
+ * Im of k = 0 and N/2 exactly 0, entries k > N/2 zero. For a caller that
+ * scales and splits in its own pass over the values (the spectrum FFT path:
+ * its update reads them once). Points into plan->work, valid until the next
+ * transform with plan. FFTW builds (MCS_DFT_FFTW) only. */
+const double *mcs_dft_fftw_out_(mcs_dft *plan, const double *s, size_t count);
+
 #endif /* MCSPEC_DFT_INTERNAL_H */

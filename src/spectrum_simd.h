@@ -44,6 +44,42 @@ static inline void KERNEL(update_block)(mcs_spectrum *acc, size_t q0, const doub
     KERNEL(update_lanes)(acc, q0, xr, xi, xp, u);
 }
 
+#if defined(MCS_DFT_FFTW) /* the FFTW back end only: spectrum_kernels.c's update_fftw */
+/* Lanes of the FFT path's update from FFTW's output (update_interleaved): a
+ * group of four is one AVX2 vector, and a group, not a block of eight, is
+ * the unit of the pad (N = 64: 9 groups for the 33 frequencies, 10 in
+ * blocks). */
+#define MCS_UPDATE_GROUP_ 4u
+
+/* One trial's update from an r2c output o of interleaved (re, im), not yet
+ * scaled (the FFTW back end's, mcs_dft_fftw_out_), for the frequencies
+ * q < count (a multiple of MCS_UPDATE_GROUP_; entries past N/2 are 0):
+ * x = scale o, the values and operations of the split (re = scale out[2k],
+ * im = scale out[2k + 1]) and update_block, in one pass that stores no S_k.
+ * A leaf, as update_range. */
+MCS_NOINLINE static void KERNEL(update_interleaved)(mcs_spectrum *acc, size_t count,
+                                                    const double *restrict o, double scale,
+                                                    unit_factors u)
+{
+    for (size_t q0 = 0; q0 < count; q0 += MCS_UPDATE_GROUP_) {
+        const double *restrict og = o + 2u * q0;
+        double *restrict mr = acc->mean_re + q0, *restrict mi = acc->mean_im + q0;
+        double *restrict mp = acc->mean_pow + q0;
+        double *restrict m2s = acc->m2_s + q0, *restrict m2p = acc->m2_pow + q0;
+        for (size_t r = 0; r < MCS_UPDATE_GROUP_; ++r) {
+            const double xr = scale * og[2u * r], xi = scale * og[2u * r + 1u];
+            const double xp = xr * xr + xi * xi;
+            const double dr = xr - mr[r], di = xi - mi[r], dp = xp - mp[r];
+            mr[r] += u.f * dr;
+            mi[r] += u.f * di;
+            mp[r] += u.f * dp;
+            m2s[r] += u.g * (dr * dr + di * di);
+            m2p[r] += u.g * (dp * dp);
+        }
+    }
+}
+#endif
+
 /* Blocks [b0, b1) from acc->re, acc->im (x = re + i im) and power xp, or
  * |x|^2 without xp. A leaf: no vector value lives across a call. */
 MCS_NOINLINE static void KERNEL(update_range)(mcs_spectrum *acc, size_t b0, size_t b1,

@@ -185,14 +185,18 @@ static void test_bins_dense_and_points_give_the_same_statistics(void)
 
 /* The FFT path sums each bin's weights in index order, whether a bin's
  * samples come in a run (stratified with K > N: the run is summed in a
- * register) or apart (random): the same bits as mcs_pattern_dense's s. */
+ * register) or apart (random): the same bits as mcs_pattern_dense's s. And
+ * its update (with FFTW, fused with the transform's last pass and scaled
+ * there) gives the dense path's bits: means and standard errors, at even
+ * and odd N and where the last group of four frequencies is mostly pad. */
 static void test_the_fft_path_sums_weights_as_the_dense_form_does(void)
 {
     static const struct {
         mcs_pattern_kind kind;
         size_t n, k;
     } cases[] = {{MCS_PATTERN_STRATIFIED, 32u, 200u}, {MCS_PATTERN_RANDOM, 7u, 40u},
-                 {MCS_PATTERN_STRATIFIED, 90u, 11u}};
+                 {MCS_PATTERN_STRATIFIED, 90u, 11u},  {MCS_PATTERN_RANDOM, 64u, 64u},
+                 {MCS_PATTERN_STRATIFIED, 63u, 21u},  {MCS_PATTERN_RANDOM, 4u, 9u}};
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
         const size_t n = cases[i].n, k = cases[i].k;
         make_importance(n);
@@ -207,12 +211,22 @@ static void test_the_fft_path_sums_weights_as_the_dense_form_does(void)
             TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_dense(&acc2, n, dense));
         }
         for (size_t q = 0; q <= n / 2u; ++q) {
-            double v[6];
+            double v[10];
             TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_mean(&acc, q, &v[0], &v[1]));
             TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_power(&acc, q, &v[2]));
-            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_mean(&acc2, q, &v[3], &v[4]));
-            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_power(&acc2, q, &v[5]));
-            TEST_ASSERT_EQUAL_MEMORY(&v[3], &v[0], 3u * sizeof v[0]);
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_mean_stderr(&acc, q, &v[3]));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_power_stderr(&acc, q, &v[4]));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_mean(&acc2, q, &v[5], &v[6]));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_power(&acc2, q, &v[7]));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_mean_stderr(&acc2, q, &v[8]));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_power_stderr(&acc2, q, &v[9]));
+            TEST_ASSERT_EQUAL_MEMORY(&v[5], &v[0], 5u * sizeof v[0]);
+        }
+        /* the pad past N/2 stays 0 */
+        for (size_t q = n / 2u + 1u; q < MCS_SPECTRUM_HALF && q < n / 2u + 9u; ++q) {
+            TEST_ASSERT_EQUAL_DOUBLE(0.0, acc.mean_re[q]);
+            TEST_ASSERT_EQUAL_DOUBLE(0.0, acc.m2_s[q]);
+            TEST_ASSERT_EQUAL_DOUBLE(0.0, acc.m2_pow[q]);
         }
     }
 }
