@@ -122,9 +122,11 @@ double mcs_readout_form(const mcs_readout *view, size_t k, const double *f, cons
 double mcs_readout_form_bound(const mcs_readout *view, size_t k, const double *f,
                               const double *g);
 
-/* A value that cannot be negative (a variance, a power) read from exact
- * moments (view->k != 0): in [-bound, 0) it is rounding and reads 0; below
- * -bound, or from measured moments, it is returned as it is. */
+/* A value that cannot be negative (a variance, a power): in [-bound, 0) it
+ * is rounding and reads 0, from exact and measured moments alike (the plain
+ * sums of a moment accumulator's open batch give a deterministic pattern's
+ * zero variances as +-1e-16); below -bound it is returned as it is, for the
+ * caller to refuse (exact moments) or pass on. */
 double mcs_readout_nonnegative(const mcs_readout *view, double value, double bound);
 
 /* Eq. 7 at one frequency, freq < N, of any x[N] from the view's twiddle table. */

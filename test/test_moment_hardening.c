@@ -88,13 +88,26 @@ static void expect_no_negative_variance(size_t n)
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_covariance(&mom, f, f, &re, &im));
         TEST_ASSERT_TRUE_MESSAGE(re >= 0.0, "negative Cov(S_k, S_k)");
         TEST_ASSERT_TRUE_MESSAGE(mat_re[f * n + f] >= 0.0, "negative matrix diagonal");
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_power(&mom, f, &re));
+        TEST_ASSERT_TRUE_MESSAGE(re >= 0.0, "negative power");
+    }
+    /* Var[I] of integrands of either sign (issue 11: the plain sums of the
+     * open batch gave a deterministic pattern's 0 as -3e-17 with MCS_OK) */
+    double f[64];
+    for (size_t b = 0; b < n; ++b)
+        f[b] = (b % 2u ? -1.0 : 1.0) * (1.0 + 0.37 * (double)b);
+    for (size_t shift = 0; shift < 4u; ++shift) {
+        double v = -1.0;
+        f[shift % n] += 0.5;
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_variance(&mom, n, 3u, f, &v));
+        TEST_ASSERT_TRUE_MESSAGE(v >= 0.0, "negative Var[I]");
     }
 }
 
 /* Issue 10 item 7: deterministic patterns (uniform, with and without
  * importance) have Cov(S_k, S_k) = 0 at every k, and jitter at some; the old
  * read-out gave values down to -1.2e-14 (-5.5e-15 of the power) at 17 to 32
- * of the frequencies. */
+ * of the frequencies. The same for powers and Var[I]. */
 static void test_variances_on_the_diagonal_are_never_negative(void)
 {
     static const size_t shapes[4][2] = {{64u, 8u}, {24u, 9u}, {50u, 10u}, {3u, 1000u}};
