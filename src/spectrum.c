@@ -7,6 +7,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "acc_internal.h"
 #include "dft_internal.h"
 #include "simd.h"
 #include "spectrum_internal.h"
@@ -99,43 +100,17 @@ static mcs_status check_sum(size_t k, const double *w)
     return sum <= MCS_SPECTRUM_MAX_SUM ? MCS_OK : MCS_ERR_MAGNITUDE;
 }
 
-/* Bins and weights without a branch per sample: a flag for any bin out of
- * range or negative weight, and the sum (NaN and infinities poison it; four
- * partial sums keep the adds apart). Only a trial that fails is checked
- * again sample by sample, for the status of its first bad sample (a bin out
- * of range, then a weight not finite, then a negative one). */
-static int bins_ok(size_t n, size_t k, const size_t *b, const double *w, double *sum)
-{
-    size_t bad = 0u, j = 0;
-    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
-    for (; j + 4u <= k; j += 4u) {
-        bad |= (size_t)(b[j] >= n) | (size_t)(b[j + 1u] >= n) | (size_t)(b[j + 2u] >= n) |
-               (size_t)(b[j + 3u] >= n);
-        bad |= (size_t)(w[j] < 0.0) | (size_t)(w[j + 1u] < 0.0) | (size_t)(w[j + 2u] < 0.0) |
-               (size_t)(w[j + 3u] < 0.0);
-        s0 += w[j];
-        s1 += w[j + 1u];
-        s2 += w[j + 2u];
-        s3 += w[j + 3u];
-    }
-    for (; j < k; ++j) {
-        bad |= (size_t)(b[j] >= n) | (size_t)(w[j] < 0.0);
-        s0 += w[j];
-    }
-    *sum = (s0 + s1) + (s2 + s3);
-    return bad == 0u;
-}
-
-/* The scan by the object's copy (the AVX2 one: spectrum_kernels.c). */
+/* The scan by the object's copy (the baseline one is shared with the other
+ * accumulators, acc_internal.h; the AVX2 one is spectrum_kernels.c). */
 static mcs_status check_bins(const mcs_spectrum *acc, size_t k, const size_t *b, const double *w)
 {
     const size_t n = acc->n;
     double sum;
 #if MCS_AVX2_CLONES
     const int ok = acc->simd ? mcs_spectrum_bins_ok_avx2_(n, k, b, w, &sum)
-                             : bins_ok(n, k, b, w, &sum);
+                             : mcs_bins_scan_(n, k, b, w, &sum);
 #else
-    const int ok = bins_ok(n, k, b, w, &sum);
+    const int ok = mcs_bins_scan_(n, k, b, w, &sum);
 #endif
     if (ok && sum <= MCS_SPECTRUM_MAX_SUM)
         return MCS_OK;
