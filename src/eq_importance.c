@@ -213,18 +213,21 @@ static double fq_variance_parseval(const mcs_importance *imp, size_t k, const do
  * times the sum of the terms' magnitudes (three N-term transforms per term,
  * then N^2 terms), which |F_k| <= N^{-1/2} sum |f| and |Q_j| <= N^{1/2} / H
  * bound by (sum_n |f_n|)^2 / (H K). A value in [-bound, 0) reads 0; one below
- * is returned as it is (no rounding makes it). Eq. 55 can be negative. */
-static double nonnegative_form(const mcs_importance *imp, size_t k, const double *f, double v)
+ * is no rounding: the object's p is not one init gives (overwritten since),
+ * MCS_ERR_INVARIANT (fuzz_api found -3.8e-4 with MCS_OK). Eq. 55 can be
+ * negative. */
+static mcs_status set_nonnegative(const mcs_importance *imp, size_t k, const double *f,
+                                  double v, double *out)
 {
     if (!(v < 0.0))
-        return v;
+        return set_from_imp(out, v);
     const double nd = (double)imp->n;
     double abs_sum = 0.0;
     for (size_t b = 0; b < imp->n; ++b)
         abs_sum += fabs(f[b]);
     const double bound = (nd * nd + 4.0 * nd + 16.0) * DBL_EPSILON * abs_sum * abs_sum /
                          (imp->harmonic_mean * (double)k);
-    return -v <= bound ? 0.0 : v;
+    return -v <= bound ? mcs_set_(out, 0.0) : MCS_ERR_INVARIANT;
 }
 
 /* The double sums of eq. 52 as printed and corrected and eq. 55, checked:
@@ -236,11 +239,13 @@ static mcs_status fq_form(const mcs_importance *imp, size_t k, const double *f, 
     mcs_status st = check_imp_f(imp, k, f, out, (size_t)MCS_MAX_N);
     if (st != MCS_OK)
         return st;
-    if (imp->n > (size_t)MCS_MAX_COV_N)
-        return set_from_imp(out, fq_variance_parseval(imp, k, f, k0, l0));
+    if (imp->n > (size_t)MCS_MAX_COV_N) {
+        const double v = fq_variance_parseval(imp, k, f, k0, l0);
+        return k0 == l0 ? set_nonnegative(imp, k, f, v, out) : set_from_imp(out, v);
+    }
     if (k0 != 0u) {
         const double v = fq_variance(imp, k, f, k0, l0);
-        return set_from_imp(out, l0 != 0u ? nonnegative_form(imp, k, f, v) : v);
+        return l0 != 0u ? set_nonnegative(imp, k, f, v, out) : set_from_imp(out, v);
     }
     const double nd = (double)imp->n;
     double sum = 0.0;
@@ -248,7 +253,7 @@ static mcs_status fq_form(const mcs_importance *imp, size_t k, const double *f, 
         sum += f[b];
     const double f0_sq = sum * sum / nd; /* |F_0|^2 */
     const double v = (fq_variance(imp, 1u, f, 0u, 0u) - f0_sq / nd) / (double)k;
-    return set_from_imp(out, nonnegative_form(imp, k, f, v));
+    return set_nonnegative(imp, k, f, v, out);
 }
 
 mcs_status mcs_eq52_variance_printed(const mcs_importance *imp, size_t k, const double *f,

@@ -226,6 +226,30 @@ static void test_an_importance_function_init_never_made_gives_no_infinite_form(v
     }
 }
 
+static void test_eq52_of_an_overwritten_importance_function_is_refused_not_negative(void)
+{
+    /* fuzz_api: an importance object with one p_n overwritten gave eq. 52
+     * corrected = -3.8e-4 with MCS_OK. Both eq. 52 forms are sums of squares
+     * weighted by p_n: a negative p_n makes them negative beyond rounding,
+     * which only an overwritten object gives (MCS_ERR_INVARIANT, nothing
+     * written); eq. 55 may be negative and stays a value. At N = 16 (term
+     * by term) and N = 96 > MCS_MAX_COV_N (Parseval). */
+    static const size_t ns[2] = {16u, 96u};
+    double f[96];
+    for (size_t i = 0; i < 2u; ++i) {
+        theory_make_f(ns[i], f, 0.2);
+        theory_lumpy_importance(&imp, ns[i]);
+        imp.p[3] = -4.0; /* the term p_3 (f_3 / p_3 - fbar)^2 then outweighs the rest */
+        f[3] = 50.0;
+        double v = SENTINEL;
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_INVARIANT, mcs_eq52_variance_corrected(&imp, 2u, f, &v));
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_INVARIANT, mcs_eq52_variance_printed(&imp, 2u, f, &v));
+        TEST_ASSERT_EQUAL_DOUBLE(SENTINEL, v);
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_eq55_variance_convolution(&imp, 2u, f, &v));
+        TEST_ASSERT_TRUE(isfinite(v));
+    }
+}
+
 /* ---- item 7: variances never negative ------------------------------------------ */
 
 static void test_eq52_of_a_zero_variance_integrand_is_never_negative(void)
@@ -267,6 +291,7 @@ int main(void)
     RUN_TEST(test_integrands_up_to_the_bound_give_finite_forms_and_beyond_are_refused);
     RUN_TEST(test_section_1_forms_at_the_bound_are_finite_for_the_heaviest_pattern);
     RUN_TEST(test_an_importance_function_init_never_made_gives_no_infinite_form);
+    RUN_TEST(test_eq52_of_an_overwritten_importance_function_is_refused_not_negative);
     RUN_TEST(test_eq52_of_a_zero_variance_integrand_is_never_negative);
     return UNITY_END();
 }

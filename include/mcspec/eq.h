@@ -236,7 +236,9 @@ mcs_status mcs_eq52_variance_printed(const mcs_importance *imp, size_t k, const 
  * the primal (1/K) [(1/N) sum_n f_n^2 / p_n - fbar^2]. Same arguments.
  * Never negative, nor is eq. 52 as printed (both are sums of squares by
  * Parseval): a term-by-term sum in [-b, 0) is rounding and reads 0, b =
- * (N^2 + 4N + 16) DBL_EPSILON (sum_n |f_n|)^2 / (H K) bounding it. */
+ * (N^2 + 4N + 16) DBL_EPSILON (sum_n |f_n|)^2 / (H K) bounding it; one
+ * below -b comes from no p_n init gives (an overwritten object):
+ * MCS_ERR_INVARIANT, nothing written. */
 mcs_status mcs_eq52_variance_corrected(const mcs_importance *imp, size_t k, const double *f,
                                        double *out);
 
