@@ -27,34 +27,10 @@ void mcs_readout_dft(const mcs_readout *view, const double *x, size_t freq, doub
     *im = i * scale;
 }
 
-/* An open batch to add (it comes with a shift: the accumulator's view). */
-static int has_batch(const mcs_readout *view)
-{
-    return view->batch_w != NULL && view->shift != NULL;
-}
-
-/* first[bin] and second[bin_m * N + bin_n] with a moment accumulator's open
- * batch added (readout.h): the sums a fold would give, read without writing. */
-static double first_entry(const mcs_readout *view, size_t bin)
-{
-    const double x = view->first[bin];
-    return !has_batch(view) ? x
-                            : x + mcs_batch_first_(view->batch_s, view->batch_d, view->shift,
-                                                   view->batch_sparse, bin);
-}
-
-static double second_entry(const mcs_readout *view, size_t bin_m, size_t bin_n)
-{
-    const double x = view->second[bin_m * view->n + bin_n];
-    return !has_batch(view) ? x
-                            : x + mcs_batch_second_(view->batch_w, view->batch_s, view->shift,
-                                                    view->batch_sparse, view->n, bin_m, bin_n);
-}
-
 /* Eq. 7 of first_entry at one frequency (as mcs_readout_dft). */
 static void first_dft(const mcs_readout *view, size_t freq, double *re, double *im)
 {
-    if (!has_batch(view)) {
+    if (!mcs_readout_has_batch(view)) {
         mcs_readout_dft(view, view->first, freq, re, im);
         return;
     }
@@ -62,7 +38,7 @@ static void first_dft(const mcs_readout *view, size_t freq, double *re, double *
     size_t idx = 0;
     double r = 0.0, i = 0.0;
     for (size_t t = 0; t < n; ++t) {
-        const double x = first_entry(view, t);
+        const double x = mcs_readout_first(view, t);
         r += view->cos_table[idx] * x;
         i -= view->sin_table[idx] * x;
         idx += freq;
@@ -98,9 +74,9 @@ static batch_weights batch_sums(const mcs_readout *view, const double *g)
     return r;
 }
 
-static double batch_rounding(const mcs_readout *view, const double *g, const double *h)
+double mcs_readout_batch_rounding(const mcs_readout *view, const double *g, const double *h)
 {
-    if (!has_batch(view))
+    if (!mcs_readout_has_batch(view))
         return 0.0;
     const batch_weights a = batch_sums(view, g), b = batch_sums(view, h);
     return (2.0 * view->batch_terms + 8.0) * DBL_EPSILON *
@@ -130,9 +106,9 @@ static void mean_at(const mcs_readout *view, size_t freq, double *re, double *im
 }
 
 /* <s_bin>. */
-static double mean_entry(const mcs_readout *view, size_t bin)
+double mcs_readout_mean_entry(const mcs_readout *view, size_t bin)
 {
-    const double m = first_entry(view, bin) * view->scale;
+    const double m = mcs_readout_first(view, bin) * view->scale;
     return view->shift != NULL ? view->shift[bin] + m : m;
 }
 
@@ -159,7 +135,7 @@ static void second_at(const mcs_readout *view, size_t freq_k, size_t freq_l, dou
         double rr = 0.0, ri = 0.0;
         size_t idx = 0;
         for (size_t b = 0; b < n; ++b) {
-            const double x = second_entry(view, m, b);
+            const double x = mcs_readout_second(view, m, b);
             rr += ct[idx] * x;
             ri += st[idx] * x;
             idx += freq_l;
@@ -214,13 +190,13 @@ static double variance_rounding(const mcs_readout *view)
     double a = 0.0, b = 0.0;
     for (size_t m = 0; m < n; ++m)
         for (size_t c = 0; c < n; ++c)
-            a += fabs(second_entry(view, m, c));
+            a += fabs(mcs_readout_second(view, m, c));
     for (size_t j = 0; j < n; ++j)
-        b += fabs(first_entry(view, j));
+        b += fabs(mcs_readout_first(view, j));
     a *= view->scale;
     b *= view->scale;
     return 4.0 * ((double)n + 2.0) * DBL_EPSILON * (a + b * b) / (double)n +
-           batch_rounding(view, NULL, NULL) * view->scale / (double)n;
+           mcs_readout_batch_rounding(view, NULL, NULL) * view->scale / (double)n;
 }
 
 /* A variance is >= 0: a value below 0 within the rounding bound tol is
@@ -236,47 +212,6 @@ static mcs_status clamp_variance(double tol, double *v)
     return MCS_OK;
 }
 
-double mcs_readout_form(const mcs_readout *view, size_t k, const double *f, const double *g)
-{
-    /* Cov(s)_mn = <s_m s_n> - <s_m><s_n>, summed row by row. */
-    const size_t n = view->n;
-    const double sc = view->scale;
-    double sum = 0.0;
-    for (size_t m = 0; m < n; ++m) {
-        const double mean_m = first_entry(view, m) * sc;
-        double acc = 0.0;
-        for (size_t b = 0; b < n; ++b)
-            acc += (second_entry(view, m, b) * sc - mean_m * (first_entry(view, b) * sc)) * g[b];
-        sum += f[m] * acc;
-    }
-    const double kd = (double)k;
-    return sum / (kd * kd);
-}
-
-/* Rounding bound of a form over the moments: (2N + 16) DBL_EPSILON times the
- * sum of the magnitudes of its terms, (1/K^2) sum |f_m| |g_n| (|<s_m s_n>| +
- * |<s_m>| |<s_n>|). Each term carries the few roundings of the moments and of
- * its product, and a sum of N terms at most N more (twice: rows, then the
- * sum of rows). */
-double mcs_readout_form_bound(const mcs_readout *view, size_t k, const double *f,
-                              const double *g)
-{
-    const size_t n = view->n;
-    const double sc = view->scale;
-    double sum = 0.0;
-    for (size_t m = 0; m < n; ++m) {
-        const double mean_m = fabs(first_entry(view, m) * sc);
-        double acc = 0.0;
-        for (size_t b = 0; b < n; ++b)
-            acc += (fabs(second_entry(view, m, b) * sc) + mean_m * fabs(first_entry(view, b) * sc)) *
-                   fabs(g[b]);
-        sum += fabs(f[m]) * acc;
-    }
-    const double kd = (double)k;
-    return ((2.0 * (double)n + 16.0) * DBL_EPSILON * sum + batch_rounding(view, f, g) * sc) /
-           (kd * kd);
-}
-
 double mcs_readout_nonnegative(const mcs_readout *view, double value, double bound)
 {
     (void)view;
@@ -289,9 +224,9 @@ static double power_bound(const mcs_readout *view)
     double sum = 0.0;
     for (size_t m = 0; m < view->n; ++m)
         for (size_t c = 0; c < view->n; ++c)
-            sum += fabs(second_entry(view, m, c) * view->scale);
+            sum += fabs(mcs_readout_second(view, m, c) * view->scale);
     return ((2.0 * (double)view->n + 16.0) * DBL_EPSILON * sum +
-            batch_rounding(view, NULL, NULL) * view->scale) /
+            mcs_readout_batch_rounding(view, NULL, NULL) * view->scale) /
            (double)view->n;
 }
 
@@ -314,7 +249,7 @@ mcs_status mcs_readout_bin_mean(const mcs_readout_source *src, size_t bin, doubl
 {
     mcs_readout v;
     mcs_status st = open_for(out != NULL, src, bin, bin, MCS_ERR_BIN_RANGE, &v);
-    return st == MCS_OK ? mcs_set_(out, mean_entry(&v, bin)) : st;
+    return st == MCS_OK ? mcs_set_(out, mcs_readout_mean_entry(&v, bin)) : st;
 }
 
 mcs_status mcs_readout_bin_second(const mcs_readout_source *src, size_t bin_m,
@@ -324,10 +259,10 @@ mcs_status mcs_readout_bin_second(const mcs_readout_source *src, size_t bin_m,
     mcs_status st = open_for(out != NULL, src, bin_m, bin_n, MCS_ERR_BIN_RANGE, &v);
     if (st != MCS_OK)
         return st;
-    double x = second_entry(&v, bin_m, bin_n) * v.scale;
+    double x = mcs_readout_second(&v, bin_m, bin_n) * v.scale;
     if (v.shift != NULL) /* <s_m s_n> = Cov(d)_mn + <s_m><s_n> */
-        x += mean_entry(&v, bin_m) * mean_entry(&v, bin_n) -
-             (first_entry(&v, bin_m) * v.scale) * (first_entry(&v, bin_n) * v.scale);
+        x += mcs_readout_mean_entry(&v, bin_m) * mcs_readout_mean_entry(&v, bin_n) -
+             (mcs_readout_first(&v, bin_m) * v.scale) * (mcs_readout_first(&v, bin_n) * v.scale);
     return mcs_set_(out, x);
 }
 
@@ -447,7 +382,7 @@ static void chunk_of_g(const mcs_readout *view, size_t l, size_t m0, size_t len,
         double ar = 0.0, ai = 0.0;
         size_t idx = 0u;
         for (size_t c = 0; c < n; ++c) {
-            const double x = second_entry(view, m0 + q, c);
+            const double x = mcs_readout_second(view, m0 + q, c);
             ar += x * view->cos_table[idx];
             ai += x * view->sin_table[idx];
             idx += l;
@@ -496,8 +431,8 @@ static void second_matrix_at(const mcs_readout *view, double *re, double *im)
 
 /* Opens obj for an array of its N: outputs given (else NULL), the object's
  * checks (UNINIT, EMPTY), n equal to its N (else MISMATCH). */
-static mcs_status open_n(int outputs, const mcs_readout_source *src, size_t n,
-                         mcs_readout *view)
+mcs_status mcs_readout_open_n(int outputs, const mcs_readout_source *src, size_t n,
+                               mcs_readout *view)
 {
     if (!outputs || src->obj == NULL)
         return MCS_ERR_NULL;
@@ -513,7 +448,7 @@ static mcs_status open_n(int outputs, const mcs_readout_source *src, size_t n,
 static mcs_status open_matrix(const mcs_readout_source *src, size_t n, const double *re,
                               const double *im, mcs_readout *view)
 {
-    mcs_status st = open_n(re != NULL && im != NULL, src, n, view);
+    mcs_status st = mcs_readout_open_n(re != NULL && im != NULL, src, n, view);
     if (st != MCS_OK)
         return st;
     const size_t nn = n * n * sizeof(double), n1 = n * sizeof(double);
@@ -588,87 +523,4 @@ mcs_status mcs_readout_covariance_matrix(const mcs_readout_source *src, size_t n
     for (size_t k = 0; k < n; ++k)
         (void)clamp_variance(tol, &re[k * n + k]);
     return MCS_OK;
-}
-
-/* ---- the estimator -------------------------------------------------------- */
-
-mcs_status mcs_readout_check_integrand(const mcs_readout_source *src, size_t n, size_t k,
-                                       const double *f, mcs_readout *view)
-{
-    mcs_status st = open_n(f != NULL, src, n, view);
-    if (st != MCS_OK)
-        return st;
-    if (k == 0u)
-        return MCS_ERR_K_RANGE;
-    if (view->k != 0u && k != view->k) /* exact moments are for one K */
-        return MCS_ERR_MISMATCH;
-    if (!mcs_all_finite_(n, f))
-        return MCS_ERR_NOT_FINITE;
-    return MCS_OK;
-}
-
-mcs_status mcs_readout_check_integrands(const mcs_readout_source *src, size_t n, size_t k,
-                                        const double *f, const double *g, mcs_readout *view)
-{
-    mcs_status st = g == NULL ? MCS_ERR_NULL : mcs_readout_check_integrand(src, n, k, f, view);
-    return st == MCS_OK ? mcs_readout_check_integrand(src, n, k, g, view) : st;
-}
-
-/* *out = value if finite; an integrand so large that the value overflows is
- * MCS_ERR_MAGNITUDE (the object's own values cannot make it overflow). */
-static mcs_status finite_result(double value, double *out)
-{
-    return isfinite(value) ? mcs_set_(out, value) : MCS_ERR_MAGNITUDE;
-}
-
-/* <I> = (1/K) sum_n f_n <s_n>. */
-static double estimator_mean_at(const mcs_readout *view, size_t k, const double *f)
-{
-    double sum = 0.0;
-    for (size_t b = 0; b < view->n; ++b)
-        sum += f[b] * mean_entry(view, b);
-    return sum / (double)k;
-}
-
-mcs_status mcs_readout_integrand_value(const mcs_readout_source *src, size_t n,
-                                       size_t k, const double *f, mcs_readout_value value,
-                                       double *out)
-{
-    if (out == NULL)
-        return MCS_ERR_NULL;
-    mcs_readout v;
-    mcs_status st = mcs_readout_check_integrand(src, n, k, f, &v);
-    return st == MCS_OK ? finite_result(value(&v, k, f), out) : st;
-}
-
-mcs_status mcs_readout_estimator_mean(const mcs_readout_source *src, size_t n,
-                                      size_t k, const double *f, double *out)
-{
-    return mcs_readout_integrand_value(src, n, k, f, estimator_mean_at, out);
-}
-
-mcs_status mcs_readout_variance(const mcs_readout_source *src, size_t n, size_t k,
-                                const double *f, double *out)
-{
-    if (out == NULL)
-        return MCS_ERR_NULL;
-    mcs_readout v;
-    mcs_status st = mcs_readout_check_integrand(src, n, k, f, &v);
-    if (st != MCS_OK)
-        return st;
-    double var = mcs_readout_form(&v, k, f, f);
-    if (var < 0.0) /* f^T Cov f: never negative but for rounding */
-        var = mcs_readout_nonnegative(&v, var, mcs_readout_form_bound(&v, k, f, f));
-    return finite_result(var, out);
-}
-
-mcs_status mcs_readout_estimator_covariance(const mcs_readout_source *src, size_t n,
-                                            size_t k, const double *f, const double *g,
-                                            double *out)
-{
-    if (out == NULL)
-        return MCS_ERR_NULL;
-    mcs_readout v;
-    mcs_status st = mcs_readout_check_integrands(src, n, k, f, g, &v);
-    return st == MCS_OK ? finite_result(mcs_readout_form(&v, k, f, g), out) : st;
 }

@@ -52,6 +52,40 @@ static inline double mcs_batch_second_(const double *w, const double *bs, const 
            sparse * (c[m] * c[q]);
 }
 
+/* An open batch to add (it comes with a shift: the accumulator's view). */
+static inline int mcs_readout_has_batch(const mcs_readout *view)
+{
+    return view->batch_w != NULL && view->shift != NULL;
+}
+
+/* first[bin] and second[bin_m * N + bin_n] with a moment accumulator's open
+ * batch added (above): the sums a fold would give, read without writing. */
+static inline double mcs_readout_first(const mcs_readout *view, size_t bin)
+{
+    const double x = view->first[bin];
+    return !mcs_readout_has_batch(view)
+               ? x
+               : x + mcs_batch_first_(view->batch_s, view->batch_d, view->shift,
+                                      view->batch_sparse, bin);
+}
+
+static inline double mcs_readout_second(const mcs_readout *view, size_t bin_m, size_t bin_n)
+{
+    const double x = view->second[bin_m * view->n + bin_n];
+    return !mcs_readout_has_batch(view)
+               ? x
+               : x + mcs_batch_second_(view->batch_w, view->batch_s, view->shift,
+                                       view->batch_sparse, view->n, bin_m, bin_n);
+}
+
+/* <s_bin>. */
+double mcs_readout_mean_entry(const mcs_readout *view, size_t bin);
+
+/* What an open batch adds to the rounding of a form: for the sum over every
+ * (m, n) of |g_m| |h_n| times entry (m, n)'s error (g, h NULL: 1), in the
+ * units of second (readout.c). 0 without a batch. */
+double mcs_readout_batch_rounding(const mcs_readout *view, const double *g, const double *h);
+
 /* Checks obj and fills *view: MCS_ERR_UNINIT, MCS_ERR_EMPTY (no trials yet). */
 typedef mcs_status (*mcs_readout_open)(const void *obj, mcs_readout *view);
 
@@ -63,6 +97,11 @@ typedef struct {
     const void *obj;
     mcs_readout_open open;
 } mcs_readout_source;
+
+/* Opens src's object for an array of its N: outputs given (else NULL), the
+ * object's checks (UNINIT, EMPTY), n equal to its N (else MISMATCH). */
+mcs_status mcs_readout_open_n(int outputs, const mcs_readout_source *src, size_t n,
+                              mcs_readout *view);
 
 /* The two objects (obj not NULL): a mcs_moment, a mcs_theory. */
 mcs_status mcs_readout_open_moment(const void *obj, mcs_readout *view);
