@@ -53,7 +53,9 @@ double mcs_readout_form_bound(const mcs_readout *view, size_t k, const double *f
 mcs_status mcs_readout_check_integrand(const mcs_readout_source *src, size_t n, size_t k,
                                        const double *f, mcs_readout *view)
 {
-    mcs_status st = mcs_readout_open_n(f != NULL, src, n, view);
+    if (f == NULL) /* as mcs_readout_open_n would say, stated here for the analyser */
+        return MCS_ERR_NULL;
+    mcs_status st = mcs_readout_open_n(1, src, n, view);
     if (st != MCS_OK)
         return st;
     if (k == 0u)
