@@ -196,25 +196,26 @@ mcs_status mcs_moment_add_dense(mcs_moment *acc, size_t n, const double *s)
  * shift c_b to dst's c_a first: with e = c_b - c_a and T_b trials,
  * sum (s - c_a) = sum (s - c_b) + T_b e and sum (s - c_a)(s - c_a)^T =
  * sum (s - c_b)(s - c_b)^T + sum_b e^T + e sum_b^T + T_b e e^T. dst's own
- * batch is folded first. The second sums go first, while both first sums are
- * unchanged; every src value is read before its dst entry is written, so
- * dst == src (e = 0, its batch folded) doubles the sums. */
+ * batch is folded first. src's first sums with its batch, sum_b, are formed
+ * once into dst's scratch; the second sums go first, while both first sums
+ * are unchanged; every src value is read before its dst entry is written,
+ * so dst == src (e = 0, its batch folded) doubles the sums. */
 static void merge_sums(mcs_moment *dst, const mcs_moment *src)
 {
     const size_t n = dst->n;
     const double tb = (double)src->count, sparse = (double)src->batch_sparse;
     const int open = src->batch_count != 0u;
+    double *restrict sum_b = dst->work;
+    for (size_t m = 0; m < n; ++m)
+        sum_b[m] = src->sum_d[m] +
+                   (open ? mcs_batch_first_(src->batch_s, src->batch_d, src->shift, sparse, m)
+                         : 0.0);
     for (size_t m = 0; m < n; ++m) {
-        const double em = src->shift[m] - dst->shift[m], bm = src->sum_d[m];
-        const double bm_open = open ? mcs_batch_first_(src->batch_s, src->batch_d, src->shift,
-                                                       sparse, m) : 0.0;
+        const double em = src->shift[m] - dst->shift[m];
         for (size_t c = 0; c < n; ++c) {
             const size_t i = m * n + c;
             const double ec = src->shift[c] - dst->shift[c];
-            const double bc_open = open ? mcs_batch_first_(src->batch_s, src->batch_d,
-                                                           src->shift, sparse, c) : 0.0;
-            const double move = ((bm + bm_open) * ec + em * (src->sum_d[c] + bc_open)) +
-                                tb * (em * ec);
+            const double move = (sum_b[m] * ec + em * sum_b[c]) + tb * (em * ec);
             mcs_kahan_merge_(&dst->sum_dd[i], &dst->lo_dd[i], src->sum_dd[i], src->lo_dd[i]);
             if (open)
                 mcs_kahan_add_(&dst->sum_dd[i], &dst->lo_dd[i],

@@ -40,11 +40,12 @@ static unit_factors factors(double w, double w_old)
 #if MCS_AVX2_CLONES
 /* Lanes of a fixed count of four, which the compiler vectorises for AVX2
  * (64-bit compares; 42 against 123 ns at K = 256). The baseline ISA has no
- * 64-bit compare: there the scalar scan of spectrum.c is the faster one.
+ * 64-bit compare: there the scalar scan (mcs_bins_scan_, acc_internal.h) is
+ * the faster one.
  * Lane i keeps an all-ones mask while its bins are below N and its weights
  * >= 0 (NaN fails that, as the sum would), which needs no conversion to 0
  * or 1 (2.4 instead of 3.5 instructions a sample), and sums w[j + i] in
- * index order: the four sums are those of spectrum.c's scan. */
+ * index order: the four sums are those of the scalar scan. */
 static MCS_ALWAYS_INLINE void scan_group(size_t n, const size_t *restrict b,
                                          const double *restrict w, uint64_t *restrict ok,
                                          double *restrict s)
