@@ -59,13 +59,18 @@ endif
 
 # The project's preprocessor flags; the user's CPPFLAGS follow them.
 MCS_CPPFLAGS := -Iinclude
+# The library's own sources also see src/ (a family's private header is
+# included as "family/name.h"; tools/check_layout.sh checks the direction).
+LIB_INC := $(patsubst %/,-I%,$(sort $(filter-out src/vendor/%,$(dir $(wildcard src/*/*.c)))))
 DEPFLAGS := -MMD -MP
 LDLIBS   += -lm
 
-# Library sources by wildcard: a new src/*.c is picked up without edits.
-# kiss_fftr.c is not built: nothing calls the real transform (dft.c
-# untangles it itself); the file stays in the tree as shipped.
-LIB_SRC    := $(wildcard src/*.c)
+# Library sources by wildcard, one folder per family (src/<family>/*.c; the
+# families and their order are drawn in CONTRIBUTING.md): a new source in a
+# family's folder is picked up without edits. kiss_fftr.c is not built:
+# nothing calls the real transform (dft/dft.c untangles it itself); the file
+# stays in the tree as shipped.
+LIB_SRC    := $(sort $(filter-out src/vendor/%,$(wildcard src/*/*.c)))
 KISS_SRC   := src/vendor/kissfft/kiss_fft.c
 LIB_OBJ    := $(LIB_SRC:%.c=$(BUILD)/obj/%.o)
 KISS_OBJ   := $(KISS_SRC:%.c=$(BUILD)/obj/%.o)
@@ -90,7 +95,9 @@ API_MAP    := $(BUILD)/mcspec.map
 UNITY_OBJ  := $(BUILD)/obj/test/vendor/unity/src/unity.o
 TEST_SUPPORT_SRC := $(wildcard test/support/*.c)
 TEST_SUPPORT_OBJ := $(TEST_SUPPORT_SRC:%.c=$(BUILD)/obj/%.o)
-TEST_SRC   := $(sort $(wildcard test/test_*.c))
+# Unity runners, one folder per library family (test/<family>/test_*.c) and
+# test/api/ for the whole-API adversarial table.
+TEST_SRC   := $(sort $(wildcard test/*/test_*.c))
 TEST_BIN   := $(TEST_SRC:test/%.c=$(BUILD)/test/%)
 UNITY_DEFS := -DUNITY_INCLUDE_DOUBLE=
 
@@ -117,7 +124,7 @@ benches: $(BENCH_BIN)
 # Compile lines for our own C, the vendored C and links; user flags come last.
 MCS_CC  = $(CC) $(WARN) $(OPT) $(SANFLAGS) $(MCS_CPPFLAGS) $(CPPFLAGS) $(CFLAGS)
 VEND_CC = $(CC) $(VENDOR_WARN) $(OPT) $(SANFLAGS) $(CPPFLAGS) $(CFLAGS)
-LIB_CC  = $(MCS_CC) -isystem src/vendor/kissfft $(KISS_DEFS)
+LIB_CC  = $(MCS_CC) $(LIB_INC) -isystem src/vendor/kissfft $(KISS_DEFS)
 
 # Every object depends on this stamp, which changes only when the flags do:
 # `make CPPFLAGS=-DMCS_MAX_N=256` after a default build rebuilds everything
@@ -201,7 +208,7 @@ $(BUILD)/obj/test/support/%.o: test/support/%.c $(FLAGS_STAMP)
 	$(Q)$(MCS_CC) -Itest/support -isystem test/vendor/unity/src $(UNITY_DEFS) $(DEPFLAGS) -c $< -o $@
 
 $(BUILD)/test/%: test/%.c $(UNITY_OBJ) $(TEST_SUPPORT_OBJ) $(LIB) $(FLAGS_STAMP)
-	@mkdir -p $(@D) $(BUILD)/obj/test
+	@mkdir -p $(@D) $(dir $(BUILD)/obj/test/$*)
 	@echo "LD $@"
 	$(Q)$(MCS_CC) -Itest/support -isystem test/vendor/unity/src $(UNITY_DEFS) \
 	    -MMD -MP -MF $(BUILD)/obj/test/$*.d $< $(UNITY_OBJ) $(TEST_SUPPORT_OBJ) \
@@ -244,5 +251,5 @@ clean:
 	rm -rf build
 
 -include $(wildcard $(BUILD)/obj/*/*.d $(BUILD)/obj/*/*/*.d $(BUILD)/obj/*/*/*/*.d \
-    $(BUILD)/pic/*/*.d $(BUILD)/pic/*/*/*/*.d)
+    $(BUILD)/pic/*/*/*.d $(BUILD)/pic/*/*/*/*.d)
 -include $(wildcard mk/*.mk)

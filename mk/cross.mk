@@ -66,7 +66,7 @@ $(1)/obj/src/vendor/%.o: src/vendor/%.c $(1)/flags.txt
 $(1)/obj/src/%.o: src/%.c $(1)/flags.txt
 	@mkdir -p $$(@D)
 	@echo "CC $$@"
-	$$(EMB_Q)$(2)gcc $$(WARN) $(3) $$(MCS_CPPFLAGS) $$(CPPFLAGS) -isystem src/vendor/kissfft $$(KISS_DEFS) \
+	$$(EMB_Q)$(2)gcc $$(WARN) $(3) $$(MCS_CPPFLAGS) $$(LIB_INC) $$(CPPFLAGS) -isystem src/vendor/kissfft $$(KISS_DEFS) \
 	    -MMD -MP -c $$< -o $$@
 
 $(1)/libmcspec.a: $$(LIB_SRC:%.c=$(1)/obj/%.o) $$(KISS_SRC:%.c=$(1)/obj/%.o) $(1)/flags.txt
@@ -74,7 +74,7 @@ $(1)/libmcspec.a: $$(LIB_SRC:%.c=$(1)/obj/%.o) $$(KISS_SRC:%.c=$(1)/obj/%.o) $(1
 	@echo "AR $$@"
 	$$(EMB_Q)$(2)ar rcs $$@ $$(filter %.o,$$^)
 
--include $$(wildcard $(1)/obj/src/*.d $(1)/obj/src/vendor/kissfft/*.d)
+-include $$(wildcard $(1)/obj/src/*/*.d $(1)/obj/src/vendor/kissfft/*.d)
 endef
 
 # A Cortex-M target $(1) (m4, m7) with arch flags $(2): library, firmware, checks.

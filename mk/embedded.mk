@@ -73,7 +73,7 @@ memcheck:
 	    w=$(MEMCHECK_BUILD)/vg/$${t##*/}; \
 	    printf '#!/bin/sh\nexec valgrind %s %s "$$@"\n' '$(VALGRIND_FLAGS)' "$$t" >$$w; chmod +x $$w; \
 	done
-	@sh test/run_tests.sh $(MEMCHECK_TESTS:$(MEMCHECK_BUILD)/test/%=$(MEMCHECK_BUILD)/vg/%)
+	@sh test/run_tests.sh $(addprefix $(MEMCHECK_BUILD)/vg/,$(notdir $(MEMCHECK_TESTS)))
 
 # ----------------------------------------------------------------------- stack
 STACK_BUILD := build/stack
@@ -95,10 +95,10 @@ $(STACK_BUILD)/obj/src/vendor/%.o: src/vendor/%.c
 $(STACK_BUILD)/obj/src/%.o: src/%.c
 	@mkdir -p $(@D)
 	@echo "CC $@"
-	$(EMB_Q)$(CC) $(WARN) $(OPT) $(STACK_FLAGS) $(MCS_CPPFLAGS) $(CPPFLAGS) -isystem src/vendor/kissfft $(KISS_DEFS) \
+	$(EMB_Q)$(CC) $(WARN) $(OPT) $(STACK_FLAGS) $(MCS_CPPFLAGS) $(LIB_INC) $(CPPFLAGS) -isystem src/vendor/kissfft $(KISS_DEFS) \
 	    -MMD -MP -c $< -o $@
 
--include $(wildcard $(STACK_BUILD)/obj/src/*.d $(STACK_BUILD)/obj/src/vendor/kissfft/*.d)
+-include $(wildcard $(STACK_BUILD)/obj/src/*/*.d $(STACK_BUILD)/obj/src/vendor/kissfft/*.d)
 
 # ------------------------------------------------------------------------ lint
 # Our sources and public headers, plus the firmware and the counting shim;
@@ -129,7 +129,7 @@ clang-tidy: | $(LINT_BUILD)
 cppcheck:
 	@echo "cppcheck $(LINT_SRC) $(LINT_HEADERS)"
 	@$(CPPCHECK) --quiet --std=c11 --enable=warning,performance,portability --inline-suppr \
-	    --error-exitcode=1 -Iinclude -Isrc -Isrc/vendor/kissfft $(KISS_DEFS) \
+	    --error-exitcode=1 -Iinclude $(LIB_INC) -Isrc/vendor/kissfft $(KISS_DEFS) \
 	    -i src/vendor --suppress='*:src/vendor/*' --suppress=missingIncludeSystem \
 	    $(LINT_SRC) $(LINT_HEADERS) && echo "cppcheck OK"
 
@@ -138,7 +138,7 @@ cppcheck:
 clang-tidy:
 	@test -n "$(CLANG_TIDY)" || { echo "clang-tidy not installed"; exit 1; }
 	@echo "clang-tidy $(LINT_SRC)"
-	@$(CLANG_TIDY) --quiet $(LINT_SRC) -- $(filter-out -Werror,$(WARN)) $(MCS_CPPFLAGS) $(CPPFLAGS) \
+	@$(CLANG_TIDY) --quiet $(LINT_SRC) -- $(filter-out -Werror,$(WARN)) $(MCS_CPPFLAGS) $(LIB_INC) $(CPPFLAGS) \
 	    -isystem src/vendor/kissfft $(KISS_DEFS) >$(LINT_BUILD)/clang-tidy.out 2>&1; rc=$$?; \
 	grep -v '^[0-9][0-9]* warnings\{0,1\} generated\.$$' $(LINT_BUILD)/clang-tidy.out; \
 	[ $$rc -eq 0 ] && echo "clang-tidy OK"; exit $$rc

@@ -13,7 +13,7 @@
 #                         (test/bench/spectrum_costs.c); FFT=fftw for FFTW's
 #
 # Only the host library's compile line gets -DMCS_DFT_FFTW: the cross,
-# stack and lint builds compile src/dft_fftw.c as its KissFFT-only stubs.
+# stack and lint builds compile src/dft/dft_fftw.c as its KissFFT-only stubs.
 
 .PHONY: spectrum-costs
 

@@ -42,14 +42,14 @@ $(FUZZ_BUILD)/obj/src/vendor/%.o: src/vendor/%.c
 
 $(FUZZ_BUILD)/obj/src/%.o: src/%.c
 	@mkdir -p $(@D)
-	$(FUZZ_CC) $(WARN) $(FUZZ_OPT) $(FUZZ_SAN) -fsanitize=fuzzer-no-link $(MCS_CPPFLAGS) $(CPPFLAGS) \
+	$(FUZZ_CC) $(WARN) $(FUZZ_OPT) $(FUZZ_SAN) -fsanitize=fuzzer-no-link $(MCS_CPPFLAGS) $(LIB_INC) $(CPPFLAGS) \
 	    -isystem src/vendor/kissfft $(KISS_DEFS) -MMD -MP -c $< -o $@
 
 $(FUZZ_LIB): $(FUZZ_LIB_OBJ)
 	@rm -f $@
 	$(AR) rcs $@ $^
 
--include $(wildcard $(FUZZ_BUILD)/obj/src/*.d $(FUZZ_BUILD)/obj/src/vendor/kissfft/*.d)
+-include $(wildcard $(FUZZ_BUILD)/obj/src/*/*.d $(FUZZ_BUILD)/obj/src/vendor/kissfft/*.d)
 
 # The seed tool is an ordinary program against the ordinary library.
 $(FUZZ_BUILD)/make_corpus: fuzz/make_corpus.c $(LIB)

@@ -242,7 +242,7 @@ must_fail "library sources with -ffinite-math-only do not compile" "do not compi
     "$MAKE" --no-print-directory BUILD="$tmp/finite" CFLAGS=-ffinite-math-only "$tmp/finite/libmcspec.a"
 glob_build() {
     mkdir -p "$tmp/glob" && cd "$tmp/glob" &&
-        $CC -std=c11 -I"$root/include" -I"$root/src/vendor/kissfft" -c "$root"/src/*.c
+        $CC -std=c11 -I"$root/include" -I"$root/src/vendor/kissfft" -I"$root/src" -c $(ls "$root"/src/*/*.c | grep -v /vendor/)
 }
 must_fail "library sources compiled as a glob without the KissFFT configuration do not compile" \
     "compile src/*.c and src/vendor/kissfft/kiss_fft.c with the KissFFT configuration" glob_build
