@@ -37,7 +37,7 @@ endif
 # KissFFT as mcspec needs it (src/vendor/kissfft/VENDORED.md): double
 # precision, no logging, malloc hooks defined away. Every file that includes a
 # KissFFT header must see the same configuration, so it goes to all library
-# objects; src/version.c stops the build with #error if it is missing.
+# objects; src/core/version.c stops the build with #error if it is missing.
 KISS_CONFIG := -Dkiss_fft_scalar=double -DNDEBUG '-DKISS_FFT_MALLOC(n)=((void*)0)' \
                '-DKISS_FFT_FREE(p)=((void)0)'
 # KissFFT's external names get the mcs_ prefix, so mcspec's double build can
@@ -61,7 +61,7 @@ endif
 MCS_CPPFLAGS := -Iinclude
 # The library's own sources also see src/ (a family's private header is
 # included as "family/name.h"; tools/check_layout.sh checks the direction).
-LIB_INC := $(patsubst %/,-I%,$(sort $(filter-out src/vendor/%,$(dir $(wildcard src/*/*.c)))))
+LIB_INC := -Isrc
 DEPFLAGS := -MMD -MP
 LDLIBS   += -lm
 

@@ -15,7 +15,7 @@
 #   make embedded-checks   all of the above but memcheck
 #   (make test SAN=1 is the Makefile's own: tests under ASan + UBSan)
 
-.PHONY: check-alloc check-alloc-nm check-alloc-runtime memcheck stack lint cppcheck clang-tidy \
+.PHONY: check-layout check-alloc check-alloc-nm check-alloc-runtime memcheck stack lint cppcheck clang-tidy \
         check-headers check-api embedded-checks
 
 EMB_NM      ?= nm
@@ -110,7 +110,12 @@ CLANG_TIDY   ?= $(shell command -v clang-tidy || command -v clang-tidy-14)
 CPPCHECK     ?= cppcheck
 LINT_BUILD   := build/lint
 
-lint: check-headers check-api cppcheck clang-tidy
+lint: check-layout check-headers check-api cppcheck clang-tidy
+
+# The tree is the architecture (CONTRIBUTING.md): sources in family folders,
+# includes and calls only downward, no cycle (tools/check_layout.sh).
+check-layout: $(LIB_OBJ)
+	@sh tools/check_layout.sh -n $(EMB_NM) $(LIB_OBJ)
 
 # Every public function is named mcs_<header>_..., every global of the
 # library's objects is prefixed mcs_, and libmcspec.a and libmcspec.so export

@@ -5,7 +5,7 @@
 #ifndef MCSPEC_ACC_INTERNAL_H
 #define MCSPEC_ACC_INTERNAL_H
 
-#include "internal.h"
+#include "core/internal.h"
 
 /* Read-outs refuse a stored value above 2^500 in magnitude, the bound of the
  * record format too (io.h): trials never get there (the sums stay below

@@ -1,5 +1,5 @@
 #include "mcspec/estimate.h"
-#include "internal.h"
+#include "core/internal.h"
 
 #include <math.h>
 

@@ -1,7 +1,7 @@
 #include "mcspec/moment.h"
 #include "acc_internal.h"
 #include "readout.h"
-#include "simd.h"
+#include "core/simd.h"
 
 #include <string.h>
 
@@ -76,8 +76,8 @@ static void close_trial(mcs_moment *acc)
         fold_batch(acc);
 }
 
-#define MCS_SIMD_BODY "moment_simd.h"
-#include "simd_clones.h"
+#define MCS_SIMD_BODY "accumulators/moment_simd.h"
+#include "core/simd_clones.h"
 
 /* Half of x x^T into the batch, by the copy the object's simd flag picks. */
 static void add_rows(mcs_moment *acc, const double *x)
@@ -275,7 +275,7 @@ mcs_status mcs_moment_count(const mcs_moment *acc, uint64_t *count)
     return st;
 }
 
-/* ---- read-out (src/readout.c): <s> = c + sum_d / count, and the
+/* ---- read-out (src/accumulators/readout.c): <s> = c + sum_d / count, and the
  * covariances come from the d sums alone (they do not depend on c) ---- */
 
 mcs_status mcs_readout_open_moment(const void *obj, mcs_readout *view)

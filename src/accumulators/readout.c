@@ -2,7 +2,7 @@
  * alike (see readout.h). Every frame stays small (the library's `make stack`
  * limit is 1 KiB): transforms are taken one coefficient at a time. */
 #include "readout.h"
-#include "internal.h"
+#include "core/internal.h"
 
 #include <float.h>
 #include <math.h>

@@ -2,7 +2,7 @@
  * quadratic forms over a view's moments, measured or exact (readout.h), and
  * the checks of their integrands. */
 #include "readout.h"
-#include "internal.h"
+#include "core/internal.h"
 
 #include <float.h>
 #include <math.h>

@@ -8,8 +8,8 @@
 #include <string.h>
 
 #include "acc_internal.h"
-#include "dft_internal.h"
-#include "simd.h"
+#include "dft/dft_internal.h"
+#include "core/simd.h"
 #include "spectrum_internal.h"
 
 /* The object's own invariants: a set-up accumulator with a working plan, a

@@ -31,7 +31,7 @@
  * grid. */
 #include <math.h>
 
-#include "dft_internal.h"
+#include "dft/dft_internal.h"
 #include "spectrum_internal.h"
 
 /* The two vectorised kernels, baseline and AVX2 (acc->simd). */

@@ -8,7 +8,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "internal.h"
+#include "core/internal.h"
 #include "mcspec/spectrum.h"
 
 /* One validated trial: k samples, bin from bins[j] or, when bins is NULL,

@@ -10,13 +10,13 @@
 #include <math.h>
 #include <string.h>
 
-#include "dft_internal.h"
+#include "dft/dft_internal.h"
 #include "spectrum_internal.h"
 
 #define BLOCK MCS_SPECTRUM_BLOCK
 #define CHUNK MCS_SPECTRUM_CHUNK
 
-#include "simd.h"
+#include "core/simd.h"
 
 /* A unit of weight w joining closed units of total weight w_old moves each
  * mean by f d and adds g |d|^2 to its M2, d = x - old mean, with
@@ -34,8 +34,8 @@ static unit_factors factors(double w, double w_old)
     return u;
 }
 
-#define MCS_SIMD_BODY "spectrum_simd.h"
-#include "simd_clones.h"
+#define MCS_SIMD_BODY "accumulators/spectrum_simd.h"
+#include "core/simd_clones.h"
 
 #if MCS_AVX2_CLONES
 /* Lanes of a fixed count of four, which the compiler vectorises for AVX2

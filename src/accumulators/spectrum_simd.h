@@ -11,7 +11,7 @@
  * CHUNK, unit_factors, and with KERNEL defined. */
 
 #define MCS_PHASE_BLOCK_ BLOCK
-#include "phase_block.h"
+#include "dft/phase_block.h"
 #undef MCS_PHASE_BLOCK_
 
 /* The update of one block from its values: x = xr + i xi, power xp. A unit

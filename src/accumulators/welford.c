@@ -1,5 +1,5 @@
 #include "mcspec/welford.h"
-#include "internal.h"
+#include "core/internal.h"
 
 #include <math.h>
 #include <stddef.h>

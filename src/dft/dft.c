@@ -5,9 +5,9 @@
 #include <string.h>
 
 #include "dft_internal.h"
-#include "internal.h"
+#include "core/internal.h"
 #include "kiss_fft.h"
-#include "simd.h"
+#include "core/simd.h"
 #if MCS_AVX2_CLONES
 #include "dft_kiss_avx2.h"
 #endif
@@ -16,8 +16,8 @@
 #include <cpuid.h>
 #endif
 
-#define MCS_SIMD_BODY "dft_simd.h"
-#include "simd_clones.h"
+#define MCS_SIMD_BODY "dft/dft_simd.h"
+#include "core/simd_clones.h"
 
 int mcs_cpu_avx2_(void)
 {
@@ -248,7 +248,7 @@ void mcs_dft_half_(mcs_dft *plan, const double *s, double *re, double *im)
 }
 
 /* Per-call time in nanoseconds, fitted to build/bench/spectrum_costs (see
- * src/spectrum_cost.c) on the bench machine, gcc 12 -O2: KissFFT costs about
+ * src/accumulators/spectrum_cost.c) on the bench machine, gcc 12 -O2: KissFFT costs about
  * 0.42 ns per N log2 N on the packed real path and 0.84 on the odd complex
  * one, 0.37 and 0.74 for its AVX2 copy (1024: 3.5 against 4.0 us; 3375:
  * 28.3 against 31.9); the direct sum C_DIRECT ns per (non-zero bin, frequency) pair for its

@@ -7,7 +7,7 @@
 #include <stddef.h>
 
 #include "mcspec/dft.h"
-#include "internal.h"
+#include "core/internal.h"
 
 /* S_k of eq. 7 for k = 0..N/2 into re, im (im may be NULL). Preconditions,
  * which mcs_dft_real_half checks and this does not: plan set up for its N;
@@ -41,7 +41,7 @@ static inline mcs_phase_ctx_ mcs_phase_ctx_of_(mcs_dft *plan)
 
 /* mcs_overlap_ (1 when two byte ranges share a byte) lives in internal.h. */
 
-/* The FFTW back end (src/dft_fftw.c, built with -DMCS_DFT_FFTW). In the
+/* The FFTW back end (src/dft/dft_fftw.c, built with -DMCS_DFT_FFTW). In the
  * default build these are stubs that report no plan. */
 int mcs_dft_fftw_prepare_(mcs_dft *plan, size_t n); /* 1 if FFTW has a plan for n */
 void mcs_dft_fftw_half_(mcs_dft *plan, const double *s, double *re, double *im, double scale);

@@ -9,7 +9,7 @@
  * not enable FMA); only the instruction selection differs, about 13 % faster
  * for gcc 12 at the transform lengths of the bench (test_dft compares the
  * two copies bit for bit). On other targets this file compiles to nothing. */
-#include "simd.h"
+#include "core/simd.h"
 
 #if MCS_AVX2_CLONES
 /* The system headers KissFFT includes, first: declarations from them must

@@ -7,7 +7,7 @@
  * field table and the two public wrappers, as below; the framing, checksum
  * and value checks of io.c need no change, nor does the version. */
 #include "io_internal.h"
-#include "acc_internal.h"
+#include "accumulators/acc_internal.h"
 
 #include <math.h>
 

@@ -1,6 +1,6 @@
 #include "mcspec/importance.h"
 #include "importance_internal.h"
-#include "internal.h"
+#include "core/internal.h"
 
 #include <math.h>
 

@@ -1,8 +1,8 @@
 #include "mcspec/pattern.h"
 #include "importance_internal.h"
-#include "internal.h"
-#include "rng_inline.h"
-#include "simd.h"
+#include "core/internal.h"
+#include "random/rng_inline.h"
+#include "core/simd.h"
 
 #include <math.h>
 #include <string.h>

@@ -1,6 +1,6 @@
 #include "mcspec/pattern2d.h"
 #include "pattern2d_internal.h"
-#include "rng_inline.h"
+#include "random/rng_inline.h"
 
 #include <math.h>
 #include <stddef.h>

@@ -1,5 +1,5 @@
 #include "mcspec/sampler.h"
-#include "rng_inline.h"
+#include "random/rng_inline.h"
 
 #include <stddef.h>
 #include <stdint.h>

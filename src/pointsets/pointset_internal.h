@@ -11,7 +11,7 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "acc_internal.h"
+#include "accumulators/acc_internal.h"
 #include "mcspec/status.h"
 
 /* Phases are advanced by one complex multiplication per frequency; every

@@ -1,5 +1,5 @@
 #include "mcspec/rng.h"
-#include "internal.h"
+#include "core/internal.h"
 #include "rng_inline.h"
 
 #include <stddef.h>

@@ -1,10 +1,10 @@
 /* The note's closed forms of sections 1-3 (section 4, importance sampling,
- * is src/eq_importance.c), and the helpers both files share. Every form
+ * is src/theory/eq_importance.c), and the helpers both files share. Every form
  * checks all its inputs with one call, so a failed call writes nothing. */
 #include "mcspec/eq.h"
 #include "eq_internal.h"
-#include "internal.h"
-#include "readout.h"
+#include "core/internal.h"
+#include "accumulators/readout.h"
 
 #include <math.h>
 

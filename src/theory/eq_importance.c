@@ -2,8 +2,8 @@
  * N, p_n and the harmonic mean H from the caller's importance function. */
 #include "mcspec/eq.h"
 #include "eq_internal.h"
-#include "importance_internal.h"
-#include "internal.h"
+#include "patterns/importance_internal.h"
+#include "core/internal.h"
 
 #include <float.h>
 #include <math.h>

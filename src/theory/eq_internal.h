@@ -1,10 +1,10 @@
 /* Private: checks and transforms shared by the closed forms of sections 1-3
- * (src/eq.c) and section 4 (src/eq_importance.c); defined in src/eq.c. */
+ * (src/theory/eq.c) and section 4 (src/theory/eq_importance.c); defined in src/theory/eq.c. */
 #ifndef MCSPEC_EQ_INTERNAL_H
 #define MCSPEC_EQ_INTERNAL_H
 
 #include <stddef.h>
-#include "internal.h"
+#include "core/internal.h"
 #include "mcspec/status.h"
 
 #define MCS_PI 3.14159265358979323846

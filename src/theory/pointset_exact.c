@@ -1,7 +1,7 @@
 /* Exact point-set power spectra of the 2D patterns (pointset2d.h). */
 #include "mcspec/pointset2d.h"
-#include "pattern2d_internal.h"
-#include "pointset_internal.h"
+#include "patterns/pattern2d_internal.h"
+#include "pointsets/pointset_internal.h"
 
 #include <math.h>
 

@@ -14,8 +14,8 @@
  *   is not a multiple of (N1, N2) unless they are equal).
  * All three are unbiased: <S_k> = K N^{-1/2} d_k0. */
 #include "mcspec/spectrum2d.h"
-#include "pattern2d_internal.h"
-#include "pointset_internal.h"
+#include "patterns/pattern2d_internal.h"
+#include "pointsets/pointset_internal.h"
 
 #include <math.h>
 

@@ -1,8 +1,8 @@
 /* Exact discrete moments of every pattern kind (see include/mcspec/theory.h
- * for the interval-overlap model); the read-out is src/readout.c. */
+ * for the interval-overlap model); the read-out is src/accumulators/readout.c. */
 #include "mcspec/theory.h"
-#include "internal.h"
-#include "readout.h"
+#include "core/internal.h"
+#include "accumulators/readout.h"
 #include "theory_internal.h"
 
 #include <math.h>
@@ -158,7 +158,7 @@ mcs_status mcs_theory_init(mcs_theory *th, const mcs_pattern *pat)
     return MCS_OK;
 }
 
-/* ---- read-out (src/readout.c): the expectations themselves -------------- */
+/* ---- read-out (src/accumulators/readout.c): the expectations themselves -------------- */
 
 mcs_status mcs_readout_open_theory(const void *obj, mcs_readout *view)
 {

@@ -1,14 +1,14 @@
 /* Private: how a pattern's bins look to the exact theory, shared by the
- * N x N moments (src/theory.c) and the O(N)-memory read-outs at any N
- * (src/theory_spectrum.c, which copies them into its object, and
- * src/theory_cov.c), so both routes see the same bins to the last bit. */
+ * N x N moments (src/theory/theory.c) and the O(N)-memory read-outs at any N
+ * (src/theory/theory_spectrum.c, which copies them into its object, and
+ * src/theory/theory_cov.c), so both routes see the same bins to the last bit. */
 #ifndef MCSPEC_THEORY_INTERNAL_H
 #define MCSPEC_THEORY_INTERNAL_H
 
 #include <math.h>
 #include <stddef.h>
 
-#include "internal.h"
+#include "core/internal.h"
 #include "mcspec/importance.h"
 #include "mcspec/pattern.h"
 #include "mcspec/theory.h"
@@ -37,7 +37,7 @@ static inline double mcs_theory_inv_p_(const mcs_pattern *pat, size_t b)
 }
 
 /* Bin of the uniform pattern's u_j = (j + 1/2)/K, by the generator's own
- * arithmetic (src/pattern.c: stratum_point, then place), so a u_j on a bin
+ * arithmetic (src/patterns/pattern.c: stratum_point, then place), so a u_j on a bin
  * edge lands in the same bin. Without importance that is the exact
  * floor((2j + 1) N / (2K)); with importance it is the CDF search of the
  * correctly rounded u_j. */
@@ -98,7 +98,7 @@ static inline mcs_status mcs_theory_check_pattern_(const mcs_pattern *pat, size_
     return MCS_OK;
 }
 
-/* ---- src/theory_cov.c: covariances of linear functionals of s ----------- */
+/* ---- src/theory/theory_cov.c: covariances of linear functionals of s ----------- */
 
 /* A complex weight per bin: w_b = f_i, or scale e^{-2 pi i freq i/N}, at
  * i = (b + shift) mod N, so that X = sum_b w_b s_b is K I (f given) or S_freq

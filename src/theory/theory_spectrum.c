@@ -1,8 +1,8 @@
 /* Exact spectra and estimator moments at any N with O(N) memory (see
  * include/mcspec/theory.h, "Exact spectra at any N"); the covariances are in
- * src/theory_cov.c. */
+ * src/theory/theory_cov.c. */
 #include "theory_internal.h"
-#include "readout.h"
+#include "accumulators/readout.h"
 
 #include <float.h>
 
