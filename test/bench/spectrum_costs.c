@@ -1,5 +1,5 @@
 /* spectrum_costs: measures the parts of the cost model behind
- * MCS_SPECTRUM_PATH_AUTO (src/spectrum_cost.c, src/dft.c) on this machine
+ * MCS_SPECTRUM_PATH_AUTO (src/accumulators/spectrum_cost.c, src/dft/dft.c) on this machine
  * and fits its constants, so that they are measured, not guessed.
  *
  *   make spectrum-costs          (or build/bench/spectrum_costs [--quick] [--generic])
