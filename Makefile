@@ -230,8 +230,10 @@ $(BUILD)/bench/%: test/bench/%.c $(LIB) $(FLAGS_STAMP)
 	@echo "LD $@"
 	$(Q)$(MCS_CC) -MMD -MP -MF $(BUILD)/obj/bench/$*.d $< $(LIB) $(LDFLAGS) $(LDLIBS) -o $@
 
-# The main job: every section example of the note with its defaults.
-run: all
+# The main job: every section example of the note with its defaults. It
+# builds what it runs (the library and the section examples), not the tests
+# or the bench.
+run: $(SECTION_BIN)
 	@set -e; for b in $(SECTION_BIN); do echo "== $$b"; $$b; echo; done
 
 # ADVERSARIAL_KNOWN=skip excuses the rows test/test_adversarial.c lists as

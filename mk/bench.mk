@@ -37,7 +37,8 @@ $(BENCH_FFTW_STAMP): bench-probe
 
 $(BUILD)/obj/test/bench/%.o: test/bench/%.c $(BENCH_FFTW_STAMP)
 	@mkdir -p $(@D)
-	$(CC) $(WARN) $(OPT) $(SANFLAGS) $(MCS_CPPFLAGS) $(CPPFLAGS) $(CFLAGS) -Itest/bench/src -D_POSIX_C_SOURCE=200809L \
+	@echo "CC $@"
+	$(Q)$(CC) $(WARN) $(OPT) $(SANFLAGS) $(MCS_CPPFLAGS) $(CPPFLAGS) $(CFLAGS) -Itest/bench/src -D_POSIX_C_SOURCE=200809L \
 	    -DBENCH_HAVE_FFTW=$$(cat $(BENCH_FFTW_STAMP)) '-DBENCH_CC="$(CC)"' \
 	    "-DBENCH_CC_VERSION=\"$$($(CC) --version 2>/dev/null | head -n 1)\"" \
 	    '-DBENCH_FLAGS="$(BENCH_FLAGS_STR)"' $(DEPFLAGS) -c $< -o $@
@@ -46,7 +47,8 @@ $(BUILD)/obj/test/bench/%.o: test/bench/%.c $(BENCH_FFTW_STAMP)
 # pattern rule for $(BUILD)/bench/%.
 $(BENCH_PROG): $(BENCH_OBJ) $(LIB) $(BENCH_FFTW_STAMP)
 	@mkdir -p $(@D)
-	$(CC) $(OPT) $(SANFLAGS) $(CFLAGS) $(LDFLAGS) $(BENCH_OBJ) $(LIB) \
+	@echo "LD $@"
+	$(Q)$(CC) $(OPT) $(SANFLAGS) $(CFLAGS) $(LDFLAGS) $(BENCH_OBJ) $(LIB) \
 	    $$([ "$$(cat $(BENCH_FFTW_STAMP))" = 1 ] && echo -lfftw3) $(LDLIBS) -o $@
 
 -include $(wildcard $(BUILD)/obj/test/bench/*.d $(BUILD)/obj/test/bench/src/*.d)

@@ -22,6 +22,17 @@ ifeq ($(FFT),fftw)
 LIB_CC += -DMCS_DFT_FFTW
 LDLIBS += -lfftw3
 LIB_LIBS := -lfftw3
+# Before the first object: can $(CC) build and link an FFTW 3 program? If
+# not, one line that says what to install, instead of an error deep inside
+# src/dft/dft_fftw.c. The stamp is made once per build folder.
+FFTW_PROBE := $(BUILD)/fftw-probe.ok
+$(FFTW_PROBE):
+	@mkdir -p $(@D)
+	@[ "$$(sh tools/bench_deps.sh fftw '$(CC)')" = 1 ] || { \
+	    echo "make FFT=fftw: $(CC) cannot build a program with <fftw3.h> and -lfftw3: install FFTW 3's development files (Debian: apt-get install libfftw3-dev)"; \
+	    exit 2; }
+	@touch $@
+$(LIB_OBJ) $(PIC_OBJ): | $(FFTW_PROBE)
 else ifneq ($(FFT),kiss)
 $(error FFT must be kiss (the default) or fftw, not '$(FFT)')
 endif

@@ -261,6 +261,18 @@ check "CMake: libmcspec shared, MCSPEC_MAX_N=256 MCSPEC_MAX_SIDE=16, built and i
     cmake_lib "$tmp/cm_shared" -DBUILD_SHARED_LIBS=ON -DMCSPEC_MAX_N=256 -DMCSPEC_MAX_SIDE=16
 check "CMake: libmcspec static, MCSPEC_MAX_N=256 MCSPEC_MAX_SIDE=16, built and installed" \
     cmake_lib "$tmp/cm_static" -DBUILD_SHARED_LIBS=OFF -DMCSPEC_MAX_N=256 -DMCSPEC_MAX_SIDE=16
+# No CMAKE_BUILD_TYPE: the library's objects still get -O2 (CMake's default
+# flags are -O0); a named build type keeps its own flags.
+cm_flags() {
+    dir=$1
+    shift
+    "$CMAKE" -S "$root" -B "$dir" -DCMAKE_C_COMPILER="$CC" -DCMAKE_EXPORT_COMPILE_COMMANDS=ON "$@" \
+        >/dev/null && grep '"command".*src/core/status.c' "$dir/compile_commands.json"
+}
+cm_default_opt() { cm_flags "$tmp/cm_default" | grep -q -- ' -O2 '; }
+cm_debug_opt() { ! cm_flags "$tmp/cm_debug" -DCMAKE_BUILD_TYPE=Debug | grep -q -- ' -O2 '; }
+check "CMake with no build type compiles the library with -O2" cm_default_opt
+check "CMake with CMAKE_BUILD_TYPE=Debug keeps its own flags (no -O2 added)" cm_debug_opt
 cm_so=$cmprefix/lib/libmcspec.so.$version
 check "CMake: libmcspec.so.$version has SONAME libmcspec.so.$major" \
     sh -c "readelf -d '$cm_so' | grep -q 'Library soname: \[libmcspec.so.$major\]'"
