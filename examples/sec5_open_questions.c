@@ -298,11 +298,12 @@ static int q3_continuous(const ex_options *opt)
 static mcs_dft plan;
 static double f_re[MCS_MAX_N], f_im[MCS_MAX_N];
 
-/* The diagonal part of Var[I], (1/K^2) sum_k |F_k|^2 Var(S_k), of e. */
-static double diagonal_part(const ex_exact *e)
+/* The diagonal part of Var[I], (1/K^2) sum_k |F_k|^2 Var(S_k), of e, over
+ * k >= first (0: all of it; 1: the power terms without k = 0's variance). */
+static double diagonal_part(const ex_exact *e, size_t first)
 {
     double sum = 0.0;
-    for (size_t q = 0; q < e->n; ++q)
+    for (size_t q = first; q < e->n; ++q)
         sum += (f_re[q] * f_re[q] + f_im[q] * f_im[q]) * ex_exact_covariance(e, q, q).re;
     return sum / ((double)e->k * (double)e->k);
 }
@@ -318,7 +319,8 @@ static double diagonal_closed(size_t n, size_t k, double h)
     return (kn / h * ac + (f_re[0] * f_re[0]) * kn * (1.0 / h - 1.0)) / (kd * kd);
 }
 
-/* The four rows of one g (im NULL: none); out: total, diagonal, off-diagonal. */
+/* The four rows of one g (im NULL: none); out: total, diagonal, off-diagonal,
+ * (in: the run's stream), the diagonal's k >= 1 terms. */
 static int q4_rows(const ex_options *opt, const mcs_importance *im, const char *pattern,
                    double *out)
 {
@@ -330,7 +332,7 @@ static int q4_rows(const ex_options *opt, const mcs_importance *im, const char *
     const double h = im != NULL ? im->harmonic_mean : 1.0;
     double total = im != NULL ? ex_or_na(mcs_eq52_variance_corrected(im, k, f, &v), &v)
                               : ex_or_na(mcs_eq25_random_variance(n, k, f, &v), &v);
-    const double var = ex_exact_variance(&ex, f), diag = diagonal_part(&ex);
+    const double var = ex_exact_variance(&ex, f), diag = diagonal_part(&ex, 0u);
     const double dc = diagonal_closed(n, k, h), fl = ex_variance_floor(n, k, f, var);
     row(opt, "Var[I]", im != NULL ? "eq. 52c" : "eq. 25", pattern, EX_NO_FREQ, total, var, meas,
         se, fl);
@@ -341,6 +343,7 @@ static int q4_rows(const ex_options *opt, const mcs_importance *im, const char *
     out[0] = var;
     out[1] = diag;
     out[2] = var - diag;
+    out[4] = diagonal_part(&ex, 1u);
     return 1;
 }
 
@@ -353,7 +356,7 @@ static int q4_split(const ex_options *opt)
         return 0;
     const int gs[4] = {EX_G_NONE, EX_G_FOLLOW, EX_G_UNRELATED, EX_G_MISMATCH};
     const char *names[4] = {"random", "random+g1", "random+gu", "random+g2"};
-    double parts[4][4];
+    double parts[4][5];
     for (int i = 0; i < 4; ++i) {
         parts[i][3] = (double)i; /* the run's stream */
         if (gs[i] != EX_G_NONE && ex_importance_for(gs[i], opt->n, opt->k, &imp) != MCS_OK)
@@ -363,10 +366,12 @@ static int q4_split(const ex_options *opt)
     }
     for (int i = 1; i < 4 && parts[0][0] > 0.0; ++i)
         ex_notef(opt,
-                 "%s: the diagonal part %s by %.4g, the off-diagonal part adds %+.4g: Var[I] "
+                 "%s: the diagonal part %s by %.4g (its k >= 1 power terms by %+.3g, the "
+                 "rest is k = 0's variance term), the off-diagonal part adds %+.4g: Var[I] "
                  "%.3g times no g's (%s)",
                  names[i], parts[i][1] > parts[0][1] ? "rises" : "falls",
-                 fabs(parts[i][1] - parts[0][1]), parts[i][2], parts[i][0] / parts[0][0],
+                 fabs(parts[i][1] - parts[0][1]), parts[i][4] - parts[0][4], parts[i][2],
+                 parts[i][0] / parts[0][0],
                  parts[i][0] < parts[0][0] ? "a gain: the off-diagonal part outweighs the rise"
                                            : "a loss");
     return 1;
