@@ -60,7 +60,7 @@ static void reader_close(reader *r)
 }
 
 /* Next line without its end-of-line characters: 1, or 0 at the end of the
- * input, or -1 after a read error (reported). */
+ * input, or -1 after a read error or a NUL byte in the line (reported). */
 static int reader_next(reader *r, char **line)
 {
     errno = 0;
@@ -74,6 +74,14 @@ static int reader_next(reader *r, char **line)
         return 0;
     }
     ++r->line;
+    /* Every later step reads the line as a C string, which a NUL byte would
+     * end early: the rest of the line (a point, a digit) would be lost. */
+    const char *nul = memchr(r->buf, '\0', (size_t)len);
+    if (nul != NULL) {
+        cli_fail(r->cmd, "%s: line %lu: a NUL byte at column %zu (not a text line; is this "
+                 "a binary file?)", r->name, r->line, (size_t)(nul - r->buf) + 1u);
+        return -1;
+    }
     while (len > 0 && (r->buf[len - 1] == '\n' || r->buf[len - 1] == '\r'))
         r->buf[--len] = '\0';
     *line = r->buf;

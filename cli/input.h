@@ -3,7 +3,8 @@
  * Every error names the input, the line and what was wrong, as one line on
  * stderr, and the reader stops there; a reader calls back only with complete,
  * validated data, so a caller that prints after reading never prints
- * anything partial. "-" (or NULL) is standard input. */
+ * anything partial. A NUL byte anywhere in a line (a comment too) is such an
+ * error: the input is text. "-" (or NULL) is standard input. */
 #ifndef MCSPEC_CLI_INPUT_H
 #define MCSPEC_CLI_INPUT_H
 

@@ -21,8 +21,8 @@
 #   --opt=value equals --opt value, a kind's variance does not depend on
 #   which other kinds run (one stream per kind);
 #   every malformed input (bad number, wrong column count, empty set, NaN,
-#   infinity, out-of-range point, negative weight, unreadable file, empty
-#   input) gives exit 2, one line on stderr naming the line, nothing on
+#   infinity, out-of-range point, negative weight, a NUL byte, unreadable
+#   file, empty input) gives exit 2, one line on stderr naming the line, nothing on
 #   stdout, also when the error comes after many good sets; --wrap;
 #   --plot: a missing gnuplot, a bad file name and an unwritable directory
 #   give exit 2 and no file; with gnuplot, an SVG and a PNG of the expected
@@ -196,6 +196,29 @@ input ''
 usage_error "empty input" 'input is empty' "$MCSPEC" spectrum -
 input '# header\n# only\n'
 usage_error "only comments" 'line 2: end of input and no point read' "$MCSPEC" spectrum -
+# A NUL byte anywhere in a text input is an error on its line: a C string
+# ends there, so the rest of the line was lost (a leading NUL dropped the
+# point, "0.2<NUL>9" read as 0.2).
+printf '0.1\n\0000.7\n0.9\n' >"$tmp/in"
+usage_error "NUL at the start of a line" '^mcspec spectrum: <stdin>: line 2: a NUL byte' \
+    "$MCSPEC" spectrum --n 4 -
+printf '0.1\n0.2\0009\n' >"$tmp/nul.txt"
+usage_error "NUL inside a number" "nul.txt: line 2: a NUL byte at column 4" \
+    "$MCSPEC" spectrum --n 4 "$tmp/nul.txt"
+printf '# a header\000 with a NUL\n0.5\n' >"$tmp/in"
+usage_error "NUL in a '#' line" '<stdin>: line 1: a NUL byte' "$MCSPEC" spectrum -
+printf '0.1 0.2\n0.3 0.4\000\n' >"$tmp/in"
+usage_error "2D: NUL after a point" '<stdin>: line 2: a NUL byte at column 8' \
+    "$MCSPEC" spectrum --dim 2 --freq 2 -
+printf '0.5 1\n0.25 \0002\n' >"$tmp/in"
+usage_error "--weights: NUL before a weight" '<stdin>: line 2: a NUL byte' "$MCSPEC" spectrum --weights -
+printf '1\n2\n\000\n3\n' >"$tmp/nul.txt"
+usage_error "integrand with a NUL line" "^mcspec variance: .*nul.txt: line 3: a NUL byte" \
+    "$MCSPEC" variance --k 2 "$tmp/nul.txt"
+printf '1\n1\000\n' >"$tmp/nul.txt"
+usage_error "importance with a NUL" "^mcspec pattern: .*nul.txt: line 2: a NUL byte" \
+    "$MCSPEC" pattern random --n 2 --k 2 --importance "$tmp/nul.txt"
+: >"$tmp/in"
 usage_error "missing file" "cannot read '$tmp/nope.txt'" "$MCSPEC" spectrum "$tmp/nope.txt"
 usage_error "a directory" "cannot read '$tmp': it is a directory" "$MCSPEC" spectrum "$tmp"
 # Nothing partial: 200 good sets, then a bad line.
