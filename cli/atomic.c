@@ -50,11 +50,44 @@ static void sync_dir(const char *path)
     }
 }
 
+const char *cli_not_regular(const char *path)
+{
+    struct stat st;
+    /* lstat: a symbolic link is itself replaced by the rename, not written
+     * through. */
+    if (lstat(path, &st) != 0 || S_ISREG(st.st_mode))
+        return NULL;
+    if (S_ISDIR(st.st_mode))
+        return "a directory";
+    if (S_ISLNK(st.st_mode))
+        return "a symbolic link";
+    if (S_ISCHR(st.st_mode))
+        return "a character device";
+    if (S_ISBLK(st.st_mode))
+        return "a block device";
+    if (S_ISFIFO(st.st_mode))
+        return "a FIFO";
+    if (S_ISSOCK(st.st_mode))
+        return "a socket";
+    return "a special file";
+}
+
+/* The one line of a refused path; CLI_EXIT_USAGE. */
+static int refuse_special(const char *cmd, const char *path, const char *what)
+{
+    return cli_fail(cmd, "cannot write %s: it is %s, not a regular file (give a regular file "
+                    "or a new name)", path, what);
+}
+
 int cli_write_atomic(const char *cmd, const char *path, const void *buf, size_t len)
 {
     char part[4096];
     if (part_name(path, part, sizeof part) != 0)
         return cli_fail(cmd, "cannot write %s: path too long", path);
+    /* Again at the end: something else may have taken the name during the run. */
+    const char *special = cli_not_regular(path);
+    if (special != NULL)
+        return refuse_special(cmd, path, special);
     int fd = mkstemp(part);
     if (fd < 0)
         return cli_fail(cmd, "cannot write %s: %s", path, strerror(errno));
@@ -84,9 +117,9 @@ int cli_write_check(const char *cmd, const char *path)
         return cli_fail(cmd, "an empty file name");
     if (part_name(path, part, sizeof part) != 0)
         return cli_fail(cmd, "cannot write %s: path too long", path);
-    struct stat st;
-    if (stat(path, &st) == 0 && S_ISDIR(st.st_mode))
-        return cli_fail(cmd, "cannot write %s: it is a directory", path);
+    const char *special = cli_not_regular(path);
+    if (special != NULL)
+        return refuse_special(cmd, path, special);
     int fd = mkstemp(part);
     if (fd < 0)
         return cli_fail(cmd, "cannot write %s: %s", path, strerror(errno));

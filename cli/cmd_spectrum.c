@@ -77,7 +77,7 @@ static const char help[] =
     "               to FILE (docs/format.md; read by mcspec show, merged with\n"
     "               other files by mcspec merge), written atomically: a temporary\n"
     "               file beside FILE, flushed, then renamed, so FILE is never left\n"
-    "               half-written\n"
+    "               half-written (FILE: a regular file or a new name)\n"
     "  --help       this text\n"
     "\n"
     "Exit status: 0 on success, 2 on bad usage or input (one line on stderr).\n";

@@ -53,7 +53,8 @@ static const char help[] =
     "                     and one row per kind; an empty field has no value\n"
     "  --save FILE        also save the estimator's accumulator (mean, M2, M3, M4\n"
     "                     of I; a welford record, docs/format.md) to FILE, written\n"
-    "                     atomically; needs --kind (one record per file)\n"
+    "                     atomically (a regular file or a new name); needs --kind\n"
+    "                     (one record per file)\n"
     "  --help             this text\n"
     "\n"
     "Exit status: 0 on success, 2 on bad usage or input (one line on stderr).\n";

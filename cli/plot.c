@@ -73,9 +73,11 @@ int cli_plot_check(const char *cmd, const char *path)
         return cli_fail(cmd, "--plot: the file name is too long");
     char dir[PATH_LEN];
     dir_of(path, dir, sizeof dir);
-    struct stat st;
-    if (stat(path, &st) == 0 && S_ISDIR(st.st_mode))
-        return cli_fail(cmd, "--plot %s: that is a directory", path);
+    /* The figure is renamed onto path, as a record is (atomic.h). */
+    const char *special = cli_not_regular(path);
+    if (special != NULL)
+        return cli_fail(cmd, "--plot %s: it is %s, not a regular file (give a regular file or a "
+                        "new name)", path, special);
     if (access(dir, W_OK) != 0)
         return cli_fail(cmd, "--plot %s: cannot write in directory '%s': %s", path, dir,
                         strerror(errno));
@@ -338,6 +340,9 @@ static int install_figure(const char *cmd, const char *tmp, const char *path)
     char src[PATH_LEN + 16], part[PATH_LEN + 32];
     snprintf(src, sizeof src, "%s/figure", tmp);
     snprintf(part, sizeof part, "%s.partXXXXXX", path);
+    const char *special = cli_not_regular(path);
+    if (special != NULL)
+        return cli_fail(cmd, "--plot %s: it is %s, not a regular file", path, special);
     int in = open(src, O_RDONLY);
     struct stat st;
     if (in < 0 || fstat(in, &st) != 0 || st.st_size == 0) {

@@ -22,7 +22,9 @@
 #   show prints every kind the format knows (the fuzz seeds), moment and
 #   autocorr with the spectrum header, welford with its own;
 #   --save into a missing directory fails before any work; --save with
-#   variance needs --kind.
+#   variance needs --kind; --save, merge -o and --plot refuse a device node,
+#   a FIFO and a symbolic link (exit 2, one line), which stay as they were,
+#   and replace a regular file.
 # Ends with a Unity-style summary so test/run_tests.sh counts it.
 
 MCSPEC=${MCSPEC:-build/bin/mcspec}
@@ -167,5 +169,56 @@ refused "--save into a missing directory" "cannot write $tmp/no/such/dir/x.rec" 
 refused "--save of a directory" "it is a directory" pattern 10 --save "$tmp"
 refused "variance --save without --kind" "choose its pattern with --kind" \
     "$MCSPEC" variance --k 3 --save "$tmp/v3.rec" "$tmp/f6.txt"
+
+# ------------------------------------------------ --save onto special files
+# The atomic write renames a new file onto FILE, which would put a regular
+# file in place of a device node, a FIFO or a symbolic link: anything but a
+# regular file (or nothing) is refused before any work, and left as it was.
+# node_kept LABEL PATH TYPE: PATH is still of TYPE (stat's %F) with the
+# device numbers and target it had; no part file beside it.
+node_kept() {
+    if [ "$(stat -c '%F %t:%T' "$2")" != "$3" ]; then bad "$1: $2 is now $(stat -c '%F %t:%T' "$2")"
+    elif [ -L "$2" ] && [ "$(readlink "$2")" != "$tmp/keep" ]; then bad "$1: the link changed"
+    elif ls "$tmp"/sp/*.part* >/dev/null 2>&1; then bad "$1: a temporary file was left"
+    else ok; fi
+}
+mkdir -p "$tmp/sp"
+mkfifo "$tmp/sp/fifo"
+ln -s "$tmp/keep" "$tmp/sp/link"
+printf '0.25\n0.5\n' >"$tmp/sp/pts.txt"
+if [ "$(id -u)" -eq 0 ] && mknod "$tmp/sp/dev" c 1 7 2>/dev/null; then
+    refused "pattern --save onto a character device" \
+        "^mcspec pattern: cannot write $tmp/sp/dev: it is a character device, not a regular file" \
+        pattern 10 --save "$tmp/sp/dev"
+    node_kept "pattern --save onto a character device" "$tmp/sp/dev" "character special file 1:7"
+    refused "merge -o onto a character device" "cannot write $tmp/sp/dev: it is a character device" \
+        "$MCSPEC" merge "$tmp/p.rec" -o "$tmp/sp/dev"
+    node_kept "merge -o onto a character device" "$tmp/sp/dev" "character special file 1:7"
+    mknod "$tmp/sp/dev.svg" c 1 7
+    refused "--plot onto a character device" "--plot $tmp/sp/dev.svg: it is a character device" \
+        pattern 10 --plot "$tmp/sp/dev.svg"
+    node_kept "--plot onto a character device" "$tmp/sp/dev.svg" "character special file 1:7"
+else
+    skip "--save onto a device node: mknod needs root"
+fi
+refused "pattern --save onto a FIFO" "cannot write $tmp/sp/fifo: it is a FIFO, not a regular file" \
+    pattern 10 --save "$tmp/sp/fifo"
+node_kept "pattern --save onto a FIFO" "$tmp/sp/fifo" "fifo 0:0"
+refused "spectrum --save onto a FIFO" "^mcspec spectrum: cannot write $tmp/sp/fifo: it is a FIFO" \
+    "$MCSPEC" spectrum --n 4 --save "$tmp/sp/fifo" "$tmp/sp/pts.txt"
+node_kept "spectrum --save onto a FIFO" "$tmp/sp/fifo" "fifo 0:0"
+refused "variance --save onto a FIFO" "^mcspec variance: cannot write $tmp/sp/fifo: it is a FIFO" \
+    "$MCSPEC" variance --k 3 --kind random --save "$tmp/sp/fifo" "$tmp/f6.txt"
+node_kept "variance --save onto a FIFO" "$tmp/sp/fifo" "fifo 0:0"
+refused "merge -o onto a FIFO" "^mcspec merge: cannot write $tmp/sp/fifo: it is a FIFO" \
+    "$MCSPEC" merge "$tmp/p.rec" -o "$tmp/sp/fifo"
+node_kept "merge -o onto a FIFO" "$tmp/sp/fifo" "fifo 0:0"
+refused "pattern --save onto a symbolic link" \
+    "cannot write $tmp/sp/link: it is a symbolic link, not a regular file" pattern 10 --save "$tmp/sp/link"
+node_kept "pattern --save onto a symbolic link" "$tmp/sp/link" "symbolic link 0:0"
+# A regular file is replaced, as before.
+printf 'old\n' >"$tmp/sp/old.rec"
+succeeds "pattern --save onto a regular file" pattern 10 --seed 3 --save "$tmp/sp/old.rec"
+same_file "pattern --save onto a regular file" "$tmp/p.rec" "$tmp/sp/old.rec"
 
 check_summary
