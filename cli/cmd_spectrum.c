@@ -46,8 +46,9 @@ static const char help[] =
     "\n"
     "Input: one point per line, its coordinates (one, or two with --dim 2)\n"
     "separated by spaces or tabs; with --weights (binned only) a last column is\n"
-    "the point's weight (finite, >= 0). A line starting with '#' ends the current\n"
-    "set (utk's convention); '#' lines before the first point are a header; a\n"
+    "the point's weight (finite, >= 0; a set's weights sum to at most\n"
+    "MCS_SPECTRUM_MAX_SUM). A line starting with '#' ends the current set (utk's\n"
+    "convention); '#' lines before the first point are a header; a\n"
     "final '#' is allowed; two '#' lines with no point between them are an error\n"
     "(an empty set). Blank lines are ignored; a NUL byte is an error (the input\n"
     "is text). Everything is read and checked before anything is printed: a\n"
@@ -136,9 +137,17 @@ static int parse(int argc, char **argv, spectrum_opts *o)
     return cli_check_outputs(CMD, o->save, o->plot);
 }
 
+/* What add_set needs: the accumulator, and where the set came from. */
+typedef struct {
+    const cli_acc *acc;
+    const char *name;                 /* the input, as messages name it */
+    const cli_pointset_stats *stats;  /* its lines up to the set's end */
+} add_ctx;
+
 static int add_set(void *ctx, size_t k, const double *coords, const double *weights)
 {
-    const cli_acc *acc = ctx;
+    const add_ctx *c = ctx;
+    const cli_acc *acc = c->acc;
     mcs_status st;
     if (acc->kind == MCS_IO_KIND_POINTSET)
         st = mcs_pointset_add(acc->obj, k, coords);
@@ -146,6 +155,12 @@ static int add_set(void *ctx, size_t k, const double *coords, const double *weig
         st = mcs_pointset2d_add(acc->obj, k, coords);
     else
         st = mcs_spectrum_add_points(acc->obj, k, coords, weights);
+    /* The reader refuses a sum above the limit on its line; a sum the
+     * library's own (vectorised) order rounds past it lands here. */
+    if (st == MCS_ERR_MAGNITUDE)
+        return cli_fail(CMD, "%s: line %lu: the set ending here has weights summing above "
+                        "%g, the most a set may sum to (mcs_spectrum, MCS_SPECTRUM_MAX_SUM): "
+                        "scale the weights down", c->name, c->stats->lines, MCS_SPECTRUM_MAX_SUM);
     if (st != MCS_OK)
         return cli_internal(CMD, "adding a point set failed: %s", mcs_status_str(st));
     return 0;
@@ -228,11 +243,13 @@ int cli_cmd_spectrum(int argc, char **argv)
     rc = cli_acc_new(CMD, kind, shape, &acc);
     if (rc != 0)
         return rc;
-    cli_pointset_format fmt = {o.dim, o.weights, o.wrap};
+    cli_pointset_format fmt = {o.dim, o.weights, o.wrap, MCS_SPECTRUM_MAX_SUM,
+                               "mcs_spectrum, MCS_SPECTRUM_MAX_SUM"};
     cli_pointset_stats stats;
     cli_progress progress;
     cli_progress_init(&progress, !o.csv, CMD, "sets read", 0);
-    rc = cli_read_pointsets(CMD, o.path, &fmt, add_set, &acc, &stats, &progress);
+    add_ctx ctx = {&acc, cli_input_name(o.path), &stats};
+    rc = cli_read_pointsets(CMD, o.path, &fmt, add_set, &ctx, &stats, &progress);
     cli_progress_end(&progress);
     if (rc == 0)
         rc = report(&o, &acc, &stats);

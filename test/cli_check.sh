@@ -194,6 +194,16 @@ input '0.5 -2\n'
 usage_error "negative weight" 'line 1: weight -2 is negative' "$MCSPEC" spectrum --weights -
 input ''
 usage_error "empty input" 'input is empty' "$MCSPEC" spectrum -
+# Weights of one set summing above the spectrum's MCS_SPECTRUM_MAX_SUM = 2^100:
+# the line where the sum passes it (it was exit 1, MCS_ERR_MAGNITUDE).
+input '0.1 1\n#\n0.1 1e30\n0.2 1e30\n0.3 1\n'
+usage_error "weights summing above 2^100" \
+    '^mcspec spectrum: <stdin>: line 4: .*weights.* sum to 2e\+30.*above 1\.26765e\+30 = 2\^100' \
+    "$MCSPEC" spectrum --n 4 --weights -
+input '0.5 1.3e30\n'
+usage_error "one weight above 2^100" '<stdin>: line 1: .*2\^100' "$MCSPEC" spectrum --n 4 --weights -
+input '0.5 1e30\n0.25 2.6765060022822938e29\n#\n0.5 1\n'
+succeeds "weights summing to 2^100 exactly" "$MCSPEC" spectrum --n 4 --weights --csv -
 input '# header\n# only\n'
 usage_error "only comments" 'line 2: end of input and no point read' "$MCSPEC" spectrum -
 # A NUL byte anywhere in a text input is an error on its line: a C string
