@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -48,6 +49,18 @@ static void sync_dir(const char *path)
         (void)fsync(fd);
         (void)close(fd);
     }
+}
+
+int cli_write_failed(const char *cmd, const char *path, int err, unsigned long long len)
+{
+    struct rlimit lim;
+    if (err == EFBIG && getrlimit(RLIMIT_FSIZE, &lim) == 0 && lim.rlim_cur != RLIM_INFINITY)
+        return cli_fail(cmd, "cannot write %s: its %llu bytes pass the file-size limit of %llu "
+                        "bytes (ulimit -f)", path, len, (unsigned long long)lim.rlim_cur);
+    if (err == EFBIG)
+        return cli_fail(cmd, "cannot write %s: %s (its %llu bytes pass a file-size limit)", path,
+                        strerror(err), len);
+    return cli_fail(cmd, "cannot write %s: %s", path, strerror(err != 0 ? err : EIO));
 }
 
 const char *cli_not_regular(const char *path)
@@ -97,14 +110,17 @@ int cli_write_atomic(const char *cmd, const char *path, const void *buf, size_t 
     int ok = write_all(fd, (const unsigned char *)buf, len) == 0 &&
              fchmod(fd, 0666 & ~mask) == 0 && fsync(fd) == 0;
     int err = errno;
-    ok = close(fd) == 0 && ok;
+    if (close(fd) != 0 && ok) { /* a delayed write error (NFS, quota) */
+        err = errno;
+        ok = 0;
+    }
     if (ok && rename(part, path) != 0) {
         err = errno;
         ok = 0;
     }
     if (!ok) {
         unlink(part);
-        return cli_fail(cmd, "cannot write %s: %s", path, strerror(err != 0 ? err : EIO));
+        return cli_write_failed(cmd, path, err, (unsigned long long)len);
     }
     sync_dir(path);
     return 0;

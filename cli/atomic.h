@@ -20,6 +20,11 @@ int cli_write_atomic(const char *cmd, const char *path, const void *buf, size_t 
  * does not fail at its end). Returns 0 or CLI_EXIT_USAGE after a message. */
 int cli_write_check(const char *cmd, const char *path);
 
+/* The one line of a failed write of len bytes to path, errno err: "cannot
+ * write PATH: REASON", where EFBIG names the file-size limit (ulimit -f) it
+ * passed. Returns CLI_EXIT_USAGE. */
+int cli_write_failed(const char *cmd, const char *path, int err, unsigned long long len);
+
 /* What path is when it exists and is not a regular file: "a directory", "a
  * character device", "a FIFO", "a symbolic link", ...; NULL for a regular
  * file or nothing there (or a path lstat cannot reach: the write reports

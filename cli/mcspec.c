@@ -2,6 +2,7 @@
  * (cmd_<name>.c); this file only dispatches. */
 #include "cli.h"
 
+#include <signal.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -63,6 +64,10 @@ static void command_names(char *buf, size_t size)
 
 int main(int argc, char **argv)
 {
+    /* A file-size limit (ulimit -f) would kill the command by SIGXFSZ in the
+     * middle of a write, leaving a FILE.partXXXXXX behind; ignored, the write
+     * fails with EFBIG, which the writers report and clean up after. */
+    signal(SIGXFSZ, SIG_IGN);
     char names[256];
     command_names(names, sizeof names);
     if (argc < 2) {

@@ -6,6 +6,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <math.h>
+#include <signal.h>
 #include <spawn.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -301,16 +302,30 @@ static int run_gnuplot(const char *cmd, const char *tmp)
     posix_spawn_file_actions_addopen(&fa, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
     posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, log, O_WRONLY | O_CREAT | O_TRUNC, 0600);
     posix_spawn_file_actions_adddup2(&fa, STDOUT_FILENO, STDERR_FILENO);
+    /* gnuplot gets SIGXFSZ back at its default (the command ignores it, and
+     * an ignored signal stays ignored across exec). */
+    posix_spawnattr_t attr;
+    posix_spawnattr_init(&attr);
+    sigset_t def;
+    sigemptyset(&def);
+    sigaddset(&def, SIGXFSZ);
+    posix_spawnattr_setsigdefault(&attr, &def);
+    posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGDEF);
     char *argv[] = {gp, script, NULL};
     pid_t pid;
-    int rc = posix_spawn(&pid, gp, &fa, NULL, argv, environ);
+    int rc = posix_spawn(&pid, gp, &fa, &attr, argv, environ);
     posix_spawn_file_actions_destroy(&fa);
+    posix_spawnattr_destroy(&attr);
     if (rc != 0)
         return cli_fail(cmd, "cannot run %s: %s", gp, strerror(rc));
     int status = 0;
     while (waitpid(pid, &status, 0) < 0)
         if (errno != EINTR)
             return cli_fail(cmd, "waiting for gnuplot: %s", strerror(errno));
+    if (WIFSIGNALED(status))
+        return cli_fail(cmd, "gnuplot was killed by signal %d%s", WTERMSIG(status),
+                        WTERMSIG(status) == SIGXFSZ ? " (SIGXFSZ: the file-size limit, ulimit -f)"
+                                                     : "");
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
         char msg[512];
         first_log_line(tmp, msg, sizeof msg);
@@ -326,9 +341,11 @@ static int copy_fd(int in, int out)
     while ((got = read(in, buf, sizeof buf)) > 0) {
         for (ssize_t done = 0; done < got;) {
             ssize_t w = write(out, buf + done, (size_t)(got - done));
-            if (w < 0 && errno != EINTR)
+            if (w < 0 && errno == EINTR)
+                continue;
+            if (w <= 0)
                 return -1;
-            done += w > 0 ? w : 0;
+            done += w;
         }
     }
     return got < 0 ? -1 : 0;
@@ -359,12 +376,19 @@ static int install_figure(const char *cmd, const char *tmp, const char *path)
     mode_t mask = umask(0);
     umask(mask);
     int ok = copy_fd(in, out) == 0 && fchmod(out, 0666 & ~mask) == 0;
-    ok = (close(out) == 0) && ok;
+    int err = errno;
+    if (close(out) != 0 && ok) {
+        err = errno;
+        ok = 0;
+    }
     close(in);
-    if (!ok || rename(part, path) != 0) {
-        int err = errno;
+    if (ok && rename(part, path) != 0) {
+        err = errno;
+        ok = 0;
+    }
+    if (!ok) {
         unlink(part);
-        return cli_fail(cmd, "cannot write %s: %s", path, strerror(err));
+        return cli_write_failed(cmd, path, err, (unsigned long long)st.st_size);
     }
     return 0;
 }

@@ -24,7 +24,8 @@
 #   --save into a missing directory fails before any work; --save with
 #   variance needs --kind; --save, merge -o and --plot refuse a device node,
 #   a FIFO and a symbolic link (exit 2, one line), which stay as they were,
-#   and replace a regular file.
+#   and replace a regular file; a file-size limit (ulimit -f) below the
+#   record is exit 2 and one line, no part file; below stdout, exit 1.
 # Ends with a Unity-style summary so test/run_tests.sh counts it.
 
 MCSPEC=${MCSPEC:-build/bin/mcspec}
@@ -216,6 +217,27 @@ node_kept "merge -o onto a FIFO" "$tmp/sp/fifo" "fifo 0:0"
 refused "pattern --save onto a symbolic link" \
     "cannot write $tmp/sp/link: it is a symbolic link, not a regular file" pattern 10 --save "$tmp/sp/link"
 node_kept "pattern --save onto a symbolic link" "$tmp/sp/link" "symbolic link 0:0"
+# A file-size limit (ulimit -f) below the record: the command ignores
+# SIGXFSZ, so the write fails with EFBIG (it was killed, status 153, and left
+# FILE.partXXXXXX): exit 2, one line naming FILE and the limit, no part file.
+# stdout goes to /dev/null, which no limit covers.
+( ulimit -f 8 && exec "$MCSPEC" pattern random --n 4096 --k 4 --trials 2 --save "$tmp/sp/big.rec" \
+    ) </dev/null >/dev/null 2>"$tmp/err"
+rc=$?
+if [ "$rc" -ne 2 ]; then bad "--save past ulimit -f: exit status $rc, expected 2"
+elif [ "$(wc -l <"$tmp/err")" -ne 1 ]; then bad "--save past ulimit -f: $(wc -l <"$tmp/err") lines on stderr"
+elif ! grep -Eq "^mcspec pattern: cannot write $tmp/sp/big.rec: .*file-size limit" "$tmp/err"
+then bad "--save past ulimit -f: '$(cat "$tmp/err")'"
+elif [ -e "$tmp/sp/big.rec" ] || ls "$tmp"/sp/*.part* >/dev/null 2>&1
+then bad "--save past ulimit -f: left $(ls "$tmp/sp" | tr '\n' ' ')"
+else ok; fi
+# The same limit on stdout: exit 1 (the output could not be written), one line.
+( ulimit -f 1 && exec "$MCSPEC" pattern random --n 4096 --k 4 --trials 2 --csv \
+    ) </dev/null >"$tmp/sp/out.csv" 2>"$tmp/err"
+rc=$?
+if [ "$rc" -eq 1 ] && [ "$(wc -l <"$tmp/err")" -eq 1 ] && grep -q '^mcspec: cannot write the output' "$tmp/err"
+then ok; else bad "stdout past ulimit -f: exit status $rc, '$(cat "$tmp/err")'"; fi
+rm -f "$tmp/sp/out.csv"
 # A regular file is replaced, as before.
 printf 'old\n' >"$tmp/sp/old.rec"
 succeeds "pattern --save onto a regular file" pattern 10 --seed 3 --save "$tmp/sp/old.rec"
