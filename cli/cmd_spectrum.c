@@ -57,9 +57,9 @@ static const char help[] =
     "\n"
     "Options:\n"
     "  --n N        bins N, 1.." CLI_STR(MCS_MAX_N) " (default 256; not with --freq)\n"
-    "  --freq F     the point-set spectrum up to frequency F instead: 1.."
-    CLI_STR(MCS_MAX_FREQ_1D) " in 1D,\n"
-    "               1.." CLI_STR(MCS_MAX_FREQ) " per axis in 2D\n"
+    "  --freq F     the point-set spectrum up to frequency F instead (no bins):\n"
+    "               F = 1.." CLI_STR(MCS_MAX_FREQ_1D) " in 1D (MCS_MAX_FREQ_1D), 1.."
+    CLI_STR(MCS_MAX_FREQ) " in 2D (MCS_MAX_FREQ)\n"
     "  --dim D      coordinates per point, 1 (default) or 2 (needs --freq)\n"
     "  --radial     --dim 2: one row per annulus instead of per wave vector\n"
     "  --weights    each line holds a point and its weight (binned only)\n"
@@ -86,15 +86,35 @@ static const char help[] =
 typedef struct {
     size_t n, freq, dim;
     int weights, wrap, csv, radial;
+    const char *freq_text; /* --freq as given: its range depends on --dim */
     const char *plot;
     const char *path;
     const char *save;
 } spectrum_opts;
 
-/* The combinations --dim, --freq, --n, --weights and --radial allow. */
-static int check_mode(const spectrum_opts *o, int n_given)
+/* --freq F into o->freq, within the capacity of the accumulator --dim picks:
+ * MCS_MAX_FREQ_1D (mcs_pointset) or MCS_MAX_FREQ (mcs_pointset2d). */
+static int parse_freq(spectrum_opts *o)
 {
-    const size_t cap = o->dim == 2u ? (size_t)MCS_MAX_FREQ : (size_t)MCS_MAX_FREQ_1D;
+    if (o->freq_text == NULL)
+        return 0;
+    const int two = o->dim == 2u;
+    const size_t cap = two ? (size_t)MCS_MAX_FREQ : (size_t)MCS_MAX_FREQ_1D;
+    uint64_t v = 0;
+    if (cli_parse_u64(o->freq_text, 1u, cap, &v) != 0)
+        return cli_fail(CMD, "--freq expects a whole number from 1 to %zu for --dim %zu (this "
+                        "build's %s), not '%s'", cap, o->dim,
+                        two ? "MCS_MAX_FREQ" : "MCS_MAX_FREQ_1D", o->freq_text);
+    o->freq = (size_t)v;
+    return 0;
+}
+
+/* The combinations --dim, --freq, --n, --weights and --radial allow. */
+static int check_mode(spectrum_opts *o, int n_given)
+{
+    int rc = parse_freq(o);
+    if (rc != 0)
+        return rc;
     if (o->freq == 0u && o->dim == 2u)
         return cli_fail(CMD, "--dim 2 needs --freq F: the 2D spectrum of points is not binned");
     if (o->freq == 0u && o->radial)
@@ -107,9 +127,6 @@ static int check_mode(const spectrum_opts *o, int n_given)
         return cli_fail(CMD, "--weights needs binning: drop --freq, or the weight column");
     if (o->radial && o->dim != 2u)
         return cli_fail(CMD, "--radial needs --dim 2");
-    if (o->freq > cap)
-        return cli_fail(CMD, "--freq %zu is above this build's %zu for --dim %zu (MCS_MAX_FREQ%s)",
-                        o->freq, cap, o->dim, o->dim == 2u ? "" : "_1D");
     return 0;
 }
 
@@ -117,7 +134,7 @@ static int parse(int argc, char **argv, spectrum_opts *o)
 {
     cli_opt opts[] = {
         {"n", CLI_OPT_SIZE, &o->n, 1, MCS_MAX_N, 0},
-        {"freq", CLI_OPT_SIZE, &o->freq, 1, SIZE_MAX, 0},
+        {"freq", CLI_OPT_STRING, &o->freq_text, 0, 0, 0},
         {"dim", CLI_OPT_SIZE, &o->dim, 1, 2, 0},
         {"radial", CLI_OPT_FLAG, &o->radial, 0, 0, 0},
         {"weights", CLI_OPT_FLAG, &o->weights, 0, 0, 0},
@@ -231,7 +248,7 @@ static int report(const spectrum_opts *o, const cli_acc *acc, const cli_pointset
 
 int cli_cmd_spectrum(int argc, char **argv)
 {
-    spectrum_opts o = {DEFAULT_N, 0, 1, 0, 0, 0, 0, NULL, NULL, NULL};
+    spectrum_opts o = {DEFAULT_N, 0, 1, 0, 0, 0, 0, NULL, NULL, NULL, NULL};
     int rc = parse(argc, argv, &o);
     if (rc != 0)
         return rc < 0 ? CLI_EXIT_OK : rc;
