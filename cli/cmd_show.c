@@ -70,8 +70,9 @@ static int parse(int argc, char **argv, show_opts *o)
         return rc;
     if (o->path == NULL)
         return cli_fail(CMD, "which record? give FILE");
+    /* gnuplot only once the record is known to have a figure (cli_cmd_show). */
     if (o->plot != NULL)
-        return cli_plot_check(CMD, o->plot);
+        return cli_plot_check_file(CMD, o->plot);
     return 0;
 }
 
@@ -228,6 +229,8 @@ int cli_cmd_show(int argc, char **argv)
         rc = cli_fail(CMD, "%s holds %s: --radial is for pointset2d records", o.path, what);
     else if (acc.kind != MCS_IO_KIND_WELFORD && cli_acc_count(&acc) == 0u)
         rc = cli_fail(CMD, "%s holds %s with no trials: nothing to show", o.path, what);
+    else if (o.plot != NULL && cli_plot_check_gnuplot(CMD) != 0)
+        rc = CLI_EXIT_USAGE;
     else if (acc.kind == MCS_IO_KIND_WELFORD)
         rc = show_welford(&o, acc.obj);
     else if (acc.kind == MCS_IO_KIND_POINTSET || acc.kind == MCS_IO_KIND_POINTSET2D)

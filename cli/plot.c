@@ -65,7 +65,7 @@ static void dir_of(const char *path, char *dir, size_t size)
         snprintf(dir, size, "%.*s", (int)(slash - path), path);
 }
 
-int cli_plot_check(const char *cmd, const char *path)
+int cli_plot_check_file(const char *cmd, const char *path)
 {
     const char *ext = extension(path);
     if (strcmp(ext, "svg") != 0 && strcmp(ext, "png") != 0)
@@ -82,11 +82,22 @@ int cli_plot_check(const char *cmd, const char *path)
     if (access(dir, W_OK) != 0)
         return cli_fail(cmd, "--plot %s: cannot write in directory '%s': %s", path, dir,
                         strerror(errno));
+    return 0;
+}
+
+int cli_plot_check_gnuplot(const char *cmd)
+{
     char gp[PATH_LEN];
     if (find_gnuplot(gp, sizeof gp) != 0)
         return cli_fail(cmd, "--plot needs gnuplot, which is not on PATH (Debian: apt-get "
                         "install gnuplot-nox)");
     return 0;
+}
+
+int cli_plot_check(const char *cmd, const char *path)
+{
+    int rc = cli_plot_check_file(cmd, path);
+    return rc != 0 ? rc : cli_plot_check_gnuplot(cmd);
 }
 
 int cli_check_outputs(const char *cmd, const char *save, const char *plot)

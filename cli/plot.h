@@ -30,10 +30,19 @@ typedef struct {
     const char *ylabel;       /* the spectrum's y axis; NULL: <|S_k|^2> */
 } cli_plot_info;
 
-/* Checks a --plot FILE before any work is done: it ends in .svg or .png, its
- * directory is writable, and gnuplot is on PATH. Returns 0 or
- * CLI_EXIT_USAGE after one line on stderr. */
+/* Checks a --plot FILE before any work is done: cli_plot_check_file, then
+ * cli_plot_check_gnuplot. Returns 0 or CLI_EXIT_USAGE after one line on
+ * stderr. */
 int cli_plot_check(const char *cmd, const char *path);
+
+/* The file half: path ends in .svg or .png, is a regular file or a new name
+ * (cli_not_regular), and its directory is writable. 0 or CLI_EXIT_USAGE. */
+int cli_plot_check_file(const char *cmd, const char *path);
+
+/* The program half: gnuplot is on PATH. A command that may find it has no
+ * figure to draw (mcspec show of a welford record) says so first and asks
+ * this only when it will draw. 0 or CLI_EXIT_USAGE. */
+int cli_plot_check_gnuplot(const char *cmd);
 
 /* Both checks a command that saves and plots makes before any work: --save
  * FILE (cli_write_check) and --plot FILE (cli_plot_check); either may be

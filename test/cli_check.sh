@@ -24,9 +24,11 @@
 #   infinity, out-of-range point, negative weight, a NUL byte, unreadable
 #   file, empty input) gives exit 2, one line on stderr naming the line, nothing on
 #   stdout, also when the error comes after many good sets; --wrap;
-#   --plot: a missing gnuplot, a bad file name and an unwritable directory
-#   give exit 2 and no file; with gnuplot, an SVG and a PNG of the expected
-#   size with the expected series, and no temporary files left behind;
+#   --plot: a missing gnuplot, a failing one (a fake on PATH), a bad file
+#   name and an unwritable directory give exit 2 and no file; with gnuplot
+#   (skipped, with a line saying so, when it is not installed), an SVG and a
+#   PNG of the expected size with the expected series, and no temporary
+#   files left behind;
 #   progress: on a terminal it appears, never with --csv, never when stderr
 #   is not a terminal (the terminal checks need util-linux `script`).
 # Ends with a Unity-style summary ("N Tests F Failures 0 Ignored", then OK or
@@ -524,17 +526,18 @@ if command -v gnuplot >/dev/null 2>&1; then
     sig=$(od -An -tx1 -N24 "$tmp/s2d.png" | tr -d ' \n')
     [ "$sig" = "89504e470d0a1a0a0000000d49484452000003c000000258" ] && ok ||
         bad "show --plot of a pointset2d record: not a 960 x 600 PNG ($sig)"
-    # A gnuplot that fails: exit 2 with its message, no figure, nothing on stdout.
-    mkdir -p "$tmp/fakebin"
-    printf '#!/bin/sh\necho "fake gnuplot: cannot draw" >&2\nexit 1\n' >"$tmp/fakebin/gnuplot"
-    chmod +x "$tmp/fakebin/gnuplot"
-    usage_error "--plot with a failing gnuplot" 'gnuplot failed: fake gnuplot: cannot draw' \
-        env PATH="$tmp/fakebin:$PATH" TMPDIR="$tmp/gptmp" "$abs" pattern random --n 16 --k 4 --plot "$tmp/f.svg"
-    [ ! -e "$tmp/f.svg" ] && [ -z "$(ls -A "$tmp/gptmp")" ] && ok ||
-        bad "--plot with a failing gnuplot left files behind"
 else
-    skip "--plot rendering: gnuplot not installed"
+    skip "--plot rendering (SVG and PNG files, their size and legends): gnuplot not installed"
 fi
+# A gnuplot that fails: exit 2 with its message, no figure, nothing on
+# stdout. A fake one, first on PATH: no real gnuplot needed.
+mkdir -p "$tmp/fakebin" "$tmp/gptmp"
+printf '#!/bin/sh\necho "fake gnuplot: cannot draw" >&2\nexit 1\n' >"$tmp/fakebin/gnuplot"
+chmod +x "$tmp/fakebin/gnuplot"
+usage_error "--plot with a failing gnuplot" 'gnuplot failed: fake gnuplot: cannot draw' \
+    env PATH="$tmp/fakebin:$PATH" TMPDIR="$tmp/gptmp" "$abs" pattern random --n 16 --k 4 --plot "$tmp/f.svg"
+[ ! -e "$tmp/f.svg" ] && [ -z "$(ls -A "$tmp/gptmp")" ] && ok ||
+    bad "--plot with a failing gnuplot left files behind"
 
 # -------------------------------------------------------------- progress
 run env MCSPEC_PROGRESS_DELAY=0 "$MCSPEC" pattern random --n 64 --k 8 --trials 3000

@@ -20,7 +20,9 @@
 #   of another N or kind, a truncated, corrupted, empty or non-record file,
 #   a missing file, and a missing -o; show refuses the same files;
 #   show prints every kind the format knows (the fuzz seeds), moment and
-#   autocorr with the spectrum header, welford with its own;
+#   autocorr with the spectrum header, welford with its own; show --plot
+#   refuses a record without a figure (welford, spectrum2d) or with no
+#   trials before it looks for gnuplot (none of these checks needs it);
 #   --save into a missing directory fails before any work; --save with
 #   variance needs --kind; --save, merge -o and --plot refuse a device node,
 #   a FIFO and a symbolic link (exit 2, one line), which stay as they were,
@@ -139,6 +141,19 @@ for f in trunc flip empty text; do
     refused "show: $f" "$f.rec: " "$MCSPEC" show "$tmp/$f.rec"
 done
 refused "show: --plot of a welford record" "no plot" "$MCSPEC" show "$tmp/v.rec" --plot x.svg
+# What the record allows comes before gnuplot, which is looked for only when
+# a figure will be drawn: these hold without gnuplot on PATH.
+refused "show: --plot of a welford record, no gnuplot" "v.rec holds a welford record: no plot for it" \
+    env PATH=/nonexistent "$MCSPEC" show "$tmp/v.rec" --plot "$tmp/x.svg"
+refused "show: --plot of a spectrum2d record, no gnuplot" "holds a spectrum2d record.*: no plot for it" \
+    env PATH=/nonexistent "$MCSPEC" show "$CORPUS/spectrum2d-n16x17-t20.rec" --plot "$tmp/x.svg"
+refused "show: --plot of an empty spectrum, no gnuplot" "with no trials: nothing to show" \
+    env PATH=/nonexistent "$MCSPEC" show "$CORPUS/spectrum-n1-t0.rec" --plot "$tmp/x.svg"
+refused "show: --plot x.pdf before reading" "--plot $tmp/x.pdf: the file name must end in .svg or .png" \
+    env PATH=/nonexistent "$MCSPEC" show "$tmp/v.rec" --plot "$tmp/x.pdf"
+refused "show: --plot of a spectrum record, no gnuplot" "--plot needs gnuplot, which is not on PATH" \
+    env PATH=/nonexistent "$MCSPEC" show "$tmp/p.rec" --plot "$tmp/x.svg"
+[ -e "$tmp/x.svg" ] && bad "show --plot without gnuplot wrote a figure" || ok
 refused "show: --radial of a spectrum" "--radial is for pointset2d" \
     "$MCSPEC" show "$tmp/p.rec" --radial
 no_parts "after the refusals"
