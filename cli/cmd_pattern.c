@@ -45,13 +45,11 @@ static const char help[] =
     "      uniform     u_j = (j + 1/2) / K (section 3.3)\n"
     "      jitter      u_j = (j + beta) / K, one beta per trial (section 3.3)\n"
     "\n"
-    "Exact: mcs_theory's exact moments for N <= " CLI_STR(MCS_MAX_COV_N) " (any kind, K, importance);\n"
-    "for larger N the closed forms that are exact at finite N (eq. 17 at k = 0,\n"
-    "eq. 23 random, eq. 33's exact form for stratified and homogenized with K\n"
-    "dividing N, eq. 37 uniform and jitter with K dividing N, eq. 45-46 random\n"
-    "with importance), and an empty column elsewhere. Closed: the note's form\n"
-    "as printed: eq. 23, 33 (its N -> infinity sinc form), 37, 45-46 or 50-51;\n"
-    "S_0 = K / sqrt(N) (eq. 17) at k = 0 without importance.\n"
+    "Exact: at every frequency for every N, kind, K and importance function:\n"
+    "mcs_theory's exact moments for N <= " CLI_STR(MCS_MAX_COV_N) ", mcs_theory_spectrum's exact\n"
+    "spectrum (O(N) memory) above. Closed: the note's form as printed: eq. 23,\n"
+    "33 (its N -> infinity sinc form), 37, 45-46 or 50-51; S_0 = K / sqrt(N)\n"
+    "(eq. 17) at k = 0 without importance; empty where the note has none.\n"
     "\n";
 
 /* The rest of --help (--dim 2, the options), printed after help. */
@@ -73,7 +71,8 @@ static const char help_2d[] =
     "\n"
     "Options:\n"
     "  --n N              bins N, 1.." CLI_STR(MCS_MAX_N) " (required)\n"
-    "  --k K              samples per trial K, 1.." CLI_STR(CLI_MAX_K) " (required; need not divide N)\n"
+    "  --k K              samples per trial K, 1.." CLI_STR(CLI_MAX_K) " (required; need not\n"
+    "                     divide N)\n"
     "  --trials T         trials, at least 2 (default 10000)\n"
     "  --seed S           PCG32 seed (initstate; default 1); the same S (and P)\n"
     "                     gives the same output\n"

@@ -91,6 +91,20 @@ done
     bad "spectrum --help does not give the CSV header"
 "$MCSPEC" pattern --help | grep -q 'exact,closed,z_exact,z_closed' && ok ||
     bad "pattern --help does not give the CSV columns"
+# Numbers in the help texts as a user types them: no C suffix (1048576u).
+for c in "" spectrum pattern variance merge show; do
+    # shellcheck disable=SC2086
+    suffixed=$("$MCSPEC" $c --help | grep -E '[0-9]+[uUlL]+\b')
+    if [ -z "$suffixed" ]; then ok; else bad "mcspec $c --help: a C suffix in '$suffixed'"; fi
+done
+# The exact column is filled at every N (mcs_theory_spectrum above
+# MCS_MAX_COV_N): the help texts no longer say it is empty there.
+for c in pattern variance; do
+    if "$MCSPEC" "$c" --help | tr '\n' ' ' | grep -Eq 'empty (column|field) (elsewhere|for the other)'
+    then bad "mcspec $c --help still says the exact column is empty above N = 64"
+    elif "$MCSPEC" "$c" --help | tr '\n' ' ' | grep -q 'for every N, kind'; then ok
+    else bad "mcspec $c --help does not say the exact values cover every N"; fi
+done
 
 # ------------------------------------------------------------- bad usage
 usage_error "no command" 'which command' "$MCSPEC"
@@ -310,6 +324,18 @@ run "$MCSPEC" variance --k 4 --trials 100 --csv --importance "$tmp/g16.txt" "$tm
 kinds=$(tail -n +2 "$tmp/out" | cut -d, -f1 | tr '\n' ' ')
 if [ "$rc" -eq 0 ] && [ "$kinds" = "random stratified uniform jitter " ]; then ok
 else bad "variance --importance: status $rc, kinds $kinds"; fi
+# Above MCS_MAX_COV_N, every kind, with and without importance: an exact Var[I].
+awk 'BEGIN { for (i = 0; i < 100; ++i) print sin(i / 10) }' >"$tmp/f100.txt"
+awk 'BEGIN { for (i = 0; i < 100; ++i) print 1 + (i % 7) / 3 }' >"$tmp/g100.txt"
+for imp in "" "--importance $tmp/g100.txt"; do
+    # shellcheck disable=SC2086
+    if succeeds "variance --n 100 $imp" "$MCSPEC" variance --k 7 --trials 100 --csv $imp "$tmp/f100.txt"; then
+        empty=$(tail -n +2 "$tmp/out" | awk -F, '$9 == "" { printf "%s ", $1 }')
+        rows=$(tail -n +2 "$tmp/out" | wc -l)
+        if [ -z "$empty" ] && [ "$rows" -ge 4 ]; then ok
+        else bad "variance at N = 100 $imp: no exact value for $empty($rows rows)"; fi
+    fi
+done
 if succeeds "variance table" "$MCSPEC" variance --k 4 --trials 100 "$tmp/f16.txt"; then
     if grep -Eq '^kind +mean +mean_stderr +variance +var_stderr +exact +z_exact' "$tmp/out" &&
        [ "$(grep -Ec '^(random|stratified|homogenized|uniform|jitter) ' "$tmp/out")" -eq 5 ]; then ok
