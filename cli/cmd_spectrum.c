@@ -32,9 +32,10 @@ static const char help[] =
     "S_k): the mean <S_k> over the sets (real and imaginary parts), its standard\n"
     "error, the power spectrum <|S_k|^2> and its standard error.\n"
     "\n"
-    "Point sets, no binning (--freq F): per set of K points the periodogram\n"
-    "P(k) = |sum_j exp(-2 pi i k.x_j)|^2 / K at the integer frequencies\n"
-    "k = 0..F (--dim 1) or wave vectors k = (kx, ky), |kx|, |ky| <= F (--dim 2),\n"
+    "Point sets, no binning (--freq F): per set of K points x_j the periodogram\n"
+    "P(k) = |sum_j exp(-2 pi i k x_j)|^2 / K at the integer frequencies k = 0..F\n"
+    "(--dim 1), or with --dim 2 P(k) = |sum_j exp(-2 pi i k.x_j)|^2 / K at the\n"
+    "wave vectors k = (kx, ky), |kx|, |ky| <= F (k.x_j the dot product),\n"
     "and its mean over the sets with its standard error (random points give\n"
     "P = 1 at k != 0; P(0) = K). With --radial (2D) the annuli r <= |k| < r + 1,\n"
     "r = 0..F, instead: the radial average of P, its standard error (over the\n"
@@ -226,10 +227,13 @@ static int report(const spectrum_opts *o, const cli_acc *acc, const cli_pointset
     if (o->freq == 0u)
         snprintf(what, sizeof what, "%s: %s, N = %zu bins, bin floor(N x)%s", CMD, name, o->n,
                  o->weights ? ", weights from the second column" : "");
+    else if (o->dim == 1u)
+        snprintf(what, sizeof what, "%s: %s, point sets in 1D, no binning: "
+                 "P(k) = |sum_j exp(-2 pi i k x_j)|^2 / K, k = 0..F, F = %zu", CMD, name, o->freq);
     else
-        snprintf(what, sizeof what, "%s: %s, point sets in %zuD, no binning: "
-                 "P(k) = |sum_j exp(-2 pi i k.x_j)|^2 / K, |k| <= F = %zu per axis", CMD, name,
-                 o->dim, o->freq);
+        snprintf(what, sizeof what, "%s: %s, point sets in 2D, no binning: "
+                 "P(k) = |sum_j exp(-2 pi i k.x_j)|^2 / K, |kx|, |ky| <= F = %zu", CMD, name,
+                 o->freq);
     snprintf(counts, sizeof counts, "trials (point sets) %llu, K per set: min %zu, max %zu "
              "(%lu lines read)", (unsigned long long)stats->sets, stats->k_min, stats->k_max,
              stats->lines);

@@ -105,6 +105,11 @@ for c in pattern variance; do
     elif "$MCSPEC" "$c" --help | tr '\n' ' ' | grep -q 'for every N, kind'; then ok
     else bad "mcspec $c --help does not say the exact values cover every N"; fi
 done
+# The 1D point-set spectrum in 1D terms: k x_j, k = 0..F; k.x_j and the axes
+# are the 2D wording.
+"$MCSPEC" spectrum --help | tr '\n' ' ' |
+    grep -qF 'P(k) = |sum_j exp(-2 pi i k x_j)|^2 / K at the integer frequencies k = 0..F (--dim 1)' && ok ||
+    bad "spectrum --help: the 1D periodogram is not in 1D terms"
 
 # ------------------------------------------------------------- bad usage
 usage_error "no command" 'which command' "$MCSPEC"
@@ -455,6 +460,15 @@ if succeeds "spectrum --dim 2 of $comb2" "$MCSPEC" spectrum --dim 2 --freq 8 --c
     fi
 fi
 # 1D without binning: the rotated 8-point comb of the 1D golden file.
+if succeeds "spectrum --freq 20 table of $comb" "$MCSPEC" spectrum --freq 20 "$comb"; then
+    if head -n 1 "$tmp/out" | grep -qF 'point sets in 1D, no binning: P(k) = |sum_j exp(-2 pi i k x_j)|^2 / K, k = 0..F, F = 20' &&
+       ! grep -Eq 'per axis|k\.x_j|kx' "$tmp/out"; then ok
+    else bad "spectrum --freq 20 table: 2D wording in 1D: $(head -n 1 "$tmp/out")"; fi
+fi
+if succeeds "spectrum --dim 2 table of $hand2" "$MCSPEC" spectrum --dim 2 --freq 3 "$hand2"; then
+    head -n 1 "$tmp/out" | grep -qF 'point sets in 2D, no binning: P(k) = |sum_j exp(-2 pi i k.x_j)|^2 / K, |kx|, |ky| <= F = 3' &&
+        ok || bad "spectrum --dim 2 table: $(head -n 1 "$tmp/out")"
+fi
 if succeeds "spectrum --freq 20 of $comb" "$MCSPEC" spectrum --freq 20 --csv "$comb"; then
     csv_shape "spectrum --freq --csv" "$tmp/out" 'freq,power,power_stderr' 21 3
     problems=$(tail -n +2 "$tmp/out" | awk -F, '{
