@@ -17,6 +17,7 @@ static const cli_command commands[] = {
      cli_cmd_variance},
     {"merge", "merge accumulators saved by --save into one file", cli_cmd_merge},
     {"show", "print a saved accumulator as a table, CSV or plot", cli_cmd_show},
+    {"version", "print the library's version (also: mcspec --version)", cli_cmd_version},
 };
 
 #define COMMAND_COUNT (sizeof commands / sizeof commands[0])
@@ -25,6 +26,7 @@ static void usage(FILE *fp)
 {
     fputs("usage: mcspec COMMAND [OPTIONS] [ARGS]\n"
           "       mcspec COMMAND --help\n"
+          "       mcspec --version\n"
           "\n"
           "Fourier analysis of Monte Carlo sampling patterns (Ramamoorthi, \"Some Notes\n"
           "on Sampling\"; equation numbers refer to it). Commands:\n",
@@ -79,6 +81,8 @@ int main(int argc, char **argv)
         usage(stdout);
         return finish(CLI_EXIT_OK);
     }
+    if (strcmp(argv[1], "--version") == 0)
+        return finish(cli_cmd_version(argc - 1, argv + 1));
     for (size_t i = 0; i < COMMAND_COUNT; ++i)
         if (strcmp(argv[1], commands[i].name) == 0)
             return finish(commands[i].run(argc - 1, argv + 1));

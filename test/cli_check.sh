@@ -5,7 +5,8 @@
 #                                build/bin/mcspec; $GOLDEN the golden files,
 #                                default test/golden)
 #
-#   --help on the command and on every subcommand;
+#   --help on the command and on every subcommand, no C suffixes in them;
+#   --version and `mcspec version` print the library's version string;
 #   bad usage (unknown command or option, missing or out-of-range values):
 #   exit 2, one line on stderr, nothing on stdout (--save, merge and show are
 #   test/record_check.sh's);
@@ -91,8 +92,19 @@ done
     bad "spectrum --help does not give the CSV header"
 "$MCSPEC" pattern --help | grep -q 'exact,closed,z_exact,z_closed' && ok ||
     bad "pattern --help does not give the CSV columns"
+# --version and `version`: the library's version string, as version.h has it.
+version=$(sed -n 's/^#define MCS_VERSION_STRING "\(.*\)"$/\1/p' "$(dirname "$0")/../include/mcspec/version.h")
+[ -n "$version" ] && ok || bad "no MCS_VERSION_STRING in include/mcspec/version.h"
+for v in --version version; do
+    if succeeds "mcspec $v" "$MCSPEC" "$v" && [ "$(cat "$tmp/out")" = "mcspec $version" ]; then ok
+    else bad "mcspec $v: '$(cat "$tmp/out")', expected 'mcspec $version'"; fi
+done
+succeeds "mcspec version --help" "$MCSPEC" version --help && grep -q '^usage: mcspec version' "$tmp/out" && ok ||
+    bad "mcspec version --help: no usage line"
+usage_error "version with an argument" "^mcspec version: unexpected argument 'x'" "$MCSPEC" version x
+"$MCSPEC" --help | grep -q -- '--version' && ok || bad "mcspec --help does not mention --version"
 # Numbers in the help texts as a user types them: no C suffix (1048576u).
-for c in "" spectrum pattern variance merge show; do
+for c in "" spectrum pattern variance merge show version; do
     # shellcheck disable=SC2086
     suffixed=$("$MCSPEC" $c --help | grep -E '[0-9]+[uUlL]+\b')
     if [ -z "$suffixed" ]; then ok; else bad "mcspec $c --help: a C suffix in '$suffixed'"; fi
