@@ -24,10 +24,10 @@
 static const char help[] =
     "usage: mcspec pattern KIND --n N --k K [--trials T] [--seed S]\n"
     "                      [--streams P [--stream I]] [--importance FILE]\n"
-    "                      [--csv] [--plot FILE] [--save FILE]\n"
+    "                      [--csv] [--plot FILE [--log]] [--save FILE]\n"
     "       mcspec pattern KIND2 --dim 2 --k K --freq F [--radial] [--trials T]\n"
     "                      [--seed S] [--streams P [--stream I]] [--csv]\n"
-    "                      [--plot FILE] [--save FILE]\n"
+    "                      [--plot FILE [--log]] [--save FILE]\n"
     "\n"
     "Draws T trials of K samples over N bins from the pattern KIND and prints\n"
     "its full spectrum, k = 0..N/2, measured beside theory: <S_k> (real and\n"
@@ -103,6 +103,8 @@ static const char help_2d[] =
     "                     error band, the exact prediction and the closed form to\n"
     "                     FILE, .svg or .png (needs gnuplot); --dim 2: the image of\n"
     "                     <P(k)> beside its radial profile and the exact one\n"
+    "  --log              --plot: the power on a log y axis (--dim 2: the profile's);\n"
+    "                     zeros and values below 1e-12 of the highest not drawn\n"
     "  --save FILE        also save the measured accumulator (spectrum, or\n"
     "                     pointset2d with --dim 2) to FILE\n"
     "                     (docs/format.md; read by mcspec show and mcspec merge),\n"
@@ -125,6 +127,7 @@ typedef struct {
     uint64_t streams, stream; /* stream == streams: every stream */
     size_t dim, freq;
     int radial;
+    int log_y; /* --log */
 } pattern_opts;
 
 /* KIND and the options of a 1D run (--n bins). */
@@ -171,6 +174,7 @@ static int parse(int argc, char **argv, pattern_opts *o)
         {"dim", CLI_OPT_SIZE, &o->dim, 1, 2, 0},
         {"freq", CLI_OPT_SIZE, &o->freq, 1, MCS_MAX_FREQ, 0},
         {"radial", CLI_OPT_FLAG, &o->radial, 0, 0, 0},
+        {"log", CLI_OPT_FLAG, &o->log_y, 0, 0, 0},
     };
     int rc = cli_parse_one(CMD, help, help_2d, opts, CLI_COUNT(opts), argc, argv, &o->kind_name);
     if (rc != CLI_PARSED)
@@ -190,7 +194,8 @@ static int parse(int argc, char **argv, pattern_opts *o)
     if (o->trials < o->streams)
         return cli_fail(CMD, "--trials %llu is fewer than --streams %llu: every stream needs a "
                         "trial", (unsigned long long)o->trials, (unsigned long long)o->streams);
-    return cli_check_outputs(CMD, o->save, o->plot);
+    rc = cli_plot_check_log(CMD, o->log_y, o->plot);
+    return rc != 0 ? rc : cli_check_outputs(CMD, o->save, o->plot);
 }
 
 /* The importance function of FILE for n bins into imp. */
@@ -247,7 +252,7 @@ static int plot(const pattern_opts *o, const mcs_pattern *pat, const cli_predict
     snprintf(exact, sizeof exact, "exact: %s", pred->exact_source);
     snprintf(closed, sizeof closed, "closed form: %s", pred->closed_source);
     cli_plot_info info = {title, sub, pred->exact_source[0] != '\0' ? exact : NULL,
-                          pred->closed_source[0] != '\0' ? closed : NULL, NULL};
+                          pred->closed_source[0] != '\0' ? closed : NULL, NULL, o->log_y};
     return cli_plot_spectrum(CMD, o->plot, &info, rows, nrows);
 }
 
@@ -346,7 +351,7 @@ static int report_2d(const pattern_opts *o, const cli_source2d *src, const mcs_p
     snprintf(label, sizeof label, "exact: %s", source);
     cli_exact2d ex;
     cli_source2d_exact(src, &ex);
-    const cli_ps_report rep = {o->csv, o->radial, o->plot, title, sub, label, &ex, notes};
+    const cli_ps_report rep = {o->csv, o->radial, o->plot, o->log_y, title, sub, label, &ex, notes};
     return cli_report_pointset2d(CMD, &rep, acc);
 }
 
@@ -379,7 +384,7 @@ static int run_2d(const pattern_opts *o)
 int cli_cmd_pattern(int argc, char **argv)
 {
     pattern_opts o = {NULL, 0, 0, DEFAULT_TRIALS, DEFAULT_SEED, NULL, NULL, 0, NULL, 1u, 1u,
-                      1u, 0u, 0};
+                      1u, 0u, 0, 0};
     int rc = parse(argc, argv, &o);
     if (rc != 0)
         return rc < 0 ? CLI_EXIT_OK : rc;

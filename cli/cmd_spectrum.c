@@ -17,10 +17,10 @@
 #define DEFAULT_N 256
 
 static const char help[] =
-    "usage: mcspec spectrum [--n N] [--weights] [--wrap] [--csv] [--plot FILE]\n"
-    "                       [--save FILE] [FILE|-]\n"
+    "usage: mcspec spectrum [--n N] [--weights] [--wrap] [--csv]\n"
+    "                       [--plot FILE [--log]] [--save FILE] [FILE|-]\n"
     "       mcspec spectrum --freq F [--dim 1|2] [--radial] [--wrap] [--csv]\n"
-    "                       [--plot FILE] [--save FILE] [FILE|-]\n"
+    "                       [--plot FILE [--log]] [--save FILE] [FILE|-]\n"
     "\n"
     "The Fourier spectrum of point sets read from FILE (or standard input, given\n"
     "as '-' or by giving no FILE): each set is one trial.\n"
@@ -75,6 +75,8 @@ static const char help[] =
     "  --plot FILE  also draw the power spectrum (k >= 1) with its standard-error\n"
     "               band to FILE, .svg or .png (needs gnuplot); in 2D the image of\n"
     "               <P(k)> beside its radial profile\n"
+    "  --log        --plot: the power (2D: the radial profile) on a log y axis;\n"
+    "               zeros, and values below 1e-12 of the highest, are not drawn\n"
     "  --save FILE  also save the accumulator (spectrum, pointset or pointset2d)\n"
     "               to FILE (docs/format.md; read by mcspec show, merged with\n"
     "               other files by mcspec merge), written atomically: a temporary\n"
@@ -91,6 +93,7 @@ typedef struct {
     const char *plot;
     const char *path;
     const char *save;
+    int log_y; /* --log */
 } spectrum_opts;
 
 /* --freq F into o->freq, within the capacity of the accumulator --dim picks:
@@ -142,12 +145,15 @@ static int parse(int argc, char **argv, spectrum_opts *o)
         {"wrap", CLI_OPT_FLAG, &o->wrap, 0, 0, 0},
         {"csv", CLI_OPT_FLAG, &o->csv, 0, 0, 0},
         {"plot", CLI_OPT_STRING, &o->plot, 0, 0, 0},
+        {"log", CLI_OPT_FLAG, &o->log_y, 0, 0, 0},
         {"save", CLI_OPT_STRING, &o->save, 0, 0, 0},
     };
     int rc = cli_parse_one(CMD, help, NULL, opts, CLI_COUNT(opts), argc, argv, &o->path);
     if (rc != CLI_PARSED)
         return rc;
     rc = check_mode(o, opts[0].given);
+    if (rc == 0)
+        rc = cli_plot_check_log(CMD, o->log_y, o->plot);
     if (rc != 0)
         return rc;
     if (o->path == NULL && isatty(STDIN_FILENO))
@@ -208,7 +214,7 @@ static int report_binned(const spectrum_opts *o, const mcs_spectrum *acc,
         k_range(stats, kset, sizeof kset);
         snprintf(sub, sizeof sub, "%llu point sets (trials), %s points per set%s; k = 0 not drawn",
                  (unsigned long long)stats->sets, kset, o->weights ? ", weighted" : "");
-        cli_plot_info info = {title, sub, NULL, NULL, NULL};
+        cli_plot_info info = {title, sub, NULL, NULL, NULL, o->log_y};
         rc = cli_plot_spectrum(CMD, o->plot, &info, rows, nrows);
     }
     for (size_t i = 0; rc == 0 && notes[i] != NULL; ++i)
@@ -244,7 +250,7 @@ static int report(const spectrum_opts *o, const cli_acc *acc, const cli_pointset
     snprintf(title, sizeof title, "%s: point-set spectrum, F = %zu", name, o->freq);
     snprintf(sub, sizeof sub, "%llu point sets (trials), %s points per set",
              (unsigned long long)stats->sets, kset);
-    const cli_ps_report rep = {o->csv, o->radial, o->plot, title, sub, NULL, NULL, notes};
+    const cli_ps_report rep = {o->csv, o->radial, o->plot, o->log_y, title, sub, NULL, NULL, notes};
     if (acc->kind == MCS_IO_KIND_POINTSET)
         return cli_report_pointset(CMD, &rep, acc->obj);
     return cli_report_pointset2d(CMD, &rep, acc->obj);
@@ -252,7 +258,7 @@ static int report(const spectrum_opts *o, const cli_acc *acc, const cli_pointset
 
 int cli_cmd_spectrum(int argc, char **argv)
 {
-    spectrum_opts o = {DEFAULT_N, 0, 1, 0, 0, 0, 0, NULL, NULL, NULL, NULL};
+    spectrum_opts o = {DEFAULT_N, 0, 1, 0, 0, 0, 0, NULL, NULL, NULL, NULL, 0};
     int rc = parse(argc, argv, &o);
     if (rc != 0)
         return rc < 0 ? CLI_EXIT_OK : rc;

@@ -29,7 +29,9 @@
 #   name and an unwritable directory give exit 2 and no file; with gnuplot
 #   (skipped, with a line saying so, when it is not installed), an SVG and a
 #   PNG of the expected size with the expected series, and no temporary
-#   files left behind;
+#   files left behind; --log (a fake gnuplot keeps the script and data): a
+#   log y axis over a positive range, no value <= 0 drawn, a comb still a
+#   comb, the 2D image not on it;
 #   progress: on a terminal it appears, never with --csv, never when stderr
 #   is not a terminal (the terminal checks need util-linux `script`).
 # Ends with a Unity-style summary ("N Tests F Failures 0 Ignored", then OK or
@@ -590,6 +592,68 @@ usage_error "--plot with a failing gnuplot" 'gnuplot failed: fake gnuplot: canno
     env PATH="$tmp/fakebin:$PATH" TMPDIR="$tmp/gptmp" "$abs" pattern random --n 16 --k 4 --plot "$tmp/f.svg"
 [ ! -e "$tmp/f.svg" ] && [ -z "$(ls -A "$tmp/gptmp")" ] && ok ||
     bad "--plot with a failing gnuplot left files behind"
+
+# --log: the y axis of the figure's spectrum (2D: its profile) in log scale.
+# A fake gnuplot, first on PATH, keeps the script and data it is given.
+usage_error "--log without --plot" "^mcspec pattern: --log sets the figure's y axis: give --plot FILE too" \
+    "$MCSPEC" pattern random --n 16 --k 4 --log
+usage_error "spectrum --log without --plot" "--log sets the figure's y axis" "$MCSPEC" spectrum --n 4 --log -
+usage_error "show --log without --plot" "--log sets the figure's y axis" "$MCSPEC" show x.rec --log
+mkdir -p "$tmp/capbin"
+printf '#!/bin/sh\nd=$(dirname "$1")\nrm -rf "%s" && mkdir "%s" && cp "$d"/plot.gp "$d"/data*.txt "%s/" &&\n    echo figure >"$d/figure"\n' \
+    "$tmp/cap" "$tmp/cap" "$tmp/cap" >"$tmp/capbin/gnuplot"
+chmod +x "$tmp/capbin/gnuplot"
+# log_figure LABEL: the script sets a log y axis over a positive range, and
+# the drawn columns (2-6) of the profile's data hold no value <= 0.
+log_figure() {
+    range=$(sed -n 's/^set yrange \[\([^:]*\):.*/\1/p' "$tmp/cap/plot.gp" | tail -n 1)
+    if ! grep -qx 'set logscale y' "$tmp/cap/plot.gp"; then bad "$1: no 'set logscale y'"
+    elif ! awk -v r="$range" 'BEGIN { exit !(r > 0) }'; then bad "$1: y range from '$range'"
+    elif ! awk '!/^#/ { for (i = 2; i <= 6; ++i) if ($i != "NaN" && !($i > 0)) exit 1 }' "$tmp/cap/data.txt"
+    then bad "$1: a value <= 0 on the log axis: $(grep -v '^#' "$tmp/cap/data.txt" | head -n 3 | tr '\n' ';')"
+    else ok; fi
+}
+# The jitter comb: exact powers 0 between the teeth, measured 0 (or rounding).
+succeeds "pattern jitter --plot --log" env PATH="$tmp/capbin:$PATH" \
+    "$abs" pattern jitter --n 64 --k 8 --trials 50 --plot "$tmp/log.svg" --log
+log_figure "pattern jitter --log"
+# ... whose exact line still reads as a comb: teeth at k = 8, 16, 24, 32 and
+# the bottom of the axis between them.
+teeth=$(awk -v b="$range" '!/^#/ && $5 != "NaN" && $5 > b { printf "%s ", $1 }' "$tmp/cap/data.txt")
+[ "$teeth" = "8 16 24 32 " ] && ok || bad "pattern jitter --log: exact teeth at '$teeth'"
+succeeds "pattern jitter --plot, linear" env PATH="$tmp/capbin:$PATH" \
+    "$abs" pattern jitter --n 64 --k 8 --trials 50 --plot "$tmp/log.svg"
+grep -q 'logscale' "$tmp/cap/plot.gp" && bad "--plot without --log sets a log scale" || ok
+grep -q '^set yrange \[0:' "$tmp/cap/plot.gp" && ok || bad "--plot without --log: y range not from 0"
+succeeds "spectrum --plot --log of the comb" env PATH="$tmp/capbin:$PATH" \
+    "$abs" spectrum --n 64 --plot "$tmp/log.png" --log "$comb"
+log_figure "spectrum --log"
+succeeds "spectrum --freq --plot --log of the comb" env PATH="$tmp/capbin:$PATH" \
+    "$abs" spectrum --freq 20 --plot "$tmp/log.png" --log "$comb"
+log_figure "spectrum --freq --log"
+# Zero at every k >= 1 (uniform, K = N): nothing on the axis, a range still.
+succeeds "pattern uniform K = N --plot --log" env PATH="$tmp/capbin:$PATH" \
+    "$abs" pattern uniform --n 16 --k 16 --trials 10 --plot "$tmp/log.svg" --log
+log_figure "pattern uniform K = N --log"
+# 2D: the profile panel is logarithmic, the image before it is not.
+succeeds "pattern --dim 2 --plot --log" env PATH="$tmp/capbin:$PATH" \
+    "$abs" pattern grid --dim 2 --k 16 --freq 6 --trials 20 --plot "$tmp/log.svg" --log
+log_figure "pattern --dim 2 --log"
+order=$(grep -n 'with image\|^set logscale y' "$tmp/cap/plot.gp" | cut -d: -f2 | cut -c1-4 | tr '\n' ' ')
+[ "$order" = "plot set  " ] && ok || bad "pattern --dim 2 --log: the image is on the log axis ($order)"
+succeeds "show --plot --log of a pointset record" env PATH="$tmp/capbin:$PATH" \
+    "$abs" show "$tmp/c1.rec" --plot "$tmp/log.svg" --log
+log_figure "show --log"
+if command -v gnuplot >/dev/null 2>&1; then
+    for a in "pattern jitter --n 64 --k 8 --trials 50" "pattern uniform --n 16 --k 16 --trials 10" \
+             "pattern jittered --dim 2 --k 16 --freq 6 --trials 50"; do
+        # shellcheck disable=SC2086
+        succeeds "$a --plot x.svg --log (gnuplot)" env TMPDIR="$tmp/gptmp" "$MCSPEC" $a --plot "$tmp/l.svg" --log &&
+            { grep -q '<svg' "$tmp/l.svg" && ok || bad "$a --log: no SVG"; }
+    done
+else
+    skip "--plot --log rendering: gnuplot not installed"
+fi
 
 # -------------------------------------------------------------- progress
 run env MCSPEC_PROGRESS_DELAY=0 "$MCSPEC" pattern random --n 64 --k 8 --trials 3000
