@@ -290,6 +290,19 @@ static void print_notes(const pattern_opts *o, const mcs_pattern *pat, const cli
     cli_note(o->csv, "%s", "");
 }
 
+/* Progress of the run: all T trials, or with --stream I that stream's share. */
+static void progress_start(const pattern_opts *o, cli_progress *progress, char *label,
+                           size_t size)
+{
+    snprintf(label, size, "%s %s", CMD, o->kind_name);
+    cli_progress_init(progress, !o->csv, label, "trials", o->trials);
+    if (o->stream < o->streams) {
+        uint64_t first = 0u, count = 0u;
+        cli_stream_share(o->trials, o->streams, o->stream, &first, &count);
+        cli_progress_span(progress, first, first + count);
+    }
+}
+
 /* Measures, then plots (if asked) and prints: nothing reaches stdout when
  * the plot fails. */
 static int measure_and_report(const pattern_opts *o, const mcs_pattern *pat,
@@ -297,9 +310,8 @@ static int measure_and_report(const pattern_opts *o, const mcs_pattern *pat,
                               cli_spectrum_row *rows)
 {
     char label[128];
-    snprintf(label, sizeof label, "%s %s", CMD, o->kind_name);
     cli_progress progress;
-    cli_progress_init(&progress, !o->csv, label, "trials", o->trials);
+    progress_start(o, &progress, label, sizeof label);
     int rc = cli_run_streams(CMD, pat, o->seed, o->trials, o->streams, o->stream, acc, &progress);
     cli_progress_end(&progress);
     size_t nrows = 0;
@@ -366,9 +378,8 @@ static int run_2d(const pattern_opts *o)
         rc = cli_acc_new(CMD, job.kind, job.shape, &acc);
     if (rc == 0) {
         char label[128];
-        snprintf(label, sizeof label, "%s %s", CMD, o->kind_name);
         cli_progress progress;
-        cli_progress_init(&progress, !o->csv, label, "trials", o->trials);
+        progress_start(o, &progress, label, sizeof label);
         rc = cli_run_job(CMD, &job, o->seed, o->trials, o->streams, o->stream, acc.obj, &progress);
         cli_progress_end(&progress);
     }

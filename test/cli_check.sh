@@ -32,7 +32,8 @@
 #   files left behind; --log (a fake gnuplot keeps the script and data): a
 #   log y axis over a positive range, no value <= 0 drawn, a comb still a
 #   comb, the 2D image not on it;
-#   progress: on a terminal it appears, never with --csv, never when stderr
+#   progress: on a terminal it appears, with the time left and, for a
+#   --stream run, that stream's share; never with --csv, never when stderr
 #   is not a terminal (the terminal checks need util-linux `script`).
 # Ends with a Unity-style summary ("N Tests F Failures 0 Ignored", then OK or
 # FAIL) so test/run_tests.sh counts it; exit status non-zero on failure.
@@ -663,6 +664,14 @@ if command -v script >/dev/null 2>&1 && script -qec true /dev/null >/dev/null 2>
     MCSPEC_PROGRESS_DELAY=0 script -qec "'$abs' pattern random --n 64 --k 8 --trials 3000 >/dev/null" \
         /dev/null >"$tmp/tty" 2>&1
     grep -q 'of 3000 trials' "$tmp/tty" && ok || bad "no progress on a terminal"
+    # ... with the time taken and an estimate of the time left.
+    grep -Eq '% \([0-9]+ of 3000 trials, [0-9]+ s, about [0-9]+ (s|min [0-9]+ s|h [0-9]+ min) left\)' "$tmp/tty" &&
+        ok || bad "progress without the time left: $(tr '\r' '\n' <"$tmp/tty" | grep -m 1 trials | cat -v)"
+    # A --stream run counts its own share: stream 2 of 3 runs 1000 of the 3000.
+    MCSPEC_PROGRESS_DELAY=0 script -qec "'$abs' pattern random --n 64 --k 8 --trials 3000 --streams 3 --stream 2 >/dev/null" \
+        /dev/null >"$tmp/tty" 2>&1
+    grep -Eq '\([0-9]+ of 1000 trials, .* left\)' "$tmp/tty" && ok ||
+        bad "progress of --stream 2 of 3: $(tr '\r' '\n' <"$tmp/tty" | grep -m 1 trials | cat -v)"
     MCSPEC_PROGRESS_DELAY=0 script -qec "'$abs' pattern random --n 64 --k 8 --trials 3000 --csv >/dev/null" \
         /dev/null >"$tmp/tty" 2>&1
     [ ! -s "$tmp/tty" ] && ok || bad "progress with --csv: $(od -c "$tmp/tty" | head -n 2)"
