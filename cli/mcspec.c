@@ -35,10 +35,11 @@ static void usage(FILE *fp)
         fprintf(fp, "  %-10s %s\n", commands[i].name, commands[i].summary);
     fputs("\n"
           "Every command prints an aligned table, or with --csv only CSV (a header line\n"
-          "and rows). Long runs show progress on stderr when it is a terminal, never with\n"
-          "--csv: the first line after 1 s, or after MCSPEC_PROGRESS_DELAY seconds if that\n"
-          "is set in the environment. Exit status: 0 on success, 2 on bad usage or input\n"
-          "(one line on stderr says what to fix), 1 on an internal failure.\n",
+          "and rows). Long runs show progress on stderr when it is a terminal (the share\n"
+          "done and an estimate of the time left), never with --csv: the first line\n"
+          "after 1 s, or after MCSPEC_PROGRESS_DELAY seconds if that is set in the\n"
+          "environment. Exit status: 0 on success, 2 on bad usage or input (one line on\n"
+          "stderr says what to fix), 1 on an internal failure.\n",
           fp);
 }
 
