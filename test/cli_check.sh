@@ -601,6 +601,7 @@ usage_error "--log without --plot" "^mcspec pattern: --log sets the figure's y a
 usage_error "spectrum --log without --plot" "--log sets the figure's y axis" "$MCSPEC" spectrum --n 4 --log -
 usage_error "show --log without --plot" "--log sets the figure's y axis" "$MCSPEC" show x.rec --log
 mkdir -p "$tmp/capbin"
+# shellcheck disable=SC2016 # $1 and $d are the fake's own, expanded when it runs
 printf '#!/bin/sh\nd=$(dirname "$1")\nrm -rf "%s" && mkdir "%s" && cp "$d"/plot.gp "$d"/data*.txt "%s/" &&\n    echo figure >"$d/figure"\n' \
     "$tmp/cap" "$tmp/cap" "$tmp/cap" >"$tmp/capbin/gnuplot"
 chmod +x "$tmp/capbin/gnuplot"
