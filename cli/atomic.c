@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -50,11 +51,56 @@ static void sync_dir(const char *path)
     }
 }
 
+int cli_write_failed(const char *cmd, const char *path, int err, unsigned long long len)
+{
+    struct rlimit lim;
+    if (err == EFBIG && getrlimit(RLIMIT_FSIZE, &lim) == 0 && lim.rlim_cur != RLIM_INFINITY)
+        return cli_fail(cmd, "cannot write %s: its %llu bytes pass the file-size limit of %llu "
+                        "bytes (ulimit -f)", path, len, (unsigned long long)lim.rlim_cur);
+    if (err == EFBIG)
+        return cli_fail(cmd, "cannot write %s: %s (its %llu bytes pass a file-size limit)", path,
+                        strerror(err), len);
+    return cli_fail(cmd, "cannot write %s: %s", path, strerror(err != 0 ? err : EIO));
+}
+
+const char *cli_not_regular(const char *path)
+{
+    struct stat st;
+    /* lstat: a symbolic link is itself replaced by the rename, not written
+     * through. */
+    if (lstat(path, &st) != 0 || S_ISREG(st.st_mode))
+        return NULL;
+    if (S_ISDIR(st.st_mode))
+        return "a directory";
+    if (S_ISLNK(st.st_mode))
+        return "a symbolic link";
+    if (S_ISCHR(st.st_mode))
+        return "a character device";
+    if (S_ISBLK(st.st_mode))
+        return "a block device";
+    if (S_ISFIFO(st.st_mode))
+        return "a FIFO";
+    if (S_ISSOCK(st.st_mode))
+        return "a socket";
+    return "a special file";
+}
+
+/* The one line of a refused path; CLI_EXIT_USAGE. */
+static int refuse_special(const char *cmd, const char *path, const char *what)
+{
+    return cli_fail(cmd, "cannot write %s: it is %s, not a regular file (give a regular file "
+                    "or a new name)", path, what);
+}
+
 int cli_write_atomic(const char *cmd, const char *path, const void *buf, size_t len)
 {
     char part[4096];
     if (part_name(path, part, sizeof part) != 0)
         return cli_fail(cmd, "cannot write %s: path too long", path);
+    /* Again at the end: something else may have taken the name during the run. */
+    const char *special = cli_not_regular(path);
+    if (special != NULL)
+        return refuse_special(cmd, path, special);
     int fd = mkstemp(part);
     if (fd < 0)
         return cli_fail(cmd, "cannot write %s: %s", path, strerror(errno));
@@ -64,14 +110,17 @@ int cli_write_atomic(const char *cmd, const char *path, const void *buf, size_t 
     int ok = write_all(fd, (const unsigned char *)buf, len) == 0 &&
              fchmod(fd, 0666 & ~mask) == 0 && fsync(fd) == 0;
     int err = errno;
-    ok = close(fd) == 0 && ok;
+    if (close(fd) != 0 && ok) { /* a delayed write error (NFS, quota) */
+        err = errno;
+        ok = 0;
+    }
     if (ok && rename(part, path) != 0) {
         err = errno;
         ok = 0;
     }
     if (!ok) {
         unlink(part);
-        return cli_fail(cmd, "cannot write %s: %s", path, strerror(err != 0 ? err : EIO));
+        return cli_write_failed(cmd, path, err, (unsigned long long)len);
     }
     sync_dir(path);
     return 0;
@@ -84,9 +133,9 @@ int cli_write_check(const char *cmd, const char *path)
         return cli_fail(cmd, "an empty file name");
     if (part_name(path, part, sizeof part) != 0)
         return cli_fail(cmd, "cannot write %s: path too long", path);
-    struct stat st;
-    if (stat(path, &st) == 0 && S_ISDIR(st.st_mode))
-        return cli_fail(cmd, "cannot write %s: it is a directory", path);
+    const char *special = cli_not_regular(path);
+    if (special != NULL)
+        return refuse_special(cmd, path, special);
     int fd = mkstemp(part);
     if (fd < 0)
         return cli_fail(cmd, "cannot write %s: %s", path, strerror(errno));

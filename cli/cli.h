@@ -23,8 +23,8 @@ enum { CLI_EXIT_OK = 0, CLI_EXIT_FAIL = 1, CLI_EXIT_USAGE = 2 };
 #define CLI_STR(x) CLI_STR_(x)
 
 /* Largest K (samples per trial) the pattern subcommands take: the per-trial
- * arrays are 16 bytes a sample. */
-#define CLI_MAX_K 1048576u
+ * arrays are 16 bytes a sample. No suffix: --help prints it (CLI_STR). */
+#define CLI_MAX_K 1048576
 
 /* A subcommand: name, one-line summary for `mcspec --help`, entry point
  * (argv[0] is the subcommand's name). */
@@ -39,6 +39,7 @@ int cli_cmd_pattern(int argc, char **argv);
 int cli_cmd_variance(int argc, char **argv);
 int cli_cmd_merge(int argc, char **argv);
 int cli_cmd_show(int argc, char **argv);
+int cli_cmd_version(int argc, char **argv);
 
 /* Prints "cmd: message" as one line on stderr; returns CLI_EXIT_USAGE. */
 #if defined(__GNUC__)

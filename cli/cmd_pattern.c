@@ -24,10 +24,10 @@
 static const char help[] =
     "usage: mcspec pattern KIND --n N --k K [--trials T] [--seed S]\n"
     "                      [--streams P [--stream I]] [--importance FILE]\n"
-    "                      [--csv] [--plot FILE] [--save FILE]\n"
+    "                      [--csv] [--plot FILE [--log]] [--save FILE]\n"
     "       mcspec pattern KIND2 --dim 2 --k K --freq F [--radial] [--trials T]\n"
     "                      [--seed S] [--streams P [--stream I]] [--csv]\n"
-    "                      [--plot FILE] [--save FILE]\n"
+    "                      [--plot FILE [--log]] [--save FILE]\n"
     "\n"
     "Draws T trials of K samples over N bins from the pattern KIND and prints\n"
     "its full spectrum, k = 0..N/2, measured beside theory: <S_k> (real and\n"
@@ -45,13 +45,11 @@ static const char help[] =
     "      uniform     u_j = (j + 1/2) / K (section 3.3)\n"
     "      jitter      u_j = (j + beta) / K, one beta per trial (section 3.3)\n"
     "\n"
-    "Exact: mcs_theory's exact moments for N <= " CLI_STR(MCS_MAX_COV_N) " (any kind, K, importance);\n"
-    "for larger N the closed forms that are exact at finite N (eq. 17 at k = 0,\n"
-    "eq. 23 random, eq. 33's exact form for stratified and homogenized with K\n"
-    "dividing N, eq. 37 uniform and jitter with K dividing N, eq. 45-46 random\n"
-    "with importance), and an empty column elsewhere. Closed: the note's form\n"
-    "as printed: eq. 23, 33 (its N -> infinity sinc form), 37, 45-46 or 50-51;\n"
-    "S_0 = K / sqrt(N) (eq. 17) at k = 0 without importance.\n"
+    "Exact: at every frequency for every N, kind, K and importance function:\n"
+    "mcs_theory's exact moments for N <= " CLI_STR(MCS_MAX_COV_N) ", mcs_theory_spectrum's exact\n"
+    "spectrum (O(N) memory) above. Closed: the note's form as printed: eq. 23,\n"
+    "33 (its N -> infinity sinc form), 37, 45-46 or 50-51; S_0 = K / sqrt(N)\n"
+    "(eq. 17) at k = 0 without importance; empty where the note has none.\n"
     "\n";
 
 /* The rest of --help (--dim 2, the options), printed after help. */
@@ -73,7 +71,8 @@ static const char help_2d[] =
     "\n"
     "Options:\n"
     "  --n N              bins N, 1.." CLI_STR(MCS_MAX_N) " (required)\n"
-    "  --k K              samples per trial K, 1.." CLI_STR(CLI_MAX_K) " (required; need not divide N)\n"
+    "  --k K              samples per trial K, 1.." CLI_STR(CLI_MAX_K) " (required; need not\n"
+    "                     divide N)\n"
     "  --trials T         trials, at least 2 (default 10000)\n"
     "  --seed S           PCG32 seed (initstate; default 1); the same S (and P)\n"
     "                     gives the same output\n"
@@ -104,11 +103,14 @@ static const char help_2d[] =
     "                     error band, the exact prediction and the closed form to\n"
     "                     FILE, .svg or .png (needs gnuplot); --dim 2: the image of\n"
     "                     <P(k)> beside its radial profile and the exact one\n"
+    "  --log              --plot: the power on a log y axis (--dim 2: the profile's);\n"
+    "                     zeros and values below 1e-12 of the highest not drawn\n"
     "  --save FILE        also save the measured accumulator (spectrum, or\n"
     "                     pointset2d with --dim 2) to FILE\n"
     "                     (docs/format.md; read by mcspec show and mcspec merge),\n"
     "                     written atomically: a temporary file beside FILE, flushed,\n"
-    "                     then renamed, so FILE is never left half-written\n"
+    "                     then renamed, so FILE is never left half-written (FILE:\n"
+    "                     a regular file or a new name)\n"
     "  --help             this text\n"
     "\n"
     "Progress goes to stderr when it is a terminal and the run is long (never\n"
@@ -125,6 +127,7 @@ typedef struct {
     uint64_t streams, stream; /* stream == streams: every stream */
     size_t dim, freq;
     int radial;
+    int log_y; /* --log */
 } pattern_opts;
 
 /* KIND and the options of a 1D run (--n bins). */
@@ -171,6 +174,7 @@ static int parse(int argc, char **argv, pattern_opts *o)
         {"dim", CLI_OPT_SIZE, &o->dim, 1, 2, 0},
         {"freq", CLI_OPT_SIZE, &o->freq, 1, MCS_MAX_FREQ, 0},
         {"radial", CLI_OPT_FLAG, &o->radial, 0, 0, 0},
+        {"log", CLI_OPT_FLAG, &o->log_y, 0, 0, 0},
     };
     int rc = cli_parse_one(CMD, help, help_2d, opts, CLI_COUNT(opts), argc, argv, &o->kind_name);
     if (rc != CLI_PARSED)
@@ -190,7 +194,8 @@ static int parse(int argc, char **argv, pattern_opts *o)
     if (o->trials < o->streams)
         return cli_fail(CMD, "--trials %llu is fewer than --streams %llu: every stream needs a "
                         "trial", (unsigned long long)o->trials, (unsigned long long)o->streams);
-    return cli_check_outputs(CMD, o->save, o->plot);
+    rc = cli_plot_check_log(CMD, o->log_y, o->plot);
+    return rc != 0 ? rc : cli_check_outputs(CMD, o->save, o->plot);
 }
 
 /* The importance function of FILE for n bins into imp. */
@@ -247,7 +252,7 @@ static int plot(const pattern_opts *o, const mcs_pattern *pat, const cli_predict
     snprintf(exact, sizeof exact, "exact: %s", pred->exact_source);
     snprintf(closed, sizeof closed, "closed form: %s", pred->closed_source);
     cli_plot_info info = {title, sub, pred->exact_source[0] != '\0' ? exact : NULL,
-                          pred->closed_source[0] != '\0' ? closed : NULL, NULL};
+                          pred->closed_source[0] != '\0' ? closed : NULL, NULL, o->log_y};
     return cli_plot_spectrum(CMD, o->plot, &info, rows, nrows);
 }
 
@@ -285,6 +290,19 @@ static void print_notes(const pattern_opts *o, const mcs_pattern *pat, const cli
     cli_note(o->csv, "%s", "");
 }
 
+/* Progress of the run: all T trials, or with --stream I that stream's share. */
+static void progress_start(const pattern_opts *o, cli_progress *progress, char *label,
+                           size_t size)
+{
+    snprintf(label, size, "%s %s", CMD, o->kind_name);
+    cli_progress_init(progress, !o->csv, label, "trials", o->trials);
+    if (o->stream < o->streams) {
+        uint64_t first = 0u, count = 0u;
+        cli_stream_share(o->trials, o->streams, o->stream, &first, &count);
+        cli_progress_span(progress, first, first + count);
+    }
+}
+
 /* Measures, then plots (if asked) and prints: nothing reaches stdout when
  * the plot fails. */
 static int measure_and_report(const pattern_opts *o, const mcs_pattern *pat,
@@ -292,9 +310,8 @@ static int measure_and_report(const pattern_opts *o, const mcs_pattern *pat,
                               cli_spectrum_row *rows)
 {
     char label[128];
-    snprintf(label, sizeof label, "%s %s", CMD, o->kind_name);
     cli_progress progress;
-    cli_progress_init(&progress, !o->csv, label, "trials", o->trials);
+    progress_start(o, &progress, label, sizeof label);
     int rc = cli_run_streams(CMD, pat, o->seed, o->trials, o->streams, o->stream, acc, &progress);
     cli_progress_end(&progress);
     size_t nrows = 0;
@@ -346,7 +363,7 @@ static int report_2d(const pattern_opts *o, const cli_source2d *src, const mcs_p
     snprintf(label, sizeof label, "exact: %s", source);
     cli_exact2d ex;
     cli_source2d_exact(src, &ex);
-    const cli_ps_report rep = {o->csv, o->radial, o->plot, title, sub, label, &ex, notes};
+    const cli_ps_report rep = {o->csv, o->radial, o->plot, o->log_y, title, sub, label, &ex, notes};
     return cli_report_pointset2d(CMD, &rep, acc);
 }
 
@@ -361,9 +378,8 @@ static int run_2d(const pattern_opts *o)
         rc = cli_acc_new(CMD, job.kind, job.shape, &acc);
     if (rc == 0) {
         char label[128];
-        snprintf(label, sizeof label, "%s %s", CMD, o->kind_name);
         cli_progress progress;
-        cli_progress_init(&progress, !o->csv, label, "trials", o->trials);
+        progress_start(o, &progress, label, sizeof label);
         rc = cli_run_job(CMD, &job, o->seed, o->trials, o->streams, o->stream, acc.obj, &progress);
         cli_progress_end(&progress);
     }
@@ -379,7 +395,7 @@ static int run_2d(const pattern_opts *o)
 int cli_cmd_pattern(int argc, char **argv)
 {
     pattern_opts o = {NULL, 0, 0, DEFAULT_TRIALS, DEFAULT_SEED, NULL, NULL, 0, NULL, 1u, 1u,
-                      1u, 0u, 0};
+                      1u, 0u, 0, 0};
     int rc = parse(argc, argv, &o);
     if (rc != 0)
         return rc < 0 ? CLI_EXIT_OK : rc;

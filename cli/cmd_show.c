@@ -15,7 +15,7 @@
 #define CMD "mcspec show"
 
 static const char help[] =
-    "usage: mcspec show FILE [--csv] [--plot FILE] [--radial]\n"
+    "usage: mcspec show FILE [--csv] [--plot FILE [--log]] [--radial]\n"
     "\n"
     "Prints the accumulator saved in FILE (by --save, mcspec merge or\n"
     "mcspec-mpi; the format is docs/format.md), after checking the whole record:\n"
@@ -48,6 +48,9 @@ static const char help[] =
     "               band to FILE, .svg or .png (needs gnuplot); for pointset2d the\n"
     "               image of <P(k)> beside its radial profile (not for welford and\n"
     "               spectrum2d)\n"
+    "  --log        --plot: the power (pointset2d: the radial profile) on a log y\n"
+    "               axis; zeros, and values below 1e-12 of the highest, are not\n"
+    "               drawn\n"
     "  --radial     pointset2d: the radial profile instead of every wave vector\n"
     "  --help       this text\n"
     "\n"
@@ -56,6 +59,7 @@ static const char help[] =
 typedef struct {
     const char *path, *plot;
     int csv, radial;
+    int log_y; /* --log */
 } show_opts;
 
 static int parse(int argc, char **argv, show_opts *o)
@@ -64,14 +68,18 @@ static int parse(int argc, char **argv, show_opts *o)
         {"csv", CLI_OPT_FLAG, &o->csv, 0, 0, 0},
         {"plot", CLI_OPT_STRING, &o->plot, 0, 0, 0},
         {"radial", CLI_OPT_FLAG, &o->radial, 0, 0, 0},
+        {"log", CLI_OPT_FLAG, &o->log_y, 0, 0, 0},
     };
     int rc = cli_parse_one(CMD, help, NULL, opts, CLI_COUNT(opts), argc, argv, &o->path);
     if (rc != CLI_PARSED)
         return rc;
     if (o->path == NULL)
         return cli_fail(CMD, "which record? give FILE");
+    if (cli_plot_check_log(CMD, o->log_y, o->plot) != 0)
+        return CLI_EXIT_USAGE;
+    /* gnuplot only once the record is known to have a figure (cli_cmd_show). */
     if (o->plot != NULL)
-        return cli_plot_check(CMD, o->plot);
+        return cli_plot_check_file(CMD, o->plot);
     return 0;
 }
 
@@ -130,7 +138,7 @@ static int autocorr_rows(const mcs_autocorr *a, cli_spectrum_row *rows, size_t *
 static int show_pointset(const show_opts *o, const cli_acc *acc, const char *title)
 {
     const char *const notes[] = {title, "", NULL};
-    const cli_ps_report rep = {o->csv, o->radial, o->plot, title,
+    const cli_ps_report rep = {o->csv, o->radial, o->plot, o->log_y, title,
                                acc->kind == MCS_IO_KIND_POINTSET ? "f = 0 not drawn" : NULL,
                                NULL, NULL, notes};
     if (acc->kind == MCS_IO_KIND_POINTSET)
@@ -171,7 +179,7 @@ static int show_spectrum(const show_opts *o, const cli_acc *acc, const char *tit
     else
         rc = autocorr_rows(acc->obj, rows, &nrows);
     if (rc == 0 && o->plot != NULL) {
-        cli_plot_info info = {title, "k = 0 not drawn", NULL, NULL, NULL};
+        cli_plot_info info = {title, "k = 0 not drawn", NULL, NULL, NULL, o->log_y};
         rc = cli_plot_spectrum(CMD, o->plot, &info, rows, nrows);
     }
     if (rc == 0) {
@@ -210,7 +218,7 @@ static int show_welford(const show_opts *o, const mcs_welford *w)
 
 int cli_cmd_show(int argc, char **argv)
 {
-    show_opts o = {NULL, NULL, 0, 0};
+    show_opts o = {NULL, NULL, 0, 0, 0};
     int rc = parse(argc, argv, &o);
     if (rc != 0)
         return rc < 0 ? CLI_EXIT_OK : rc;
@@ -228,6 +236,8 @@ int cli_cmd_show(int argc, char **argv)
         rc = cli_fail(CMD, "%s holds %s: --radial is for pointset2d records", o.path, what);
     else if (acc.kind != MCS_IO_KIND_WELFORD && cli_acc_count(&acc) == 0u)
         rc = cli_fail(CMD, "%s holds %s with no trials: nothing to show", o.path, what);
+    else if (o.plot != NULL && cli_plot_check_gnuplot(CMD) != 0)
+        rc = CLI_EXIT_USAGE;
     else if (acc.kind == MCS_IO_KIND_WELFORD)
         rc = show_welford(&o, acc.obj);
     else if (acc.kind == MCS_IO_KIND_POINTSET || acc.kind == MCS_IO_KIND_POINTSET2D)

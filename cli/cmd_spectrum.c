@@ -17,10 +17,10 @@
 #define DEFAULT_N 256
 
 static const char help[] =
-    "usage: mcspec spectrum [--n N] [--weights] [--wrap] [--csv] [--plot FILE]\n"
-    "                       [--save FILE] [FILE|-]\n"
+    "usage: mcspec spectrum [--n N] [--weights] [--wrap] [--csv]\n"
+    "                       [--plot FILE [--log]] [--save FILE] [FILE|-]\n"
     "       mcspec spectrum --freq F [--dim 1|2] [--radial] [--wrap] [--csv]\n"
-    "                       [--plot FILE] [--save FILE] [FILE|-]\n"
+    "                       [--plot FILE [--log]] [--save FILE] [FILE|-]\n"
     "\n"
     "The Fourier spectrum of point sets read from FILE (or standard input, given\n"
     "as '-' or by giving no FILE): each set is one trial.\n"
@@ -32,9 +32,10 @@ static const char help[] =
     "S_k): the mean <S_k> over the sets (real and imaginary parts), its standard\n"
     "error, the power spectrum <|S_k|^2> and its standard error.\n"
     "\n"
-    "Point sets, no binning (--freq F): per set of K points the periodogram\n"
-    "P(k) = |sum_j exp(-2 pi i k.x_j)|^2 / K at the integer frequencies\n"
-    "k = 0..F (--dim 1) or wave vectors k = (kx, ky), |kx|, |ky| <= F (--dim 2),\n"
+    "Point sets, no binning (--freq F): per set of K points x_j the periodogram\n"
+    "P(k) = |sum_j exp(-2 pi i k x_j)|^2 / K at the integer frequencies k = 0..F\n"
+    "(--dim 1), or with --dim 2 P(k) = |sum_j exp(-2 pi i k.x_j)|^2 / K at the\n"
+    "wave vectors k = (kx, ky), |kx|, |ky| <= F (k.x_j the dot product),\n"
     "and its mean over the sets with its standard error (random points give\n"
     "P = 1 at k != 0; P(0) = K). With --radial (2D) the annuli r <= |k| < r + 1,\n"
     "r = 0..F, instead: the radial average of P, its standard error (over the\n"
@@ -46,18 +47,20 @@ static const char help[] =
     "\n"
     "Input: one point per line, its coordinates (one, or two with --dim 2)\n"
     "separated by spaces or tabs; with --weights (binned only) a last column is\n"
-    "the point's weight (finite, >= 0). A line starting with '#' ends the current\n"
-    "set (utk's convention); '#' lines before the first point are a header; a\n"
+    "the point's weight (finite, >= 0; a set's weights sum to at most\n"
+    "MCS_SPECTRUM_MAX_SUM). A line starting with '#' ends the current set (utk's\n"
+    "convention); '#' lines before the first point are a header; a\n"
     "final '#' is allowed; two '#' lines with no point between them are an error\n"
-    "(an empty set). Blank lines are ignored. Everything is read and checked\n"
-    "before anything is printed: a malformed line stops the run with the file,\n"
-    "the line number and what was wrong, exit 2.\n"
+    "(an empty set). Blank lines are ignored; a NUL byte is an error (the input\n"
+    "is text). Everything is read and checked before anything is printed: a\n"
+    "malformed line stops the run with the file, the line number and what was\n"
+    "wrong, exit 2.\n"
     "\n"
     "Options:\n"
     "  --n N        bins N, 1.." CLI_STR(MCS_MAX_N) " (default 256; not with --freq)\n"
-    "  --freq F     the point-set spectrum up to frequency F instead: 1.."
-    CLI_STR(MCS_MAX_FREQ_1D) " in 1D,\n"
-    "               1.." CLI_STR(MCS_MAX_FREQ) " per axis in 2D\n"
+    "  --freq F     the point-set spectrum up to frequency F instead (no bins):\n"
+    "               F = 1.." CLI_STR(MCS_MAX_FREQ_1D) " in 1D (MCS_MAX_FREQ_1D), 1.."
+    CLI_STR(MCS_MAX_FREQ) " in 2D (MCS_MAX_FREQ)\n"
     "  --dim D      coordinates per point, 1 (default) or 2 (needs --freq)\n"
     "  --radial     --dim 2: one row per annulus instead of per wave vector\n"
     "  --weights    each line holds a point and its weight (binned only)\n"
@@ -72,11 +75,13 @@ static const char help[] =
     "  --plot FILE  also draw the power spectrum (k >= 1) with its standard-error\n"
     "               band to FILE, .svg or .png (needs gnuplot); in 2D the image of\n"
     "               <P(k)> beside its radial profile\n"
+    "  --log        --plot: the power (2D: the radial profile) on a log y axis;\n"
+    "               zeros, and values below 1e-12 of the highest, are not drawn\n"
     "  --save FILE  also save the accumulator (spectrum, pointset or pointset2d)\n"
     "               to FILE (docs/format.md; read by mcspec show, merged with\n"
     "               other files by mcspec merge), written atomically: a temporary\n"
     "               file beside FILE, flushed, then renamed, so FILE is never left\n"
-    "               half-written\n"
+    "               half-written (FILE: a regular file or a new name)\n"
     "  --help       this text\n"
     "\n"
     "Exit status: 0 on success, 2 on bad usage or input (one line on stderr).\n";
@@ -84,15 +89,36 @@ static const char help[] =
 typedef struct {
     size_t n, freq, dim;
     int weights, wrap, csv, radial;
+    const char *freq_text; /* --freq as given: its range depends on --dim */
     const char *plot;
     const char *path;
     const char *save;
+    int log_y; /* --log */
 } spectrum_opts;
 
-/* The combinations --dim, --freq, --n, --weights and --radial allow. */
-static int check_mode(const spectrum_opts *o, int n_given)
+/* --freq F into o->freq, within the capacity of the accumulator --dim picks:
+ * MCS_MAX_FREQ_1D (mcs_pointset) or MCS_MAX_FREQ (mcs_pointset2d). */
+static int parse_freq(spectrum_opts *o)
 {
-    const size_t cap = o->dim == 2u ? (size_t)MCS_MAX_FREQ : (size_t)MCS_MAX_FREQ_1D;
+    if (o->freq_text == NULL)
+        return 0;
+    const int two = o->dim == 2u;
+    const size_t cap = two ? (size_t)MCS_MAX_FREQ : (size_t)MCS_MAX_FREQ_1D;
+    uint64_t v = 0;
+    if (cli_parse_u64(o->freq_text, 1u, cap, &v) != 0)
+        return cli_fail(CMD, "--freq expects a whole number from 1 to %zu for --dim %zu (this "
+                        "build's %s), not '%s'", cap, o->dim,
+                        two ? "MCS_MAX_FREQ" : "MCS_MAX_FREQ_1D", o->freq_text);
+    o->freq = (size_t)v;
+    return 0;
+}
+
+/* The combinations --dim, --freq, --n, --weights and --radial allow. */
+static int check_mode(spectrum_opts *o, int n_given)
+{
+    int rc = parse_freq(o);
+    if (rc != 0)
+        return rc;
     if (o->freq == 0u && o->dim == 2u)
         return cli_fail(CMD, "--dim 2 needs --freq F: the 2D spectrum of points is not binned");
     if (o->freq == 0u && o->radial)
@@ -105,9 +131,6 @@ static int check_mode(const spectrum_opts *o, int n_given)
         return cli_fail(CMD, "--weights needs binning: drop --freq, or the weight column");
     if (o->radial && o->dim != 2u)
         return cli_fail(CMD, "--radial needs --dim 2");
-    if (o->freq > cap)
-        return cli_fail(CMD, "--freq %zu is above this build's %zu for --dim %zu (MCS_MAX_FREQ%s)",
-                        o->freq, cap, o->dim, o->dim == 2u ? "" : "_1D");
     return 0;
 }
 
@@ -115,19 +138,22 @@ static int parse(int argc, char **argv, spectrum_opts *o)
 {
     cli_opt opts[] = {
         {"n", CLI_OPT_SIZE, &o->n, 1, MCS_MAX_N, 0},
-        {"freq", CLI_OPT_SIZE, &o->freq, 1, SIZE_MAX, 0},
+        {"freq", CLI_OPT_STRING, &o->freq_text, 0, 0, 0},
         {"dim", CLI_OPT_SIZE, &o->dim, 1, 2, 0},
         {"radial", CLI_OPT_FLAG, &o->radial, 0, 0, 0},
         {"weights", CLI_OPT_FLAG, &o->weights, 0, 0, 0},
         {"wrap", CLI_OPT_FLAG, &o->wrap, 0, 0, 0},
         {"csv", CLI_OPT_FLAG, &o->csv, 0, 0, 0},
         {"plot", CLI_OPT_STRING, &o->plot, 0, 0, 0},
+        {"log", CLI_OPT_FLAG, &o->log_y, 0, 0, 0},
         {"save", CLI_OPT_STRING, &o->save, 0, 0, 0},
     };
     int rc = cli_parse_one(CMD, help, NULL, opts, CLI_COUNT(opts), argc, argv, &o->path);
     if (rc != CLI_PARSED)
         return rc;
     rc = check_mode(o, opts[0].given);
+    if (rc == 0)
+        rc = cli_plot_check_log(CMD, o->log_y, o->plot);
     if (rc != 0)
         return rc;
     if (o->path == NULL && isatty(STDIN_FILENO))
@@ -135,9 +161,17 @@ static int parse(int argc, char **argv, spectrum_opts *o)
     return cli_check_outputs(CMD, o->save, o->plot);
 }
 
+/* What add_set needs: the accumulator, and where the set came from. */
+typedef struct {
+    const cli_acc *acc;
+    const char *name;                 /* the input, as messages name it */
+    const cli_pointset_stats *stats;  /* its lines up to the set's end */
+} add_ctx;
+
 static int add_set(void *ctx, size_t k, const double *coords, const double *weights)
 {
-    const cli_acc *acc = ctx;
+    const add_ctx *c = ctx;
+    const cli_acc *acc = c->acc;
     mcs_status st;
     if (acc->kind == MCS_IO_KIND_POINTSET)
         st = mcs_pointset_add(acc->obj, k, coords);
@@ -145,6 +179,12 @@ static int add_set(void *ctx, size_t k, const double *coords, const double *weig
         st = mcs_pointset2d_add(acc->obj, k, coords);
     else
         st = mcs_spectrum_add_points(acc->obj, k, coords, weights);
+    /* The reader refuses a sum above the limit on its line; a sum the
+     * library's own (vectorised) order rounds past it lands here. */
+    if (st == MCS_ERR_MAGNITUDE)
+        return cli_fail(CMD, "%s: line %lu: the set ending here has weights summing above "
+                        "%g, the most a set may sum to (mcs_spectrum, MCS_SPECTRUM_MAX_SUM): "
+                        "scale the weights down", c->name, c->stats->lines, MCS_SPECTRUM_MAX_SUM);
     if (st != MCS_OK)
         return cli_internal(CMD, "adding a point set failed: %s", mcs_status_str(st));
     return 0;
@@ -174,7 +214,7 @@ static int report_binned(const spectrum_opts *o, const mcs_spectrum *acc,
         k_range(stats, kset, sizeof kset);
         snprintf(sub, sizeof sub, "%llu point sets (trials), %s points per set%s; k = 0 not drawn",
                  (unsigned long long)stats->sets, kset, o->weights ? ", weighted" : "");
-        cli_plot_info info = {title, sub, NULL, NULL, NULL};
+        cli_plot_info info = {title, sub, NULL, NULL, NULL, o->log_y};
         rc = cli_plot_spectrum(CMD, o->plot, &info, rows, nrows);
     }
     for (size_t i = 0; rc == 0 && notes[i] != NULL; ++i)
@@ -193,10 +233,13 @@ static int report(const spectrum_opts *o, const cli_acc *acc, const cli_pointset
     if (o->freq == 0u)
         snprintf(what, sizeof what, "%s: %s, N = %zu bins, bin floor(N x)%s", CMD, name, o->n,
                  o->weights ? ", weights from the second column" : "");
+    else if (o->dim == 1u)
+        snprintf(what, sizeof what, "%s: %s, point sets in 1D, no binning: "
+                 "P(k) = |sum_j exp(-2 pi i k x_j)|^2 / K, k = 0..F, F = %zu", CMD, name, o->freq);
     else
-        snprintf(what, sizeof what, "%s: %s, point sets in %zuD, no binning: "
-                 "P(k) = |sum_j exp(-2 pi i k.x_j)|^2 / K, |k| <= F = %zu per axis", CMD, name,
-                 o->dim, o->freq);
+        snprintf(what, sizeof what, "%s: %s, point sets in 2D, no binning: "
+                 "P(k) = |sum_j exp(-2 pi i k.x_j)|^2 / K, |kx|, |ky| <= F = %zu", CMD, name,
+                 o->freq);
     snprintf(counts, sizeof counts, "trials (point sets) %llu, K per set: min %zu, max %zu "
              "(%lu lines read)", (unsigned long long)stats->sets, stats->k_min, stats->k_max,
              stats->lines);
@@ -207,7 +250,7 @@ static int report(const spectrum_opts *o, const cli_acc *acc, const cli_pointset
     snprintf(title, sizeof title, "%s: point-set spectrum, F = %zu", name, o->freq);
     snprintf(sub, sizeof sub, "%llu point sets (trials), %s points per set",
              (unsigned long long)stats->sets, kset);
-    const cli_ps_report rep = {o->csv, o->radial, o->plot, title, sub, NULL, NULL, notes};
+    const cli_ps_report rep = {o->csv, o->radial, o->plot, o->log_y, title, sub, NULL, NULL, notes};
     if (acc->kind == MCS_IO_KIND_POINTSET)
         return cli_report_pointset(CMD, &rep, acc->obj);
     return cli_report_pointset2d(CMD, &rep, acc->obj);
@@ -215,7 +258,7 @@ static int report(const spectrum_opts *o, const cli_acc *acc, const cli_pointset
 
 int cli_cmd_spectrum(int argc, char **argv)
 {
-    spectrum_opts o = {DEFAULT_N, 0, 1, 0, 0, 0, 0, NULL, NULL, NULL};
+    spectrum_opts o = {DEFAULT_N, 0, 1, 0, 0, 0, 0, NULL, NULL, NULL, NULL, 0};
     int rc = parse(argc, argv, &o);
     if (rc != 0)
         return rc < 0 ? CLI_EXIT_OK : rc;
@@ -227,11 +270,13 @@ int cli_cmd_spectrum(int argc, char **argv)
     rc = cli_acc_new(CMD, kind, shape, &acc);
     if (rc != 0)
         return rc;
-    cli_pointset_format fmt = {o.dim, o.weights, o.wrap};
+    cli_pointset_format fmt = {o.dim, o.weights, o.wrap, MCS_SPECTRUM_MAX_SUM,
+                               "mcs_spectrum, MCS_SPECTRUM_MAX_SUM"};
     cli_pointset_stats stats;
     cli_progress progress;
     cli_progress_init(&progress, !o.csv, CMD, "sets read", 0);
-    rc = cli_read_pointsets(CMD, o.path, &fmt, add_set, &acc, &stats, &progress);
+    add_ctx ctx = {&acc, cli_input_name(o.path), &stats};
+    rc = cli_read_pointsets(CMD, o.path, &fmt, add_set, &ctx, &stats, &progress);
     cli_progress_end(&progress);
     if (rc == 0)
         rc = report(&o, &acc, &stats);

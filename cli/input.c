@@ -60,7 +60,7 @@ static void reader_close(reader *r)
 }
 
 /* Next line without its end-of-line characters: 1, or 0 at the end of the
- * input, or -1 after a read error (reported). */
+ * input, or -1 after a read error or a NUL byte in the line (reported). */
 static int reader_next(reader *r, char **line)
 {
     errno = 0;
@@ -74,6 +74,14 @@ static int reader_next(reader *r, char **line)
         return 0;
     }
     ++r->line;
+    /* Every later step reads the line as a C string, which a NUL byte would
+     * end early: the rest of the line (a point, a digit) would be lost. */
+    const char *nul = memchr(r->buf, '\0', (size_t)len);
+    if (nul != NULL) {
+        cli_fail(r->cmd, "%s: line %lu: a NUL byte at column %zu (not a text line; is this "
+                 "a binary file?)", r->name, r->line, (size_t)(nul - r->buf) + 1u);
+        return -1;
+    }
     while (len > 0 && (r->buf[len - 1] == '\n' || r->buf[len - 1] == '\r'))
         r->buf[--len] = '\0';
     *line = r->buf;
@@ -131,6 +139,7 @@ typedef struct {
     double *coords;
     double *weights;
     size_t k, cap, dim;
+    double weight_sum; /* of the set so far, summed in the order the library sums */
 } point_buf;
 
 static int buf_push(const char *cmd, point_buf *b, const double *coord, double weight)
@@ -149,7 +158,26 @@ static int buf_push(const char *cmd, point_buf *b, const double *coord, double w
     }
     memcpy(b->coords + b->k * b->dim, coord, b->dim * sizeof *coord);
     b->weights[b->k++] = weight;
+    b->weight_sum += weight;
     return 0;
+}
+
+/* The set's weights so far against fmt's limit. */
+static int check_weight_sum(const reader *r, const cli_pointset_format *fmt, const point_buf *b)
+{
+    if (!fmt->weights || !(fmt->weight_sum_max > 0.0) || b->weight_sum <= fmt->weight_sum_max)
+        return 0;
+    int e = 0;
+    const double m = frexp(fmt->weight_sum_max, &e);
+    char limit[64];
+    if (m == 0.5) /* a power of two: say which */
+        snprintf(limit, sizeof limit, "%g = 2^%d", fmt->weight_sum_max, e - 1);
+    else
+        snprintf(limit, sizeof limit, "%g", fmt->weight_sum_max);
+    return cli_fail(r->cmd, "%s: line %lu: this set's weights sum to %g by this line, above %s, "
+                    "the most a set may sum to (%s): scale the weights down", r->name, r->line,
+                    b->weight_sum, limit,
+                    fmt->weight_sum_what != NULL ? fmt->weight_sum_what : "the accumulator");
 }
 
 /* One point line, tokens already split: coordinates (checked or wrapped),
@@ -191,9 +219,11 @@ static int parse_point(const reader *r, const cli_pointset_format *fmt, char **t
     return 0;
 }
 
-static int emit_set(const cli_pointset_format *fmt, point_buf *b, cli_pointset_fn fn, void *ctx,
-                    cli_pointset_stats *stats, cli_progress *progress)
+static int emit_set(const reader *r, const cli_pointset_format *fmt, point_buf *b,
+                    cli_pointset_fn fn, void *ctx, cli_pointset_stats *stats,
+                    cli_progress *progress)
 {
+    stats->lines = r->line;
     int rc = fn(ctx, b->k, b->coords, fmt->weights ? b->weights : NULL);
     if (rc != 0)
         return rc;
@@ -201,6 +231,7 @@ static int emit_set(const cli_pointset_format *fmt, point_buf *b, cli_pointset_f
     stats->k_min = b->k < stats->k_min ? b->k : stats->k_min;
     stats->k_max = b->k > stats->k_max ? b->k : stats->k_max;
     b->k = 0;
+    b->weight_sum = 0.0;
     if (progress != NULL)
         cli_progress_update(progress, stats->sets);
     return 0;
@@ -221,7 +252,7 @@ static int read_sets(reader *r, const cli_pointset_format *fmt, point_buf *b, cl
             continue;
         if (*s == '#') {
             if (b->k > 0u) {
-                int rc = emit_set(fmt, b, fn, ctx, stats, progress);
+                int rc = emit_set(r, fmt, b, fn, ctx, stats, progress);
                 if (rc != 0)
                     return rc;
             } else if (stats->sets > 0u) {
@@ -237,13 +268,15 @@ static int read_sets(reader *r, const cli_pointset_format *fmt, point_buf *b, cl
         int rc = parse_point(r, fmt, tok, ntok, coord, &weight);
         if (rc == 0)
             rc = buf_push(r->cmd, b, coord, weight);
+        if (rc == 0)
+            rc = check_weight_sum(r, fmt, b);
         if (rc != 0)
             return rc;
     }
     if (got < 0)
         return CLI_EXIT_USAGE;
     if (b->k > 0u)
-        return emit_set(fmt, b, fn, ctx, stats, progress);
+        return emit_set(r, fmt, b, fn, ctx, stats, progress);
     return 0;
 }
 
@@ -259,7 +292,7 @@ int cli_read_pointsets(const char *cmd, const char *path, const cli_pointset_for
     int rc = reader_open(&r, cmd, path);
     if (rc != 0)
         return rc;
-    point_buf b = {NULL, NULL, 0, 0, fmt->dim};
+    point_buf b = {NULL, NULL, 0, 0, fmt->dim, 0.0};
     rc = read_sets(&r, fmt, &b, fn, ctx, stats, progress);
     stats->lines = r.line;
     if (rc == 0 && stats->sets == 0u && r.line == 0u)

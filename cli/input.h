@@ -3,7 +3,8 @@
  * Every error names the input, the line and what was wrong, as one line on
  * stderr, and the reader stops there; a reader calls back only with complete,
  * validated data, so a caller that prints after reading never prints
- * anything partial. "-" (or NULL) is standard input. */
+ * anything partial. A NUL byte anywhere in a line (a comment too) is such an
+ * error: the input is text. "-" (or NULL) is standard input. */
 #ifndef MCSPEC_CLI_INPUT_H
 #define MCSPEC_CLI_INPUT_H
 
@@ -24,12 +25,18 @@ typedef struct {
     size_t dim;  /* coordinates per point, 1 or 2 */
     int weights; /* a weight column follows the coordinates */
     int wrap;    /* take coordinates modulo 1 instead of rejecting them */
+    /* With weights: the most one set's weights may sum to (0: no limit), and
+     * the accumulator it is the limit of, for the message ("mcs_spectrum,
+     * MCS_SPECTRUM_MAX_SUM"). The line where the running sum passes it is
+     * the error. */
+    double weight_sum_max;
+    const char *weight_sum_what;
 } cli_pointset_format;
 
 typedef struct {
     uint64_t sets;       /* complete sets passed to the callback */
     size_t k_min, k_max; /* fewest and most points in a set */
-    unsigned long lines; /* lines read */
+    unsigned long lines; /* lines read (during a callback: up to the set's end) */
 } cli_pointset_stats;
 
 /* Receives one complete set: k points, coords[k * dim] (point j at

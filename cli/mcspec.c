@@ -2,6 +2,7 @@
  * (cmd_<name>.c); this file only dispatches. */
 #include "cli.h"
 
+#include <signal.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -16,6 +17,7 @@ static const cli_command commands[] = {
      cli_cmd_variance},
     {"merge", "merge accumulators saved by --save into one file", cli_cmd_merge},
     {"show", "print a saved accumulator as a table, CSV or plot", cli_cmd_show},
+    {"version", "print the library's version (also: mcspec --version)", cli_cmd_version},
 };
 
 #define COMMAND_COUNT (sizeof commands / sizeof commands[0])
@@ -24,6 +26,7 @@ static void usage(FILE *fp)
 {
     fputs("usage: mcspec COMMAND [OPTIONS] [ARGS]\n"
           "       mcspec COMMAND --help\n"
+          "       mcspec --version\n"
           "\n"
           "Fourier analysis of Monte Carlo sampling patterns (Ramamoorthi, \"Some Notes\n"
           "on Sampling\"; equation numbers refer to it). Commands:\n",
@@ -32,10 +35,11 @@ static void usage(FILE *fp)
         fprintf(fp, "  %-10s %s\n", commands[i].name, commands[i].summary);
     fputs("\n"
           "Every command prints an aligned table, or with --csv only CSV (a header line\n"
-          "and rows). Long runs show progress on stderr when it is a terminal, never with\n"
-          "--csv: the first line after 1 s, or after MCSPEC_PROGRESS_DELAY seconds if that\n"
-          "is set in the environment. Exit status: 0 on success, 2 on bad usage or input\n"
-          "(one line on stderr says what to fix), 1 on an internal failure.\n",
+          "and rows). Long runs show progress on stderr when it is a terminal (the share\n"
+          "done and an estimate of the time left), never with --csv: the first line\n"
+          "after 1 s, or after MCSPEC_PROGRESS_DELAY seconds if that is set in the\n"
+          "environment. Exit status: 0 on success, 2 on bad usage or input (one line on\n"
+          "stderr says what to fix), 1 on an internal failure.\n",
           fp);
 }
 
@@ -63,6 +67,10 @@ static void command_names(char *buf, size_t size)
 
 int main(int argc, char **argv)
 {
+    /* A file-size limit (ulimit -f) would kill the command by SIGXFSZ in the
+     * middle of a write, leaving a FILE.partXXXXXX behind; ignored, the write
+     * fails with EFBIG, which the writers report and clean up after. */
+    signal(SIGXFSZ, SIG_IGN);
     char names[256];
     command_names(names, sizeof names);
     if (argc < 2) {
@@ -74,6 +82,8 @@ int main(int argc, char **argv)
         usage(stdout);
         return finish(CLI_EXIT_OK);
     }
+    if (strcmp(argv[1], "--version") == 0)
+        return finish(cli_cmd_version(argc - 1, argv + 1));
     for (size_t i = 0; i < COMMAND_COUNT; ++i)
         if (strcmp(argv[1], commands[i].name) == 0)
             return finish(commands[i].run(argc - 1, argv + 1));

@@ -279,7 +279,7 @@ int cli_report_pointset2d(const char *cmd, const cli_ps_report *rep, const mcs_p
         rc = rows2d(cmd, rep, acc, plane, &nplane, ring, &nring);
     if (rc == 0 && rep->plot != NULL) {
         const char *exact = rep->exact != NULL ? rep->exact_label : NULL;
-        const cli_plot_info info = {rep->title, rep->subtitle, exact, NULL, NULL};
+        const cli_plot_info info = {rep->title, rep->subtitle, exact, NULL, NULL, rep->log_y};
         rc = cli_plot_pointset2d(cmd, rep->plot, &info, plane, nplane, ring, nring);
     }
     if (rc == 0)
@@ -304,7 +304,8 @@ int cli_report_pointset(const char *cmd, const cli_ps_report *rep, const mcs_poi
         rc = cli_ps_rows(cmd, CLI_PS_1D, acc, rows, &nrows);
     if (rc == 0 && rep->plot != NULL) {
         const cli_plot_info info = {rep->title, rep->subtitle, NULL, NULL,
-                                    "⟨P(f)⟩   (point-set periodogram, mean over trials)"};
+                                    "⟨P(f)⟩   (point-set periodogram, mean over trials)",
+                                    rep->log_y};
         cli_ps_as_spectrum(rows, nrows, plot_rows);
         rc = cli_plot_spectrum(cmd, rep->plot, &info, plot_rows, nrows);
     }

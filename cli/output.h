@@ -97,6 +97,7 @@ typedef struct {
 typedef struct {
     int csv, radial;          /* CSV only; 2D: the annuli instead of every wave vector */
     const char *plot;         /* the figure's path (plot.h), or NULL */
+    int log_y;                /* the figure's profile on a log y axis (--log) */
     const char *title, *subtitle; /* the figure's title lines */
     const char *exact_label;  /* the exact series' legend, when exact is set */
     const cli_exact2d *exact; /* exact values and z-scores, or NULL: no such columns */

@@ -6,6 +6,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <math.h>
+#include <signal.h>
 #include <spawn.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -64,7 +65,7 @@ static void dir_of(const char *path, char *dir, size_t size)
         snprintf(dir, size, "%.*s", (int)(slash - path), path);
 }
 
-int cli_plot_check(const char *cmd, const char *path)
+int cli_plot_check_file(const char *cmd, const char *path)
 {
     const char *ext = extension(path);
     if (strcmp(ext, "svg") != 0 && strcmp(ext, "png") != 0)
@@ -73,16 +74,36 @@ int cli_plot_check(const char *cmd, const char *path)
         return cli_fail(cmd, "--plot: the file name is too long");
     char dir[PATH_LEN];
     dir_of(path, dir, sizeof dir);
-    struct stat st;
-    if (stat(path, &st) == 0 && S_ISDIR(st.st_mode))
-        return cli_fail(cmd, "--plot %s: that is a directory", path);
+    /* The figure is renamed onto path, as a record is (atomic.h). */
+    const char *special = cli_not_regular(path);
+    if (special != NULL)
+        return cli_fail(cmd, "--plot %s: it is %s, not a regular file (give a regular file or a "
+                        "new name)", path, special);
     if (access(dir, W_OK) != 0)
         return cli_fail(cmd, "--plot %s: cannot write in directory '%s': %s", path, dir,
                         strerror(errno));
+    return 0;
+}
+
+int cli_plot_check_gnuplot(const char *cmd)
+{
     char gp[PATH_LEN];
     if (find_gnuplot(gp, sizeof gp) != 0)
         return cli_fail(cmd, "--plot needs gnuplot, which is not on PATH (Debian: apt-get "
                         "install gnuplot-nox)");
+    return 0;
+}
+
+int cli_plot_check(const char *cmd, const char *path)
+{
+    int rc = cli_plot_check_file(cmd, path);
+    return rc != 0 ? rc : cli_plot_check_gnuplot(cmd);
+}
+
+int cli_plot_check_log(const char *cmd, int log, const char *plot)
+{
+    if (log && plot == NULL)
+        return cli_fail(cmd, "--log sets the figure's y axis: give --plot FILE too");
     return 0;
 }
 
@@ -148,31 +169,114 @@ void cli_plot_data_ref(FILE *fp, const char *tmp, const char *name)
     cli_plot_string(fp, file);
 }
 
-void cli_plot_profile_row(FILE *fp, long x, double power, double stderr_, double exact,
-                          double closed)
+/* Below this fraction of the highest value, a value on a log axis is the
+ * rounding residue of a zero (a comb's 1e-33), not a value to stretch the
+ * axis over thirty decades for. */
+#define LOG_FLOOR 1e-12
+
+/* The values a row draws: power - se, power, power + se, exact, closed. */
+static void drawn_values(const double in[4], double out[5])
 {
-    double se = isnan(stderr_) ? 0.0 : stderr_;
+    const double se = isnan(in[1]) ? 0.0 : in[1];
+    out[0] = in[0] - se;
+    out[1] = in[0];
+    out[2] = in[0] + se;
+    out[3] = in[2];
+    out[4] = in[3];
+}
+
+/* [bottom, top] of a log axis over drawn values in [lo, hi]. */
+static void log_range(cli_plot_axis *a)
+{
+    if (!(a->hi > 0.0) || !(a->lo > 0.0)) { /* nothing to draw: one decade either side of 1 */
+        a->bottom = 0.1;
+        a->top = 10.0;
+        return;
+    }
+    const double lo = fmin(a->lo / 2.0, a->hi / 100.0);
+    a->bottom = lo;
+    a->top = lo * pow(a->hi / lo, 1.0 / 0.7);
+}
+
+void cli_plot_axis_init(cli_plot_axis *a, int log, const void *rows, size_t first, size_t n,
+                        cli_plot_row_fn get)
+{
+    a->log = log;
+    a->hi = a->scale = 0.0;
+    a->lo = (double)INFINITY;
+    double in[4], v[5];
+    /* The highest value: of the rows drawn (the range), and of all of them,
+     * row 0 too (S_0, P(0) = K), for the floor: a spectrum that is zero at
+     * every k >= 1 is rounding residue everywhere, not a range to draw. */
+    for (size_t i = 0; i < n; ++i) {
+        get(rows, i, in);
+        drawn_values(in, v);
+        for (int j = 2; j < 5; ++j) { /* power + se, exact, closed */
+            if (!isnan(v[j]) && v[j] > a->scale)
+                a->scale = v[j];
+            if (i >= first && !isnan(v[j]) && v[j] > a->hi)
+                a->hi = v[j];
+        }
+    }
+    /* The lowest value above the floor, now that the floor is known. */
+    for (size_t i = first; log && i < n; ++i) {
+        get(rows, i, in);
+        drawn_values(in, v);
+        for (int j = 0; j < 5; ++j)
+            if (v[j] > LOG_FLOOR * a->scale && v[j] < a->lo)
+                a->lo = v[j];
+    }
+    if (log && isinf(a->lo)) /* nothing above the floor: nothing on the axis */
+        a->hi = 0.0;
+    if (log) {
+        log_range(a);
+    } else {
+        a->bottom = 0.0;
+        a->top = 1.45 * (a->hi > 0.0 ? a->hi : 1.0);
+    }
+}
+
+void cli_plot_axis_write(FILE *fp, const cli_plot_axis *a)
+{
+    if (a->log)
+        fputs("set logscale y\nset format y '10^{%L}'\n", fp);
+    fprintf(fp, "set yrange [%.17g:%.17g]\n", a->bottom, a->top);
+}
+
+/* Whether x is off a log axis: <= 0, or a rounding residue (NaN is not). */
+static int below_axis(const cli_plot_axis *a, double x)
+{
+    return a->log && !isnan(x) && !(x > LOG_FLOOR * a->scale);
+}
+
+void cli_plot_profile_row(FILE *fp, const cli_plot_axis *a, long x, double power,
+                          double stderr_, double exact, double closed)
+{
+    const double in[4] = {power, stderr_, exact, closed};
+    double v[5];
+    drawn_values(in, v);
+    /* Log: a line (the band's edges, exact, closed) at a zero runs down to
+     * the bottom of the axis, as it would towards minus infinity, so a comb
+     * still reads as one; a measured mean of zero is not drawn (a point on
+     * the edge would read as that value); no band where even its upper edge
+     * is zero. */
+    if (below_axis(a, v[2]))
+        v[0] = v[2] = (double)NAN;
+    for (int j = 0; j < 5; ++j)
+        if (below_axis(a, v[j]))
+            v[j] = j == 1 ? (double)NAN : a->bottom;
     fprintf(fp, "%ld", x);
-    cli_plot_value(fp, power);
-    cli_plot_value(fp, power - se);
-    cli_plot_value(fp, power + se);
-    cli_plot_value(fp, exact);
-    cli_plot_value(fp, closed);
+    cli_plot_value(fp, v[1]);
+    cli_plot_value(fp, v[0]);
+    cli_plot_value(fp, v[2]);
+    cli_plot_value(fp, v[3]);
+    cli_plot_value(fp, v[4]);
     fputc('\n', fp);
 }
 
-double cli_plot_raise_top(double top, double power, double stderr_, double exact, double closed)
-{
-    double se = isnan(stderr_) ? 0.0 : stderr_;
-    double v[3] = {power + se, exact, closed};
-    for (int j = 0; j < 3; ++j)
-        if (!isnan(v[j]) && v[j] > top)
-            top = v[j];
-    return top;
-}
-
 /* The measured power (k >= 1) with its band and the predictions. */
-static int write_data(const char *tmp, const cli_spectrum_row *rows, size_t nrows)
+static int write_data(const char *tmp, const cli_plot_axis *axis, const cli_spectrum_row *rows,
+                      size_t nrows)
 {
     FILE *fp = cli_plot_data(tmp, "data.txt");
     if (fp == NULL)
@@ -181,7 +285,7 @@ static int write_data(const char *tmp, const cli_spectrum_row *rows, size_t nrow
     for (size_t i = 0; i < nrows; ++i) {
         const cli_spectrum_row *r = &rows[i];
         if (r->freq != 0u)
-            cli_plot_profile_row(fp, (long)r->freq, r->power, r->power_stderr, r->exact,
+            cli_plot_profile_row(fp, axis, (long)r->freq, r->power, r->power_stderr, r->exact,
                                  r->closed);
     }
     return fclose(fp) == 0 ? 0 : -1;
@@ -195,15 +299,14 @@ static int series_present(const cli_spectrum_row *rows, size_t nrows, int exact)
     return 0;
 }
 
-/* The largest value drawn (k >= 1): measured plus its standard error, exact,
- * closed; 1 if there is nothing positive (an all-zero comb still gets axes). */
-static double top_value(const cli_spectrum_row *rows, size_t nrows)
+/* cli_plot_row_fn of spectrum rows. */
+static void spectrum_values(const void *rows, size_t i, double v[4])
 {
-    double top = 0.0;
-    for (size_t i = 1; i < nrows; ++i)
-        top = cli_plot_raise_top(top, rows[i].power, rows[i].power_stderr, rows[i].exact,
-                                 rows[i].closed);
-    return top > 0.0 ? top : 1.0;
+    const cli_spectrum_row *r = (const cli_spectrum_row *)rows + i;
+    v[0] = r->power;
+    v[1] = r->power_stderr;
+    v[2] = r->exact;
+    v[3] = r->closed;
 }
 
 void cli_plot_style(FILE *fp)
@@ -243,7 +346,10 @@ typedef struct {
 static int write_spectrum(FILE *fp, const char *tmp, const void *ctx)
 {
     const spectrum_figure *fig = ctx;
-    if (write_data(tmp, fig->rows, fig->nrows) != 0)
+    /* k >= 1: row 0 (S_0 = K / sqrt N) is not drawn. */
+    cli_plot_axis axis;
+    cli_plot_axis_init(&axis, fig->info->log_y, fig->rows, 1u, fig->nrows, spectrum_values);
+    if (write_data(tmp, &axis, fig->rows, fig->nrows) != 0)
         return -1;
     fputs("set title ", fp);
     cli_plot_title(fp, fig->info);
@@ -253,7 +359,7 @@ static int write_spectrum(FILE *fp, const char *tmp, const void *ctx)
     fputc('\n', fp);
     cli_plot_style(fp);
     /* Head room above the highest value for the key, so it never hides data. */
-    fprintf(fp, "set yrange [0:%.17g]\n", 1.45 * top_value(fig->rows, fig->nrows));
+    cli_plot_axis_write(fp, &axis);
     /* A little room right of k = N/2 so a comb tooth there is not cut by the border. */
     size_t last = fig->nrows > 1u ? fig->nrows - 1u : 1u;
     fprintf(fp, "set xrange [0:%.17g]\n", (double)last * 1.02 + 0.5);
@@ -299,16 +405,30 @@ static int run_gnuplot(const char *cmd, const char *tmp)
     posix_spawn_file_actions_addopen(&fa, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
     posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, log, O_WRONLY | O_CREAT | O_TRUNC, 0600);
     posix_spawn_file_actions_adddup2(&fa, STDOUT_FILENO, STDERR_FILENO);
+    /* gnuplot gets SIGXFSZ back at its default (the command ignores it, and
+     * an ignored signal stays ignored across exec). */
+    posix_spawnattr_t attr;
+    posix_spawnattr_init(&attr);
+    sigset_t def;
+    sigemptyset(&def);
+    sigaddset(&def, SIGXFSZ);
+    posix_spawnattr_setsigdefault(&attr, &def);
+    posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGDEF);
     char *argv[] = {gp, script, NULL};
     pid_t pid;
-    int rc = posix_spawn(&pid, gp, &fa, NULL, argv, environ);
+    int rc = posix_spawn(&pid, gp, &fa, &attr, argv, environ);
     posix_spawn_file_actions_destroy(&fa);
+    posix_spawnattr_destroy(&attr);
     if (rc != 0)
         return cli_fail(cmd, "cannot run %s: %s", gp, strerror(rc));
     int status = 0;
     while (waitpid(pid, &status, 0) < 0)
         if (errno != EINTR)
             return cli_fail(cmd, "waiting for gnuplot: %s", strerror(errno));
+    if (WIFSIGNALED(status))
+        return cli_fail(cmd, "gnuplot was killed by signal %d%s", WTERMSIG(status),
+                        WTERMSIG(status) == SIGXFSZ ? " (SIGXFSZ: the file-size limit, ulimit -f)"
+                                                     : "");
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
         char msg[512];
         first_log_line(tmp, msg, sizeof msg);
@@ -324,9 +444,11 @@ static int copy_fd(int in, int out)
     while ((got = read(in, buf, sizeof buf)) > 0) {
         for (ssize_t done = 0; done < got;) {
             ssize_t w = write(out, buf + done, (size_t)(got - done));
-            if (w < 0 && errno != EINTR)
+            if (w < 0 && errno == EINTR)
+                continue;
+            if (w <= 0)
                 return -1;
-            done += w > 0 ? w : 0;
+            done += w;
         }
     }
     return got < 0 ? -1 : 0;
@@ -338,6 +460,9 @@ static int install_figure(const char *cmd, const char *tmp, const char *path)
     char src[PATH_LEN + 16], part[PATH_LEN + 32];
     snprintf(src, sizeof src, "%s/figure", tmp);
     snprintf(part, sizeof part, "%s.partXXXXXX", path);
+    const char *special = cli_not_regular(path);
+    if (special != NULL)
+        return cli_fail(cmd, "--plot %s: it is %s, not a regular file", path, special);
     int in = open(src, O_RDONLY);
     struct stat st;
     if (in < 0 || fstat(in, &st) != 0 || st.st_size == 0) {
@@ -354,12 +479,19 @@ static int install_figure(const char *cmd, const char *tmp, const char *path)
     mode_t mask = umask(0);
     umask(mask);
     int ok = copy_fd(in, out) == 0 && fchmod(out, 0666 & ~mask) == 0;
-    ok = (close(out) == 0) && ok;
+    int err = errno;
+    if (close(out) != 0 && ok) {
+        err = errno;
+        ok = 0;
+    }
     close(in);
-    if (!ok || rename(part, path) != 0) {
-        int err = errno;
+    if (ok && rename(part, path) != 0) {
+        err = errno;
+        ok = 0;
+    }
+    if (!ok) {
         unlink(part);
-        return cli_fail(cmd, "cannot write %s: %s", path, strerror(err));
+        return cli_write_failed(cmd, path, err, (unsigned long long)st.st_size);
     }
     return 0;
 }

@@ -28,12 +28,26 @@ typedef struct {
     const char *exact_label;  /* legend of the exact series; NULL: not drawn */
     const char *closed_label; /* legend of the closed form; NULL: not drawn */
     const char *ylabel;       /* the spectrum's y axis; NULL: <|S_k|^2> */
+    int log_y;                /* --log: the spectrum's (the profile's) y axis in log scale */
 } cli_plot_info;
 
-/* Checks a --plot FILE before any work is done: it ends in .svg or .png, its
- * directory is writable, and gnuplot is on PATH. Returns 0 or
- * CLI_EXIT_USAGE after one line on stderr. */
+/* Checks a --plot FILE before any work is done: cli_plot_check_file, then
+ * cli_plot_check_gnuplot. Returns 0 or CLI_EXIT_USAGE after one line on
+ * stderr. */
 int cli_plot_check(const char *cmd, const char *path);
+
+/* The file half: path ends in .svg or .png, is a regular file or a new name
+ * (cli_not_regular), and its directory is writable. 0 or CLI_EXIT_USAGE. */
+int cli_plot_check_file(const char *cmd, const char *path);
+
+/* The program half: gnuplot is on PATH. A command that may find it has no
+ * figure to draw (mcspec show of a welford record) says so first and asks
+ * this only when it will draw. 0 or CLI_EXIT_USAGE. */
+int cli_plot_check_gnuplot(const char *cmd);
+
+/* --log is for the figure: CLI_EXIT_USAGE after one line when log is set
+ * without --plot (plot NULL), else 0. */
+int cli_plot_check_log(const char *cmd, int log, const char *plot);
 
 /* Both checks a command that saves and plots makes before any work: --save
  * FILE (cli_write_check) and --plot FILE (cli_plot_check); either may be
@@ -94,13 +108,36 @@ typedef struct {
 } cli_plot_series;
 void cli_plot_profile(FILE *fp, const cli_plot_series *s);
 
-/* One line of such a data file: x, the measured value, value -+ its
- * standard error (none: 0), exact and closed (NaN: no value). */
-void cli_plot_profile_row(FILE *fp, long x, double power, double stderr_, double exact,
-                          double closed);
+/* The y axis of a profile panel. Linear: [0, 1.45 x the highest value
+ * drawn] (room for the key; 1 when nothing is positive). Log (--log): from
+ * below the lowest positive value to where the highest sits at 70% of the
+ * height, two decades at least ([0.1, 10] when nothing is positive); a
+ * value <= 0, or below 1e-12 of the highest of all rows, row 0 too (the
+ * rounding residue of a zero), is off the axis: a line (band edge, exact,
+ * closed) goes down to its bottom there, a measured point is not drawn. */
+typedef struct {
+    int log;
+    double hi;            /* highest value drawn (power + stderr, exact, closed) */
+    double scale;         /* highest value of all the rows, for the floor */
+    double lo;            /* log: lowest value drawn above scale x 1e-12 */
+    double bottom, top;   /* the range */
+} cli_plot_axis;
 
-/* top raised to the highest of power + its standard error, exact and closed
- * (NaN values ignored): the top of a profile's y range. */
-double cli_plot_raise_top(double top, double power, double stderr_, double exact, double closed);
+/* The values of row i of a caller's rows: power, its standard error, exact
+ * and closed (NaN: none). */
+typedef void (*cli_plot_row_fn)(const void *rows, size_t i, double v[4]);
+
+/* The axis of rows first..n-1 (get reads them), linear or log. */
+void cli_plot_axis_init(cli_plot_axis *a, int log, const void *rows, size_t first, size_t n,
+                        cli_plot_row_fn get);
+
+/* The axis's script lines: its scale, tic format and range. */
+void cli_plot_axis_write(FILE *fp, const cli_plot_axis *a);
+
+/* One line of such a data file: x, the measured value, value -+ its
+ * standard error (none: 0), exact and closed (NaN: no value), each as the
+ * axis draws it. */
+void cli_plot_profile_row(FILE *fp, const cli_plot_axis *a, long x, double power,
+                          double stderr_, double exact, double closed);
 
 #endif /* MCSPEC_CLI_PLOT_H */

@@ -24,15 +24,14 @@ static double image_top(const pointset2d_figure *fig)
     return top > 0.0 ? top : 1.0;
 }
 
-/* Largest value of the profile (r >= 1): measured plus its standard error,
- * exact; 1 if nothing is positive. */
-static double profile_top(const pointset2d_figure *fig)
+/* cli_plot_row_fn of the radial rows: no closed form. */
+static void radial_values(const void *rows, size_t i, double v[4])
 {
-    double top = 0.0;
-    for (size_t i = 1; i < fig->nradial; ++i)
-        top = cli_plot_raise_top(top, fig->radial[i].power, fig->radial[i].power_stderr,
-                                 fig->radial[i].exact, (double)NAN);
-    return top > 0.0 ? top : 1.0;
+    const cli_ps_row *r = (const cli_ps_row *)rows + i;
+    v[0] = r->power;
+    v[1] = r->power_stderr;
+    v[2] = r->exact;
+    v[3] = (double)NAN;
 }
 
 static int has_exact(const pointset2d_figure *fig)
@@ -45,7 +44,7 @@ static int has_exact(const pointset2d_figure *fig)
 
 /* data.txt: the profile, r >= 1, in cli_plot_profile's columns; data2.txt:
  * the image, one scan line per ky (gnuplot's grid format). */
-static int write_data(const char *tmp, const pointset2d_figure *fig)
+static int write_data(const char *tmp, const pointset2d_figure *fig, const cli_plot_axis *axis)
 {
     FILE *fp = cli_plot_data(tmp, "data.txt");
     if (fp == NULL)
@@ -53,7 +52,7 @@ static int write_data(const char *tmp, const pointset2d_figure *fig)
     fputs("# r radial radial-stderr radial+stderr exact closed\n", fp);
     for (size_t i = 1; i < fig->nradial; ++i) {
         const cli_ps_row *r = &fig->radial[i];
-        cli_plot_profile_row(fp, r->kx, r->power, r->power_stderr, r->exact, (double)NAN);
+        cli_plot_profile_row(fp, axis, r->kx, r->power, r->power_stderr, r->exact, (double)NAN);
     }
     int ok = fclose(fp) == 0;
     fp = cli_plot_data(tmp, "data2.txt");
@@ -87,15 +86,16 @@ static void write_image_panel(FILE *fp, const char *tmp, const pointset2d_figure
     fputs(" using 1:2:3 with image notitle\n", fp);
 }
 
-static void write_profile_panel(FILE *fp, const char *tmp, const pointset2d_figure *fig)
+static void write_profile_panel(FILE *fp, const char *tmp, const pointset2d_figure *fig,
+                                const cli_plot_axis *axis)
 {
     const long f = fig->radial[fig->nradial - 1u].kx;
     fputs("set title \"radial average over the annuli r ≤ |k| < r + 1\" noenhanced\n"
           "set xlabel \"radius r\"\nset ylabel \"radial average of ⟨P(k)⟩\"\n"
           "set size noratio\nunset cblabel\nunset colorbox\n", fp);
     cli_plot_style(fp);
-    fprintf(fp, "set xrange [0.5:%.17g]\nset yrange [0:%.17g]\n", (double)f + 0.5,
-            1.45 * profile_top(fig));
+    fprintf(fp, "set xrange [0.5:%.17g]\n", (double)f + 0.5);
+    cli_plot_axis_write(fp, axis);
     const cli_plot_series s = {tmp, "data.txt", "measured",
                                has_exact(fig) ? fig->info->exact_label : NULL, NULL};
     cli_plot_profile(fp, &s);
@@ -104,13 +104,16 @@ static void write_profile_panel(FILE *fp, const char *tmp, const pointset2d_figu
 static int write_pointset2d(FILE *fp, const char *tmp, const void *ctx)
 {
     const pointset2d_figure *fig = ctx;
-    if (write_data(tmp, fig) != 0)
+    /* r >= 1 (r = 0 is P(0) = K); the image keeps its linear colour scale. */
+    cli_plot_axis axis;
+    cli_plot_axis_init(&axis, fig->info->log_y, fig->radial, 1u, fig->nradial, radial_values);
+    if (write_data(tmp, fig, &axis) != 0)
         return -1;
     fputs("set multiplot layout 1,2 title ", fp);
     cli_plot_title(fp, fig->info);
     fputc('\n', fp);
     write_image_panel(fp, tmp, fig);
-    write_profile_panel(fp, tmp, fig);
+    write_profile_panel(fp, tmp, fig, &axis);
     fputs("unset multiplot\n", fp);
     return 0;
 }

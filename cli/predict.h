@@ -2,15 +2,12 @@
  * theory, so a better source (exact theory at every N) is a change here only.
  *
  * Power spectrum <|S_k|^2>, k = 0..N/2:
- *  - exact: mcs_theory's exact moments where N <= MCS_MAX_COV_N; above that,
- *    the closed forms that are exact at finite N (eq. 17 at k = 0 without
- *    importance, eq. 23 random, the exact form of eq. 33 for stratified and
- *    homogenized strata with K dividing N, eq. 37 uniform and jitter with K
- *    dividing N, eq. 45-46 random with importance); empty otherwise;
+ *  - exact: at every N, for every kind, K and importance function:
+ *    mcs_theory's exact moments where N <= MCS_MAX_COV_N, the O(N)-memory
+ *    mcs_theory_spectrum above;
  *  - closed: the note's closed form as printed, where one exists (eq. 17 or
  *    46/51 at k = 0; eq. 23, 33, 37, 45, 50 at k > 0).
- * Var[I]: exact from mcs_theory where N <= MCS_MAX_COV_N, eq. 25 for random
- * sampling without importance at any N; empty otherwise. */
+ * Var[I]: exact from the same two engines at every N. */
 #ifndef MCSPEC_CLI_PREDICT_H
 #define MCSPEC_CLI_PREDICT_H
 

@@ -25,6 +25,7 @@ void cli_progress_init(cli_progress *pr, int want, const char *label, const char
     pr->label = label;
     pr->unit = unit;
     pr->total = total;
+    pr->from = 0;
     pr->start = pr->enabled ? now() : 0.0;
     /* MCSPEC_PROGRESS_DELAY (seconds) moves the first line; the tests set 0. */
     const char *env = getenv("MCSPEC_PROGRESS_DELAY");
@@ -33,6 +34,24 @@ void cli_progress_init(cli_progress *pr, int want, const char *label, const char
     pr->delay = env != NULL && end != env && *end == '\0' && d >= 0.0 ? d : PROGRESS_DELAY;
     pr->last = pr->start;
     pr->shown = 0;
+}
+
+void cli_progress_span(cli_progress *pr, uint64_t from, uint64_t total)
+{
+    pr->from = from < total ? from : 0u;
+    pr->total = total;
+}
+
+/* "42 s", "3 min 07 s", "2 h 05 min". */
+static void duration(char *buf, size_t size, double s)
+{
+    const unsigned long t = (unsigned long)(s + 0.5);
+    if (t < 60u)
+        snprintf(buf, size, "%lu s", t);
+    else if (t < 3600u)
+        snprintf(buf, size, "%lu min %02lu s", t / 60u, t % 60u);
+    else
+        snprintf(buf, size, "%lu h %02lu min", t / 3600u, t / 60u % 60u);
 }
 
 void cli_progress_update(cli_progress *pr, uint64_t done)
@@ -46,13 +65,20 @@ void cli_progress_update(cli_progress *pr, uint64_t done)
         return;
     pr->last = t;
     pr->shown = 1;
-    if (pr->total > 0u)
-        fprintf(stderr, "\r%s: %3.0f%% (%llu of %llu %s, %.0f s)", pr->label,
-                100.0 * (double)done / (double)pr->total, (unsigned long long)done,
-                (unsigned long long)pr->total, pr->unit, t - pr->start);
-    else
-        fprintf(stderr, "\r%s: %llu %s (%.0f s)", pr->label, (unsigned long long)done, pr->unit,
-                t - pr->start);
+    char taken[32], left[32];
+    duration(taken, sizeof taken, t - pr->start);
+    if (pr->total > 0u && done > pr->from) {
+        const double own = (double)(done - pr->from), all = (double)(pr->total - pr->from);
+        /* At the rate so far: (t - start) / own per unit, all - own units to go. */
+        duration(left, sizeof left, (t - pr->start) * (all - own) / own);
+        /* EL (erase to the end of the line): a shorter line leaves no tail. */
+        fprintf(stderr, "\r%s: %3.0f%% (%llu of %llu %s, %s, about %s left)\033[K", pr->label,
+                100.0 * own / all, (unsigned long long)(done - pr->from),
+                (unsigned long long)(pr->total - pr->from), pr->unit, taken, left);
+    } else {
+        fprintf(stderr, "\r%s: %llu %s (%s)\033[K", pr->label, (unsigned long long)done,
+                pr->unit, taken);
+    }
     fflush(stderr);
 }
 

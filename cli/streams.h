@@ -23,8 +23,8 @@ void cli_stream_share(uint64_t trials, uint64_t streams, uint64_t i, uint64_t *f
                       uint64_t *count);
 
 /* Most streams a run may have (a merge tree of that many leaves has at most
- * 21 levels alive at once). */
-#define CLI_MAX_STREAMS 1048576u
+ * 21 levels alive at once). No suffix: --help prints it (CLI_STR). */
+#define CLI_MAX_STREAMS 1048576
 
 /* A run to split over streams: the accumulator every stream fills (kind and
  * shape, as cli_acc_new), and how one stream draws trials [first, last) of

@@ -5,7 +5,8 @@
 #                                build/bin/mcspec; $GOLDEN the golden files,
 #                                default test/golden)
 #
-#   --help on the command and on every subcommand;
+#   --help on the command and on every subcommand, no C suffixes in them;
+#   --version and `mcspec version` print the library's version string;
 #   bad usage (unknown command or option, missing or out-of-range values):
 #   exit 2, one line on stderr, nothing on stdout (--save, merge and show are
 #   test/record_check.sh's);
@@ -21,13 +22,18 @@
 #   --opt=value equals --opt value, a kind's variance does not depend on
 #   which other kinds run (one stream per kind);
 #   every malformed input (bad number, wrong column count, empty set, NaN,
-#   infinity, out-of-range point, negative weight, unreadable file, empty
-#   input) gives exit 2, one line on stderr naming the line, nothing on
+#   infinity, out-of-range point, negative weight, a NUL byte, unreadable
+#   file, empty input) gives exit 2, one line on stderr naming the line, nothing on
 #   stdout, also when the error comes after many good sets; --wrap;
-#   --plot: a missing gnuplot, a bad file name and an unwritable directory
-#   give exit 2 and no file; with gnuplot, an SVG and a PNG of the expected
-#   size with the expected series, and no temporary files left behind;
-#   progress: on a terminal it appears, never with --csv, never when stderr
+#   --plot: a missing gnuplot, a failing one (a fake on PATH), a bad file
+#   name and an unwritable directory give exit 2 and no file; with gnuplot
+#   (skipped, with a line saying so, when it is not installed), an SVG and a
+#   PNG of the expected size with the expected series, and no temporary
+#   files left behind; --log (a fake gnuplot keeps the script and data): a
+#   log y axis over a positive range, no value <= 0 drawn, a comb still a
+#   comb, the 2D image not on it;
+#   progress: on a terminal it appears, with the time left and, for a
+#   --stream run, that stream's share; never with --csv, never when stderr
 #   is not a terminal (the terminal checks need util-linux `script`).
 # Ends with a Unity-style summary ("N Tests F Failures 0 Ignored", then OK or
 # FAIL) so test/run_tests.sh counts it; exit status non-zero on failure.
@@ -89,6 +95,36 @@ done
     bad "spectrum --help does not give the CSV header"
 "$MCSPEC" pattern --help | grep -q 'exact,closed,z_exact,z_closed' && ok ||
     bad "pattern --help does not give the CSV columns"
+# --version and `version`: the library's version string, as version.h has it.
+version=$(sed -n 's/^#define MCS_VERSION_STRING "\(.*\)"$/\1/p' "$(dirname "$0")/../include/mcspec/version.h")
+[ -n "$version" ] && ok || bad "no MCS_VERSION_STRING in include/mcspec/version.h"
+for v in --version version; do
+    if succeeds "mcspec $v" "$MCSPEC" "$v" && [ "$(cat "$tmp/out")" = "mcspec $version" ]; then ok
+    else bad "mcspec $v: '$(cat "$tmp/out")', expected 'mcspec $version'"; fi
+done
+succeeds "mcspec version --help" "$MCSPEC" version --help && grep -q '^usage: mcspec version' "$tmp/out" && ok ||
+    bad "mcspec version --help: no usage line"
+usage_error "version with an argument" "^mcspec version: unexpected argument 'x'" "$MCSPEC" version x
+"$MCSPEC" --help | grep -q -- '--version' && ok || bad "mcspec --help does not mention --version"
+# Numbers in the help texts as a user types them: no C suffix (1048576u).
+for c in "" spectrum pattern variance merge show version; do
+    # shellcheck disable=SC2086
+    suffixed=$("$MCSPEC" $c --help | grep -E '[0-9]+[uUlL]+\b')
+    if [ -z "$suffixed" ]; then ok; else bad "mcspec $c --help: a C suffix in '$suffixed'"; fi
+done
+# The exact column is filled at every N (mcs_theory_spectrum above
+# MCS_MAX_COV_N): the help texts no longer say it is empty there.
+for c in pattern variance; do
+    if "$MCSPEC" "$c" --help | tr '\n' ' ' | grep -Eq 'empty (column|field) (elsewhere|for the other)'
+    then bad "mcspec $c --help still says the exact column is empty above N = 64"
+    elif "$MCSPEC" "$c" --help | tr '\n' ' ' | grep -q 'for every N, kind'; then ok
+    else bad "mcspec $c --help does not say the exact values cover every N"; fi
+done
+# The 1D point-set spectrum in 1D terms: k x_j, k = 0..F; k.x_j and the axes
+# are the 2D wording.
+"$MCSPEC" spectrum --help | tr '\n' ' ' |
+    grep -qF 'P(k) = |sum_j exp(-2 pi i k x_j)|^2 / K at the integer frequencies k = 0..F (--dim 1)' && ok ||
+    bad "spectrum --help: the 1D periodogram is not in 1D terms"
 
 # ------------------------------------------------------------- bad usage
 usage_error "no command" 'which command' "$MCSPEC"
@@ -194,8 +230,41 @@ input '0.5 -2\n'
 usage_error "negative weight" 'line 1: weight -2 is negative' "$MCSPEC" spectrum --weights -
 input ''
 usage_error "empty input" 'input is empty' "$MCSPEC" spectrum -
+# Weights of one set summing above the spectrum's MCS_SPECTRUM_MAX_SUM = 2^100:
+# the line where the sum passes it (it was exit 1, MCS_ERR_MAGNITUDE).
+input '0.1 1\n#\n0.1 1e30\n0.2 1e30\n0.3 1\n'
+usage_error "weights summing above 2^100" \
+    '^mcspec spectrum: <stdin>: line 4: .*weights.* sum to 2e\+30.*above 1\.26765e\+30 = 2\^100' \
+    "$MCSPEC" spectrum --n 4 --weights -
+input '0.5 1.3e30\n'
+usage_error "one weight above 2^100" '<stdin>: line 1: .*2\^100' "$MCSPEC" spectrum --n 4 --weights -
+input '0.5 1e30\n0.25 2.6765060022822938e29\n#\n0.5 1\n'
+succeeds "weights summing to 2^100 exactly" "$MCSPEC" spectrum --n 4 --weights --csv -
 input '# header\n# only\n'
 usage_error "only comments" 'line 2: end of input and no point read' "$MCSPEC" spectrum -
+# A NUL byte anywhere in a text input is an error on its line: a C string
+# ends there, so the rest of the line was lost (a leading NUL dropped the
+# point, "0.2<NUL>9" read as 0.2).
+printf '0.1\n\0000.7\n0.9\n' >"$tmp/in"
+usage_error "NUL at the start of a line" '^mcspec spectrum: <stdin>: line 2: a NUL byte' \
+    "$MCSPEC" spectrum --n 4 -
+printf '0.1\n0.2\0009\n' >"$tmp/nul.txt"
+usage_error "NUL inside a number" "nul.txt: line 2: a NUL byte at column 4" \
+    "$MCSPEC" spectrum --n 4 "$tmp/nul.txt"
+printf '# a header\000 with a NUL\n0.5\n' >"$tmp/in"
+usage_error "NUL in a '#' line" '<stdin>: line 1: a NUL byte' "$MCSPEC" spectrum -
+printf '0.1 0.2\n0.3 0.4\000\n' >"$tmp/in"
+usage_error "2D: NUL after a point" '<stdin>: line 2: a NUL byte at column 8' \
+    "$MCSPEC" spectrum --dim 2 --freq 2 -
+printf '0.5 1\n0.25 \0002\n' >"$tmp/in"
+usage_error "--weights: NUL before a weight" '<stdin>: line 2: a NUL byte' "$MCSPEC" spectrum --weights -
+printf '1\n2\n\000\n3\n' >"$tmp/nul.txt"
+usage_error "integrand with a NUL line" "^mcspec variance: .*nul.txt: line 3: a NUL byte" \
+    "$MCSPEC" variance --k 2 "$tmp/nul.txt"
+printf '1\n1\000\n' >"$tmp/nul.txt"
+usage_error "importance with a NUL" "^mcspec pattern: .*nul.txt: line 2: a NUL byte" \
+    "$MCSPEC" pattern random --n 2 --k 2 --importance "$tmp/nul.txt"
+: >"$tmp/in"
 usage_error "missing file" "cannot read '$tmp/nope.txt'" "$MCSPEC" spectrum "$tmp/nope.txt"
 usage_error "a directory" "cannot read '$tmp': it is a directory" "$MCSPEC" spectrum "$tmp"
 # Nothing partial: 200 good sets, then a bad line.
@@ -275,6 +344,18 @@ run "$MCSPEC" variance --k 4 --trials 100 --csv --importance "$tmp/g16.txt" "$tm
 kinds=$(tail -n +2 "$tmp/out" | cut -d, -f1 | tr '\n' ' ')
 if [ "$rc" -eq 0 ] && [ "$kinds" = "random stratified uniform jitter " ]; then ok
 else bad "variance --importance: status $rc, kinds $kinds"; fi
+# Above MCS_MAX_COV_N, every kind, with and without importance: an exact Var[I].
+awk 'BEGIN { for (i = 0; i < 100; ++i) print sin(i / 10) }' >"$tmp/f100.txt"
+awk 'BEGIN { for (i = 0; i < 100; ++i) print 1 + (i % 7) / 3 }' >"$tmp/g100.txt"
+for imp in "" "--importance $tmp/g100.txt"; do
+    # shellcheck disable=SC2086
+    if succeeds "variance --n 100 $imp" "$MCSPEC" variance --k 7 --trials 100 --csv $imp "$tmp/f100.txt"; then
+        empty=$(tail -n +2 "$tmp/out" | awk -F, '$9 == "" { printf "%s ", $1 }')
+        rows=$(tail -n +2 "$tmp/out" | wc -l)
+        if [ -z "$empty" ] && [ "$rows" -ge 4 ]; then ok
+        else bad "variance at N = 100 $imp: no exact value for $empty($rows rows)"; fi
+    fi
+done
 if succeeds "variance table" "$MCSPEC" variance --k 4 --trials 100 "$tmp/f16.txt"; then
     if grep -Eq '^kind +mean +mean_stderr +variance +var_stderr +exact +z_exact' "$tmp/out" &&
        [ "$(grep -Ec '^(random|stratified|homogenized|uniform|jitter) ' "$tmp/out")" -eq 5 ]; then ok
@@ -307,7 +388,27 @@ usage_error "spectrum --freq with --n" 'exclude each other' "$MCSPEC" spectrum -
 usage_error "spectrum --freq with --weights" 'needs binning' "$MCSPEC" spectrum --freq 4 --weights -
 usage_error "spectrum --radial in 1D" '--radial needs --dim 2' "$MCSPEC" spectrum --freq 4 --radial -
 usage_error "spectrum --radial binned" '--radial needs --dim 2 --freq' "$MCSPEC" spectrum --radial -
-usage_error "spectrum --dim 2 --freq too big" 'above this build' "$MCSPEC" spectrum --dim 2 --freq 99999 -
+# --freq's range is the build's: MCS_MAX_FREQ_1D in 1D, MCS_MAX_FREQ in 2D
+# (read from --help, which prints the same macros), not SIZE_MAX.
+cap1=$("$MCSPEC" spectrum --help | sed -n 's/.*F = 1\.\.\([0-9][0-9]*\) in 1D.*/\1/p')
+cap2=$("$MCSPEC" spectrum --help | sed -n 's/.* 1\.\.\([0-9][0-9]*\) in 2D.*/\1/p')
+if [ -n "$cap1" ] && [ -n "$cap2" ]; then ok; else bad "spectrum --help gives no --freq range ('$cap1', '$cap2')"; fi
+usage_error "spectrum --freq 0" "^mcspec spectrum: --freq expects a whole number from 1 to $cap1 for --dim 1 \(this build's MCS_MAX_FREQ_1D\), not '0'$" \
+    "$MCSPEC" spectrum --freq 0 -
+usage_error "spectrum --dim 2 --freq 0" "--freq expects a whole number from 1 to $cap2 for --dim 2 \(this build's MCS_MAX_FREQ\), not '0'" \
+    "$MCSPEC" spectrum --dim 2 --freq 0 -
+usage_error "spectrum --freq too big" "--freq expects a whole number from 1 to $cap1 for --dim 1 .*not '$((cap1 + 1))'" \
+    "$MCSPEC" spectrum --freq "$((cap1 + 1))" -
+usage_error "spectrum --dim 2 --freq too big" "from 1 to $cap2 for --dim 2 .*not '99999999999999999999'" \
+    "$MCSPEC" spectrum --freq 99999999999999999999 --dim 2 -
+usage_error "spectrum --freq x" "--freq expects a whole number from 1 to $cap1 .*not 'x'" "$MCSPEC" spectrum --freq x -
+input '0.5\n'
+succeeds "spectrum --freq at the 1D cap" "$MCSPEC" spectrum --freq "$cap1" --csv -
+input '0.5 0.5\n'
+succeeds "spectrum --dim 2 --freq at the 2D cap" "$MCSPEC" spectrum --dim 2 --freq "$cap2" --csv -
+: >"$tmp/in"
+usage_error "pattern --dim 2 --freq 0" "--freq expects a whole number from 1 to $cap2, not '0'" \
+    "$MCSPEC" pattern jittered --dim 2 --k 16 --freq 0
 usage_error "pattern 2D KIND without --dim 2" "unknown pattern 'jittered'.*--dim 2" "$MCSPEC" pattern jittered --n 16 --k 4
 usage_error "pattern --dim 2 without --freq" '--freq F is required' "$MCSPEC" pattern jittered --dim 2 --k 16
 usage_error "pattern --dim 2 without --k" '--k K is required' "$MCSPEC" pattern jittered --dim 2 --freq 4
@@ -374,6 +475,15 @@ if succeeds "spectrum --dim 2 of $comb2" "$MCSPEC" spectrum --dim 2 --freq 8 --c
     fi
 fi
 # 1D without binning: the rotated 8-point comb of the 1D golden file.
+if succeeds "spectrum --freq 20 table of $comb" "$MCSPEC" spectrum --freq 20 "$comb"; then
+    if head -n 1 "$tmp/out" | grep -qF 'point sets in 1D, no binning: P(k) = |sum_j exp(-2 pi i k x_j)|^2 / K, k = 0..F, F = 20' &&
+       ! grep -Eq 'per axis|k\.x_j|kx' "$tmp/out"; then ok
+    else bad "spectrum --freq 20 table: 2D wording in 1D: $(head -n 1 "$tmp/out")"; fi
+fi
+if succeeds "spectrum --dim 2 table of $hand2" "$MCSPEC" spectrum --dim 2 --freq 3 "$hand2"; then
+    head -n 1 "$tmp/out" | grep -qF 'point sets in 2D, no binning: P(k) = |sum_j exp(-2 pi i k.x_j)|^2 / K, |kx|, |ky| <= F = 3' &&
+        ok || bad "spectrum --dim 2 table: $(head -n 1 "$tmp/out")"
+fi
 if succeeds "spectrum --freq 20 of $comb" "$MCSPEC" spectrum --freq 20 --csv "$comb"; then
     csv_shape "spectrum --freq --csv" "$tmp/out" 'freq,power,power_stderr' 21 3
     problems=$(tail -n +2 "$tmp/out" | awk -F, '{
@@ -471,16 +581,80 @@ if command -v gnuplot >/dev/null 2>&1; then
     sig=$(od -An -tx1 -N24 "$tmp/s2d.png" | tr -d ' \n')
     [ "$sig" = "89504e470d0a1a0a0000000d49484452000003c000000258" ] && ok ||
         bad "show --plot of a pointset2d record: not a 960 x 600 PNG ($sig)"
-    # A gnuplot that fails: exit 2 with its message, no figure, nothing on stdout.
-    mkdir -p "$tmp/fakebin"
-    printf '#!/bin/sh\necho "fake gnuplot: cannot draw" >&2\nexit 1\n' >"$tmp/fakebin/gnuplot"
-    chmod +x "$tmp/fakebin/gnuplot"
-    usage_error "--plot with a failing gnuplot" 'gnuplot failed: fake gnuplot: cannot draw' \
-        env PATH="$tmp/fakebin:$PATH" TMPDIR="$tmp/gptmp" "$abs" pattern random --n 16 --k 4 --plot "$tmp/f.svg"
-    [ ! -e "$tmp/f.svg" ] && [ -z "$(ls -A "$tmp/gptmp")" ] && ok ||
-        bad "--plot with a failing gnuplot left files behind"
 else
-    skip "--plot rendering: gnuplot not installed"
+    skip "--plot rendering (SVG and PNG files, their size and legends): gnuplot not installed"
+fi
+# A gnuplot that fails: exit 2 with its message, no figure, nothing on
+# stdout. A fake one, first on PATH: no real gnuplot needed.
+mkdir -p "$tmp/fakebin" "$tmp/gptmp"
+printf '#!/bin/sh\necho "fake gnuplot: cannot draw" >&2\nexit 1\n' >"$tmp/fakebin/gnuplot"
+chmod +x "$tmp/fakebin/gnuplot"
+usage_error "--plot with a failing gnuplot" 'gnuplot failed: fake gnuplot: cannot draw' \
+    env PATH="$tmp/fakebin:$PATH" TMPDIR="$tmp/gptmp" "$abs" pattern random --n 16 --k 4 --plot "$tmp/f.svg"
+[ ! -e "$tmp/f.svg" ] && [ -z "$(ls -A "$tmp/gptmp")" ] && ok ||
+    bad "--plot with a failing gnuplot left files behind"
+
+# --log: the y axis of the figure's spectrum (2D: its profile) in log scale.
+# A fake gnuplot, first on PATH, keeps the script and data it is given.
+usage_error "--log without --plot" "^mcspec pattern: --log sets the figure's y axis: give --plot FILE too" \
+    "$MCSPEC" pattern random --n 16 --k 4 --log
+usage_error "spectrum --log without --plot" "--log sets the figure's y axis" "$MCSPEC" spectrum --n 4 --log -
+usage_error "show --log without --plot" "--log sets the figure's y axis" "$MCSPEC" show x.rec --log
+mkdir -p "$tmp/capbin"
+# shellcheck disable=SC2016 # $1 and $d are the fake's own, expanded when it runs
+printf '#!/bin/sh\nd=$(dirname "$1")\nrm -rf "%s" && mkdir "%s" && cp "$d"/plot.gp "$d"/data*.txt "%s/" &&\n    echo figure >"$d/figure"\n' \
+    "$tmp/cap" "$tmp/cap" "$tmp/cap" >"$tmp/capbin/gnuplot"
+chmod +x "$tmp/capbin/gnuplot"
+# log_figure LABEL: the script sets a log y axis over a positive range, and
+# the drawn columns (2-6) of the profile's data hold no value <= 0.
+log_figure() {
+    range=$(sed -n 's/^set yrange \[\([^:]*\):.*/\1/p' "$tmp/cap/plot.gp" | tail -n 1)
+    if ! grep -qx 'set logscale y' "$tmp/cap/plot.gp"; then bad "$1: no 'set logscale y'"
+    elif ! awk -v r="$range" 'BEGIN { exit !(r > 0) }'; then bad "$1: y range from '$range'"
+    elif ! awk '!/^#/ { for (i = 2; i <= 6; ++i) if ($i != "NaN" && !($i > 0)) exit 1 }' "$tmp/cap/data.txt"
+    then bad "$1: a value <= 0 on the log axis: $(grep -v '^#' "$tmp/cap/data.txt" | head -n 3 | tr '\n' ';')"
+    else ok; fi
+}
+# The jitter comb: exact powers 0 between the teeth, measured 0 (or rounding).
+succeeds "pattern jitter --plot --log" env PATH="$tmp/capbin:$PATH" \
+    "$abs" pattern jitter --n 64 --k 8 --trials 50 --plot "$tmp/log.svg" --log
+log_figure "pattern jitter --log"
+# ... whose exact line still reads as a comb: teeth at k = 8, 16, 24, 32 and
+# the bottom of the axis between them.
+teeth=$(awk -v b="$range" '!/^#/ && $5 != "NaN" && $5 > b { printf "%s ", $1 }' "$tmp/cap/data.txt")
+[ "$teeth" = "8 16 24 32 " ] && ok || bad "pattern jitter --log: exact teeth at '$teeth'"
+succeeds "pattern jitter --plot, linear" env PATH="$tmp/capbin:$PATH" \
+    "$abs" pattern jitter --n 64 --k 8 --trials 50 --plot "$tmp/log.svg"
+grep -q 'logscale' "$tmp/cap/plot.gp" && bad "--plot without --log sets a log scale" || ok
+grep -q '^set yrange \[0:' "$tmp/cap/plot.gp" && ok || bad "--plot without --log: y range not from 0"
+succeeds "spectrum --plot --log of the comb" env PATH="$tmp/capbin:$PATH" \
+    "$abs" spectrum --n 64 --plot "$tmp/log.png" --log "$comb"
+log_figure "spectrum --log"
+succeeds "spectrum --freq --plot --log of the comb" env PATH="$tmp/capbin:$PATH" \
+    "$abs" spectrum --freq 20 --plot "$tmp/log.png" --log "$comb"
+log_figure "spectrum --freq --log"
+# Zero at every k >= 1 (uniform, K = N): nothing on the axis, a range still.
+succeeds "pattern uniform K = N --plot --log" env PATH="$tmp/capbin:$PATH" \
+    "$abs" pattern uniform --n 16 --k 16 --trials 10 --plot "$tmp/log.svg" --log
+log_figure "pattern uniform K = N --log"
+# 2D: the profile panel is logarithmic, the image before it is not.
+succeeds "pattern --dim 2 --plot --log" env PATH="$tmp/capbin:$PATH" \
+    "$abs" pattern grid --dim 2 --k 16 --freq 6 --trials 20 --plot "$tmp/log.svg" --log
+log_figure "pattern --dim 2 --log"
+order=$(grep -n 'with image\|^set logscale y' "$tmp/cap/plot.gp" | cut -d: -f2 | cut -c1-4 | tr '\n' ' ')
+[ "$order" = "plot set  " ] && ok || bad "pattern --dim 2 --log: the image is on the log axis ($order)"
+succeeds "show --plot --log of a pointset record" env PATH="$tmp/capbin:$PATH" \
+    "$abs" show "$tmp/c1.rec" --plot "$tmp/log.svg" --log
+log_figure "show --log"
+if command -v gnuplot >/dev/null 2>&1; then
+    for a in "pattern jitter --n 64 --k 8 --trials 50" "pattern uniform --n 16 --k 16 --trials 10" \
+             "pattern jittered --dim 2 --k 16 --freq 6 --trials 50"; do
+        # shellcheck disable=SC2086
+        succeeds "$a --plot x.svg --log (gnuplot)" env TMPDIR="$tmp/gptmp" "$MCSPEC" $a --plot "$tmp/l.svg" --log &&
+            { grep -q '<svg' "$tmp/l.svg" && ok || bad "$a --log: no SVG"; }
+    done
+else
+    skip "--plot --log rendering: gnuplot not installed"
 fi
 
 # -------------------------------------------------------------- progress
@@ -491,6 +665,14 @@ if command -v script >/dev/null 2>&1 && script -qec true /dev/null >/dev/null 2>
     MCSPEC_PROGRESS_DELAY=0 script -qec "'$abs' pattern random --n 64 --k 8 --trials 3000 >/dev/null" \
         /dev/null >"$tmp/tty" 2>&1
     grep -q 'of 3000 trials' "$tmp/tty" && ok || bad "no progress on a terminal"
+    # ... with the time taken and an estimate of the time left.
+    grep -Eq '% \([0-9]+ of 3000 trials, [0-9]+ s, about [0-9]+ (s|min [0-9]+ s|h [0-9]+ min) left\)' "$tmp/tty" &&
+        ok || bad "progress without the time left: $(tr '\r' '\n' <"$tmp/tty" | grep -m 1 trials | cat -v)"
+    # A --stream run counts its own share: stream 2 of 3 runs 1000 of the 3000.
+    MCSPEC_PROGRESS_DELAY=0 script -qec "'$abs' pattern random --n 64 --k 8 --trials 3000 --streams 3 --stream 2 >/dev/null" \
+        /dev/null >"$tmp/tty" 2>&1
+    grep -Eq '\([0-9]+ of 1000 trials, .* left\)' "$tmp/tty" && ok ||
+        bad "progress of --stream 2 of 3: $(tr '\r' '\n' <"$tmp/tty" | grep -m 1 trials | cat -v)"
     MCSPEC_PROGRESS_DELAY=0 script -qec "'$abs' pattern random --n 64 --k 8 --trials 3000 --csv >/dev/null" \
         /dev/null >"$tmp/tty" 2>&1
     [ ! -s "$tmp/tty" ] && ok || bad "progress with --csv: $(od -c "$tmp/tty" | head -n 2)"

@@ -20,9 +20,14 @@
 #   of another N or kind, a truncated, corrupted, empty or non-record file,
 #   a missing file, and a missing -o; show refuses the same files;
 #   show prints every kind the format knows (the fuzz seeds), moment and
-#   autocorr with the spectrum header, welford with its own;
+#   autocorr with the spectrum header, welford with its own; show --plot
+#   refuses a record without a figure (welford, spectrum2d) or with no
+#   trials before it looks for gnuplot (none of these checks needs it);
 #   --save into a missing directory fails before any work; --save with
-#   variance needs --kind.
+#   variance needs --kind; --save, merge -o and --plot refuse a device node,
+#   a FIFO and a symbolic link (exit 2, one line), which stay as they were,
+#   and replace a regular file; a file-size limit (ulimit -f) below the
+#   record is exit 2 and one line, no part file; below stdout, exit 1.
 # Ends with a Unity-style summary so test/run_tests.sh counts it.
 
 MCSPEC=${MCSPEC:-build/bin/mcspec}
@@ -136,6 +141,19 @@ for f in trunc flip empty text; do
     refused "show: $f" "$f.rec: " "$MCSPEC" show "$tmp/$f.rec"
 done
 refused "show: --plot of a welford record" "no plot" "$MCSPEC" show "$tmp/v.rec" --plot x.svg
+# What the record allows comes before gnuplot, which is looked for only when
+# a figure will be drawn: these hold without gnuplot on PATH.
+refused "show: --plot of a welford record, no gnuplot" "v.rec holds a welford record: no plot for it" \
+    env PATH=/nonexistent "$MCSPEC" show "$tmp/v.rec" --plot "$tmp/x.svg"
+refused "show: --plot of a spectrum2d record, no gnuplot" "holds a spectrum2d record.*: no plot for it" \
+    env PATH=/nonexistent "$MCSPEC" show "$CORPUS/spectrum2d-n16x17-t20.rec" --plot "$tmp/x.svg"
+refused "show: --plot of an empty spectrum, no gnuplot" "with no trials: nothing to show" \
+    env PATH=/nonexistent "$MCSPEC" show "$CORPUS/spectrum-n1-t0.rec" --plot "$tmp/x.svg"
+refused "show: --plot x.pdf before reading" "--plot $tmp/x.pdf: the file name must end in .svg or .png" \
+    env PATH=/nonexistent "$MCSPEC" show "$tmp/v.rec" --plot "$tmp/x.pdf"
+refused "show: --plot of a spectrum record, no gnuplot" "--plot needs gnuplot, which is not on PATH" \
+    env PATH=/nonexistent "$MCSPEC" show "$tmp/p.rec" --plot "$tmp/x.svg"
+[ -e "$tmp/x.svg" ] && bad "show --plot without gnuplot wrote a figure" || ok
 refused "show: --radial of a spectrum" "--radial is for pointset2d" \
     "$MCSPEC" show "$tmp/p.rec" --radial
 no_parts "after the refusals"
@@ -167,5 +185,77 @@ refused "--save into a missing directory" "cannot write $tmp/no/such/dir/x.rec" 
 refused "--save of a directory" "it is a directory" pattern 10 --save "$tmp"
 refused "variance --save without --kind" "choose its pattern with --kind" \
     "$MCSPEC" variance --k 3 --save "$tmp/v3.rec" "$tmp/f6.txt"
+
+# ------------------------------------------------ --save onto special files
+# The atomic write renames a new file onto FILE, which would put a regular
+# file in place of a device node, a FIFO or a symbolic link: anything but a
+# regular file (or nothing) is refused before any work, and left as it was.
+# node_kept LABEL PATH TYPE: PATH is still of TYPE (stat's %F) with the
+# device numbers and target it had; no part file beside it.
+node_kept() {
+    if [ "$(stat -c '%F %t:%T' "$2")" != "$3" ]; then bad "$1: $2 is now $(stat -c '%F %t:%T' "$2")"
+    elif [ -L "$2" ] && [ "$(readlink "$2")" != "$tmp/keep" ]; then bad "$1: the link changed"
+    elif ls "$tmp"/sp/*.part* >/dev/null 2>&1; then bad "$1: a temporary file was left"
+    else ok; fi
+}
+mkdir -p "$tmp/sp"
+mkfifo "$tmp/sp/fifo"
+ln -s "$tmp/keep" "$tmp/sp/link"
+printf '0.25\n0.5\n' >"$tmp/sp/pts.txt"
+if [ "$(id -u)" -eq 0 ] && mknod "$tmp/sp/dev" c 1 7 2>/dev/null; then
+    refused "pattern --save onto a character device" \
+        "^mcspec pattern: cannot write $tmp/sp/dev: it is a character device, not a regular file" \
+        pattern 10 --save "$tmp/sp/dev"
+    node_kept "pattern --save onto a character device" "$tmp/sp/dev" "character special file 1:7"
+    refused "merge -o onto a character device" "cannot write $tmp/sp/dev: it is a character device" \
+        "$MCSPEC" merge "$tmp/p.rec" -o "$tmp/sp/dev"
+    node_kept "merge -o onto a character device" "$tmp/sp/dev" "character special file 1:7"
+    mknod "$tmp/sp/dev.svg" c 1 7
+    refused "--plot onto a character device" "--plot $tmp/sp/dev.svg: it is a character device" \
+        pattern 10 --plot "$tmp/sp/dev.svg"
+    node_kept "--plot onto a character device" "$tmp/sp/dev.svg" "character special file 1:7"
+else
+    skip "--save onto a device node: mknod needs root"
+fi
+refused "pattern --save onto a FIFO" "cannot write $tmp/sp/fifo: it is a FIFO, not a regular file" \
+    pattern 10 --save "$tmp/sp/fifo"
+node_kept "pattern --save onto a FIFO" "$tmp/sp/fifo" "fifo 0:0"
+refused "spectrum --save onto a FIFO" "^mcspec spectrum: cannot write $tmp/sp/fifo: it is a FIFO" \
+    "$MCSPEC" spectrum --n 4 --save "$tmp/sp/fifo" "$tmp/sp/pts.txt"
+node_kept "spectrum --save onto a FIFO" "$tmp/sp/fifo" "fifo 0:0"
+refused "variance --save onto a FIFO" "^mcspec variance: cannot write $tmp/sp/fifo: it is a FIFO" \
+    "$MCSPEC" variance --k 3 --kind random --save "$tmp/sp/fifo" "$tmp/f6.txt"
+node_kept "variance --save onto a FIFO" "$tmp/sp/fifo" "fifo 0:0"
+refused "merge -o onto a FIFO" "^mcspec merge: cannot write $tmp/sp/fifo: it is a FIFO" \
+    "$MCSPEC" merge "$tmp/p.rec" -o "$tmp/sp/fifo"
+node_kept "merge -o onto a FIFO" "$tmp/sp/fifo" "fifo 0:0"
+refused "pattern --save onto a symbolic link" \
+    "cannot write $tmp/sp/link: it is a symbolic link, not a regular file" pattern 10 --save "$tmp/sp/link"
+node_kept "pattern --save onto a symbolic link" "$tmp/sp/link" "symbolic link 0:0"
+# A file-size limit (ulimit -f) below the record: the command ignores
+# SIGXFSZ, so the write fails with EFBIG (it was killed, status 153, and left
+# FILE.partXXXXXX): exit 2, one line naming FILE and the limit, no part file.
+# stdout goes to /dev/null, which no limit covers.
+( ulimit -f 8 && exec "$MCSPEC" pattern random --n 4096 --k 4 --trials 2 --save "$tmp/sp/big.rec" \
+    ) </dev/null >/dev/null 2>"$tmp/err"
+rc=$?
+if [ "$rc" -ne 2 ]; then bad "--save past ulimit -f: exit status $rc, expected 2"
+elif [ "$(wc -l <"$tmp/err")" -ne 1 ]; then bad "--save past ulimit -f: $(wc -l <"$tmp/err") lines on stderr"
+elif ! grep -Eq "^mcspec pattern: cannot write $tmp/sp/big.rec: .*file-size limit" "$tmp/err"
+then bad "--save past ulimit -f: '$(cat "$tmp/err")'"
+elif [ -e "$tmp/sp/big.rec" ] || ls "$tmp"/sp/*.part* >/dev/null 2>&1
+then bad "--save past ulimit -f: left $(ls "$tmp/sp" | tr '\n' ' ')"
+else ok; fi
+# The same limit on stdout: exit 1 (the output could not be written), one line.
+( ulimit -f 1 && exec "$MCSPEC" pattern random --n 4096 --k 4 --trials 2 --csv \
+    ) </dev/null >"$tmp/sp/out.csv" 2>"$tmp/err"
+rc=$?
+if [ "$rc" -eq 1 ] && [ "$(wc -l <"$tmp/err")" -eq 1 ] && grep -q '^mcspec: cannot write the output' "$tmp/err"
+then ok; else bad "stdout past ulimit -f: exit status $rc, '$(cat "$tmp/err")'"; fi
+rm -f "$tmp/sp/out.csv"
+# A regular file is replaced, as before.
+printf 'old\n' >"$tmp/sp/old.rec"
+succeeds "pattern --save onto a regular file" pattern 10 --seed 3 --save "$tmp/sp/old.rec"
+same_file "pattern --save onto a regular file" "$tmp/p.rec" "$tmp/sp/old.rec"
 
 check_summary
