@@ -66,6 +66,8 @@ check-plots: $(CLI_BIN) $(SEC5_BIN)
 	    for p in random stratified jitter homogenized; do \
 	        grep -q "<title>$$p exact</title>" $(BUILD)/plots-check/sec5_convergence.svg || \
 	            { echo "check-plots: sec5_convergence.svg lacks the $$p series"; exit 1; }; \
+	        grep -q "<title>$$p measured" $(BUILD)/plots-check/sec5_convergence.svg || \
+	            { echo "check-plots: sec5_convergence.svg has no legend entry for $$p's measured points"; exit 1; }; \
 	    done && \
 	    test "$$(grep -c '<path' $(BUILD)/plots-check/sec5_convergence.svg)" -ge 16 && \
 	    echo "check-plots: sec5_convergence.svg has its four series" || \

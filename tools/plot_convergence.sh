@@ -37,7 +37,7 @@ set grid
 do for [f in "fs fe"] {
   set title (f eq "fs" ? "fs: smooth, not periodic (random K^{-1}, stratified K^{-3})" : "fe: with an edge (random K^{-1}, stratified K^{-2})")
   plot for [i=1:4] '$tmp/'.f.'-'.word(kinds, i).'.dat' using 1:2 with lines lw 2 lc i title word(kinds, i).' exact', \
-       for [i=1:4] '$tmp/'.f.'-'.word(kinds, i).'.dat' using 1:3:4 with yerrorbars pt 7 ps 0.6 lc i notitle
+       for [i=1:4] '$tmp/'.f.'-'.word(kinds, i).'.dat' using 1:3:4 with yerrorbars pt 7 ps 0.6 lc i title word(kinds, i).' measured ± 1 s.e.'
 }
 unset multiplot
 GP
