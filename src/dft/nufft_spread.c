@@ -3,6 +3,7 @@
  * t = n x; in 2D their outer product is added to the grid (w^2 adds). */
 #include <math.h>
 #include <stddef.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "nufft_internal.h"
@@ -15,8 +16,10 @@
  * rounding error): rounding t to a double would shift the point by up to
  * half an ulp of n, a phase error of pi k eps at mode k (3.5e-14 at
  * k = 100, above tol = 1e-14); l - t_hi is exact, and the offsets keep only
- * their own rounding, a few eps of a grid point whatever k. */
-static void axis_weights(const mcs_nufft *plan, double x, double *ker, size_t *idx)
+ * their own rounding, a few eps of a grid point whatever k. Indices are
+ * 32-bit (n < 2^29 within the caps of nufft.h), which keeps spread_2d's
+ * frame small. */
+static void axis_weights(const mcs_nufft *plan, double x, double *ker, uint32_t *idx)
 {
     const size_t w = plan->width;
     const double nd = (double)plan->n, scale = 2.0 / (double)w;
@@ -26,14 +29,14 @@ static void axis_weights(const mcs_nufft *plan, double x, double *ker, size_t *i
     ptrdiff_t l = (ptrdiff_t)l0;
     for (size_t i = 0; i < w; ++i, ++l) {
         ker[i] = mcs_nufft_kernel_(((l0 + (double)i - t_hi) - t_lo) * scale, plan->beta);
-        idx[i] = (size_t)(l < 0 ? l + n : (l >= n ? l - n : l));
+        idx[i] = (uint32_t)(l < 0 ? l + n : (l >= n ? l - n : l));
     }
 }
 
 static void spread_1d(const mcs_nufft *plan, double x)
 {
     double ker[MCS_NUFFT_MAX_WIDTH];
-    size_t idx[MCS_NUFFT_MAX_WIDTH];
+    uint32_t idx[MCS_NUFFT_MAX_WIDTH];
     axis_weights(plan, x, ker, idx);
     double *g = plan->grid;
     for (size_t i = 0; i < plan->width; ++i)
@@ -46,14 +49,15 @@ static void spread_1d(const mcs_nufft *plan, double x)
 static void spread_2d(const mcs_nufft *plan, double x, double y)
 {
     double kx[MCS_NUFFT_MAX_WIDTH], ky[MCS_NUFFT_MAX_WIDTH];
-    size_t ix[MCS_NUFFT_MAX_WIDTH], iy[MCS_NUFFT_MAX_WIDTH];
+    uint32_t ix[MCS_NUFFT_MAX_WIDTH], iy[MCS_NUFFT_MAX_WIDTH];
     axis_weights(plan, x, kx, ix);
     axis_weights(plan, y, ky, iy);
     const size_t w = plan->width, n = plan->n;
     for (size_t i = 0; i < w; ++i)
-        ix[i] *= 2u;
+        ix[i] *= 2u; /* < 2n < 2^30 */
     for (size_t j = 0; j < w; ++j) {
-        double *row = plan->grid + (iy[j] & ~(size_t)1u) * n + (iy[j] & 1u);
+        const size_t row_y = iy[j];
+        double *row = plan->grid + (row_y & ~(size_t)1u) * n + (row_y & 1u);
         const double v = ky[j];
         for (size_t i = 0; i < w; ++i)
             row[ix[i]] += v * kx[i];
