@@ -16,6 +16,7 @@
 #include "mcspec/estimate.h"
 #include "mcspec/welford.h"
 #include "mcspec/dft.h"
+#include "mcspec/nufft.h"
 #include "mcspec/spectrum.h"
 #include "mcspec/moment.h"
 #include "mcspec/autocorr.h"
