@@ -24,7 +24,7 @@ typedef enum {
     MCS_ERR_DOMAIN = -13,         /* closed form asked outside the domain where the note defines it */
     MCS_ERR_FREQ_RANGE = -14,     /* a frequency index is outside [0, n) */
     MCS_ERR_UNINIT = -15,         /* object was not initialised by its init function */
-    MCS_ERR_SPACE = -16,          /* caller buffer smaller than the record to save */
+    MCS_ERR_SPACE = -16,          /* caller buffer smaller than the record to save, or than the work memory asked for */
     MCS_ERR_TRUNCATED = -17,      /* saved record shorter than its header says (or than a header) */
     MCS_ERR_MAGIC = -18,          /* bytes do not start with the mcspec record magic */
     MCS_ERR_VERSION = -19,        /* record format version this build does not read */
