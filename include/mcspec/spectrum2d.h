@@ -28,6 +28,16 @@
  * cross terms (the 2D eq. 13), and eq. 14 with its power spectrum is only an
  * approximation; random and shifted grid are stationary and eq. 14 is exact.
  *
+ * Every call below but init and the _exact_ ones returns MCS_ERR_INVARIANT,
+ * changing nothing, for an accumulator holding values no calls produce
+ * (overwritten), checked where read: a count above MCS_MAX_COUNT (every
+ * call); a twiddle outside [-1, 1] or NaN (transform, add, merge); a
+ * statistic NaN or beyond what trials within MCS_SPECTRUM_MAX_SUM give,
+ * |<S_k>| above 2^101, <|S_k|^2> outside [0, 2^202], an M2 negative or above
+ * (count - 1) 2^204 (of S_k) or 2^404 (of |S_k|^2), any value with no
+ * trials (the read-outs at k, O(1); add, merge and variance14 check every
+ * cell, O(N1 N2), and the pad column, which stays 0).
+ *
  * Size: sizeof(mcs_spectrum2d) is 24 + 56 S (S/2 + 1) + 160 S bytes with
  * S = MCS_MAX_SIDE rounded up to even (x86-64): 128 536 at the default 64,
  * 35 608 at 32. It holds no pointers, so it may be copied. */
