@@ -96,9 +96,12 @@ mcs_status mcs_spectrum2d_add_points(mcs_spectrum2d *acc, size_t k, const double
 mcs_status mcs_spectrum2d_add_points_f(mcs_spectrum2d *acc, size_t k, const float *points,
                                        const double *weights);
 
-/* dst <- dst union src (Chan et al.). MCS_ERR_NULL, MCS_ERR_UNINIT,
- * MCS_ERR_MISMATCH (different N1 or N2), MCS_ERR_COUNT (the counts would
- * pass MCS_MAX_COUNT). dst untouched on error. */
+/* dst <- dst union src (Chan et al.); src unchanged; dst == src allowed
+ * (doubles the count, the same means). MCS_ERR_NULL, MCS_ERR_UNINIT,
+ * MCS_ERR_INVARIANT (above), MCS_ERR_MISMATCH (different N1 or N2),
+ * MCS_ERR_COUNT (the counts would pass MCS_MAX_COUNT), MCS_ERR_ALIAS (src
+ * and dst overlapping without being the same object). dst untouched on
+ * error. */
 mcs_status mcs_spectrum2d_merge(mcs_spectrum2d *dst, const mcs_spectrum2d *src);
 
 /* Trials added. MCS_ERR_NULL, MCS_ERR_UNINIT. */

@@ -45,7 +45,8 @@ mcs_status mcs_welford_add(mcs_welford *acc, double x);
 
 /* dst <- dst union src (Chan et al.; Pebay for m3, m4); src unchanged;
  * dst == src allowed (doubles every count and sum). MCS_ERR_NULL,
- * MCS_ERR_INVARIANT, MCS_ERR_COUNT (the counts add up past MCS_MAX_COUNT).
+ * MCS_ERR_INVARIANT, MCS_ERR_COUNT (the counts add up past MCS_MAX_COUNT),
+ * MCS_ERR_ALIAS (src and dst overlapping without being the same object).
  * dst untouched on error. */
 mcs_status mcs_welford_merge(mcs_welford *dst, const mcs_welford *src);
 

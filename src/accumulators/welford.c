@@ -1,5 +1,5 @@
 #include "mcspec/welford.h"
-#include "core/internal.h"
+#include "acc_internal.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -76,8 +76,8 @@ mcs_status mcs_welford_merge(mcs_welford *dst, const mcs_welford *src)
     mcs_status st = src == NULL ? MCS_ERR_NULL : welford_check(dst);
     if (st == MCS_OK)
         st = welford_check(src);
-    if (st == MCS_OK)
-        st = mcs_check_count_(dst->count, src->count);
+    if (st == MCS_OK) /* COUNT, then ALIAS for two objects that overlap (dst == src doubles) */
+        st = mcs_check_merge_(dst, src, sizeof *dst, 1, dst->count, src->count);
     if (st != MCS_OK || src->count == 0u)
         return st;
     if (dst->count == 0u) {

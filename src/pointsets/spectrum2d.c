@@ -229,8 +229,8 @@ mcs_status mcs_spectrum2d_merge(mcs_spectrum2d *dst, const mcs_spectrum2d *src)
 {
     mcs_status st = mcs_check_pair_(check_body(dst), check_body(src));
     if (st == MCS_OK)
-        st = mcs_ps_merge_check(dst->n_x == src->n_x && dst->n_y == src->n_y, dst->count,
-                                src->count);
+        st = mcs_check_merge_(dst, src, sizeof *dst, dst->n_x == src->n_x && dst->n_y == src->n_y,
+                              dst->count, src->count);
     if (st != MCS_OK || src->count == 0u)
         return st;
     const uint64_t na = dst->count, nb = src->count;

@@ -310,6 +310,32 @@ static void test_a_state_no_calls_produce_is_refused_by_every_call(void)
     TEST_ASSERT_EQUAL_DOUBLE(-7.25, m);
 }
 
+/* Issue 22 item 9: two accumulators that overlap without being the same
+ * object (here src 8 bytes into dst: dst holds two values of 0, src none,
+ * so both are states calls produce) are refused with MCS_ERR_ALIAS, as the
+ * spectrum, moment and autocorr merges refuse them, both unchanged; a merge
+ * into itself still doubles. */
+static void test_a_merge_of_overlapping_accumulators_is_refused(void)
+{
+    static union {
+        mcs_welford align;
+        unsigned char bytes[2u * sizeof(mcs_welford)];
+    } arena;
+    mcs_welford *dst = &arena.align;
+    mcs_welford *src = (mcs_welford *)(void *)(arena.bytes + sizeof(double));
+    memset(&arena, 0, sizeof arena);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_welford_add(dst, 0.0));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_welford_add(dst, 0.0));
+    TEST_ASSERT_EQUAL_UINT64(0u, src->count);
+    unsigned char before[sizeof arena];
+    memcpy(before, arena.bytes, sizeof before);
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_welford_merge(dst, src));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_welford_merge(src, dst));
+    TEST_ASSERT_EQUAL_MEMORY(before, arena.bytes, sizeof before);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_welford_merge(dst, dst));
+    TEST_ASSERT_EQUAL_UINT64(4u, dst->count);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -322,5 +348,6 @@ int main(void)
     RUN_TEST(test_the_count_stops_at_its_maximum_instead_of_wrapping);
     RUN_TEST(test_variance_stderr_never_collapses_for_two_equally_likely_values);
     RUN_TEST(test_a_state_no_calls_produce_is_refused_by_every_call);
+    RUN_TEST(test_a_merge_of_overlapping_accumulators_is_refused);
     return UNITY_END();
 }
