@@ -70,10 +70,10 @@
  * Size: sizeof(mcs_spectrum) is the embedded mcs_dft (about 66 * MCS_MAX_N
  * bytes) plus, in doubles, 8 * MCS_SPECTRUM_HALF of statistics and scratch,
  * 3 * MCS_MAX_N for the open pair batch, MCS_MAX_N of dense scratch and
- * 2 * MCS_SPECTRUM_CHUNK for binned points: about 130 * MCS_MAX_N bytes in
- * all (535 704 at the default 4096 on x86-64, 36 304 at MCS_MAX_N = 256 on
- * Cortex-M; shrink it with -DMCS_MAX_N=...). It holds no pointers, so it
- * may be copied. */
+ * 2 * MCS_SPECTRUM_CHUNK for binned points: about 130 * MCS_MAX_N bytes
+ * plus 9 KiB in all (535 744 at the default 4096 on x86-64, 43 448 at
+ * MCS_MAX_N = 256 on Cortex-M, make sizes; shrink it with -DMCS_MAX_N=...).
+ * It holds no pointers, so it may be copied. */
 #ifndef MCSPEC_SPECTRUM_H
 #define MCSPEC_SPECTRUM_H
 
@@ -97,7 +97,8 @@ extern "C" {
 
 /* Samples the sparse kernel keeps in-block phases for (more are taken in
  * chunks of this many; the phases live in the plan's direct-path scratch),
- * and that points are binned in at a time. */
+ * and that points are binned in at a time. Fixed (dft.h), as the order of
+ * the sums, and so the bits of every statistic, follow it. */
 #define MCS_SPECTRUM_CHUNK MCS_DFT_CHUNK
 
 /* Largest sum of one trial's weights (2^100). */
