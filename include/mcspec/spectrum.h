@@ -43,7 +43,10 @@
  * at least MCS_SPECTRUM_BATCH_MIN (16) trials if (a) its sample pairs
  * (K (K + 1) / 2 per trial) pay for closing it: at least
  * MCS_SPECTRUM_BATCH_RATIO (8) times the modelled cost of the close (two
- * DFTs and the update, spectrum_cost.c) counted in pair-histogram adds; or
+ * DFTs and the update, spectrum_cost.c) counted in pair-histogram adds, as
+ * modelled for one reference machine (AVX2 kernels, the default build's DFT
+ * path for N) whatever the CPU and back end, so the batches, and records,
+ * are the same on every machine; or
  * (b) fewer than MCS_SPECTRUM_BATCH_UNITS (32) units are closed; or (c) it
  * holds MCS_SPECTRUM_BATCH_MAX (1024) trials. (a) keeps the close at about
  * 1/8 of the pair work, (b) gives a run 32 units (batches of 16) by its
