@@ -29,8 +29,9 @@
  *
  * Either way an mcs_dft holds no pointers: a copy is a working plan.
  *
- * Size: sizeof(mcs_dft) is about 64 * MCS_MAX_N bytes (271 896 at the default
- * 4096 on x86-64, 19 088 at MCS_MAX_N = 256 on Cortex-M): the twiddle table (2 * MCS_MAX_N
+ * Size: sizeof(mcs_dft) is about 64 * MCS_MAX_N bytes plus 8 KiB (271 936 at
+ * the default 4096 on x86-64, 25 656 at MCS_MAX_N = 256 on Cortex-M, make
+ * sizes): the twiddle table (2 * MCS_MAX_N
  * doubles), KissFFT's state (MCS_DFT_KISS_DOUBLES), complex scratch
  * (4 * MCS_MAX_N doubles, all of it needed by odd N) and the direct path's
  * block-phase scratch (18 * MCS_DFT_CHUNK words). */
@@ -60,8 +61,13 @@ typedef enum {
  * per point. mcs_dft_init checks it against KissFFT's own size query. */
 #define MCS_DFT_KISS_DOUBLES (64 + 2 * (MCS_MAX_N))
 
-/* Non-zero bins the direct path takes per pass of its block-phase kernel. */
-#define MCS_DFT_CHUNK ((MCS_MAX_N) >= 1024 ? 64 : 16)
+/* Non-zero bins the direct path takes per pass of its block-phase kernel
+ * (and samples the spectrum's sparse path does). A pass sums its bins from
+ * 0 and adds the sums to the output, so the chunk decides the rounding:
+ * fixed, not following MCS_MAX_N (it was 16 below 1024), so that the same
+ * data give the same bits, and the same records, at every capacity; 64, the
+ * default build's, keeps its speed and its bits. */
+#define MCS_DFT_CHUNK 64
 
 /* Largest accepted sum of |s_n| over one input (2^1020, about 1.12e307): no
  * partial sum of the transform can then overflow, so a finite input always

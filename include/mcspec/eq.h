@@ -43,8 +43,12 @@ extern "C" {
 /* ---- Section 1: gradient variance -------------------------------------- */
 /* th: exact moments of the pattern, n == th->n and k == th->k as for
  * mcs_theory_variance, whose statuses these share: MCS_ERR_NULL,
- * MCS_ERR_UNINIT, MCS_ERR_MISMATCH, MCS_ERR_K_RANGE, MCS_ERR_NOT_FINITE;
- * then MCS_ERR_MAGNITUDE (|f_n| or |g_n| above MCS_ESTIMATE_MAX_ABS). */
+ * MCS_ERR_UNINIT, MCS_ERR_INVARIANT (a *th init never writes, theory.h),
+ * MCS_ERR_MISMATCH, MCS_ERR_K_RANGE, MCS_ERR_NOT_FINITE; then
+ * MCS_ERR_MAGNITUDE (|f_n| or |g_n| above MCS_ESTIMATE_MAX_ABS), and last
+ * MCS_ERR_INVARIANT for a variance below minus its tolerance (each of
+ * Var[I_f], Var[I_g] and, for eq. 4, Var[I_f - I_g]; mcs_theory_variance):
+ * a variance in [-tolerance, 0) reads 0. */
 
 /* Eq. 2, uncorrelated sampling: the exact Var[I_f] + Var[I_g] when f and g
  * are each estimated from their own independent trial (the covariance is 0).
@@ -71,7 +75,11 @@ mcs_status mcs_eq11_unbiased_mean(size_t n, const double *f, double *out);
  * k = 0 terms, as printed; it is the variance when <S_{k>0}> = 0 and S_0 is
  * deterministic, i.e. unbiased kinds without importance). O(N^4), about
  * 17 M multiply-adds (tens of ms) at N = 64. f[n], |f_n| <=
- * MCS_ESTIMATE_MAX_ABS; statuses as section 1. */
+ * MCS_ESTIMATE_MAX_ABS; statuses as section 1. It is (1/K^2)
+ * <(sum_n (f_n - fbar) s_n)^2>, never negative: a sum in [-b, 0) reads 0,
+ * b = (N^2 + 4N + 16) DBL_EPSILON (sum |f_n|)^2 (sum |<s_m s_n>|) / K^2
+ * plus init's rounding (as mcs_theory_variance, of |f_n| + |fbar|); one
+ * below -b is MCS_ERR_INVARIANT. */
 mcs_status mcs_eq13_variance(const mcs_theory *th, size_t n, size_t k, const double *f,
                              double *out);
 

@@ -66,7 +66,8 @@ mcs_status mcs_pointset_add_f(mcs_pointset *acc, size_t k, const float *points);
 /* dst <- dst union src: the statistics of one pass over both trial streams,
  * to rounding. src unchanged; dst == src allowed. MCS_ERR_NULL,
  * MCS_ERR_UNINIT, MCS_ERR_MISMATCH (different F), MCS_ERR_COUNT (the counts
- * would pass MCS_MAX_COUNT). dst untouched on error. */
+ * would pass MCS_MAX_COUNT), MCS_ERR_ALIAS (src and dst overlapping without
+ * being the same object). dst untouched on error. */
 mcs_status mcs_pointset_merge(mcs_pointset *dst, const mcs_pointset *src);
 
 /* Trials added. MCS_ERR_NULL, MCS_ERR_UNINIT. */

@@ -74,7 +74,8 @@ mcs_status mcs_pointset2d_add_f(mcs_pointset2d *acc, size_t k, const float *poin
 /* dst <- dst union src (Chan et al.), to rounding one pass over both trial
  * streams. src unchanged; dst == src allowed. MCS_ERR_NULL, MCS_ERR_UNINIT,
  * MCS_ERR_MISMATCH (different F), MCS_ERR_COUNT (the counts would pass
- * MCS_MAX_COUNT). dst untouched on error. */
+ * MCS_MAX_COUNT), MCS_ERR_ALIAS (src and dst overlapping without being the
+ * same object). dst untouched on error. */
 mcs_status mcs_pointset2d_merge(mcs_pointset2d *dst, const mcs_pointset2d *src);
 
 /* Trials added. MCS_ERR_NULL, MCS_ERR_UNINIT. */

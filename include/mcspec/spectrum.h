@@ -43,7 +43,10 @@
  * at least MCS_SPECTRUM_BATCH_MIN (16) trials if (a) its sample pairs
  * (K (K + 1) / 2 per trial) pay for closing it: at least
  * MCS_SPECTRUM_BATCH_RATIO (8) times the modelled cost of the close (two
- * DFTs and the update, spectrum_cost.c) counted in pair-histogram adds; or
+ * DFTs and the update, spectrum_cost.c) counted in pair-histogram adds, as
+ * modelled for one reference machine (AVX2 kernels, the default build's DFT
+ * path for N) whatever the CPU and back end, so the batches, and records,
+ * are the same on every machine; or
  * (b) fewer than MCS_SPECTRUM_BATCH_UNITS (32) units are closed; or (c) it
  * holds MCS_SPECTRUM_BATCH_MAX (1024) trials. (a) keeps the close at about
  * 1/8 of the pair work, (b) gives a run 32 units (batches of 16) by its
@@ -70,10 +73,10 @@
  * Size: sizeof(mcs_spectrum) is the embedded mcs_dft (about 66 * MCS_MAX_N
  * bytes) plus, in doubles, 8 * MCS_SPECTRUM_HALF of statistics and scratch,
  * 3 * MCS_MAX_N for the open pair batch, MCS_MAX_N of dense scratch and
- * 2 * MCS_SPECTRUM_CHUNK for binned points: about 130 * MCS_MAX_N bytes in
- * all (535 704 at the default 4096 on x86-64, 36 304 at MCS_MAX_N = 256 on
- * Cortex-M; shrink it with -DMCS_MAX_N=...). It holds no pointers, so it
- * may be copied. */
+ * 2 * MCS_SPECTRUM_CHUNK for binned points: about 130 * MCS_MAX_N bytes
+ * plus 9 KiB in all (535 744 at the default 4096 on x86-64, 43 448 at
+ * MCS_MAX_N = 256 on Cortex-M, make sizes; shrink it with -DMCS_MAX_N=...).
+ * It holds no pointers, so it may be copied. */
 #ifndef MCSPEC_SPECTRUM_H
 #define MCSPEC_SPECTRUM_H
 
@@ -97,7 +100,8 @@ extern "C" {
 
 /* Samples the sparse kernel keeps in-block phases for (more are taken in
  * chunks of this many; the phases live in the plan's direct-path scratch),
- * and that points are binned in at a time. */
+ * and that points are binned in at a time. Fixed (dft.h), as the order of
+ * the sums, and so the bits of every statistic, follow it. */
 #define MCS_SPECTRUM_CHUNK MCS_DFT_CHUNK
 
 /* Largest sum of one trial's weights (2^100). */

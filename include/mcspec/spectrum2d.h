@@ -28,6 +28,16 @@
  * cross terms (the 2D eq. 13), and eq. 14 with its power spectrum is only an
  * approximation; random and shifted grid are stationary and eq. 14 is exact.
  *
+ * Every call below but init and the _exact_ ones returns MCS_ERR_INVARIANT,
+ * changing nothing, for an accumulator holding values no calls produce
+ * (overwritten), checked where read: a count above MCS_MAX_COUNT (every
+ * call); a twiddle outside [-1, 1] or NaN (transform, add, merge); a
+ * statistic NaN or beyond what trials within MCS_SPECTRUM_MAX_SUM give,
+ * |<S_k>| above 2^101, <|S_k|^2> outside [0, 2^202], an M2 negative or above
+ * (count - 1) 2^204 (of S_k) or 2^404 (of |S_k|^2), any value with no
+ * trials (the read-outs at k, O(1); add, merge and variance14 check every
+ * cell, O(N1 N2), and the pad column, which stays 0).
+ *
  * Size: sizeof(mcs_spectrum2d) is 24 + 56 S (S/2 + 1) + 160 S bytes with
  * S = MCS_MAX_SIDE rounded up to even (x86-64): 128 536 at the default 64,
  * 35 608 at 32. It holds no pointers, so it may be copied. */
@@ -86,9 +96,12 @@ mcs_status mcs_spectrum2d_add_points(mcs_spectrum2d *acc, size_t k, const double
 mcs_status mcs_spectrum2d_add_points_f(mcs_spectrum2d *acc, size_t k, const float *points,
                                        const double *weights);
 
-/* dst <- dst union src (Chan et al.). MCS_ERR_NULL, MCS_ERR_UNINIT,
- * MCS_ERR_MISMATCH (different N1 or N2), MCS_ERR_COUNT (the counts would
- * pass MCS_MAX_COUNT). dst untouched on error. */
+/* dst <- dst union src (Chan et al.); src unchanged; dst == src allowed
+ * (doubles the count, the same means). MCS_ERR_NULL, MCS_ERR_UNINIT,
+ * MCS_ERR_INVARIANT (above), MCS_ERR_MISMATCH (different N1 or N2),
+ * MCS_ERR_COUNT (the counts would pass MCS_MAX_COUNT), MCS_ERR_ALIAS (src
+ * and dst overlapping without being the same object). dst untouched on
+ * error. */
 mcs_status mcs_spectrum2d_merge(mcs_spectrum2d *dst, const mcs_spectrum2d *src);
 
 /* Trials added. MCS_ERR_NULL, MCS_ERR_UNINIT. */

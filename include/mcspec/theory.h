@@ -86,7 +86,19 @@ mcs_status mcs_theory_init(mcs_theory *th, const mcs_pattern *pat);
 /* ---- Read-out: the expectations. Every call returns MCS_ERR_NULL,
  * MCS_ERR_UNINIT, and as stated; outputs are untouched on error, and a
  * complex result's re and im must be two different doubles (MCS_ERR_ALIAS),
- * as for the measured moments (moment.h). ---- */
+ * as for the measured moments (moment.h).
+ * Every call returns MCS_ERR_INVARIANT, writing nothing, for a *th whose
+ * values mcs_theory_init never writes (overwritten): has_importance not 0
+ * or 1 (or 1 for homogenized), a <s_n> outside [0, 2^64] or NaN, a twiddle
+ * outside [-1, 1] (these O(N), checked by every call), a <s_n^2> outside
+ * [<s_n>^2 (1 - 2^-12), <s_n>^2 + 2^34 <s_n>], an off-diagonal <s_m s_n>
+ * above (1 + 2^-12)^(1/2) or below -2^-12 times sqrt(<s_m^2> <s_n^2>)
+ * (Cauchy-Schwarz, and s >= 0; checked where read: O(N^2) by each call
+ * that reads the matrix, the entry and its two diagonals by
+ * mcs_theory_bin_second), and a power or variance below minus its
+ * tolerance (its rounding and init's, see mcs_theory_variance). Init's
+ * own values are far inside each (its rounding reaches 2^-16 of them). So
+ * with MCS_OK every result is finite and no power or variance negative. ---- */
 
 /* <s_bin>. MCS_ERR_BIN_RANGE (bin >= N). */
 mcs_status mcs_theory_bin_mean(const mcs_theory *th, size_t bin, double *out);
@@ -99,8 +111,9 @@ mcs_status mcs_theory_bin_second(const mcs_theory *th, size_t bin_m, size_t bin_
 mcs_status mcs_theory_mean(const mcs_theory *th, size_t freq, double *re, double *im);
 
 /* Power spectrum <|S_freq|^2>, the real diagonal of eq. 16 (freq 0 included).
- * O(N^2). MCS_ERR_FREQ_RANGE. Never negative, clamped as mcs_theory_variance
- * (b with |e^{-2 pi i k n/N}| = 1 in place of |f_n|, and 1/N for 1/K^2). */
+ * O(N^2). MCS_ERR_FREQ_RANGE. Never negative, clamped (or refused) as
+ * mcs_theory_variance (b with |e^{-2 pi i k n/N}| = 1 in place of |f_n|,
+ * 1/N for 1/K^2, and no <s_m><s_n> term). */
 mcs_status mcs_theory_power(const mcs_theory *th, size_t freq, double *out);
 
 /* <S_k S_l*> (eq. 16) for k = freq_k, l = freq_l, by separable direct sums
@@ -109,7 +122,9 @@ mcs_status mcs_theory_power(const mcs_theory *th, size_t freq, double *out);
 mcs_status mcs_theory_cross(const mcs_theory *th, size_t freq_k, size_t freq_l, double *re,
                             double *im);
 
-/* Cov(S_k, S_l) = <S_k S_l*> - <S_k><S_l>*. O(N^2). MCS_ERR_FREQ_RANGE. */
+/* Cov(S_k, S_l) = <S_k S_l*> - <S_k><S_l>*. O(N^2). MCS_ERR_FREQ_RANGE. At
+ * k = l a variance, never negative (clamped or refused as the power, with
+ * the mean's rounding in b). */
 mcs_status mcs_theory_covariance(const mcs_theory *th, size_t freq_k, size_t freq_l,
                                  double *re, double *im);
 
@@ -117,10 +132,13 @@ mcs_status mcs_theory_covariance(const mcs_theory *th, size_t freq_k, size_t fre
  * arrays of n * n (exactly n * n entries are written), n equal to th->n, else
  * MCS_ERR_MISMATCH. re and im must overlap neither each other nor *th (they
  * are written while it is read): MCS_ERR_ALIAS. The diagonal is the power
- * spectrum, never negative (clamped as mcs_theory_power). */
+ * spectrum, never negative (clamped as mcs_theory_power, each checked
+ * before anything is written: O(N^3) more). */
 mcs_status mcs_theory_cross_matrix(const mcs_theory *th, size_t n, double *re, double *im);
 
-/* Every Cov(S_k, S_l) at once, O(N^3), laid out as mcs_theory_cross_matrix. */
+/* Every Cov(S_k, S_l) at once, O(N^3), laid out as mcs_theory_cross_matrix;
+ * the diagonal as mcs_theory_covariance(k, k), checked before anything is
+ * written. */
 mcs_status mcs_theory_covariance_matrix(const mcs_theory *th, size_t n, double *re,
                                         double *im);
 
@@ -136,10 +154,15 @@ mcs_status mcs_theory_estimator_mean(const mcs_theory *th, size_t n, size_t k, c
  * Arguments and statuses as mcs_theory_estimator_mean. Never negative: the
  * form is a difference of second moments, and a result in [-b, 0) is
  * rounding and reads 0, b = (2N + 16) DBL_EPSILON (1/K^2) sum_{m,n} |f_m|
- * |f_n| (|<s_m s_n>| + |<s_m>| |<s_n>|) bounding the rounding of that sum (a
- * result below -b is returned as it is: no rounding makes it). Its absolute
- * error is of that order, so for a variance far below (mean I)^2 prefer
- * mcs_theory_spectrum_variance, which never forms the difference. */
+ * |f_n| (|<s_m s_n>| + |<s_m>| |<s_n>|) bounding the rounding of that sum,
+ * plus what init's rounding adds to the form, 64 DBL_EPSILON (1/K^2)
+ * ((sum |f_n| <s_n>)^2 + K (sum |f_n| u_n)^2), u_n = min(max(<s_n^2> /
+ * <s_n>, <s_n>), 2^33) bounding 1/p_n (the bin edges are rounded in units
+ * of 1/K of u, so a small bin's moments err far more than the read-out
+ * does). A result below -b comes from no object init writes:
+ * MCS_ERR_INVARIANT. The absolute error is of the order of b, so for a
+ * variance far below (mean I)^2 prefer mcs_theory_spectrum_variance, which
+ * never forms the difference. */
 mcs_status mcs_theory_variance(const mcs_theory *th, size_t n, size_t k, const double *f,
                                double *out);
 

@@ -28,8 +28,12 @@ typedef struct {
 } mcs_welford;
 
 /* Every call below except init returns MCS_ERR_INVARIANT for an accumulator
- * that no sequence of calls produces (count above MCS_MAX_COUNT, a field
- * NaN or infinite, m2 or m4 negative: overwritten), changing nothing. */
+ * that no sequence of calls produces (overwritten), changing nothing: count
+ * above MCS_MAX_COUNT, a field NaN or infinite, |mean| above twice
+ * MCS_WELFORD_MAX_ABS or not 0 with no values, m2 or m4 negative, or m2,
+ * |m3|, m4 above (count - 1) times 2^224, 2^336, 2^448 (every value lies
+ * within 2^111 of the mean; so no spread with one value). Within these
+ * every read-out and merge is finite. */
 
 /* Empties the accumulator. MCS_ERR_NULL. */
 mcs_status mcs_welford_init(mcs_welford *acc);
@@ -41,7 +45,8 @@ mcs_status mcs_welford_add(mcs_welford *acc, double x);
 
 /* dst <- dst union src (Chan et al.; Pebay for m3, m4); src unchanged;
  * dst == src allowed (doubles every count and sum). MCS_ERR_NULL,
- * MCS_ERR_INVARIANT, MCS_ERR_COUNT (the counts add up past MCS_MAX_COUNT).
+ * MCS_ERR_INVARIANT, MCS_ERR_COUNT (the counts add up past MCS_MAX_COUNT),
+ * MCS_ERR_ALIAS (src and dst overlapping without being the same object).
  * dst untouched on error. */
 mcs_status mcs_welford_merge(mcs_welford *dst, const mcs_welford *src);
 

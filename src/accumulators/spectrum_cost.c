@@ -58,8 +58,17 @@ void mcs_spectrum_cost_init_(mcs_spectrum *acc)
     acc->cost[CLOSE_FIXED] = 2.0 * dft_empty + update + C_FOLD * (double)acc->n;
     /* Batch rule (a): a batch pays for its close once its pairs cost
      * MCS_SPECTRUM_BATCH_RATIO times as much (the close of a full
-     * histogram, the most it can cost). */
-    const double dense = acc->cost[CLOSE_FIXED] + 1.25 * acc->cost[DFT_PER_NNZ] * (double)acc->n;
+     * histogram, the most it can cost), as modelled for the reference
+     * machine (AVX2 kernels, the default build's DFT path for N), not for
+     * this one: batch sizes decide the units and so the standard errors, and
+     * with this CPU's and back end's constants the same trials made 70 units
+     * with the AVX2 kernels, 60 without and 52 with FFTW. On this machine the
+     * close then costs about 1/8 of the pairs give or take the ratio of the
+     * two machines' speeds. */
+    const double ref_empty = mcs_dft_reference_cost_(acc->n, 0u);
+    const double ref_close = 2.0 * ref_empty + C_UPDATE[1] * h + C_FOLD * (double)acc->n;
+    const double ref_per_nnz = mcs_dft_reference_cost_(acc->n, 1u) - ref_empty;
+    const double dense = ref_close + 1.25 * ref_per_nnz * (double)acc->n;
     acc->close_work = MCS_SPECTRUM_BATCH_RATIO * dense / C_PAIR;
 }
 

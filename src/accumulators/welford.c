@@ -1,5 +1,5 @@
 #include "mcspec/welford.h"
-#include "core/internal.h"
+#include "acc_internal.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -16,17 +16,33 @@ mcs_status mcs_welford_init(mcs_welford *acc)
     return MCS_OK;
 }
 
+/* What values within MCS_WELFORD_MAX_ABS (2^110) give: each lies within
+ * 2^111 of the mean, so over c values m2, |m3| and m4 are at most
+ * (c - 1) 2^222, 2^333, 2^444 (c (2^111)^p is at most (c - 1) 2^(111 p + 1)
+ * for c >= 2, and there is no spread at all with one value), here with
+ * room for rounding; the running mean stays within the values. Within these
+ * every read-out and merge is finite (welford.h). */
+#define SPREAD2 0x1p224
+#define SPREAD3 0x1p336
+#define SPREAD4 0x1p448
+#define MEAN_LIMIT (2.0 * MCS_WELFORD_MAX_ABS)
+
 /* A state some sequence of adds and merges produces: MCS_ERR_NULL without
- * acc, MCS_ERR_INVARIANT if overwritten (so no read-out is NaN or stale). */
+ * acc, MCS_ERR_INVARIANT if overwritten (so no read-out is NaN, infinite or
+ * stale): see the bounds above, and no mean without a value (NaN fails
+ * every compare). */
 static mcs_status welford_check(const mcs_welford *acc)
 {
     if (acc == NULL)
         return MCS_ERR_NULL;
-    const double f[4] = {acc->mean, acc->m2, acc->m3, acc->m4};
-    if (acc->count > (uint64_t)MCS_MAX_COUNT || !mcs_all_finite_(4u, f) || acc->m2 < 0.0 ||
-        acc->m4 < 0.0)
+    if (acc->count > (uint64_t)MCS_MAX_COUNT)
         return MCS_ERR_INVARIANT;
-    return MCS_OK;
+    const double spread = acc->count > 0u ? (double)(acc->count - 1u) : 0.0;
+    const int sound = fabs(acc->mean) <= (acc->count > 0u ? MEAN_LIMIT : 0.0) &&
+                      acc->m2 >= 0.0 && acc->m2 <= spread * SPREAD2 &&
+                      fabs(acc->m3) <= spread * SPREAD3 && acc->m4 >= 0.0 &&
+                      acc->m4 <= spread * SPREAD4;
+    return sound ? MCS_OK : MCS_ERR_INVARIANT;
 }
 
 mcs_status mcs_welford_add(mcs_welford *acc, double x)
@@ -60,8 +76,8 @@ mcs_status mcs_welford_merge(mcs_welford *dst, const mcs_welford *src)
     mcs_status st = src == NULL ? MCS_ERR_NULL : welford_check(dst);
     if (st == MCS_OK)
         st = welford_check(src);
-    if (st == MCS_OK)
-        st = mcs_check_count_(dst->count, src->count);
+    if (st == MCS_OK) /* COUNT, then ALIAS for two objects that overlap (dst == src doubles) */
+        st = mcs_check_merge_(dst, src, sizeof *dst, 1, dst->count, src->count);
     if (st != MCS_OK || src->count == 0u)
         return st;
     if (dst->count == 0u) {
@@ -128,5 +144,7 @@ mcs_status mcs_welford_variance_stderr(const mcs_welford *acc, double *stderr_ou
                           ((c - 1.0) * (c - 2.0) * (c - 3.0));
     const double s2 = acc->m2 / (c - 1.0);
     const double v = ((excess > 0.0 ? excess : 0.0) + 2.0 * s2 * s2 / (c - 1.0)) / c;
-    return mcs_set_(stderr_out, sqrt(v));
+    /* finite for every state welford_check passes (below 2^610); refused,
+     * never returned, were it not */
+    return isfinite(v) ? mcs_set_(stderr_out, sqrt(v)) : MCS_ERR_INVARIANT;
 }

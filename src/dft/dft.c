@@ -259,22 +259,33 @@ void mcs_dft_half_(mcs_dft *plan, const double *s, double *re, double *im)
  * 94 us where the smooth-size figure gives 5.5 (FFTW 3.3.10, FFTW_MEASURE).
  * Without that factor AUTO put N = 4093, K = 256 on the FFT path at a
  * quarter of the PAIR path's speed. */
-double mcs_dft_cost_(const mcs_dft *plan, size_t nnz)
+static double cost_of(size_t n_bins, mcs_dft_path path, int simd, size_t nnz)
 {
     /* baseline, AVX2 */
     static const double c_direct[2] = {0.36, 0.24}, c_real[2] = {0.42, 0.37},
                         c_complex[2] = {0.84, 0.74};
-    const size_t half = plan->n / 2u + 1u; /* the frequencies computed */
-    const double n = (double)plan->n, nlog = n * log2(n > 2.0 ? n : 2.0), h1 = (double)half;
-    const double used = (double)(nnz < plan->n ? nnz : plan->n);
-    switch (plan->path) {
-    case MCS_DFT_PATH_KISS_REAL: return 40.0 + c_real[plan->simd != 0] * nlog;
-    case MCS_DFT_PATH_KISS_COMPLEX: return 40.0 + c_complex[plan->simd != 0] * nlog;
-    case MCS_DFT_PATH_DIRECT: return 40.0 + 0.5 * n + c_direct[plan->simd != 0] * used * h1;
+    const size_t half = n_bins / 2u + 1u; /* the frequencies computed */
+    const double n = (double)n_bins, nlog = n * log2(n > 2.0 ? n : 2.0), h1 = (double)half;
+    const double used = (double)(nnz < n_bins ? nnz : n_bins);
+    switch (path) {
+    case MCS_DFT_PATH_KISS_REAL: return 40.0 + c_real[simd != 0] * nlog;
+    case MCS_DFT_PATH_KISS_COMPLEX: return 40.0 + c_complex[simd != 0] * nlog;
+    case MCS_DFT_PATH_DIRECT: return 40.0 + 0.5 * n + c_direct[simd != 0] * used * h1;
     case MCS_DFT_PATH_FFTW:
-        return 40.0 + 0.11 * nlog * (is_smooth(plan->n, 13u) ? 1.0 : 17.0) + 0.3 * n;
+        return 40.0 + 0.11 * nlog * (is_smooth(n_bins, 13u) ? 1.0 : 17.0) + 0.3 * n;
     default: return 5.0;
     }
+}
+
+double mcs_dft_cost_(const mcs_dft *plan, size_t nnz)
+{
+    return cost_of(plan->n, plan->path, plan->simd, nnz);
+}
+
+double mcs_dft_reference_cost_(size_t n, size_t nnz)
+{
+    size_t fft_len;
+    return cost_of(n, kiss_path(n, &fft_len), 1, nnz);
 }
 
 mcs_status mcs_dft_check(const mcs_dft *plan, size_t n)

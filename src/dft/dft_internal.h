@@ -21,6 +21,12 @@ void mcs_dft_half_(mcs_dft *plan, const double *s, double *re, double *im);
  * constants come from the bench; see the definition. */
 double mcs_dft_cost_(const mcs_dft *plan, size_t nnz);
 
+/* The same model for a plan of n bins on the reference machine, the same
+ * on every CPU and back end: the default build's path for n (KissFFT or the
+ * direct sum) with its AVX2 kernels. For choices whose outcome shows in the
+ * results (the spectrum's batch sizes), which must not follow the machine. */
+double mcs_dft_reference_cost_(size_t n, size_t nnz);
+
 /* The block-phase kernel's view of a plan (phase_block.h): its N, twiddle
  * table and direct-path scratch. One pointer, so that the kernel's
  * arguments fit in registers (stack arguments make a frame dynamic). */

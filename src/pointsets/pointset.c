@@ -86,7 +86,8 @@ mcs_status mcs_pointset_merge(mcs_pointset *dst, const mcs_pointset *src)
 {
     mcs_status st = mcs_check_pair_(check_acc(dst), check_acc(src));
     if (st == MCS_OK)
-        st = mcs_ps_merge_check(dst->freq_max == src->freq_max, dst->count, src->count);
+        st = mcs_check_merge_(dst, src, sizeof *dst, dst->freq_max == src->freq_max, dst->count,
+                              src->count);
     if (st != MCS_OK || src->count == 0u)
         return st;
     mcs_ps_chan_cells(dst->freq_max + 1u, dst->mean, dst->m2, dst->count, src->mean, src->m2,

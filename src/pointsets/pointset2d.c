@@ -140,7 +140,8 @@ mcs_status mcs_pointset2d_merge(mcs_pointset2d *dst, const mcs_pointset2d *src)
 {
     mcs_status st = mcs_check_pair_(check_acc(dst), check_acc(src));
     if (st == MCS_OK)
-        st = mcs_ps_merge_check(dst->freq_max == src->freq_max, dst->count, src->count);
+        st = mcs_check_merge_(dst, src, sizeof *dst, dst->freq_max == src->freq_max, dst->count,
+                              src->count);
     if (st != MCS_OK || src->count == 0u)
         return st;
     const uint64_t na = dst->count, nb = src->count;

@@ -27,15 +27,6 @@ static inline mcs_status mcs_ps_check_init(const void *acc, size_t freq_max, siz
     return st == MCS_ERR_N_RANGE ? MCS_ERR_FREQ_RANGE : st;
 }
 
-/* The checks of a merge after the pair's own (mcs_check_pair_ gave
- * MCS_OK): MCS_ERR_MISMATCH unless the two have the same shape, then
- * MCS_ERR_COUNT if the merged count na + nb would pass MCS_MAX_COUNT (or
- * either already has), so no count wraps and each stays exact in a double. */
-static inline mcs_status mcs_ps_merge_check(int same_shape, uint64_t na, uint64_t nb)
-{
-    return same_shape ? mcs_check_count_(na, nb) : MCS_ERR_MISMATCH;
-}
-
 /* A count read-out: *out = count when the object's own check gave st, MCS_OK
  * (count is read only then: the caller passes 0 otherwise). */
 static inline mcs_status mcs_ps_count_out(mcs_status st, uint64_t count, uint64_t *out)

@@ -26,12 +26,75 @@ static int side_ok(size_t n)
     return n >= 1u && n <= (size_t)MCS_MAX_SIDE;
 }
 
-/* MCS_ERR_NULL without acc, MCS_ERR_UNINIT unless it came from init. */
+/* MCS_ERR_NULL without acc, MCS_ERR_UNINIT unless it came from init,
+ * MCS_ERR_INVARIANT for a count past the largest. O(1). */
 static mcs_status check_acc(const mcs_spectrum2d *acc)
 {
     if (acc == NULL)
         return MCS_ERR_NULL;
-    return side_ok(acc->n_x) && side_ok(acc->n_y) ? MCS_OK : MCS_ERR_UNINIT;
+    if (!side_ok(acc->n_x) || !side_ok(acc->n_y))
+        return MCS_ERR_UNINIT;
+    return acc->count <= MCS_SPECTRUM_MAX_COUNT ? MCS_OK : MCS_ERR_INVARIANT;
+}
+
+/* What trials within MCS_SPECTRUM_MAX_SUM give (spectrum2d.h): |S_k| <=
+ * 2^100, so |<S_k>| <= 2^100 and <|S_k|^2> in [0, 2^200], and over c
+ * trials each M2 is at most (c - 1) times the square of the largest gap
+ * from the mean (2^202 for S_k, 2^400 for |S_k|^2, as for welford), here
+ * with room for rounding: no mean without a trial, no spread with one. */
+#define MAX_ABS_S 0x1p101
+#define MAX_POWER 0x1p202
+#define SPREAD_S 0x1p204
+#define SPREAD_POWER 0x1p404
+
+static int in_range(double x, double lo, double hi)
+{
+    return x >= lo && x <= hi; /* NaN is in no range */
+}
+
+/* The twiddles init builds: in [-1, 1]. O(N1 + N2). */
+static int twiddles_sound(const mcs_spectrum2d *acc)
+{
+    int sound = 1;
+    for (size_t t = 0; t < acc->n_x; ++t)
+        sound &= in_range(acc->cos_x[t], -1.0, 1.0) & in_range(acc->sin_x[t], -1.0, 1.0);
+    for (size_t t = 0; t < acc->n_y; ++t)
+        sound &= in_range(acc->cos_y[t], -1.0, 1.0) & in_range(acc->sin_y[t], -1.0, 1.0);
+    return sound;
+}
+
+/* The statistics of stored cell i within the bounds above. O(1). */
+static int cell_sound(const mcs_spectrum2d *acc, size_t i)
+{
+    const double some = acc->count > 0u ? 1.0 : 0.0;
+    const double spread = acc->count > 0u ? (double)(acc->count - 1u) : 0.0;
+    return fabs(acc->mean_re[i]) <= some * MAX_ABS_S &&
+           fabs(acc->mean_im[i]) <= some * MAX_ABS_S &&
+           in_range(acc->mean_pow[i], 0.0, some * MAX_POWER) &&
+           in_range(acc->m2_s[i], 0.0, spread * SPREAD_S) &&
+           in_range(acc->m2_pow[i], 0.0, spread * SPREAD_POWER);
+}
+
+/* check_acc, then every stored cell, the pad column 0 (no call writes it)
+ * and the twiddles: what an add or a merge reads. O(N1 N2). */
+static mcs_status check_body(const mcs_spectrum2d *acc)
+{
+    mcs_status st = check_acc(acc);
+    if (st != MCS_OK)
+        return st;
+    const size_t stride = stride_of(acc->n_x);
+    int sound = twiddles_sound(acc);
+    for (size_t k2 = 0; k2 <= acc->n_y / 2u; ++k2) {
+        for (size_t k1 = 0; k1 < acc->n_x; ++k1)
+            sound &= cell_sound(acc, k2 * stride + k1);
+        if (stride > acc->n_x) {
+            const size_t pad = k2 * stride + acc->n_x;
+            sound &= acc->mean_re[pad] == 0.0 && acc->mean_im[pad] == 0.0 &&
+                     acc->mean_pow[pad] == 0.0 && acc->m2_s[pad] == 0.0 &&
+                     acc->m2_pow[pad] == 0.0;
+        }
+    }
+    return sound ? MCS_OK : MCS_ERR_INVARIANT;
 }
 
 mcs_status mcs_spectrum2d_init(mcs_spectrum2d *acc, size_t n_x, size_t n_y)
@@ -133,7 +196,7 @@ static mcs_status check_trial(size_t k, mcs_points_ points, const double *weight
 static mcs_status add_points(mcs_spectrum2d *acc, size_t k, mcs_points_ points,
                              const double *weights)
 {
-    mcs_status st = mcs_points_addr_(points) == NULL ? MCS_ERR_NULL : check_acc(acc);
+    mcs_status st = mcs_points_addr_(points) == NULL ? MCS_ERR_NULL : check_body(acc);
     if (st == MCS_OK && acc->count >= MCS_SPECTRUM_MAX_COUNT)
         st = MCS_ERR_COUNT;
     if (st == MCS_OK)
@@ -164,10 +227,10 @@ mcs_status mcs_spectrum2d_add_points_f(mcs_spectrum2d *acc, size_t k, const floa
 
 mcs_status mcs_spectrum2d_merge(mcs_spectrum2d *dst, const mcs_spectrum2d *src)
 {
-    mcs_status st = mcs_check_pair_(check_acc(dst), check_acc(src));
+    mcs_status st = mcs_check_pair_(check_body(dst), check_body(src));
     if (st == MCS_OK)
-        st = mcs_ps_merge_check(dst->n_x == src->n_x && dst->n_y == src->n_y, dst->count,
-                                src->count);
+        st = mcs_check_merge_(dst, src, sizeof *dst, dst->n_x == src->n_x && dst->n_y == src->n_y,
+                              dst->count, src->count);
     if (st != MCS_OK || src->count == 0u)
         return st;
     const uint64_t na = dst->count, nb = src->count;
@@ -209,7 +272,7 @@ static mcs_status lookup(const mcs_spectrum2d *acc, size_t k1, size_t k2, const 
         k1 = (n1 - k1) % n1;
     }
     *index = k2 * stride_of(n1) + k1;
-    return MCS_OK;
+    return cell_sound(acc, *index) ? MCS_OK : MCS_ERR_INVARIANT;
 }
 
 mcs_status mcs_spectrum2d_mean(const mcs_spectrum2d *acc, size_t freq_k, size_t freq_l,
@@ -265,6 +328,8 @@ mcs_status mcs_spectrum2d_transform(const mcs_spectrum2d *acc, const double *s, 
                                     double *im)
 {
     mcs_status st = s == NULL || re == NULL || im == NULL ? MCS_ERR_NULL : check_acc(acc);
+    if (st == MCS_OK && !twiddles_sound(acc))
+        st = MCS_ERR_INVARIANT; /* a NaN twiddle made every output NaN */
     if (st != MCS_OK)
         return st;
     const size_t n1 = acc->n_x, n2 = acc->n_y, n = n1 * n2, bytes = n * sizeof(double);
@@ -310,7 +375,7 @@ mcs_status mcs_spectrum2d_transform(const mcs_spectrum2d *acc, const double *s, 
 mcs_status mcs_spectrum2d_variance14(const mcs_spectrum2d *acc, size_t k, const double *f_re,
                                      const double *f_im, double *out)
 {
-    mcs_status st = f_re == NULL || f_im == NULL || out == NULL ? MCS_ERR_NULL : check_acc(acc);
+    mcs_status st = f_re == NULL || f_im == NULL || out == NULL ? MCS_ERR_NULL : check_body(acc);
     if (st == MCS_OK && k == 0u)
         st = MCS_ERR_K_RANGE;
     if (st == MCS_OK && acc->count == 0u)
@@ -321,15 +386,17 @@ mcs_status mcs_spectrum2d_variance14(const mcs_spectrum2d *acc, size_t k, const 
     if (!mcs_all_finite_(n1 * n2, f_re) || !mcs_all_finite_(n1 * n2, f_im))
         return MCS_ERR_NOT_FINITE;
     double sum = 0.0;
-    for (size_t k2 = 0; k2 < n2; ++k2)
-        for (size_t k1 = 0; k1 < n1; ++k1) {
+    for (size_t k2 = 0; k2 < n2 && st == MCS_OK; ++k2)
+        for (size_t k1 = 0; k1 < n1 && st == MCS_OK; ++k1) {
             if (k1 == 0u && k2 == 0u)
                 continue;
             double p = 0.0;
-            (void)mcs_spectrum2d_power(acc, k1, k2, &p);
+            st = mcs_spectrum2d_power(acc, k1, k2, &p); /* cannot fail: checked above */
             size_t i = k2 * n1 + k1;
             sum += (f_re[i] * f_re[i] + f_im[i] * f_im[i]) * p;
         }
+    if (st != MCS_OK)
+        return st;
     /* |F_k|^2 of a finite f can overflow: refused, never returned as inf. */
     const double v = sum / ((double)k * (double)k);
     return isfinite(v) ? mcs_set_(out, v) : MCS_ERR_MAGNITUDE;

@@ -3,9 +3,11 @@
  * checks all its inputs with one call, so a failed call writes nothing. */
 #include "mcspec/eq.h"
 #include "eq_internal.h"
+#include "theory_internal.h"
 #include "core/internal.h"
 #include "accumulators/readout.h"
 
+#include <float.h>
 #include <math.h>
 
 /* ---- shared helpers ------------------------------------------------------- */
@@ -75,28 +77,57 @@ double mcs_eq_ac_energy(size_t n, const double *f)
 
 /* ---- Section 1: the exact moments' read-out of two integrands ------------ */
 
+/* A variance x: in [-tol, 0) it is rounding and reads 0, below -tol it
+ * comes from no moments mcs_theory_init writes (MCS_ERR_INVARIANT). tol is
+ * formed only for a negative x (it costs as much as x). */
+static mcs_status clamp_variance(const mcs_theory *th, const mcs_readout *view, const double *f,
+                                 double *x)
+{
+    if (*x >= 0.0)
+        return MCS_OK;
+    if (!(*x >= -mcs_theory_form_tolerance_(th, view, f)))
+        return MCS_ERR_INVARIANT;
+    *x = 0.0;
+    return MCS_OK;
+}
+
 /* Var[I_f] + Var[I_g], less 2 Cov(I_f, I_g) when f and g are estimated from
  * one shared trial (eq. 4); independent trials have no covariance (eq. 2).
- * Variances: never negative, rounding clamped as mcs_theory_variance. */
-static double gradient_variance(const mcs_readout *view, size_t k, const double *f,
-                                const double *g, int shared)
+ * Variances: never negative, rounding clamped as mcs_theory_variance, and
+ * each of Var[I_f], Var[I_g] (and of I_f - I_g) below its tolerance
+ * refused. Six arguments at most (see readout.h): out is the result. */
+typedef struct {
+    const double *f, *g;
+    int shared;
+} gradient_terms;
+
+static mcs_status gradient_variance(const mcs_theory *th, const mcs_readout *view,
+                                    const gradient_terms *t, double *out)
 {
-    double vf = mcs_readout_form(view, k, f, f), vg = mcs_readout_form(view, k, g, g);
-    if (!shared) {
-        if (vf < 0.0)
-            vf = mcs_readout_nonnegative(view, vf, mcs_readout_form_bound(view, k, f, f));
-        if (vg < 0.0)
-            vg = mcs_readout_nonnegative(view, vg, mcs_readout_form_bound(view, k, g, g));
-        return vf + vg;
+    const size_t k = th->k;
+    double vf = mcs_readout_form(view, k, t->f, t->f), vg = mcs_readout_form(view, k, t->g, t->g);
+    const double vfg = t->shared ? mcs_readout_form(view, k, t->f, t->g) : 0.0;
+    double var = vf + vg - 2.0 * vfg;
+    mcs_status st = clamp_variance(th, view, t->f, &vf);
+    if (st == MCS_OK)
+        st = clamp_variance(th, view, t->g, &vg);
+    if (st != MCS_OK)
+        return st;
+    if (!t->shared)
+        return mcs_set_(out, vf + vg);
+    if (var < 0.0) { /* (f - g)^T Cov (f - g), expanded so no difference array is needed */
+        const double kd = (double)k;
+        const double tol = mcs_readout_form_bound(view, k, t->f, t->f) +
+                           mcs_readout_form_bound(view, k, t->g, t->g) +
+                           2.0 * mcs_readout_form_bound(view, k, t->f, t->g) +
+                           2.0 * (mcs_theory_init_rounding_(th, t->f, 0.0) +
+                                  mcs_theory_init_rounding_(th, t->g, 0.0)) /
+                               (kd * kd);
+        if (!(var >= -tol))
+            return MCS_ERR_INVARIANT;
+        var = 0.0;
     }
-    /* (f - g)^T Cov (f - g), expanded so no difference array is needed */
-    double var = vf + vg - 2.0 * mcs_readout_form(view, k, f, g);
-    if (var < 0.0)
-        var = mcs_readout_nonnegative(view, var,
-                                      mcs_readout_form_bound(view, k, f, f) +
-                                          mcs_readout_form_bound(view, k, g, g) +
-                                          2.0 * mcs_readout_form_bound(view, k, f, g));
-    return var;
+    return mcs_set_(out, var);
 }
 
 /* The read-out's checks of f and g on th, then both within
@@ -116,16 +147,18 @@ mcs_status mcs_eq2_uncorrelated_variance(const mcs_theory *th, size_t n, size_t 
                                          const double *f, const double *g, double *out)
 {
     mcs_readout v;
+    const gradient_terms t = {f, g, 0};
     mcs_status st = out == NULL ? MCS_ERR_NULL : check_two(th, n, k, f, g, &v);
-    return st == MCS_OK ? mcs_set_(out, gradient_variance(&v, k, f, g, 0)) : st;
+    return st == MCS_OK ? gradient_variance(th, &v, &t, out) : st;
 }
 
 mcs_status mcs_eq4_correlated_variance(const mcs_theory *th, size_t n, size_t k,
                                        const double *f, const double *g, double *out)
 {
     mcs_readout v;
+    const gradient_terms t = {f, g, 1};
     mcs_status st = out == NULL ? MCS_ERR_NULL : check_two(th, n, k, f, g, &v);
-    return st == MCS_OK ? mcs_set_(out, gradient_variance(&v, k, f, g, 1)) : st;
+    return st == MCS_OK ? gradient_variance(th, &v, &t, out) : st;
 }
 
 /* ---- Section 2 ------------------------------------------------------------ */
@@ -185,12 +218,45 @@ static double eq13_sum(const mcs_readout *view, size_t k, const double *f)
     return total / (kd * kd);
 }
 
+/* The tolerance of eq13_sum: its terms F_a* F_b <S_a S_b*> are each below
+ * (sum |f|)^2 (sum |<s s^T>|) / N^2 and carry the roundings of three O(N)
+ * and O(N^2) transforms, (4N + 16) DBL_EPSILON of them, and their sum adds
+ * N^2 more; then init's rounding (mcs_theory_init_rounding_) of the form of
+ * y = f - fbar, |y_n| <= |f_n| + |fbar|. */
+static double eq13_tolerance(const mcs_theory *th, const mcs_readout *view, const double *f)
+{
+    const size_t n = view->n;
+    double sf = 0.0, fbar = 0.0, sm = 0.0;
+    for (size_t b = 0; b < n; ++b) {
+        sf += fabs(f[b]);
+        fbar += f[b];
+    }
+    fbar /= (double)n;
+    for (size_t j = 0; j < n * n; ++j)
+        sm += fabs(view->second[j]);
+    const double nd = (double)n, kd = (double)th->k;
+    return ((nd * nd + 4.0 * nd + 16.0) * DBL_EPSILON * sf * sf * sm +
+            mcs_theory_init_rounding_(th, f, fabs(fbar))) /
+           (kd * kd);
+}
+
+/* Eq. 13 is (1/K^2) E[(y^T s)^2], y = f - fbar (the k = 0 term is what
+ * leaves out fbar): never negative. Below minus its tolerance it comes
+ * from no moments init writes. */
 mcs_status mcs_eq13_variance(const mcs_theory *th, size_t n, size_t k, const double *f,
                              double *out)
 {
     mcs_readout v;
     mcs_status st = out == NULL ? MCS_ERR_NULL : check_two(th, n, k, f, f, &v);
-    return st == MCS_OK ? mcs_set_(out, eq13_sum(&v, k, f)) : st;
+    if (st != MCS_OK)
+        return st;
+    double sum = eq13_sum(&v, k, f);
+    if (sum < 0.0) {
+        if (!(sum >= -eq13_tolerance(th, &v, f)))
+            return MCS_ERR_INVARIANT;
+        sum = 0.0;
+    }
+    return mcs_set_(out, sum);
 }
 
 mcs_status mcs_eq14_variance(size_t n, size_t k, const double *f, const double *power,

@@ -9,6 +9,7 @@
 #include <stddef.h>
 
 #include "core/internal.h"
+#include "accumulators/readout.h"
 #include "mcspec/importance.h"
 #include "mcspec/pattern.h"
 #include "mcspec/theory.h"
@@ -97,6 +98,23 @@ static inline mcs_status mcs_theory_check_pattern_(const mcs_pattern *pat, size_
     }
     return MCS_OK;
 }
+
+/* ---- src/theory/theory.c: the rounding exact moments carry ------------------ */
+
+/* What mcs_theory_init's rounding can add to a form sum_{m,n} x_m x_n
+ * <s_m s_n> (or to the same form of <s_m><s_n>), |x_b| <= |x[b]| + c (x
+ * NULL: 1 + c): 64 DBL_EPSILON ((sum w_b <s_b>)^2 + K (sum w_b u_b)^2), u_b
+ * the largest 1/p_b the moments of bin b allow. The edges in t = u K units
+ * are rounded to K 2^-53, so an entry errs by up to about 16 DBL_EPSILON K
+ * / (p_m p_n) besides its relative rounding: far more than the read-out's
+ * own rounding when a bin is small (an importance weight near 2^-32). */
+double mcs_theory_init_rounding_(const mcs_theory *th, const double *x, double c);
+
+/* The tolerance of Var[I] = (1/K^2) f^T Cov(s) f read from th (view opened
+ * on it): the read-out's rounding bound (mcs_readout_form_bound) plus init's
+ * (above); a variance below minus it comes from no object init writes. */
+double mcs_theory_form_tolerance_(const mcs_theory *th, const mcs_readout *view,
+                                  const double *f);
 
 /* ---- src/theory/theory_cov.c: covariances of linear functionals of s ----------- */
 

@@ -3,6 +3,7 @@
 #include "mcspec.h"
 #include "unity.h"
 
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -245,6 +246,96 @@ static void test_variance_stderr_never_collapses_for_two_equally_likely_values(v
     TEST_ASSERT_TRUE(sum_v / SEEDS < 2.2 * true_v);
 }
 
+/* Issue 22 item 4: a state no adds or merges produce. m4 = DBL_MAX read a
+ * standard error of the variance of infinity with MCS_OK; now every field
+ * is held to what values within MCS_WELFORD_MAX_ABS give (each within
+ * 2^111 of the mean: m2, |m3|, m4 at most (count - 1) times 2^224, 2^336,
+ * 2^448, |mean| at most twice the limit, no spread below two values, no
+ * mean without one), and every call but init refuses the rest with
+ * MCS_ERR_INVARIANT, writing nothing. */
+typedef struct {
+    int field; /* 0 mean, 1 m2, 2 m3, 3 m4, 4 count */
+    double value;
+} welford_corruption;
+
+static void corrupt(mcs_welford *acc, welford_corruption c)
+{
+    double *const f[4] = {&acc->mean, &acc->m2, &acc->m3, &acc->m4};
+    if (c.field < 4)
+        *f[c.field] = c.value;
+    else
+        acc->count = (uint64_t)c.value;
+}
+
+static void test_a_state_no_calls_produce_is_refused_by_every_call(void)
+{
+    const welford_corruption bad[] = {
+        {3, DBL_MAX}, {3, 1e300}, {3, -1.0}, {3, (double)NAN}, {3, (double)INFINITY},
+        {1, DBL_MAX}, {1, 1e300}, {1, -1.0}, {1, (double)NAN},
+        {2, DBL_MAX}, {2, -DBL_MAX}, {2, 1e300}, {2, (double)NAN},
+        {0, 1e300}, {0, -0x1p112}, {0, (double)NAN}, {0, (double)INFINITY}};
+    for (size_t c = 0; c < sizeof bad / sizeof bad[0]; ++c) {
+        mcs_welford acc, other;
+        fill_uniform(&acc, 3u, 4u, 10, 2.0, NULL);
+        fill_uniform(&other, 5u, 6u, 10, -1.0, NULL);
+        corrupt(&acc, bad[c]);
+        const mcs_welford before = acc, other_before = other;
+        double out = -7.25;
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_INVARIANT, mcs_welford_variance_stderr(&acc, &out));
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_INVARIANT, mcs_welford_variance(&acc, &out));
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_INVARIANT, mcs_welford_stderr(&acc, &out));
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_INVARIANT, mcs_welford_mean(&acc, &out));
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_INVARIANT, mcs_welford_add(&acc, 1.0));
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_INVARIANT, mcs_welford_merge(&acc, &other));
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_INVARIANT, mcs_welford_merge(&other, &acc));
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_INVARIANT, mcs_welford_merge(&acc, &acc));
+        TEST_ASSERT_EQUAL_DOUBLE(-7.25, out);
+        TEST_ASSERT_EQUAL_MEMORY(&before, &acc, sizeof acc);
+        TEST_ASSERT_EQUAL_MEMORY(&other_before, &other, sizeof other);
+    }
+    /* a spread with one value, and a mean with none */
+    mcs_welford acc;
+    mcs_welford_init(&acc);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_welford_add(&acc, 3.0));
+    for (int f = 1; f < 4; ++f) {
+        mcs_welford one = acc;
+        corrupt(&one, (welford_corruption){f, 0.5});
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_INVARIANT, mcs_welford_add(&one, 1.0));
+    }
+    mcs_welford_init(&acc);
+    acc.mean = 3.0;
+    double m = -7.25;
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_INVARIANT, mcs_welford_add(&acc, 1.0));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_INVARIANT, mcs_welford_mean(&acc, &m));
+    TEST_ASSERT_EQUAL_DOUBLE(-7.25, m);
+}
+
+/* Issue 22 item 9: two accumulators that overlap without being the same
+ * object (here src 8 bytes into dst: dst holds two values of 0, src none,
+ * so both are states calls produce) are refused with MCS_ERR_ALIAS, as the
+ * spectrum, moment and autocorr merges refuse them, both unchanged; a merge
+ * into itself still doubles. */
+static void test_a_merge_of_overlapping_accumulators_is_refused(void)
+{
+    static union {
+        mcs_welford align;
+        unsigned char bytes[2u * sizeof(mcs_welford)];
+    } arena;
+    mcs_welford *dst = &arena.align;
+    mcs_welford *src = (mcs_welford *)(void *)(arena.bytes + sizeof(double));
+    memset(&arena, 0, sizeof arena);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_welford_add(dst, 0.0));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_welford_add(dst, 0.0));
+    TEST_ASSERT_EQUAL_UINT64(0u, src->count);
+    unsigned char before[sizeof arena];
+    memcpy(before, arena.bytes, sizeof before);
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_welford_merge(dst, src));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_welford_merge(src, dst));
+    TEST_ASSERT_EQUAL_MEMORY(before, arena.bytes, sizeof before);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_welford_merge(dst, dst));
+    TEST_ASSERT_EQUAL_UINT64(4u, dst->count);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -256,5 +347,7 @@ int main(void)
     RUN_TEST(test_an_overflowed_fourth_moment_is_an_error_not_a_zero_stderr);
     RUN_TEST(test_the_count_stops_at_its_maximum_instead_of_wrapping);
     RUN_TEST(test_variance_stderr_never_collapses_for_two_equally_likely_values);
+    RUN_TEST(test_a_state_no_calls_produce_is_refused_by_every_call);
+    RUN_TEST(test_a_merge_of_overlapping_accumulators_is_refused);
     return UNITY_END();
 }
