@@ -22,6 +22,7 @@
 #include "mcspec/pointset.h"
 #include "mcspec/pointset2d.h"
 #include "mcspec/spectrum2d.h"
+#include "mcspec/discrepancy.h"
 #include "mcspec/theory.h"
 #include "mcspec/eq.h"
 #include "mcspec/io.h"
