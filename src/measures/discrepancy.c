@@ -250,15 +250,18 @@ static MCS_ALWAYS_INLINE mcs_status add(mcs_discrepancy *acc, size_t k, mcs_poin
         st = check_set(k, acc->dim, p);
     if (st != MCS_OK)
         return st;
+    /* The closed forms through the entry points, not inlined here: the
+     * frame stays that of one of them plus the copy below. */
     double v[MCS_DISCREPANCY_MEASURES];
-    l2_values(k, acc->dim, p, v);
-    if (star) {
+    st = p.f != NULL ? mcs_discrepancy_l2_f(k, acc->dim, p.f, v)
+                     : mcs_discrepancy_l2(k, acc->dim, p.d, v);
+    if (st == MCS_OK && star) {
         st = p.f != NULL ? mcs_discrepancy_star_f(k, p.f, work, work_bytes, &v[L2N])
                          : mcs_discrepancy_star(k, p.d, work, work_bytes, &v[L2N]);
-        if (st != MCS_OK)
-            return st;
         v[L2N] *= v[L2N];
     }
+    if (st != MCS_OK)
+        return st;
     /* Every Welford updated on a copy, so a refused add changes nothing. */
     mcs_discrepancy next = *acc;
     st = mcs_welford_add(&next.inv_k, 1.0 / (double)k);

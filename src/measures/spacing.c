@@ -229,24 +229,35 @@ static MCS_ALWAYS_INLINE double nearest_brute(mcs_points_ p, size_t dim, size_t 
     return best;
 }
 
+/* One set and its scratch, as the calls take them: passed by address, so no
+ * helper takes more arguments than the registers hold (a pushed argument
+ * makes gcc report the caller's frame as dynamic). */
+typedef struct {
+    size_t k, dim;
+    mcs_points_ p;
+    void *work;
+    size_t work_bytes;
+} set_view;
+
 /* The checks of a set with its work (see mcs_spacing_distances), and the
  * grid side it is searched with. */
-static mcs_status check_set(size_t k, size_t dim, mcs_points_ p, const void *work,
-                            size_t work_bytes, size_t *side)
+static mcs_status check_set(const set_view *s, size_t *side)
 {
-    if (mcs_points_addr_(p) == NULL)
+    if (mcs_points_addr_(s->p) == NULL)
         return MCS_ERR_NULL;
     size_t need = 0;
-    mcs_status st = dim_ok(dim) && k > SIZE_MAX / dim ? MCS_ERR_POINT_RANGE
-                                                      : check_size(dim, k, side, &need);
-    if (st == MCS_OK && need > 0u && work == NULL)
+    mcs_status st = dim_ok(s->dim) && s->k > SIZE_MAX / s->dim
+                        ? MCS_ERR_POINT_RANGE
+                        : check_size(s->dim, s->k, side, &need);
+    if (st == MCS_OK && need > 0u && s->work == NULL)
         st = MCS_ERR_NULL;
-    if (st == MCS_OK && work_bytes < need)
+    if (st == MCS_OK && s->work_bytes < need)
         st = MCS_ERR_SPACE;
     if (st == MCS_OK && need > 0u &&
-        mcs_overlap_(work, work_bytes, mcs_points_addr_(p), mcs_points_bytes_(p, k * dim)))
+        mcs_overlap_(s->work, s->work_bytes, mcs_points_addr_(s->p),
+                     mcs_points_bytes_(s->p, s->k * s->dim)))
         st = MCS_ERR_ALIAS;
-    return st == MCS_OK ? mcs_check_points_(k * dim, p, NULL) : st;
+    return st == MCS_OK ? mcs_check_points_(s->k * s->dim, s->p, NULL) : st;
 }
 
 static MCS_ALWAYS_INLINE void tally(double best, double *mn, double *sum)
@@ -256,9 +267,10 @@ static MCS_ALWAYS_INLINE void tally(double best, double *mn, double *sum)
 }
 
 /* out[] of a checked set: index order on both paths, so the same doubles. */
-static MCS_ALWAYS_INLINE void statistics(size_t k, size_t dim, mcs_points_ p, void *work,
-                                         size_t side, double *out)
+static MCS_ALWAYS_INLINE void statistics(const set_view *s, size_t side, double *out)
 {
+    const size_t k = s->k, dim = s->dim;
+    const mcs_points_ p = s->p;
     double mn = INFINITY, sum = 0.0;
     if (side > 0u) {
         grid g;
@@ -267,7 +279,7 @@ static MCS_ALWAYS_INLINE void statistics(size_t k, size_t dim, mcs_points_ p, vo
         g.cells = power_sat(side, dim);
         for (size_t a = 0; a < dim; ++a)
             g.stride[a] = power_sat(side, a);
-        g.start = mcs_meas_align_(work, sizeof(size_t));
+        g.start = mcs_meas_align_(s->work, sizeof(size_t));
         g.order = g.start + g.cells + 1u;
         grid_build(&g, p, k);
         for (size_t i = 0; i < k; ++i)
@@ -281,26 +293,27 @@ static MCS_ALWAYS_INLINE void statistics(size_t k, size_t dim, mcs_points_ p, vo
     out[MCS_SPACING_AVG_MIN_DISTANCE] = sum / (double)k / dmax;
 }
 
-static MCS_ALWAYS_INLINE mcs_status distances(size_t k, size_t dim, mcs_points_ p, void *work,
-                                              size_t work_bytes, double *out)
+static MCS_ALWAYS_INLINE mcs_status distances(const set_view *s, double *out)
 {
     size_t side = 0;
-    mcs_status st = out == NULL ? MCS_ERR_NULL : check_set(k, dim, p, work, work_bytes, &side);
+    mcs_status st = out == NULL ? MCS_ERR_NULL : check_set(s, &side);
     if (st == MCS_OK)
-        statistics(k, dim, p, work, side, out);
+        statistics(s, side, out);
     return st;
 }
 
 mcs_status mcs_spacing_distances(size_t k, size_t dim, const double *points, void *work,
                                  size_t work_bytes, double *out)
 {
-    return distances(k, dim, mcs_points_d_(points), work, work_bytes, out);
+    const set_view s = {k, dim, mcs_points_d_(points), work, work_bytes};
+    return distances(&s, out);
 }
 
 mcs_status mcs_spacing_distances_f(size_t k, size_t dim, const float *points, void *work,
                                    size_t work_bytes, double *out)
 {
-    return distances(k, dim, mcs_points_f_(points), work, work_bytes, out);
+    const set_view s = {k, dim, mcs_points_f_(points), work, work_bytes};
+    return distances(&s, out);
 }
 
 /* ---- The accumulator ------------------------------------------------------------- */
@@ -331,26 +344,25 @@ mcs_status mcs_spacing_init(mcs_spacing *acc, size_t dim)
     return MCS_OK;
 }
 
-static MCS_ALWAYS_INLINE mcs_status add(mcs_spacing *acc, size_t k, mcs_points_ p, void *work,
-                                        size_t work_bytes)
+static MCS_ALWAYS_INLINE mcs_status add(mcs_spacing *acc, const set_view *s)
 {
     size_t side = 0;
     mcs_status st = check_acc(acc);
     if (st == MCS_OK)
-        st = check_set(k, acc->dim, p, work, work_bytes, &side);
-    if (st == MCS_OK && side > 0u && mcs_overlap_(work, work_bytes, acc, sizeof *acc))
+        st = check_set(s, &side);
+    if (st == MCS_OK && side > 0u && mcs_overlap_(s->work, s->work_bytes, acc, sizeof *acc))
         st = MCS_ERR_ALIAS;
     if (st != MCS_OK)
         return st;
     double v[MCS_SPACING_STATISTICS];
-    statistics(k, acc->dim, p, work, side, v);
+    statistics(s, side, v);
     mcs_spacing next = *acc; /* updated on a copy: a refused add changes nothing */
-    for (int s = 0; s < MCS_SPACING_STATISTICS && st == MCS_OK; ++s)
-        st = mcs_welford_add(&next.stat[s], v[s]);
+    for (int i = 0; i < MCS_SPACING_STATISTICS && st == MCS_OK; ++i)
+        st = mcs_welford_add(&next.stat[i], v[i]);
     if (st != MCS_OK)
         return st;
-    next.k_min = acc->k_min == 0u || k < acc->k_min ? k : acc->k_min;
-    next.k_max = k > acc->k_max ? k : acc->k_max;
+    next.k_min = acc->k_min == 0u || s->k < acc->k_min ? s->k : acc->k_min;
+    next.k_max = s->k > acc->k_max ? s->k : acc->k_max;
     *acc = next;
     return MCS_OK;
 }
@@ -358,13 +370,15 @@ static MCS_ALWAYS_INLINE mcs_status add(mcs_spacing *acc, size_t k, mcs_points_ 
 mcs_status mcs_spacing_add(mcs_spacing *acc, size_t k, const double *points, void *work,
                            size_t work_bytes)
 {
-    return add(acc, k, mcs_points_d_(points), work, work_bytes);
+    const set_view s = {k, acc != NULL ? acc->dim : 0u, mcs_points_d_(points), work, work_bytes};
+    return add(acc, &s);
 }
 
 mcs_status mcs_spacing_add_f(mcs_spacing *acc, size_t k, const float *points, void *work,
                              size_t work_bytes)
 {
-    return add(acc, k, mcs_points_f_(points), work, work_bytes);
+    const set_view s = {k, acc != NULL ? acc->dim : 0u, mcs_points_f_(points), work, work_bytes};
+    return add(acc, &s);
 }
 
 mcs_status mcs_spacing_merge(mcs_spacing *dst, const mcs_spacing *src)
