@@ -20,7 +20,8 @@ mcs_status mcs_discrepancy_star_work_size(size_t k, size_t *bytes)
 /* Pair a of xy[] (x, y) comes before pair b: by x, then by y. */
 static int before(const double *xy, size_t a, size_t b)
 {
-    return xy[2u * a] < xy[2u * b] || (xy[2u * a] == xy[2u * b] && xy[2u * a + 1u] < xy[2u * b + 1u]);
+    const double xa = xy[2u * a], xb = xy[2u * b];
+    return xa < xb || (xa == xb && xy[2u * a + 1u] < xy[2u * b + 1u]);
 }
 
 static void swap_pairs(double *xy, size_t a, size_t b)
