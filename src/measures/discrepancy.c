@@ -32,7 +32,7 @@ const char *mcs_discrepancy_measure_str(mcs_discrepancy_measure measure)
 
 static int measure_ok(mcs_discrepancy_measure m)
 {
-    return (int)m >= 0 && (int)m < (int)MCS_DISCREPANCY_MEASURES;
+    return (unsigned)m < (unsigned)MCS_DISCREPANCY_MEASURES; /* a negative value wraps above */
 }
 
 static int dim_ok(size_t dim)
@@ -64,9 +64,10 @@ static void diagonal_means(size_t dim, double *e)
     e[MCS_DISCREPANCY_L2_UNANCHORED] = pow(1.0 / 6.0, d);
 }
 
-/* g(x_i) and h(x_i, x_i) of point i, each measure. */
-static MCS_ALWAYS_INLINE void point_terms(size_t dim, mcs_points_ p, size_t i, double *g,
-                                          double *hd)
+/* The terms of point i, each measure: h(x_i, x_i) / K - 2 g(x_i), so that
+ * their sum over the points, over K, is the closed form's middle part. */
+static MCS_ALWAYS_INLINE void point_terms(size_t dim, mcs_points_ p, size_t i, double kk,
+                                          double *t)
 {
     double gs = 1.0, gc = 1.0, gy = 1.0, gg = 1.0, gn = 1.0, gw = 1.0;
     double hs = 1.0, hc = 1.0, hw = 1.0, hy = 1.0, hg = 1.0, hn = 1.0;
@@ -85,8 +86,12 @@ static MCS_ALWAYS_INLINE void point_terms(size_t dim, mcs_points_ p, size_t i, d
         hg *= 2.0 - u;
         hn *= q;
     }
-    g[0] = gs, g[1] = gc, g[2] = gw, g[3] = gy, g[4] = gg, g[5] = gn;
-    hd[0] = hs, hd[1] = hc, hd[2] = hw, hd[3] = hy, hd[4] = hg, hd[5] = hn;
+    t[0] = hs / kk - 2.0 * gs;
+    t[1] = hc / kk - 2.0 * gc;
+    t[2] = hw / kk - 2.0 * gw;
+    t[3] = hy / kk - 2.0 * gy;
+    t[4] = hg / kk - 2.0 * gg;
+    t[5] = hn / kk - 2.0 * gn;
 }
 
 /* h(x_i, x_j) of each measure added to acc[]. */
@@ -103,23 +108,26 @@ static MCS_ALWAYS_INLINE void add_pair(size_t dim, mcs_points_ p, size_t i, size
         g *= 2.0 - mx;
         n *= mn * (1.0 - mx);
     }
-    acc[0] += s, acc[1] += c, acc[2] += w, acc[3] += y, acc[4] += g, acc[5] += n;
+    acc[0] += s;
+    acc[1] += c;
+    acc[2] += w;
+    acc[3] += y;
+    acc[4] += g;
+    acc[5] += n;
 }
 
-/* The three sums of the closed forms: single = sum_i g(x_i), diag =
- * sum_i h(x_i, x_i), pair = sum_{i<j} h(x_i, x_j), Kahan-summed (pairs in
- * blocks of BLOCK), then D^2 = C0 - (2/K) single + (diag + 2 pair) / K^2. */
+/* The two sums of the closed forms, Kahan-summed (pairs in blocks of BLOCK):
+ * point = sum_i (h(x_i, x_i) / K - 2 g(x_i)) and pair = sum_{i<j} h(x_i, x_j),
+ * then D^2 = C0 + point / K + 2 pair / K^2. */
 static MCS_ALWAYS_INLINE void l2_values(size_t k, size_t dim, mcs_points_ p, double *d2)
 {
-    double single[L2N] = {0}, single_lo[L2N] = {0}, diag[L2N] = {0}, diag_lo[L2N] = {0};
-    double pair[L2N] = {0}, pair_lo[L2N] = {0};
+    const double kk = (double)k;
+    double point[L2N] = {0}, point_lo[L2N] = {0}, pair[L2N] = {0}, pair_lo[L2N] = {0};
     for (size_t i = 0; i < k; ++i) {
-        double g[L2N], hd[L2N];
-        point_terms(dim, p, i, g, hd);
-        for (int m = 0; m < L2N; ++m) {
-            mcs_kahan_add_(&single[m], &single_lo[m], g[m]);
-            mcs_kahan_add_(&diag[m], &diag_lo[m], hd[m]);
-        }
+        double t[L2N];
+        point_terms(dim, p, i, kk, t);
+        for (int m = 0; m < L2N; ++m)
+            mcs_kahan_add_(&point[m], &point_lo[m], t[m]);
         for (size_t j0 = i + 1u; j0 < k; j0 += BLOCK) {
             const size_t j1 = k - j0 < BLOCK ? k : j0 + BLOCK;
             double block[L2N] = {0};
@@ -131,9 +139,8 @@ static MCS_ALWAYS_INLINE void l2_values(size_t k, size_t dim, mcs_points_ p, dou
     }
     double c0[L2N];
     constants(dim, c0);
-    const double kk = (double)k;
     for (int m = 0; m < L2N; ++m)
-        d2[m] = c0[m] - 2.0 * single[m] / kk + (diag[m] + 2.0 * pair[m]) / (kk * kk);
+        d2[m] = c0[m] + point[m] / kk + 2.0 * pair[m] / (kk * kk);
 }
 
 /* The checks of a set: dim in range, k >= 1, every coordinate in [0, 1). */

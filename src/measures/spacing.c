@@ -415,7 +415,7 @@ static mcs_status read_checked(const mcs_spacing *acc, mcs_spacing_statistic sta
                                const double *out)
 {
     mcs_status st = out == NULL ? MCS_ERR_NULL : check_acc(acc);
-    if (st == MCS_OK && !((int)statistic >= 0 && (int)statistic < (int)MCS_SPACING_STATISTICS))
+    if (st == MCS_OK && (unsigned)statistic >= (unsigned)MCS_SPACING_STATISTICS)
         st = MCS_ERR_KIND;
     return st;
 }
