@@ -154,8 +154,8 @@ mcs_status mcs_discrepancy_star_f(size_t k, const float *points, void *work, siz
  * too, so every root reads on the same scale; it is added only for the sets
  * it is computed for (see mcs_discrepancy_add), and its count says how many.
  * A Welford of 1/K over the sets gives the exact random expectation of the
- * mean of mixed-K sets. Fixed size (about 330 B), no pointers: it may be
- * copied. */
+ * mean of mixed-K sets. Fixed size (344 bytes on x86-64), no pointers: it
+ * may be copied. */
 typedef struct {
     size_t dim;       /* 1..MCS_DISCREPANCY_MAX_DIM; 0 before init */
     size_t k_min;     /* fewest points in a set added (0 before any) */

@@ -102,8 +102,8 @@ mcs_status mcs_spacing_distances_f(size_t k, size_t dim, const float *points, vo
  * A Welford accumulator (welford.h) per statistic of the per-set values, so
  * the mean over sets, its standard error and the merge come from
  * mcs_welford. The scratch is passed per set, not kept: the accumulator has
- * a fixed size and no pointers (it may be copied), and sets of any K stream
- * through it with a buffer grown as they come. */
+ * a fixed size (104 bytes on x86-64) and no pointers (it may be copied), and
+ * sets of any K stream through it with a buffer grown as they come. */
 typedef struct {
     size_t dim;   /* 1..MCS_SPACING_MAX_DIM; 0 before init */
     size_t k_min; /* fewest points in a set added (0 before any) */
