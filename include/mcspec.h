@@ -23,6 +23,8 @@
 #include "mcspec/pointset.h"
 #include "mcspec/pointset2d.h"
 #include "mcspec/spectrum2d.h"
+#include "mcspec/discrepancy.h"
+#include "mcspec/spacing.h"
 #include "mcspec/theory.h"
 #include "mcspec/eq.h"
 #include "mcspec/io.h"

@@ -14,7 +14,7 @@
 #   - given the library's objects, a file calls a function defined in a file
 #     of a family above its own, or the file-level call graph has a cycle.
 # The families, lowest first: a family may use the ones before it.
-FAMILIES="core random dft patterns accumulators pointsets theory io"
+FAMILIES="core random dft patterns accumulators pointsets measures theory io"
 set -u
 export LC_ALL=C
 nm_cmd=nm

@@ -1,0 +1,235 @@
+#!/bin/sh
+# Checks of the commands mcspec discrepancy and mcspec stats (issue 25).
+#
+# usage: sh test/measures_check.sh   ($MCSPEC names the binary, default
+#                                     build/bin/mcspec)
+#
+#   --help of both; bad usage (unknown option, --dim out of range, two
+#   files, a value on a flag): exit 2, one line on stderr, nothing on stdout;
+#   hand-made sets against values worked out by hand (the six squared L2
+#   discrepancies and the star discrepancy of one point at the centre of the
+#   square, their exact random expectations for K = 1; two 1D sets, their
+#   mean, standard error and mixed-K expectation; a square grid's and an
+#   equally spaced circle's distances);
+#   the CSV: header exactly, row counts, numbers or empty fields, root =
+#   sqrt(value); the table's header;
+#   200 sets of 256 independent uniform points in 2D (awk's generator, a
+#   fixed seed): every L2 mean within 5 standard errors of exact_random, the
+#   star's mean above the L2 star's (D*_2 <= D* per set), and the average
+#   minimum distance within 5 standard errors of the exact nearest-neighbour
+#   expectation (1/2) Gamma(K) / Gamma(K + 1/2) over d_max;
+#   the star row left out (and said so) when a set has more than 4096
+#   points; standard input read like a file; the same bytes twice; --wrap;
+#   every malformed input (a coordinate outside [0,1), not a number, the
+#   wrong column count, an empty set, an empty or missing file, a bad line
+#   after 200 good sets, a single-point set for stats): exit 2, one line on
+#   stderr naming the file and the line (the set for stats' single point),
+#   nothing on stdout.
+# Ends with a Unity-style summary ("N Tests F Failures 0 Ignored", then OK or
+# FAIL) so test/run_tests.sh counts it; exit status non-zero on failure.
+
+MCSPEC=${MCSPEC:-build/bin/mcspec}
+
+# shellcheck source=test/support/check.sh
+. "$(dirname "$0")/support/check.sh"
+check_start measures_check
+
+if [ ! -x "$MCSPEC" ]; then
+    bad "$MCSPEC is not an executable (make cli)"
+    check_summary
+    exit 1
+fi
+
+# usage_error LABEL PATTERN CMD...: exit 2, nothing on stdout, exactly one
+# line on stderr, matching the extended regular expression PATTERN.
+usage_error() {
+    label=$1 pattern=$2
+    shift 2
+    run "$@"
+    if [ "$rc" -ne 2 ]; then bad "$label: exit status $rc, expected 2"
+    elif [ -s "$tmp/out" ]; then bad "$label: wrote to stdout"
+    elif [ "$(wc -l <"$tmp/err")" -ne 1 ]; then bad "$label: $(wc -l <"$tmp/err") lines on stderr"
+    elif ! grep -Eq -- "$pattern" "$tmp/err"; then bad "$label: message '$(cat "$tmp/err")' lacks /$pattern/"
+    else ok; fi
+}
+
+# csv_shape LABEL FILE HEADER ROWS FIELDS: the header line exactly, then ROWS
+# rows of FIELDS fields, each field after the first a number or empty.
+csv_shape() {
+    if [ "$(head -n 1 "$2")" = "$3" ]; then ok; else bad "$1: header '$(head -n 1 "$2")'"; fi
+    problems=$(tail -n +2 "$2" | awk -F, -v rows="$4" -v fields="$5" '
+        function num(s) { return s == "" || s ~ /^[-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?$/ }
+        NF != fields { printf "row %d: %d fields; ", NR, NF }
+        { for (i = 2; i <= NF; ++i) if (!num($i)) printf "row %d field %d \"%s\"; ", NR, i, $i }
+        END { if (NR != rows) printf "%d rows, expected %d", NR, rows }')
+    if [ -z "$problems" ]; then ok; else bad "$1: $problems"; fi
+}
+
+# expect LABEL CSV WANT: every "name col value" line of WANT (col 2..5 of the
+# CSV, value a number or "empty") holds in the CSV to 1e-12 relative.
+expect() {
+    problems=$(awk -F, -v want="$3" '
+        BEGIN { n = split(want, lines, "\n")
+                for (i = 1; i <= n; ++i) if (split(lines[i], w, " ") == 3) { key[w[1] SUBSEP w[2]] = w[3]; seen[w[1]] = 0 } }
+        NR > 1 { for (c = 2; c <= NF; ++c) if (($1 SUBSEP c) in key) {
+                     v = key[$1 SUBSEP c]; seen[$1] = 1
+                     if (v == "empty") { if ($c != "") printf "%s col %d: %s, expected empty; ", $1, c, $c }
+                     else { d = $c - v; if (d < 0) d = -d; s = v < 0 ? -v : v
+                            if ($c == "" || d > 1e-12 * (s > 1e-300 ? s : 1)) printf "%s col %d: %s, expected %s; ", $1, c, $c, v } } }
+        END { for (r in seen) if (!seen[r]) printf "no row %s; ", r }' "$2")
+    if [ -z "$problems" ]; then ok; else bad "$1: $problems"; fi
+}
+
+echo "== $MCSPEC discrepancy, stats"
+
+# ---------------------------------------------------------------- --help
+for c in discrepancy stats; do
+    if succeeds "$c --help" "$MCSPEC" "$c" --help && grep -q "^usage: mcspec $c" "$tmp/out"
+    then ok; else bad "$c --help: no usage line"; fi
+done
+if "$MCSPEC" discrepancy --help | grep -q 'measure,value,stderr,exact_random,root'; then ok
+else bad "discrepancy --help does not give the CSV header"; fi
+if "$MCSPEC" stats --help | grep -q 'statistic,value,stderr'; then ok
+else bad "stats --help does not give the CSV header"; fi
+
+# ------------------------------------------------------------- bad usage
+for c in discrepancy stats; do
+    usage_error "$c --dim 3" '--dim expects a whole number from 1 to 2' "$MCSPEC" "$c" --dim 3 -
+    usage_error "$c --dim 0" '--dim expects' "$MCSPEC" "$c" --dim 0 -
+    usage_error "$c --bogus" "unknown option '--bogus'" "$MCSPEC" "$c" --bogus -
+    usage_error "$c two files" "unexpected argument" "$MCSPEC" "$c" a b
+    usage_error "$c --csv=1" 'takes no value' "$MCSPEC" "$c" --csv=1 -
+done
+
+# ------------------------------------------------ hand-made: one point, 2D
+# D^2 = C0 - 2 g + h(x, x) at x = (1/2, 1/2), each by hand from the table of
+# include/mcspec/discrepancy.h; exact random for K = 1 is E h(x, x) - C0; the
+# star: the closed box [0, 1/2]^2 holds the point, 1 - 1/4 = 3/4.
+printf '0.5 0.5\n' >"$tmp/centre"
+if succeeds "discrepancy of one point" "$MCSPEC" discrepancy --csv "$tmp/centre"; then
+    csv_shape "discrepancy --csv" "$tmp/out" 'measure,value,stderr,exact_random,root' 7 5
+    expect "one point at the centre" "$tmp/out" "$(cat <<'EOF'
+l2_star 2 0.079861111111111111
+l2_star 3 empty
+l2_star 4 0.13888888888888889
+l2_star 5 0.2825970826302195
+l2_centered 2 0.17361111111111111
+l2_centered 4 0.38888888888888889
+l2_wraparound 2 0.47222222222222222
+l2_wraparound 4 0.47222222222222222
+l2_symmetric 2 1.2777777777777778
+l2_symmetric 4 2.2222222222222222
+l2_generalized 2 0.24652777777777778
+l2_generalized 4 0.47222222222222222
+l2_unanchored 2 0.038194444444444444
+l2_unanchored 4 0.020833333333333333
+star 2 0.5625
+star 4 empty
+star 5 0.75
+EOF
+)"
+fi
+
+# ---------------------------------------------- hand-made: two sets in 1D
+# {1/2}: D^2 = 1/12; {1/4, 3/4}: 1/48 (piece by piece); mean 5/96, standard
+# error |a - b| / 2 = 1/32; exact (1/2 - 1/3) times the mean of 1/K, 1/8.
+printf '0.5\n#\n0.25\n0.75\n' >"$tmp/two1d"
+if succeeds "discrepancy --dim 1" "$MCSPEC" discrepancy --dim 1 --csv "$tmp/two1d"; then
+    csv_shape "discrepancy --dim 1 --csv" "$tmp/out" 'measure,value,stderr,exact_random,root' 6 5
+    expect "two 1D sets" "$tmp/out" "$(printf '%s\n' 'l2_star 2 0.052083333333333333' \
+        'l2_star 3 0.03125' 'l2_star 4 0.125')"
+fi
+if succeeds "discrepancy table" "$MCSPEC" discrepancy --dim 1 "$tmp/two1d"; then
+    if grep -Eq '^measure +value +stderr +exact_random +root +z$' "$tmp/out"; then ok
+    else bad "discrepancy table: no header line"; fi
+    if [ "$(grep -c '^l2_' "$tmp/out")" -eq 6 ] && ! grep -q '^star' "$tmp/out"; then ok
+    else bad "discrepancy table in 1D: not the six L2 rows"; fi
+fi
+
+# ------------------------------------------ hand-made: spatial statistics
+# A 16 x 16 grid: every nearest neighbour at 1/16, over d_max =
+# sqrt(2 / (sqrt(3) 256)): sqrt(sqrt(3) / 2). Ten equally spaced points on the
+# circle: every gap 1/10 = d_max.
+awk 'BEGIN { for (i = 0; i < 256; ++i) printf "%.17g %.17g\n", (i % 16 + 0.5) / 16, (int(i / 16) + 0.5) / 16 }' >"$tmp/grid"
+if succeeds "stats of a grid" "$MCSPEC" stats --csv "$tmp/grid"; then
+    csv_shape "stats --csv" "$tmp/out" 'statistic,value,stderr' 2 3
+    expect "a 16 x 16 grid" "$tmp/out" "$(printf '%s\n' 'min_distance 2 0.93060485910209959' \
+        'avg_min_distance 2 0.93060485910209959' 'min_distance 3 empty')"
+fi
+awk 'BEGIN { for (i = 0; i < 10; ++i) print i / 10 }' >"$tmp/circle"
+if succeeds "stats --dim 1" "$MCSPEC" stats --dim 1 --csv "$tmp/circle"; then
+    expect "ten points on the circle" "$tmp/out" "$(printf '%s\n' 'min_distance 2 1' 'avg_min_distance 2 1')"
+fi
+if succeeds "stats table" "$MCSPEC" stats "$tmp/grid"; then
+    if grep -Eq '^statistic +value +stderr$' "$tmp/out" && grep -q '^avg_min_distance' "$tmp/out"
+    then ok; else bad "stats table: no header line or rows"; fi
+fi
+
+# ------------------------------------- 200 random sets of 256 points (2D)
+awk 'BEGIN { srand(42); for (s = 0; s < 200; ++s) { if (s) print "#"
+             for (i = 0; i < 256; ++i) printf "%.17g %.17g\n", rand(), rand() } }' >"$tmp/random"
+if succeeds "discrepancy of random sets" "$MCSPEC" discrepancy --csv "$tmp/random"; then
+    cp "$tmp/out" "$tmp/random.csv"
+    csv_shape "random sets" "$tmp/random.csv" 'measure,value,stderr,exact_random,root' 7 5
+    echo "   z = (value - exact_random) / stderr over 200 sets of 256 random points:"
+    awk -F, 'NR > 1 && $4 != "" { printf "   %-15s %7.2f\n", $1, ($2 - $4) / $3 }' "$tmp/random.csv"
+    problems=$(awk -F, 'NR > 1 && $4 != "" { z = ($2 - $4) / $3; if (z < -5 || z > 5) printf "%s z = %.2f; ", $1, z }
+        NR > 1 { r = sqrt($2 > 0 ? $2 : 0); d = r - $5; if (d < 0) d = -d; if (d > 1e-15 + 1e-12 * r) printf "%s root %s, sqrt %s; ", $1, $5, r }
+        $1 == "l2_star" { l2 = $2 } $1 == "star" { st = $2 }
+        END { if (!(st >= l2)) printf "star %s below l2_star %s", st, l2 }' "$tmp/random.csv")
+    if [ -z "$problems" ]; then ok; else bad "random sets: $problems"; fi
+    # shellcheck disable=SC2016 # $1 and $2 are the inner shell's
+    if succeeds "discrepancy from stdin" sh -c '"$1" discrepancy --csv - <"$2"' sh "$MCSPEC" "$tmp/random" &&
+        cmp -s "$tmp/out" "$tmp/random.csv"; then ok; else bad "stdin: not the file's bytes"; fi
+    if succeeds "discrepancy again" "$MCSPEC" discrepancy --csv "$tmp/random" && cmp -s "$tmp/out" "$tmp/random.csv"
+    then ok; else bad "discrepancy: not the same bytes twice"; fi
+fi
+if succeeds "stats of random sets" "$MCSPEC" stats --csv "$tmp/random"; then
+    # (1/2) Gamma(K) / Gamma(K + 1/2) by its asymptotic series (exact to 1e-12 at K = 256)
+    problems=$(awk -F, 'BEGIN { k = 256; g = (1 + 1 / (8 * k) + 1 / (128 * k * k) - 5 / (1024 * k ^ 3) - 21 / (32768 * k ^ 4)) / sqrt(k)
+                                want = 0.5 * g / sqrt(2 / (sqrt(3) * k)) }
+        $1 == "avg_min_distance" { z = ($2 - want) / $3; printf "z %.2f", z; if (z < -5 || z > 5) printf " FAIL (%s vs %s)", $2, want }' "$tmp/out")
+    echo "   avg_min_distance against the nearest-neighbour expectation: $problems"
+    case $problems in "z "*FAIL* | "") bad "stats of random sets: $problems" ;; *) ok ;; esac
+fi
+
+# ---------------------------------------- a set too large for the star
+awk 'BEGIN { srand(7); for (i = 0; i < 4097; ++i) printf "%.17g %.17g\n", rand(), rand() }' >"$tmp/big"
+if succeeds "discrepancy of 4097 points" "$MCSPEC" discrepancy --csv "$tmp/big"; then
+    if [ "$(tail -n +2 "$tmp/out" | wc -l)" -eq 6 ] && ! grep -q '^star' "$tmp/out"; then ok
+    else bad "4097 points: the star row is there"; fi
+fi
+if succeeds "discrepancy table of 4097 points" "$MCSPEC" discrepancy "$tmp/big" &&
+    grep -q 'star: not computed (a set has more than 4096 points)' "$tmp/out"; then ok
+else bad "4097 points: the table does not say why the star is missing"; fi
+
+# --------------------------------------------------------------- --wrap
+printf '1.25 0.5\n' >"$tmp/wrapped"
+printf '0.25 0.5\n' >"$tmp/plain"
+if succeeds "--wrap" "$MCSPEC" discrepancy --wrap --csv "$tmp/wrapped" && cp "$tmp/out" "$tmp/w.csv" &&
+    succeeds "no wrap needed" "$MCSPEC" discrepancy --csv "$tmp/plain" && cmp -s "$tmp/out" "$tmp/w.csv"
+then ok; else bad "--wrap: 1.25 is not read as 0.25"; fi
+
+# ------------------------------------------------------- malformed input
+for c in discrepancy stats; do
+    printf '0.1 0.2\n0.3 0.4\n0.5 1.5\n' >"$tmp/bad"
+    usage_error "$c: coordinate 1.5" "^mcspec $c: $tmp/bad: line 3: coordinate 1.5 is outside \[0,1\)" "$MCSPEC" "$c" "$tmp/bad"
+    printf '0.1 0.2\n0.3 abc\n' >"$tmp/bad"
+    usage_error "$c: not a number" "^mcspec $c: $tmp/bad: line 2: coordinate 'abc' is not a number" "$MCSPEC" "$c" "$tmp/bad"
+    printf '0.1 0.2\n0.3 0.4 0.5\n' >"$tmp/bad"
+    usage_error "$c: three columns" "^mcspec $c: $tmp/bad: line 2: expected 2 columns, found 3" "$MCSPEC" "$c" "$tmp/bad"
+    printf '0.1 nan\n' >"$tmp/bad"
+    usage_error "$c: NaN" "^mcspec $c: $tmp/bad: line 1: " "$MCSPEC" "$c" "$tmp/bad"
+    printf '0.1 0.2\n0.2 0.1\n#\n#\n0.3 0.4\n' >"$tmp/bad"
+    usage_error "$c: empty set" "^mcspec $c: $tmp/bad: line 4: empty point set" "$MCSPEC" "$c" "$tmp/bad"
+    : >"$tmp/bad"
+    usage_error "$c: empty input" "^mcspec $c: $tmp/bad: the input is empty" "$MCSPEC" "$c" "$tmp/bad"
+    usage_error "$c: missing file" "^mcspec $c: cannot read '$tmp/missing'" "$MCSPEC" "$c" "$tmp/missing"
+    { cat "$tmp/random"; printf '0.5 -0.5\n'; } >"$tmp/bad"
+    usage_error "$c: a bad line after 200 sets" "^mcspec $c: $tmp/bad: line 51400: coordinate -0.5" "$MCSPEC" "$c" --csv "$tmp/bad"
+done
+printf '0.1 0.2\n0.3 0.4\n#\n0.5 0.6\n#\n0.7 0.8\n0.9 0.1\n' >"$tmp/bad"
+usage_error "stats: a single-point set" "^mcspec stats: $tmp/bad: point set 2 has a single point" "$MCSPEC" stats "$tmp/bad"
+succeeds "discrepancy takes a single-point set" "$MCSPEC" discrepancy --csv "$tmp/bad"
+
+check_summary
