@@ -14,7 +14,6 @@
 #include <unistd.h>
 
 /* The entry point, declared here until cli.h lists it with the others. */
-int cli_cmd_discrepancy(int argc, char **argv);
 
 #define CMD "mcspec discrepancy"
 #define CSV_HEADER "measure,value,stderr,exact_random,root"

@@ -13,7 +13,6 @@
 #include <unistd.h>
 
 /* The entry point, declared here until cli.h lists it with the others. */
-int cli_cmd_stats(int argc, char **argv);
 
 #define CMD "mcspec stats"
 #define CSV_HEADER "statistic,value,stderr"

@@ -17,6 +17,10 @@ static const cli_command commands[] = {
      cli_cmd_variance},
     {"merge", "merge accumulators saved by --save into one file", cli_cmd_merge},
     {"show", "print a saved accumulator as a table, CSV or plot", cli_cmd_show},
+    {"discrepancy", "L2 and star discrepancies of point sets read from a file",
+     cli_cmd_discrepancy},
+    {"stats", "minimum and average minimum distances of point sets read from a file",
+     cli_cmd_stats},
     {"version", "print the library's version (also: mcspec --version)", cli_cmd_version},
 };
 
@@ -32,7 +36,7 @@ static void usage(FILE *fp)
           "on Sampling\"; equation numbers refer to it). Commands:\n",
           fp);
     for (size_t i = 0; i < COMMAND_COUNT; ++i)
-        fprintf(fp, "  %-10s %s\n", commands[i].name, commands[i].summary);
+        fprintf(fp, "  %-12s %s\n", commands[i].name, commands[i].summary);
     fputs("\n"
           "Every command prints an aligned table, or with --csv only CSV (a header line\n"
           "and rows). Long runs show progress on stderr when it is a terminal (the share\n"
