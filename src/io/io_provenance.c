@@ -282,7 +282,7 @@ static int range_before(const mcs_io_streams *a, const mcs_io_streams *b)
  * is in both. */
 static mcs_status merge_ranges(mcs_io_provenance *dst, const mcs_io_provenance *src)
 {
-    mcs_io_streams out[MCS_IO_PROV_MAX_RANGES];
+    mcs_io_streams out[MCS_IO_PROV_MAX_RANGES] = {{0u, 0u, 0u}};
     size_t i = 0u, j = 0u, count = 0u;
     while (i < dst->nranges || j < src->nranges) {
         const int from_dst = j == src->nranges ||
