@@ -35,8 +35,10 @@
 #   (unless --mix-seeds), P or T, the same point file twice, and an OUT that
 #   is an input (by name, hard link or symbolic link); the streams of a run
 #   merged in any order and grouping give the bytes of --streams P and say
-#   'streams 0..P-1 of P'; version 1 records still merge, with one note on
-#   stderr, into a record without provenance.
+#   'streams 0..P-1 of P'; show of a merged pattern record prints the
+#   single run's exact, closed and z columns (with an importance function:
+#   given again with --importance, its checksum checked); version 1 records
+#   still merge, with one note on stderr, into a record without provenance.
 # Ends with a Unity-style summary so test/run_tests.sh counts it.
 
 MCSPEC=${MCSPEC:-build/bin/mcspec}
@@ -83,8 +85,10 @@ succeeds "show spectrum" "$MCSPEC" show "$tmp/sp.rec" --csv && same_file "spectr
     "$tmp/sp.csv" "$tmp/out"
 
 pattern() { "$MCSPEC" pattern stratified --n 48 --k 5 --trials "$@"; }
+# A pattern record knows its run: show prints every column the run printed,
+# the predictions included.
 succeeds "pattern --save" pattern 10 --seed 3 --csv --save "$tmp/p.rec" &&
-    cut -d, -f1-6 "$tmp/out" >"$tmp/p.csv"
+    cp "$tmp/out" "$tmp/p.csv"
 succeeds "show pattern" "$MCSPEC" show "$tmp/p.rec" --csv && same_file "pattern vs show" \
     "$tmp/p.csv" "$tmp/out"
 succeeds "pattern --save again" pattern 10 --seed 3 --csv --save "$tmp/p2.rec"
@@ -195,6 +199,8 @@ then bad "merge of two version 1 records: stderr '$(cat "$tmp/err")'"
 else ok; fi
 "$MCSPEC" show "$tmp/ps2.rec" | head -n 1 | grep -q ', 10 trials$' && ok ||
     bad "merge of two 5-trial point sets: not 10 trials"
+"$MCSPEC" show "$tmp/ps2.rec" | sed -n 2p | grep -qx 'provenance: none (a format version 1 record)' && ok ||
+    bad "merge of version 1 records: the output claims a provenance"
 
 # ------------------------------------------------------------ --save fails early
 refused "--save into a missing directory" "cannot write $tmp/no/such/dir/x.rec" \
@@ -296,6 +302,9 @@ run4 --csv --save "$pv/all.rec" >"$tmp/all.csv"
 for i in 0 1 2 3; do run4 --stream "$i" --save "$pv/s$i.rec" --csv >/dev/null; done
 version=$(od -An -tu1 -j8 -N1 "$pv/s0.rec" | tr -d ' ')
 [ "$version" = 2 ] && ok || bad "a pattern record is format version $version, not 2"
+"$MCSPEC" show "$pv/s2.rec" | sed -n 2p |
+    grep -qx 'drawn: stratified, N = 24 bins, K = 5 samples, seed 9: stream 2 of 4 (trials 12..17 of 23)' &&
+    ok || bad "show of stream 2: '$("$MCSPEC" show "$pv/s2.rec" | sed -n 2p)'"
 
 # Any order, at once or in pieces: the bytes of --streams 4, streams 0..3 of 4.
 succeeds "merge of 4 streams, in order" "$MCSPEC" merge "$pv/s0.rec" "$pv/s1.rec" "$pv/s2.rec" \
@@ -304,6 +313,9 @@ succeeds "merge of 4 streams, another order" "$MCSPEC" merge "$pv/s2.rec" "$pv/s
     "$pv/s3.rec" "$pv/s1.rec" -o "$tmp/shuffled.rec"
 same_file "merges of 4 streams in two orders" "$tmp/in-order.rec" "$tmp/shuffled.rec"
 same_file "merge of 4 streams vs --streams 4" "$tmp/in-order.rec" "$pv/all.rec"
+"$MCSPEC" show "$tmp/shuffled.rec" | sed -n 2p |
+    grep -qx 'drawn: stratified, N = 24 bins, K = 5 samples, seed 9: streams 0..3 of 4 (trials 0..22 of 23)' &&
+    ok || bad "merged streams: '$("$MCSPEC" show "$tmp/shuffled.rec" | sed -n 2p)'"
 succeeds "merge of streams 3, 2" "$MCSPEC" merge "$pv/s3.rec" "$pv/s2.rec" -o "$pv/m23.rec"
 succeeds "merge of streams 1, 0" "$MCSPEC" merge "$pv/s1.rec" "$pv/s0.rec" -o "$pv/m01.rec"
 succeeds "merge of the two halves" "$MCSPEC" merge "$pv/m23.rec" "$pv/m01.rec" -o "$tmp/halves.rec"
@@ -311,6 +323,15 @@ same_file "merge of the halves vs --streams 4" "$tmp/halves.rec" "$pv/all.rec"
 succeeds "merge of a half and two streams" "$MCSPEC" merge "$pv/s1.rec" "$pv/m23.rec" "$pv/s0.rec" \
     -o "$tmp/mixed.rec"
 same_file "merge of a half and two streams vs --streams 4" "$tmp/mixed.rec" "$pv/all.rec"
+
+# show of the merged streams: the single run's exact, closed and z columns.
+succeeds "show of the merged streams" "$MCSPEC" show "$tmp/shuffled.rec" --csv &&
+    same_file "show of merged streams vs the single run" "$tmp/all.csv" "$tmp/out"
+cut -d, -f7 "$tmp/out" >"$tmp/exact-show.csv"
+cut -d, -f7 "$tmp/all.csv" >"$tmp/exact-run.csv"
+if [ "$(head -n 1 "$tmp/exact-show.csv")" = exact ] && [ "$(grep -c . "$tmp/exact-show.csv")" -eq 14 ]
+then same_file "the exact column of show vs the single run" "$tmp/exact-run.csv" "$tmp/exact-show.csv"
+else bad "show of merged streams: no exact column: $(head -n 1 "$tmp/out")"; fi
 
 # The refusals: exit 2, one line, nothing written or changed.
 cp "$pv/s0.rec" "$pv/copy0.rec"
@@ -368,7 +389,30 @@ refused_kept "merge: an input and a link to it" "s3.rec is given twice \(the sam
 
 # --mix-seeds: another seed of the same run adds its streams.
 succeeds "merge --mix-seeds" "$MCSPEC" merge "$pv/s0.rec" "$pv/seed8.rec" --mix-seeds -o "$tmp/seeds.rec"
+"$MCSPEC" show "$tmp/seeds.rec" | sed -n 2p |
+    grep -q 'seed 8: stream 1 of 4 (trials 6..11 of 23); seed 9: stream 0 of 4 (trials 0..5 of 23)$' && ok ||
+    bad "merge --mix-seeds: '$("$MCSPEC" show "$tmp/seeds.rec" | sed -n 2p)'"
 refused "merge of a mixed record without --mix-seeds" "seeds.rec holds runs of several seeds: give --mix-seeds" \
     m "$tmp/seeds.rec" "$pv/s1.rec"
+
+# show with an importance function: given again, its checksum checked.
+for i in 0 2 3; do run4 --stream "$i" --importance "$pv/g.txt" --save "$pv/imp$i.rec" >/dev/null; done
+run4 --importance "$pv/g.txt" --csv >"$tmp/imp.csv"
+succeeds "merge of importance streams" "$MCSPEC" merge "$pv/imp3.rec" "$pv/imp1.rec" "$pv/imp0.rec" \
+    "$pv/imp2.rec" -o "$tmp/imp.rec"
+succeeds "show --importance" "$MCSPEC" show "$tmp/imp.rec" --importance "$pv/g.txt" --csv &&
+    same_file "show --importance of merged streams vs the single run" "$tmp/imp.csv" "$tmp/out"
+succeeds "show without --importance" "$MCSPEC" show "$tmp/imp.rec" --csv &&
+    { [ "$(head -n 1 "$tmp/out")" = freq,mean_re,mean_im,mean_stderr,power,power_stderr ] && ok ||
+      bad "show without --importance: header $(head -n 1 "$tmp/out")"; }
+"$MCSPEC" show "$tmp/imp.rec" | sed -n 3p | grep -q '^exact, closed: give --importance WEIGHTS' && ok ||
+    bad "show without --importance: no note saying how to get the predictions"
+refused "show --importance of other weights" \
+    "^mcspec show: $pv/g2.txt is not the importance function $tmp/imp.rec was drawn with \(its weights' CRC-32 is 0x[0-9a-f]{8}, the record's 0x[0-9a-f]{8}\)$" \
+    "$MCSPEC" show "$tmp/imp.rec" --importance "$pv/g2.txt"
+refused "show --importance of a record without one" "s0.rec was drawn without an importance function: drop --importance" \
+    "$MCSPEC" show "$pv/s0.rec" --importance "$pv/g.txt"
+refused "show --importance of a point-set record" "pts-a.rec holds no pattern run: --importance is for records of mcspec pattern" \
+    "$MCSPEC" show "$pv/pts-a.rec" --importance "$pv/g.txt"
 
 check_summary
