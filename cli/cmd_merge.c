@@ -361,7 +361,8 @@ static int survey_inputs(survey *m, const char **files, const char *output)
     }
     if (rc == 0)
         rc = no_file_twice(m);
-    if (rc == 0 && m->plain == 0u)
+    /* Among the inputs that have a provenance, even if others have none. */
+    if (rc == 0 && m->ref->source != MCS_IO_SOURCE_NONE)
         rc = no_trials_twice(m);
     return rc;
 }

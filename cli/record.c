@@ -2,8 +2,10 @@
 #include "record.h"
 #include "atomic.h"
 #include "cli.h"
+#include "streams.h"
 
 #include <errno.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -521,63 +523,69 @@ void cli_input_provenance(const char *name, uint32_t crc, uint64_t bytes,
                  name + len - (room - 3u));
 }
 
-/* "streams 0..3 of 4 (trials 0..10 of 11)", "stream 2 of 4 (trials ...)". */
+/* "streams 0..3 of 4 (trials 0..10 of 11)", "stream 2 of 4 (trials 6..8 of 11)":
+ * the trials of the range by the stream rule (streams.h). */
 static void streams_text(const mcs_io_provenance *prov, const mcs_io_streams *r, char *buf,
                          size_t size)
 {
     uint64_t first = 0u, count = 0u, last_first = 0u, last_count = 0u;
-    const uint64_t p = prov->streams, t = prov->trials;
-    const uint64_t base = t / p, extra = t % p;
-    first = r->first * base + (r->first < extra ? r->first : extra);
-    last_first = (r->end - 1u) * base + (r->end - 1u < extra ? r->end - 1u : extra);
-    last_count = base + (r->end - 1u < extra ? 1u : 0u);
-    count = last_first + last_count - first;
+    cli_stream_share(prov->trials, prov->streams, r->first, &first, &count);
+    cli_stream_share(prov->trials, prov->streams, r->end - 1u, &last_first, &last_count);
+    const unsigned long long p = prov->streams, t = prov->trials;
+    const unsigned long long a = first, b = last_first + last_count - 1u;
     if (r->end - r->first == 1u)
-        snprintf(buf, size, "stream %llu of %llu", (unsigned long long)r->first,
-                 (unsigned long long)p);
+        snprintf(buf, size, "stream %llu of %llu (trials %llu..%llu of %llu)",
+                 (unsigned long long)r->first, p, a, b, t);
     else
-        snprintf(buf, size, "streams %llu..%llu of %llu", (unsigned long long)r->first,
-                 (unsigned long long)r->end - 1u, (unsigned long long)p);
-    const size_t used = strlen(buf);
-    snprintf(buf + used, size - used, " (trials %llu..%llu of %llu)", (unsigned long long)first,
-             (unsigned long long)(first + count - 1u), (unsigned long long)t);
+        snprintf(buf, size, "streams %llu..%llu of %llu (trials %llu..%llu of %llu)",
+                 (unsigned long long)r->first, (unsigned long long)r->end - 1u, p, a, b, t);
+}
+
+/* printf onto the end of buf[size], which holds *used characters. */
+#if defined(__GNUC__)
+__attribute__((format(printf, 4, 5)))
+#endif
+static void append(char *buf, size_t size, size_t *used, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    const int w = vsnprintf(buf + *used, size - *used, fmt, ap);
+    va_end(ap);
+    if (w > 0)
+        *used = *used + (size_t)w < size ? *used + (size_t)w : size - 1u;
 }
 
 const char *cli_provenance_describe(const mcs_io_provenance *prov, char *buf, size_t size)
 {
     size_t used = 0u;
     buf[0] = '\0';
-#define ADD(...)                                                                  \
-    do {                                                                          \
-        int w_ = snprintf(buf + used, size - used, __VA_ARGS__);                  \
-        used = w_ < 0 ? used : used + (size_t)w_ < size ? used + (size_t)w_ : size - 1u; \
-    } while (0)
     if (prov->source == MCS_IO_SOURCE_POINTS) {
         if (prov->ninputs == 1u)
-            ADD("%s (%llu bytes, CRC-32 0x%08lx)", prov->input[0].name,
-                (unsigned long long)prov->input[0].bytes, (unsigned long)prov->input[0].crc);
+            append(buf, size, &used, "%s (%llu bytes, CRC-32 0x%08lx)", prov->input[0].name,
+                   (unsigned long long)prov->input[0].bytes, (unsigned long)prov->input[0].crc);
         else
-            ADD("%u inputs:", (unsigned)prov->ninputs);
+            append(buf, size, &used, "%u inputs:", (unsigned)prov->ninputs);
         for (size_t i = 0; prov->ninputs > 1u && i < prov->ninputs; ++i)
-            ADD("%s %s", i == 0u ? "" : ",", prov->input[i].name);
+            append(buf, size, &used, "%s %s", i == 0u ? "" : ",", prov->input[i].name);
         return buf;
     }
     if (prov->dim == 2u)
-        ADD("%s (2D), K = %llu points", prov->pattern, (unsigned long long)prov->k);
+        append(buf, size, &used, "%s (2D), K = %llu points", prov->pattern,
+               (unsigned long long)prov->k);
     else
-        ADD("%s, N = %llu bins, K = %llu samples", prov->pattern, (unsigned long long)prov->n,
-            (unsigned long long)prov->k);
+        append(buf, size, &used, "%s, N = %llu bins, K = %llu samples", prov->pattern,
+               (unsigned long long)prov->n, (unsigned long long)prov->k);
     if (prov->importance)
-        ADD(", importance weights CRC-32 0x%08lx", (unsigned long)prov->importance_crc);
+        append(buf, size, &used, ", importance weights CRC-32 0x%08lx",
+               (unsigned long)prov->importance_crc);
     for (size_t i = 0; i < prov->nranges; ++i) {
         char text[160];
         streams_text(prov, &prov->range[i], text, sizeof text);
         if (i == 0u || prov->range[i].seed != prov->range[i - 1u].seed)
-            ADD("%s seed %llu: %s", i == 0u ? "," : ";", (unsigned long long)prov->range[i].seed,
-                text);
+            append(buf, size, &used, "%s seed %llu: %s", i == 0u ? "," : ";",
+                   (unsigned long long)prov->range[i].seed, text);
         else
-            ADD(", %s", text);
+            append(buf, size, &used, ", %s", text);
     }
-#undef ADD
     return buf;
 }

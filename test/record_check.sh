@@ -387,6 +387,18 @@ refused_kept "merge: an input linking to OUT" "OUT $pv/s3.rec is the input $pv/l
 refused_kept "merge: an input and a link to it" "s3.rec is given twice \(the same file as .*link3.rec\)" \
     m "$pv/link3.rec" "$pv/s3.rec"
 
+# A version 1 record among version 2 ones: merged with the note, OUT without
+# provenance; the ones that have a provenance are still checked.
+"$MCSPEC" pattern stratified --n 16 --k 3 --trials 9 --seed 2 --save "$pv/n16.rec" >/dev/null
+cp "$pv/n16.rec" "$pv/n16-copy.rec"
+run "$MCSPEC" merge "$pv/n16.rec" "$CORPUS/spectrum-n16-t20.rec" -o "$tmp/old-and-new.rec"
+if [ "$rc" -eq 0 ] && [ "$(wc -l <"$tmp/err")" -eq 1 ] &&
+    grep -q "^mcspec merge: note: .*spectrum-n16-t20.rec is a version 1 record, with no provenance" "$tmp/err" &&
+    [ "$(od -An -tu1 -j8 -N1 "$tmp/old-and-new.rec" | tr -d ' ')" = 1 ]
+then ok; else bad "merge of a version 1 and a version 2 record: exit $rc, '$(cat "$tmp/err")'"; fi
+refused_kept "merge: the same stream twice beside a version 1 record" "n16.rec and .*n16-copy.rec both hold stream 0 of seed 2" \
+    m "$pv/n16.rec" "$CORPUS/spectrum-n16-t20.rec" "$pv/n16-copy.rec"
+
 # --mix-seeds: another seed of the same run adds its streams.
 succeeds "merge --mix-seeds" "$MCSPEC" merge "$pv/s0.rec" "$pv/seed8.rec" --mix-seeds -o "$tmp/seeds.rec"
 "$MCSPEC" show "$tmp/seeds.rec" | sed -n 2p |
