@@ -85,7 +85,7 @@ static const char help_2d[] =
     "                     mpirun -np P mcspec-mpi pattern ... runs stream i on rank i\n"
     "                     and gives the same bytes (docs/scaling.md)\n"
     "  --stream I         run stream I of the P alone, I = 0..P-1; `mcspec merge` of\n"
-    "                     the P files that --stream 0 .. P-1 --save (in that order)\n"
+    "                     the P files that --stream 0 .. P-1 --save (in any order)\n"
     "                     equals --streams P --save: a run split over batch jobs\n"
     "  --importance FILE  warp the samples through the importance function whose N\n"
     "                     weights (> 0, any scale; one per line, '#' lines skipped)\n"
@@ -106,7 +106,7 @@ static const char help_2d[] =
     "  --log              --plot: the power on a log y axis (--dim 2: the profile's);\n"
     "                     zeros and values below 1e-12 of the highest not drawn\n"
     "  --save FILE        also save the measured accumulator (spectrum, or\n"
-    "                     pointset2d with --dim 2) to FILE\n"
+    "                     pointset2d with --dim 2) and its provenance to FILE\n"
     "                     (docs/format.md; read by mcspec show and mcspec merge),\n"
     "                     written atomically: a temporary file beside FILE, flushed,\n"
     "                     then renamed, so FILE is never left half-written (FILE:\n"
@@ -198,8 +198,9 @@ static int parse(int argc, char **argv, pattern_opts *o)
     return rc != 0 ? rc : cli_check_outputs(CMD, o->save, o->plot);
 }
 
-/* The importance function of FILE for n bins into imp. */
-static int load_importance(const char *path, size_t n, mcs_importance *imp)
+/* The importance function of FILE for n bins into imp, and the checksum of
+ * its weights (cli_weights_crc) into *crc. */
+static int load_importance(const char *path, size_t n, mcs_importance *imp, uint32_t *crc)
 {
     double *w = NULL;
     size_t count = 0;
@@ -210,6 +211,8 @@ static int load_importance(const char *path, size_t n, mcs_importance *imp)
         rc = cli_fail(CMD, "%s holds %zu importance weights, but --n is %zu (one weight per bin)",
                       cli_input_name(path), count, n);
     mcs_status st = rc == 0 ? mcs_importance_init(imp, n, w) : MCS_OK;
+    if (rc == 0)
+        *crc = cli_weights_crc(n, w);
     free(w);
     if (st != MCS_OK)
         return cli_fail(CMD, "%s: not an importance function: %s", cli_input_name(path),
@@ -217,13 +220,30 @@ static int load_importance(const char *path, size_t n, mcs_importance *imp)
     return rc;
 }
 
-static int make_pattern(const pattern_opts *o, mcs_importance *imp, mcs_pattern *pat)
+/* What identifies the run of o (its importance checksum set by make_pattern). */
+static cli_run run_of(const pattern_opts *o)
+{
+    const cli_run run = {o->dim == 2u ? 2u : 1u, o->kind_name, o->dim == 2u ? 0u : o->n, o->k,
+                         0, 0u, o->seed, o->streams, o->trials};
+    return run;
+}
+
+/* The provenance of what o runs: stream I, or all P streams. */
+static void provenance(const pattern_opts *o, const cli_run *run, mcs_io_provenance *prov)
+{
+    const int one = o->stream < o->streams;
+    cli_run_provenance(run, one ? o->stream : 0u, one ? o->stream + 1u : o->streams, prov);
+}
+
+static int make_pattern(const pattern_opts *o, mcs_importance *imp, mcs_pattern *pat,
+                        cli_run *run)
 {
     const mcs_importance *g = NULL;
     if (o->importance != NULL) {
-        int rc = load_importance(o->importance, o->n, imp);
+        int rc = load_importance(o->importance, o->n, imp, &run->importance_crc);
         if (rc != 0)
             return rc;
+        run->importance = 1;
         g = imp;
     }
     mcs_status st = mcs_pattern_init(pat, (mcs_pattern_kind)cli_pattern_kind(o->kind_name), o->n, o->k, g);
@@ -306,7 +326,7 @@ static void progress_start(const pattern_opts *o, cli_progress *progress, char *
 /* Measures, then plots (if asked) and prints: nothing reaches stdout when
  * the plot fails. */
 static int measure_and_report(const pattern_opts *o, const mcs_pattern *pat,
-                              const cli_prediction *pred, mcs_spectrum *acc,
+                              const cli_prediction *pred, const cli_run *run, mcs_spectrum *acc,
                               cli_spectrum_row *rows)
 {
     char label[128];
@@ -325,7 +345,13 @@ static int measure_and_report(const pattern_opts *o, const mcs_pattern *pat,
     }
     if (rc == 0 && o->save != NULL) {
         cli_acc saved = {MCS_IO_KIND_SPECTRUM, acc};
-        rc = cli_acc_write(CMD, o->save, &saved);
+        mcs_io_provenance *prov = cli_alloc(CMD, 1, sizeof *prov);
+        rc = prov != NULL ? 0 : CLI_EXIT_FAIL;
+        if (rc == 0) {
+            provenance(o, run, prov);
+            rc = cli_acc_write_with(CMD, o->save, &saved, prov);
+        }
+        free(prov);
     }
     return rc;
 }
@@ -385,8 +411,15 @@ static int run_2d(const pattern_opts *o)
     }
     if (rc == 0)
         rc = report_2d(o, &src, acc.obj);
-    if (rc == 0 && o->save != NULL)
-        rc = cli_acc_write(CMD, o->save, &acc);
+    mcs_io_provenance *prov = rc == 0 && o->save != NULL ? cli_alloc(CMD, 1, sizeof *prov) : NULL;
+    if (rc == 0 && o->save != NULL && prov == NULL)
+        rc = CLI_EXIT_FAIL;
+    if (rc == 0 && o->save != NULL) {
+        const cli_run run = run_of(o);
+        provenance(o, &run, prov);
+        rc = cli_acc_write_with(CMD, o->save, &acc, prov);
+    }
+    free(prov);
     cli_acc_free(&acc);
     cli_source2d_free(&src);
     return rc;
@@ -406,9 +439,10 @@ int cli_cmd_pattern(int argc, char **argv)
     cli_prediction *pred = cli_alloc(CMD, 1, sizeof *pred);
     cli_spectrum_row *rows = cli_alloc(CMD, CLI_HALF_MAX, sizeof *rows);
     mcs_pattern pat;
+    cli_run run = run_of(&o);
     rc = imp != NULL && acc != NULL && pred != NULL && rows != NULL ? 0 : CLI_EXIT_FAIL;
     if (rc == 0)
-        rc = make_pattern(&o, imp, &pat);
+        rc = make_pattern(&o, imp, &pat, &run);
     if (rc == 0)
         rc = cli_predict_power(CMD, &pat, pred);
     /* Batch 1 (every trial its own unit): per-trial standard errors that a
@@ -416,7 +450,7 @@ int cli_cmd_pattern(int argc, char **argv)
     if (rc == 0 && (mcs_spectrum_init(acc, o.n) != MCS_OK || mcs_spectrum_set_batch(acc, 1u) != MCS_OK))
         rc = cli_internal(CMD, "mcs_spectrum_init failed");
     if (rc == 0)
-        rc = measure_and_report(&o, &pat, pred, acc, rows);
+        rc = measure_and_report(&o, &pat, pred, &run, acc, rows);
     free(rows);
     free(pred);
     free(acc);

@@ -1,5 +1,6 @@
 /* mcspec show: what a saved accumulator holds. */
 #include "cli.h"
+#include "input.h"
 #include "output.h"
 #include "plot.h"
 #include "predict.h"
@@ -16,13 +17,21 @@
 
 static const char help[] =
     "usage: mcspec show FILE [--csv] [--plot FILE [--log]] [--radial]\n"
+    "                   [--importance WEIGHTS]\n"
     "\n"
     "Prints the accumulator saved in FILE (by --save, mcspec merge or\n"
     "mcspec-mpi; the format is docs/format.md), after checking the whole record:\n"
-    "a truncated, corrupted or unknown file is refused with what is wrong.\n"
+    "a truncated, corrupted or unknown file is refused with what is wrong. Above\n"
+    "the table: where its trials came from (its provenance: the pattern run and\n"
+    "the streams it holds, or the point files it read; none in a version 1\n"
+    "record).\n"
     "\n"
     "spectrum  the half spectrum k = 0..N/2 as mcspec spectrum prints it: <S_k>,\n"
-    "          its standard error, <|S_k|^2> and its standard error (eq. 7, 14)\n"
+    "          its standard error, <|S_k|^2> and its standard error (eq. 7, 14);\n"
+    "          a record of a 1D pattern run (mcspec pattern --save, merge, mcspec-\n"
+    "          mpi) also the exact and closed-form predictions and their z-scores,\n"
+    "          as mcspec pattern prints them: the pattern is rebuilt from the\n"
+    "          provenance (with an importance function, give its weights again)\n"
     "moment    <S_k> (eq. 15) and <|S_k|^2> (eq. 16) from the primal moments, k =\n"
     "          0..N/2, same columns (the standard errors are empty: the moment\n"
     "          accumulator keeps sums, not spreads)\n"
@@ -52,6 +61,11 @@ static const char help[] =
     "               axis; zeros, and values below 1e-12 of the highest, are not\n"
     "               drawn\n"
     "  --radial     pointset2d: the radial profile instead of every wave vector\n"
+    "  --importance WEIGHTS  the importance function a pattern record was drawn\n"
+    "               with (the file given to mcspec pattern --importance), for the\n"
+    "               predictions; its weights must have the checksum the record\n"
+    "               keeps (exit 2 otherwise). Without it such a record shows the\n"
+    "               measured columns only\n"
     "  --help       this text\n"
     "\n"
     "Exit status: 0 on success, 2 on bad usage or input (one line on stderr).\n";
@@ -60,6 +74,7 @@ typedef struct {
     const char *path, *plot;
     int csv, radial;
     int log_y; /* --log */
+    const char *importance;
 } show_opts;
 
 static int parse(int argc, char **argv, show_opts *o)
@@ -69,6 +84,7 @@ static int parse(int argc, char **argv, show_opts *o)
         {"plot", CLI_OPT_STRING, &o->plot, 0, 0, 0},
         {"radial", CLI_OPT_FLAG, &o->radial, 0, 0, 0},
         {"log", CLI_OPT_FLAG, &o->log_y, 0, 0, 0},
+        {"importance", CLI_OPT_STRING, &o->importance, 0, 0, 0},
     };
     int rc = cli_parse_one(CMD, help, NULL, opts, CLI_COUNT(opts), argc, argv, &o->path);
     if (rc != CLI_PARSED)
@@ -135,9 +151,10 @@ static int autocorr_rows(const mcs_autocorr *a, cli_spectrum_row *rows, size_t *
 /* A point-set record: pointset (f = 0..F) or pointset2d (every wave vector
  * or, with --radial, the annuli); --plot draws the spectrum, or the image
  * and the radial profile. */
-static int show_pointset(const show_opts *o, const cli_acc *acc, const char *title)
+static int show_pointset(const show_opts *o, const cli_acc *acc, const char *title,
+                         const char *origin)
 {
-    const char *const notes[] = {title, "", NULL};
+    const char *const notes[] = {title, origin, "", NULL};
     const cli_ps_report rep = {o->csv, o->radial, o->plot, o->log_y, title,
                                acc->kind == MCS_IO_KIND_POINTSET ? "f = 0 not drawn" : NULL,
                                NULL, NULL, notes};
@@ -165,33 +182,143 @@ static void show_spectrum2d(const show_opts *o, const mcs_spectrum2d *s)
         }
 }
 
-static int show_spectrum(const show_opts *o, const cli_acc *acc, const char *title)
+/* What mcspec pattern predicted for the run a spectrum record's provenance
+ * names, rebuilt: the pattern (and with --importance its importance
+ * function, checked against the record's checksum) and cli_predict_power. */
+typedef struct {
+    int have;                /* the predictions below are set */
+    cli_prediction *pred;
+    double scale;            /* K/N, the z-scores' rounding scale, as mcspec pattern's */
+    char why[256];           /* when not: the note saying why */
+} show_theory;
+
+/* The importance function of o->importance for prov (n bins) into imp. */
+static int load_importance(const show_opts *o, const mcs_io_provenance *prov, size_t n,
+                           mcs_importance *imp)
+{
+    double *w = NULL;
+    size_t count = 0u;
+    int rc = cli_read_values(CMD, o->importance, "importance weight", 1, MCS_MAX_N, &w, &count);
+    if (rc != 0)
+        return rc;
+    const char *name = cli_input_name(o->importance);
+    const uint32_t crc = count == n ? cli_weights_crc(n, w) : 0u;
+    mcs_status st = MCS_OK;
+    if (count != n)
+        rc = cli_fail(CMD, "%s holds %zu importance weights, but %s has N = %zu bins", name,
+                      count, o->path, n);
+    else if (crc != prov->importance_crc)
+        rc = cli_fail(CMD, "%s is not the importance function %s was drawn with (its weights' "
+                      "CRC-32 is 0x%08lx, the record's 0x%08lx)", name, o->path,
+                      (unsigned long)crc, (unsigned long)prov->importance_crc);
+    else
+        st = mcs_importance_init(imp, n, w);
+    free(w);
+    if (rc == 0 && st != MCS_OK)
+        rc = cli_fail(CMD, "%s: not an importance function: %s", name, mcs_status_str(st));
+    return rc;
+}
+
+static int predict(const show_opts *o, const mcs_spectrum *acc, const mcs_io_provenance *prov,
+                   show_theory *th)
+{
+    const int drawn = prov->source == MCS_IO_SOURCE_PATTERN && prov->dim == 1u;
+    th->have = 0;
+    if (!drawn) {
+        snprintf(th->why, sizeof th->why, "%s", "");
+        return o->importance == NULL ? 0
+                                     : cli_fail(CMD, "%s holds no pattern run: --importance is "
+                                                "for records of mcspec pattern", o->path);
+    }
+    if (prov->n != acc->n)
+        return cli_fail(CMD, "%s: its provenance says N = %llu, its spectrum N = %zu: not a "
+                        "record mcspec writes", o->path, (unsigned long long)prov->n, acc->n);
+    if (!prov->importance && o->importance != NULL)
+        return cli_fail(CMD, "%s was drawn without an importance function: drop --importance",
+                        o->path);
+    if (prov->importance && o->importance == NULL) {
+        snprintf(th->why, sizeof th->why, "exact, closed: give --importance WEIGHTS, the weights "
+                 "the run was drawn with (CRC-32 0x%08lx)", (unsigned long)prov->importance_crc);
+        return 0;
+    }
+    const int kind = cli_pattern_kind(prov->pattern);
+    if (kind < 0) {
+        snprintf(th->why, sizeof th->why, "exact, closed: none (pattern '%s' unknown to this "
+                 "build)", prov->pattern);
+        return 0;
+    }
+    mcs_importance *imp = prov->importance ? cli_alloc(CMD, 1, sizeof *imp) : NULL;
+    if (prov->importance && imp == NULL)
+        return CLI_EXIT_FAIL;
+    int rc = prov->importance ? load_importance(o, prov, acc->n, imp) : 0;
+    mcs_pattern pat;
+    mcs_status st = rc == 0 ? mcs_pattern_init(&pat, (mcs_pattern_kind)kind, acc->n,
+                                               (size_t)prov->k, imp)
+                            : MCS_OK;
+    if (rc == 0 && st != MCS_OK)
+        rc = cli_fail(CMD, "%s: its provenance names a pattern this build cannot set up "
+                      "(%s, K = %llu): %s", o->path, prov->pattern, (unsigned long long)prov->k,
+                      mcs_status_str(st));
+    if (rc == 0)
+        rc = cli_predict_power(CMD, &pat, th->pred);
+    free(imp);
+    th->have = rc == 0;
+    th->scale = (double)prov->k / (double)acc->n;
+    return rc;
+}
+
+static int show_spectrum(const show_opts *o, const cli_acc *acc, const mcs_io_provenance *prov,
+                         const char *title, const char *origin)
 {
     cli_spectrum_row *rows = cli_alloc(CMD, CLI_HALF_MAX, sizeof *rows);
-    if (rows == NULL)
+    show_theory th = {0, cli_alloc(CMD, 1, sizeof *th.pred), 1.0, ""};
+    if (rows == NULL || th.pred == NULL) {
+        free(rows);
+        free(th.pred);
         return CLI_EXIT_FAIL;
+    }
     size_t nrows = 0u;
     int rc = 0;
     if (acc->kind == MCS_IO_KIND_SPECTRUM)
-        rc = cli_spectrum_rows(CMD, acc->obj, NULL, 1.0, rows, &nrows);
-    else if (acc->kind == MCS_IO_KIND_MOMENT)
+        rc = predict(o, acc->obj, prov, &th);
+    else if (o->importance != NULL)
+        rc = cli_fail(CMD, "%s holds no pattern run: --importance is for records of mcspec "
+                      "pattern", o->path);
+    if (rc == 0 && acc->kind == MCS_IO_KIND_SPECTRUM)
+        rc = cli_spectrum_rows(CMD, acc->obj, th.have ? th.pred : NULL, th.scale, rows, &nrows);
+    else if (rc == 0 && acc->kind == MCS_IO_KIND_MOMENT)
         rc = moment_rows(acc->obj, rows, &nrows);
-    else
+    else if (rc == 0)
         rc = autocorr_rows(acc->obj, rows, &nrows);
+    char exact[160], closed[160];
+    snprintf(exact, sizeof exact, "exact: %s", th.pred->exact_source);
+    snprintf(closed, sizeof closed, "closed form: %s", th.pred->closed_source);
     if (rc == 0 && o->plot != NULL) {
-        cli_plot_info info = {title, "k = 0 not drawn", NULL, NULL, NULL, o->log_y};
+        cli_plot_info info = {title, "k = 0 not drawn",
+                              th.have && th.pred->exact_source[0] != '\0' ? exact : NULL,
+                              th.have && th.pred->closed_source[0] != '\0' ? closed : NULL, NULL,
+                              o->log_y};
         rc = cli_plot_spectrum(CMD, o->plot, &info, rows, nrows);
     }
     if (rc == 0) {
         cli_note(o->csv, "%s", title);
+        cli_note(o->csv, "%s", origin);
+        if (th.have)
+            cli_note(o->csv, "exact: %s; closed: %s; z = (power - prediction) / power_stderr",
+                     th.pred->exact_source[0] != '\0' ? th.pred->exact_source : "none at this N",
+                     th.pred->closed_source[0] != '\0' ? th.pred->closed_source
+                                                       : "none in the note");
+        else if (th.why[0] != '\0')
+            cli_note(o->csv, "%s", th.why);
         cli_note(o->csv, "%s", "");
-        cli_print_spectrum(o->csv, 0, rows, nrows);
+        cli_print_spectrum(o->csv, th.have, rows, nrows);
     }
+    free(th.pred);
     free(rows);
     return rc;
 }
 
-static int show_welford(const show_opts *o, const mcs_welford *w)
+static int show_welford(const show_opts *o, const mcs_welford *w, const char *origin)
 {
     double v[4] = {0.0, 0.0, 0.0, 0.0};
     v[0] = cli_or_nan(mcs_welford_mean(w, &v[0]), &v[0]);
@@ -208,7 +335,7 @@ static int show_welford(const show_opts *o, const mcs_welford *w)
     }
     for (int i = 0; i < 4; ++i)
         cli_table_double(buf[i], sizeof buf[i], 13, v[i]);
-    printf("%s: saved welford (a scalar's mean and spread)\n\n", o->path);
+    printf("%s: saved welford (a scalar's mean and spread)\n%s\n\n", o->path, origin);
     printf("%20s %13s %13s %13s %13s\n", "count", "mean", "mean_stderr", "variance",
            "variance_stderr");
     printf("%20llu %s %s %s %s\n", (unsigned long long)w->count, buf[0], buf[1], buf[2],
@@ -216,21 +343,44 @@ static int show_welford(const show_opts *o, const mcs_welford *w)
     return 0;
 }
 
+/* The title's second line: where the trials came from. */
+static void origin_line(const mcs_io_provenance *prov, char *buf, size_t size)
+{
+    char text[1024];
+    if (prov->source == MCS_IO_SOURCE_PATTERN)
+        snprintf(buf, size, "drawn: %s", cli_provenance_describe(prov, text, sizeof text));
+    else if (prov->source == MCS_IO_SOURCE_POINTS)
+        snprintf(buf, size, "read from %s", cli_provenance_describe(prov, text, sizeof text));
+    else
+        snprintf(buf, size, "provenance: none (a format version 1 record)");
+}
+
 int cli_cmd_show(int argc, char **argv)
 {
-    show_opts o = {NULL, NULL, 0, 0, 0};
+    show_opts o = {NULL, NULL, 0, 0, 0, NULL};
     int rc = parse(argc, argv, &o);
     if (rc != 0)
         return rc < 0 ? CLI_EXIT_OK : rc;
     cli_acc acc = {MCS_IO_KIND_SPECTRUM, NULL};
-    rc = cli_acc_read(CMD, o.path, &acc);
-    if (rc != 0)
+    mcs_io_provenance *prov = cli_alloc(CMD, 1, sizeof *prov);
+    if (prov == NULL)
+        return CLI_EXIT_FAIL;
+    rc = cli_acc_read_with(CMD, o.path, &acc, prov, NULL);
+    if (rc != 0) {
+        free(prov);
         return rc;
-    char what[96], title[512];
+    }
+    char what[96], title[1600], origin[1100];
     cli_acc_describe(&acc, what, sizeof what);
+    origin_line(prov, origin, sizeof origin);
     snprintf(title, sizeof title, "%s: %s, %llu trials", o.path, what,
              (unsigned long long)cli_acc_count(&acc));
-    if (o.plot != NULL && (acc.kind == MCS_IO_KIND_WELFORD || acc.kind == MCS_IO_KIND_SPECTRUM2D))
+    const int spectrum_like = acc.kind == MCS_IO_KIND_SPECTRUM || acc.kind == MCS_IO_KIND_MOMENT ||
+                              acc.kind == MCS_IO_KIND_AUTOCORR;
+    if (o.importance != NULL && !spectrum_like)
+        rc = cli_fail(CMD, "%s holds no pattern run: --importance is for records of mcspec "
+                      "pattern", o.path);
+    else if (o.plot != NULL && (acc.kind == MCS_IO_KIND_WELFORD || acc.kind == MCS_IO_KIND_SPECTRUM2D))
         rc = cli_fail(CMD, "%s holds %s: no plot for it (drop --plot)", o.path, what);
     else if (o.radial && acc.kind != MCS_IO_KIND_POINTSET2D)
         rc = cli_fail(CMD, "%s holds %s: --radial is for pointset2d records", o.path, what);
@@ -239,14 +389,16 @@ int cli_cmd_show(int argc, char **argv)
     else if (o.plot != NULL && cli_plot_check_gnuplot(CMD) != 0)
         rc = CLI_EXIT_USAGE;
     else if (acc.kind == MCS_IO_KIND_WELFORD)
-        rc = show_welford(&o, acc.obj);
+        rc = show_welford(&o, acc.obj, origin);
     else if (acc.kind == MCS_IO_KIND_POINTSET || acc.kind == MCS_IO_KIND_POINTSET2D)
-        rc = show_pointset(&o, &acc, title);
+        rc = show_pointset(&o, &acc, title, origin);
     else if (acc.kind == MCS_IO_KIND_SPECTRUM2D) {
-        cli_note(o.csv, "%s\n", title);
+        cli_note(o.csv, "%s\n%s\n", title, origin);
         show_spectrum2d(&o, acc.obj);
-    } else
-        rc = show_spectrum(&o, &acc, title);
+    } else {
+        rc = show_spectrum(&o, &acc, prov, title, origin);
+    }
     cli_acc_free(&acc);
+    free(prov);
     return rc;
 }

@@ -8,6 +8,7 @@
 
 #include "mcspec.h"
 
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -256,6 +257,53 @@ static int report(const spectrum_opts *o, const cli_acc *acc, const cli_pointset
     return cli_report_pointset2d(CMD, &rep, acc->obj);
 }
 
+/* The CRC-32 and length of the bytes of fp, copied to copy when not NULL. */
+static int checksum(FILE *fp, FILE *copy, uint32_t *crc, uint64_t *bytes)
+{
+    static unsigned char buf[1u << 16];
+    size_t got;
+    *crc = 0u;
+    *bytes = 0u;
+    while ((got = fread(buf, 1u, sizeof buf, fp)) > 0u) {
+        *crc = cli_crc32_update(*crc, buf, got);
+        *bytes += got;
+        if (copy != NULL && fwrite(buf, 1u, got, copy) != got)
+            return -1;
+    }
+    return ferror(fp) ? -1 : 0;
+}
+
+/* --save of standard input: its bytes go to an unnamed temporary file that
+ * becomes standard input, so the reader reads what was checksummed (and
+ * names it <stdin> as ever). */
+static int checksum_stdin(uint32_t *crc, uint64_t *bytes)
+{
+    FILE *copy = tmpfile();
+    if (copy == NULL)
+        return cli_fail(CMD, "<stdin>: cannot keep a copy to checksum: %s", strerror(errno));
+    int bad = checksum(stdin, copy, crc, bytes) != 0 || fflush(copy) != 0;
+    const int err = errno;
+    if (!bad && dup2(fileno(copy), STDIN_FILENO) < 0)
+        bad = 1;
+    fclose(copy);
+    if (bad)
+        return cli_fail(CMD, "<stdin>: cannot read it to checksum: %s", strerror(err));
+    clearerr(stdin);
+    rewind(stdin);
+    return 0;
+}
+
+/* The CRC-32 and length of the file path, read again after the point sets. */
+static int checksum_path(const char *path, uint32_t *crc, uint64_t *bytes)
+{
+    FILE *fp = fopen(path, "rb");
+    int bad = fp == NULL || checksum(fp, NULL, crc, bytes) != 0;
+    const int err = errno;
+    if (fp != NULL)
+        fclose(fp);
+    return bad ? cli_fail(CMD, "cannot read '%s' to checksum it: %s", path, strerror(err)) : 0;
+}
+
 int cli_cmd_spectrum(int argc, char **argv)
 {
     spectrum_opts o = {DEFAULT_N, 0, 1, 0, 0, 0, 0, NULL, NULL, NULL, NULL, 0};
@@ -274,14 +322,29 @@ int cli_cmd_spectrum(int argc, char **argv)
                                "mcs_spectrum, MCS_SPECTRUM_MAX_SUM"};
     cli_pointset_stats stats;
     cli_progress progress;
+    /* The record's provenance: the input's checksum, of the bytes read. */
+    const int from_stdin = o.path == NULL || strcmp(o.path, "-") == 0;
+    uint32_t crc = 0u;
+    uint64_t bytes = 0u;
+    if (o.save != NULL && from_stdin)
+        rc = checksum_stdin(&crc, &bytes);
     cli_progress_init(&progress, !o.csv, CMD, "sets read", 0);
     add_ctx ctx = {&acc, cli_input_name(o.path), &stats};
-    rc = cli_read_pointsets(CMD, o.path, &fmt, add_set, &ctx, &stats, &progress);
+    if (rc == 0)
+        rc = cli_read_pointsets(CMD, o.path, &fmt, add_set, &ctx, &stats, &progress);
     cli_progress_end(&progress);
+    if (rc == 0 && o.save != NULL && !from_stdin)
+        rc = checksum_path(o.path, &crc, &bytes);
     if (rc == 0)
         rc = report(&o, &acc, &stats);
-    if (rc == 0 && o.save != NULL)
-        rc = cli_acc_write(CMD, o.save, &acc);
+    mcs_io_provenance *prov = rc == 0 && o.save != NULL ? cli_alloc(CMD, 1, sizeof *prov) : NULL;
+    if (rc == 0 && o.save != NULL && prov == NULL)
+        rc = CLI_EXIT_FAIL;
+    if (rc == 0 && o.save != NULL) {
+        cli_input_provenance(cli_input_name(o.path), crc, bytes, prov);
+        rc = cli_acc_write_with(CMD, o.save, &acc, prov);
+    }
+    free(prov);
     cli_acc_free(&acc);
     return rc;
 }

@@ -2,8 +2,10 @@
 #include "record.h"
 #include "atomic.h"
 #include "cli.h"
+#include "streams.h"
 
 #include <errno.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -142,21 +144,34 @@ void cli_acc_shape(const cli_acc *acc, size_t shape[2])
     }
 }
 
+static const char *describe(uint32_t kind_number, const uint64_t shape[2], char *buf, size_t size)
+{
+    const char *kind = mcs_io_kind_str(kind_number);
+    const char *a = kind[0] == 'a' ? "an" : "a"; /* "an autocorr record" */
+    const unsigned long long s0 = shape[0], s1 = shape[1];
+    if (kind_number == MCS_IO_KIND_WELFORD)
+        snprintf(buf, size, "%s %s record", a, kind);
+    else if (kind_number == MCS_IO_KIND_POINTSET || kind_number == MCS_IO_KIND_POINTSET2D)
+        snprintf(buf, size, "%s %s record of F = %llu", a, kind, s0);
+    else if (kind_number == MCS_IO_KIND_SPECTRUM2D)
+        snprintf(buf, size, "%s %s record of %llu x %llu bins", a, kind, s0, s1);
+    else
+        snprintf(buf, size, "%s %s record of N = %llu", a, kind, s0);
+    return buf;
+}
+
 const char *cli_acc_describe(const cli_acc *acc, char *buf, size_t size)
 {
     size_t shape[2];
     cli_acc_shape(acc, shape);
-    const char *kind = mcs_io_kind_str(acc->kind);
-    const char *a = kind[0] == 'a' ? "an" : "a"; /* "an autocorr record" */
-    if (acc->kind == MCS_IO_KIND_WELFORD)
-        snprintf(buf, size, "%s %s record", a, kind);
-    else if (acc->kind == MCS_IO_KIND_POINTSET || acc->kind == MCS_IO_KIND_POINTSET2D)
-        snprintf(buf, size, "%s %s record of F = %zu", a, kind, shape[0]);
-    else if (acc->kind == MCS_IO_KIND_SPECTRUM2D)
-        snprintf(buf, size, "%s %s record of %zu x %zu bins", a, kind, shape[0], shape[1]);
-    else
-        snprintf(buf, size, "%s %s record of N = %zu", a, kind, shape[0]);
-    return buf;
+    const uint64_t words[2] = {shape[0], shape[1]};
+    return describe(acc->kind, words, buf, size);
+}
+
+const char *cli_record_describe(const mcs_io_info *info, char *buf, size_t size)
+{
+    const uint64_t words[2] = {info->shape[0], info->shape_len > 1u ? info->shape[1] : 0u};
+    return describe(info->kind, words, buf, size);
 }
 
 /* The whole file into a new buffer. */
@@ -201,9 +216,10 @@ static int record_error(const char *cmd, const char *path, mcs_status st, const 
         return cli_fail(cmd, "%s: truncated (shorter than its header says)", path);
     case MCS_ERR_VERSION:
         return cli_fail(cmd, "%s: a record of another format version; this build reads "
-                        "version %u", path, (unsigned)MCS_IO_VERSION);
+                        "versions 1 to %u", path, (unsigned)MCS_IO_VERSION);
     case MCS_ERR_FORMAT:
-        return cli_fail(cmd, "%s: malformed record (its lengths do not fit its kind)", path);
+        return cli_fail(cmd, "%s: malformed record (its lengths do not fit its kind, or its "
+                        "provenance block breaks the format)", path);
     case MCS_ERR_CHECKSUM: return cli_fail(cmd, "%s: checksum mismatch (corrupted)", path);
     case MCS_ERR_KIND:
         return cli_fail(cmd, "%s: record kind %u, unknown to this build", path,
@@ -221,49 +237,112 @@ static int record_error(const char *cmd, const char *path, mcs_status st, const 
     }
 }
 
-int cli_acc_read(const char *cmd, const char *path, cli_acc *acc)
+/* The record file path into *buf (the caller frees it), its framing checked
+ * and its header, provenance and kind's operations read. */
+static int read_record(const char *cmd, const char *path, unsigned char **buf, size_t *len,
+                       mcs_io_info *info, mcs_io_provenance *prov, const kind_ops **ops)
+{
+    int rc = read_file(cmd, path, buf, len);
+    if (rc != 0)
+        return rc;
+    memset(info, 0, sizeof *info);
+    mcs_status st = mcs_io_peek(*len, *buf, info);
+    if (st == MCS_OK)
+        st = mcs_io_peek_provenance(*len, *buf, prov);
+    *ops = st == MCS_OK ? ops_of(info->kind) : NULL;
+    if (st == MCS_OK && *ops == NULL)
+        st = MCS_ERR_KIND;
+    if (st != MCS_OK) {
+        free(*buf);
+        *buf = NULL;
+        return record_error(cmd, path, st, info);
+    }
+    return 0;
+}
+
+/* The CRC-32 a record of len >= MCS_IO_CRC_BYTES bytes ends with. */
+static uint32_t record_crc(const unsigned char *buf, size_t len)
+{
+    uint32_t crc = 0u;
+    for (size_t i = 0; i < MCS_IO_CRC_BYTES; ++i)
+        crc |= (uint32_t)buf[len - MCS_IO_CRC_BYTES + i] << (8u * i);
+    return crc;
+}
+
+int cli_record_peek(const char *cmd, const char *path, mcs_io_info *info,
+                    mcs_io_provenance *prov, uint32_t *crc)
 {
     unsigned char *buf = NULL;
     size_t len = 0u;
-    int rc = read_file(cmd, path, &buf, &len);
+    const kind_ops *ops = NULL;
+    int rc = read_record(cmd, path, &buf, &len, info, prov, &ops);
     if (rc != 0)
         return rc;
-    mcs_io_info info;
-    memset(&info, 0, sizeof info);
-    mcs_status st = mcs_io_peek(len, buf, &info);
-    const kind_ops *ops = st == MCS_OK ? ops_of(info.kind) : NULL;
-    if (st == MCS_OK && ops == NULL)
-        st = MCS_ERR_KIND;
-    void *obj = st == MCS_OK ? cli_alloc(cmd, 1, ops->size) : NULL;
-    if (st == MCS_OK && obj == NULL) {
-        free(buf);
-        return CLI_EXIT_FAIL;
-    }
-    if (st == MCS_OK)
-        st = ops->load(obj, len, buf);
+    *crc = record_crc(buf, len);
     free(buf);
-    if (st != MCS_OK) {
-        free(obj);
-        return record_error(cmd, path, st, &info);
-    }
-    acc->kind = ops->kind;
-    acc->obj = obj;
     return 0;
+}
+
+int cli_acc_read_with(const char *cmd, const char *path, cli_acc *acc, mcs_io_provenance *prov,
+                      uint32_t *crc)
+{
+    unsigned char *buf = NULL;
+    size_t len = 0u;
+    mcs_io_info info;
+    const kind_ops *ops = NULL;
+    mcs_io_provenance *p = cli_alloc(cmd, 1, sizeof *p);
+    if (p == NULL)
+        return CLI_EXIT_FAIL;
+    int rc = read_record(cmd, path, &buf, &len, &info, p, &ops);
+    void *obj = rc == 0 ? cli_alloc(cmd, 1, ops->size) : NULL;
+    if (rc == 0 && obj == NULL)
+        rc = CLI_EXIT_FAIL;
+    mcs_status st = rc == 0 ? ops->load(obj, len, buf) : MCS_OK;
+    if (rc == 0 && crc != NULL)
+        *crc = record_crc(buf, len);
+    free(buf);
+    if (rc == 0 && st != MCS_OK)
+        rc = record_error(cmd, path, st, &info);
+    if (rc == 0) {
+        acc->kind = ops->kind;
+        acc->obj = obj;
+        if (prov != NULL)
+            memcpy(prov, p, sizeof *p);
+    } else {
+        free(obj);
+    }
+    free(p);
+    return rc;
+}
+
+int cli_acc_read(const char *cmd, const char *path, cli_acc *acc)
+{
+    return cli_acc_read_with(cmd, path, acc, NULL, NULL);
 }
 
 int cli_acc_save(const char *cmd, const cli_acc *acc, unsigned char **buf, size_t *len)
 {
+    return cli_acc_save_with(cmd, acc, NULL, buf, len);
+}
+
+int cli_acc_save_with(const char *cmd, const cli_acc *acc, const mcs_io_provenance *prov,
+                      unsigned char **buf, size_t *len)
+{
     const kind_ops *ops = ops_of(acc->kind);
-    size_t need = 0u;
+    size_t need = 0u, block = 0u;
     mcs_status st = ops != NULL ? ops->save(acc->obj, 0u, NULL, &need) : MCS_ERR_KIND;
     if (st == MCS_ERR_NOT_FINITE || st == MCS_ERR_INVARIANT)
         return cli_fail(cmd, "cannot save: the accumulator overflowed (%s)", mcs_status_str(st));
+    if (st == MCS_OK && prov != NULL)
+        st = mcs_io_provenance_bytes(prov, &block);
     if (st != MCS_OK)
         return cli_internal(cmd, "saving the accumulator failed: %s", mcs_status_str(st));
-    unsigned char *p = cli_alloc(cmd, 1, need);
+    unsigned char *p = cli_alloc(cmd, 1, need + block);
     if (p == NULL)
         return CLI_EXIT_FAIL;
     st = ops->save(acc->obj, need, p, len);
+    if (st == MCS_OK && block != 0u)
+        st = mcs_io_set_provenance(prov, need + block, p, len);
     if (st != MCS_OK) {
         free(p);
         return cli_internal(cmd, "saving the accumulator failed: %s", mcs_status_str(st));
@@ -274,9 +353,15 @@ int cli_acc_save(const char *cmd, const cli_acc *acc, unsigned char **buf, size_
 
 int cli_acc_write(const char *cmd, const char *path, const cli_acc *acc)
 {
+    return cli_acc_write_with(cmd, path, acc, NULL);
+}
+
+int cli_acc_write_with(const char *cmd, const char *path, const cli_acc *acc,
+                       const mcs_io_provenance *prov)
+{
     unsigned char *buf = NULL;
     size_t len = 0u;
-    int rc = cli_acc_save(cmd, acc, &buf, &len);
+    int rc = cli_acc_save_with(cmd, acc, prov, &buf, &len);
     if (rc == 0)
         rc = cli_write_atomic(cmd, path, buf, len);
     free(buf);
@@ -307,12 +392,18 @@ int cli_acc_merge(const char *cmd, cli_acc *dst, const cli_acc *src, const char 
 
 int cli_tree_push(const char *cmd, cli_merge_tree *tree, cli_acc *acc, const char *what)
 {
+    return cli_tree_push_weighted(cmd, tree, acc, 1u, what);
+}
+
+int cli_tree_push_weighted(const char *cmd, cli_merge_tree *tree, cli_acc *acc, uint64_t weight,
+                           const char *what)
+{
     if (tree->depth == sizeof tree->level / sizeof tree->level[0]) {
         cli_acc_free(acc);
         return cli_internal(cmd, "merge tree full");
     }
     tree->level[tree->depth] = *acc;
-    tree->leaves[tree->depth] = 1u;
+    tree->leaves[tree->depth] = weight;
     tree->depth += 1u;
     acc->obj = NULL;
     /* Carry: two equal subtrees side by side become one, left absorbs right. */
@@ -353,4 +444,148 @@ void cli_tree_free(cli_merge_tree *tree)
     for (size_t i = 0; i < tree->depth; ++i)
         cli_acc_free(&tree->level[i]);
     tree->depth = 0u;
+}
+
+/* ---- provenance ---- */
+
+void cli_run_provenance(const cli_run *run, uint64_t first, uint64_t end,
+                        mcs_io_provenance *prov)
+{
+    memset(prov, 0, sizeof *prov);
+    prov->source = MCS_IO_SOURCE_PATTERN;
+    prov->dim = run->dim;
+    snprintf(prov->pattern, sizeof prov->pattern, "%s", run->pattern);
+    prov->n = run->n;
+    prov->k = run->k;
+    prov->importance = run->importance != 0;
+    prov->importance_crc = run->importance != 0 ? run->importance_crc : 0u;
+    prov->streams = run->streams;
+    prov->trials = run->trials;
+    prov->nranges = 1u;
+    prov->range[0].seed = run->seed;
+    prov->range[0].first = first;
+    prov->range[0].end = end;
+}
+
+uint32_t cli_weights_crc(size_t n, const double *weights)
+{
+    /* Byte by byte, as the records are: the checksum of the same weights is
+     * the same on every host. */
+    unsigned char *bytes = malloc(n > 0u ? 8u * n : 1u);
+    uint32_t crc = 0u;
+    if (bytes == NULL) /* a checksum nobody matches; the mismatch is then said */
+        return 0xffffffffu;
+    for (size_t i = 0; i < n; ++i) {
+        uint64_t bits;
+        memcpy(&bits, &weights[i], sizeof bits);
+        for (size_t b = 0; b < 8u; ++b)
+            bytes[8u * i + b] = (unsigned char)(bits >> (8u * b));
+    }
+    (void)mcs_io_crc32(8u * n, bytes, &crc);
+    free(bytes);
+    return crc;
+}
+
+uint32_t cli_crc32_update(uint32_t crc, const void *data, size_t len)
+{
+    /* The reflected polynomial of mcs_io_crc32, a byte per step. */
+    static uint32_t table[256];
+    static int ready;
+    if (!ready) {
+        for (uint32_t i = 0; i < 256u; ++i) {
+            uint32_t c = i;
+            for (int b = 0; b < 8; ++b)
+                c = (c & 1u) ? 0xedb88320u ^ (c >> 1) : c >> 1;
+            table[i] = c;
+        }
+        ready = 1;
+    }
+    const unsigned char *p = data;
+    uint32_t c = crc ^ 0xffffffffu;
+    for (size_t i = 0; i < len; ++i)
+        c = (c >> 8) ^ table[(c ^ p[i]) & 0xffu];
+    return c ^ 0xffffffffu;
+}
+
+void cli_input_provenance(const char *name, uint32_t crc, uint64_t bytes,
+                          mcs_io_provenance *prov)
+{
+    const size_t room = MCS_IO_PROV_NAME_BYTES - 1u, len = strlen(name);
+    memset(prov, 0, sizeof *prov);
+    prov->source = MCS_IO_SOURCE_POINTS;
+    prov->ninputs = 1u;
+    prov->input[0].crc = crc;
+    prov->input[0].bytes = bytes;
+    if (len <= room) /* the end of a long path says most: its file name */
+        memcpy(prov->input[0].name, name, len);
+    else
+        snprintf(prov->input[0].name, sizeof prov->input[0].name, "...%s",
+                 name + len - (room - 3u));
+}
+
+/* "streams 0..3 of 4 (trials 0..10 of 11)", "stream 2 of 4 (trials 6..8 of 11)":
+ * the trials of the range by the stream rule (streams.h). */
+static void streams_text(const mcs_io_provenance *prov, const mcs_io_streams *r, char *buf,
+                         size_t size)
+{
+    uint64_t first = 0u, count = 0u, last_first = 0u, last_count = 0u;
+    cli_stream_share(prov->trials, prov->streams, r->first, &first, &count);
+    cli_stream_share(prov->trials, prov->streams, r->end - 1u, &last_first, &last_count);
+    const unsigned long long p = prov->streams, t = prov->trials;
+    const unsigned long long a = first, b = last_first + last_count - 1u;
+    if (r->end - r->first == 1u)
+        snprintf(buf, size, "stream %llu of %llu (trials %llu..%llu of %llu)",
+                 (unsigned long long)r->first, p, a, b, t);
+    else
+        snprintf(buf, size, "streams %llu..%llu of %llu (trials %llu..%llu of %llu)",
+                 (unsigned long long)r->first, (unsigned long long)r->end - 1u, p, a, b, t);
+}
+
+/* printf onto the end of buf[size], which holds *used characters. */
+#if defined(__GNUC__)
+__attribute__((format(printf, 4, 5)))
+#endif
+static void append(char *buf, size_t size, size_t *used, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    const int w = vsnprintf(buf + *used, size - *used, fmt, ap);
+    va_end(ap);
+    if (w > 0)
+        *used = *used + (size_t)w < size ? *used + (size_t)w : size - 1u;
+}
+
+const char *cli_provenance_describe(const mcs_io_provenance *prov, char *buf, size_t size)
+{
+    size_t used = 0u;
+    buf[0] = '\0';
+    if (prov->source == MCS_IO_SOURCE_POINTS) {
+        if (prov->ninputs == 1u)
+            append(buf, size, &used, "%s (%llu bytes, CRC-32 0x%08lx)", prov->input[0].name,
+                   (unsigned long long)prov->input[0].bytes, (unsigned long)prov->input[0].crc);
+        else
+            append(buf, size, &used, "%u inputs:", (unsigned)prov->ninputs);
+        for (size_t i = 0; prov->ninputs > 1u && i < prov->ninputs; ++i)
+            append(buf, size, &used, "%s %s", i == 0u ? "" : ",", prov->input[i].name);
+        return buf;
+    }
+    if (prov->dim == 2u)
+        append(buf, size, &used, "%s (2D), K = %llu points", prov->pattern,
+               (unsigned long long)prov->k);
+    else
+        append(buf, size, &used, "%s, N = %llu bins, K = %llu samples", prov->pattern,
+               (unsigned long long)prov->n, (unsigned long long)prov->k);
+    if (prov->importance)
+        append(buf, size, &used, ", importance weights CRC-32 0x%08lx",
+               (unsigned long)prov->importance_crc);
+    for (size_t i = 0; i < prov->nranges; ++i) {
+        char text[160];
+        streams_text(prov, &prov->range[i], text, sizeof text);
+        if (i == 0u || prov->range[i].seed != prov->range[i - 1u].seed)
+            append(buf, size, &used, "%s seed %llu: %s", i == 0u ? "," : ";",
+                   (unsigned long long)prov->range[i].seed, text);
+        else
+            append(buf, size, &used, ", %s", text);
+    }
+    return buf;
 }

@@ -6,7 +6,11 @@
  * - the load fails with one of the documented record statuses, agrees with
  *   mcs_io_peek on framing errors, and leaves the destination byte-identical; or
  * - the load succeeds, the loaded object saves back to exactly the input
- *   bytes, and every read-out it offers is finite.
+ *   bytes (with the input's provenance block set again, for a version 2
+ *   record: load keeps the statistics, not the block), and every read-out
+ *   it offers is finite.
+ * mcs_io_peek_provenance must agree with mcs_io_peek on every input, and a
+ * provenance it reads must give the same block back.
  * Each input is checked twice: as given, and with its last four bytes
  * replaced by the right CRC-32, so that mutations get past the checksum and
  * reach the kind, shape and value checks (otherwise almost every mutant
@@ -31,6 +35,7 @@ static mcs_pointset2d ps2, ps2_pristine;
 static mcs_spectrum2d sp2, sp2_pristine;
 static mcs_dft plan;
 static uint8_t saved[1u << 18]; /* above any record of the default capacities (85 KB) */
+static mcs_io_provenance prov;   /* the input's, when peek_provenance reads one */
 static double re[MCS_MAX_N], im[MCS_MAX_N];
 static double mat_re[MCS_MAX_COV_N * MCS_MAX_COV_N], mat_im[MCS_MAX_COV_N * MCS_MAX_COV_N];
 
@@ -308,6 +313,9 @@ static void check_kind(const kind_case *k, const uint8_t *data, size_t size, mcs
     if (!loaded(k->name, st, peek_st, k->dst, k->pristine, k->size))
         return;
     ok_or_die(k->save(k->dst, sizeof saved, saved, &len), k->name, "save");
+    if (prov.source != MCS_IO_SOURCE_NONE)
+        ok_or_die(mcs_io_set_provenance(&prov, sizeof saved, saved, &len), k->name,
+                  "set provenance");
     same_bytes(k->name, len, data, size);
     k->read_outs();
 }
@@ -318,6 +326,11 @@ static void check_all(const uint8_t *data, size_t size)
     const mcs_status peek_st = mcs_io_peek(size, data, &info);
     if (peek_st == MCS_OK && info.size != size)
         finding("peek", "record size is not the input size");
+    memset(&prov, 0, sizeof prov);
+    if (mcs_io_peek_provenance(size, data, &prov) != peek_st)
+        finding("peek", "peek and peek_provenance disagree");
+    if (peek_st == MCS_OK && (prov.source != MCS_IO_SOURCE_NONE) != (info.version == 2u))
+        finding("peek", "a provenance without version 2, or version 2 without one");
     for (size_t i = 0; i < sizeof kinds / sizeof kinds[0]; ++i)
         check_kind(&kinds[i], data, size, peek_st);
 }

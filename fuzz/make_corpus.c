@@ -1,6 +1,7 @@
 /* Writes the seed corpus of fuzz_load: small valid records of every kind,
  * from real accumulations with fixed seeds (so the bytes are the same on
- * every run and host). Usage: make_corpus DIR (make fuzz-corpus). */
+ * every run and host), and a few with a provenance block (format version
+ * 2). Usage: make_corpus DIR (make fuzz-corpus). */
 #include <stdio.h>
 #include <string.h>
 
@@ -86,6 +87,50 @@ static int one_case(const char *dir, size_t n, size_t k, size_t trials, uint64_t
     return bad;
 }
 
+/* The accumulators one_case left, saved with a provenance block (format
+ * version 2): a pattern run of two seeds and three stream ranges, two point
+ * files, a 2D run. */
+static int provenance_cases(const char *dir)
+{
+    static mcs_io_provenance prov;
+    size_t len = 0u;
+    memset(&prov, 0, sizeof prov);
+    prov.source = MCS_IO_SOURCE_PATTERN;
+    prov.dim = 1u;
+    (void)snprintf(prov.pattern, sizeof prov.pattern, "stratified");
+    prov.n = spec.n;
+    prov.k = 4u;
+    prov.importance = 1u;
+    prov.importance_crc = 0x5eed1234u;
+    prov.streams = 6u;
+    prov.trials = 30u;
+    prov.nranges = 3u;
+    prov.range[0] = (mcs_io_streams){3u, 0u, 1u};
+    prov.range[1] = (mcs_io_streams){3u, 2u, 4u};
+    prov.range[2] = (mcs_io_streams){5u, 1u, 6u};
+    int bad = check(mcs_io_save_spectrum(&spec, sizeof buf, buf, &len), "spectrum") ||
+              check(mcs_io_set_provenance(&prov, sizeof buf, buf, &len), "pattern provenance") ||
+              write_file(dir, "spectrum-n7-t5-pattern.rec", len);
+    (void)snprintf(prov.pattern, sizeof prov.pattern, "jittered");
+    prov.dim = 2u;
+    prov.n = 0u;
+    prov.importance = 0u;
+    prov.importance_crc = 0u;
+    prov.nranges = 1u;
+    bad |= check(mcs_io_save_pointset2d(&ps2, sizeof buf, buf, &len), "pointset2d") ||
+           check(mcs_io_set_provenance(&prov, sizeof buf, buf, &len), "2D provenance") ||
+           write_file(dir, "pointset2d-f7-t5-pattern.rec", len);
+    memset(&prov, 0, sizeof prov);
+    prov.source = MCS_IO_SOURCE_POINTS;
+    prov.ninputs = 2u;
+    prov.input[0] = (mcs_io_input){0x0badf00du, 123u, "a.txt"};
+    prov.input[1] = (mcs_io_input){0xc0ffee00u, 4567u, "...very/long/path/b.txt"};
+    bad |= check(mcs_io_save_pointset(&ps, sizeof buf, buf, &len), "pointset") ||
+           check(mcs_io_set_provenance(&prov, sizeof buf, buf, &len), "points provenance") ||
+           write_file(dir, "pointset-f7-t5-points.rec", len);
+    return bad;
+}
+
 int main(int argc, char **argv)
 {
     if (argc != 2) {
@@ -96,6 +141,7 @@ int main(int argc, char **argv)
     int bad = one_case(argv[1], 1u, 2u, 0u, 1u);
     bad |= one_case(argv[1], 2u, 3u, 1u, 2u);
     bad |= one_case(argv[1], 7u, 4u, 5u, 3u);
+    bad |= provenance_cases(argv[1]);
     bad |= one_case(argv[1], 16u, 6u, 20u, 4u);
     /* AUTO takes the PAIR path here: 2 closed batches of 16 and an open one
      * of 8, so the spectrum record has units with spread and open sums. */

@@ -9,7 +9,10 @@
  * bytes to r - 2^j, which loads them (every check of the loader) and merges
  * them into its own. That is the merge tree of cli/record.h, so the file
  * rank 0 writes has the bytes `mcspec pattern ... --streams P --save FILE`
- * writes. Every message carries a status: a rank that fails (bad input, a
+ * writes, provenance included: each rank's record says it holds stream i of
+ * the run, and every merge takes the union (mcs_io_provenance_merge), so
+ * rank 0's says streams 0..P-1, as the single process's does. Every message
+ * carries a status: a rank that fails (bad input, a
  * library error, a corrupt message) sends its failure up instead of data,
  * rank 0 writes nothing, and every rank exits with status 1 (2 for bad
  * usage). A rank that dies makes mpirun end the job; the file is written
@@ -151,6 +154,7 @@ typedef struct {
     int rank, nranks;
     const char *cmd;
     cli_acc acc;
+    mcs_io_provenance *prov; /* the streams acc holds */
     uint64_t failed, first_failed;
 } node;
 
@@ -168,7 +172,7 @@ static void send_up(node *me, int parent)
 {
     unsigned char *buf = NULL;
     size_t len = 0u;
-    if (me->failed == 0u && cli_acc_save(me->cmd, &me->acc, &buf, &len) != 0)
+    if (me->failed == 0u && cli_acc_save_with(me->cmd, &me->acc, me->prov, &buf, &len) != 0)
         mark_failed(me, 1u, (uint64_t)me->rank);
     uint64_t head[3] = {me->failed, me->first_failed, me->failed == 0u ? (uint64_t)len : 0u};
     MPI_Send(head, 3, MPI_UINT64_T, parent, TAG_HEAD, MPI_COMM_WORLD);
@@ -188,19 +192,32 @@ static void receive_from(node *me, int child)
     }
     unsigned char *buf = cli_alloc(me->cmd, 1, (size_t)head[2]);
     mcs_spectrum *other = cli_alloc(me->cmd, 1, sizeof *other);
+    mcs_io_provenance *prov = cli_alloc(me->cmd, 1, sizeof *prov);
     /* Receive even when out of memory, into nothing, so the sender is not left waiting. */
     MPI_Recv(buf, buf != NULL ? (int)head[2] : 0, MPI_BYTE, child, TAG_BYTES, MPI_COMM_WORLD,
              MPI_STATUS_IGNORE);
-    mcs_status st = buf != NULL && other != NULL ? mcs_io_load_spectrum(other, head[2], buf)
-                                                 : MCS_ERR_NULL;
+    mcs_status st = buf != NULL && other != NULL && prov != NULL
+                        ? mcs_io_load_spectrum(other, head[2], buf)
+                        : MCS_ERR_NULL;
+    if (st == MCS_OK)
+        st = mcs_io_peek_provenance(head[2], buf, prov);
     if (st != MCS_OK)
         cli_internal(me->cmd, "the record from rank %d is unusable: %s", child,
                      mcs_status_str(st));
+    /* The union of the streams, which must be disjoint pieces of one run. */
+    mcs_status union_st = st == MCS_OK && me->failed == 0u
+                              ? mcs_io_provenance_merge(me->prov, prov)
+                              : MCS_OK;
+    if (union_st != MCS_OK)
+        cli_internal(me->cmd, "the streams of rank %d do not join this rank's: %s", child,
+                     mcs_status_str(union_st));
     cli_acc theirs = {MCS_IO_KIND_SPECTRUM, other};
     char what[48];
     snprintf(what, sizeof what, "the record of rank %d", child);
-    if (st != MCS_OK || (me->failed == 0u && cli_acc_merge(me->cmd, &me->acc, &theirs, what) != 0))
+    if (st != MCS_OK || union_st != MCS_OK ||
+        (me->failed == 0u && cli_acc_merge(me->cmd, &me->acc, &theirs, what) != 0))
         mark_failed(me, 1u, (uint64_t)me->rank);
+    free(prov);
     free(other);
     free(buf);
 }
@@ -230,6 +247,15 @@ static void run_rank(node *me, const run_params *prm, const double *weights, dou
         rc = make_pattern(me->cmd, prm, weights, imp, &pat);
     if (rc == 0)
         rc = cli_acc_new_spectrum(me->cmd, (size_t)prm->n, &me->acc);
+    if (rc == 0 && me->prov == NULL)
+        rc = CLI_EXIT_FAIL; /* said by main's cli_alloc */
+    if (rc == 0) {
+        const cli_run run = {1u, mcs_pattern_kind_str((mcs_pattern_kind)prm->kind), prm->n,
+                             prm->k, prm->importance != 0u,
+                             prm->importance ? cli_weights_crc((size_t)prm->n, weights) : 0u,
+                             prm->seed, (uint64_t)me->nranks, prm->trials};
+        cli_run_provenance(&run, (uint64_t)me->rank, (uint64_t)me->rank + 1u, me->prov);
+    }
     const double t0 = MPI_Wtime();
     if (rc == 0)
         rc = cli_run_streams(me->cmd, &pat, prm->seed, prm->trials, (uint64_t)me->nranks,
@@ -252,7 +278,7 @@ static int finish(node *me, const char *save, const run_params *prm, double redu
         return cli_internal(CMD, "%llu rank%s failed (first: rank %llu); %s not written",
                             (unsigned long long)me->failed, me->failed == 1u ? "" : "s",
                             (unsigned long long)me->first_failed, save);
-    int rc = cli_acc_write(CMD, save, &me->acc);
+    int rc = cli_acc_write_with(CMD, save, &me->acc, me->prov);
     if (rc != 0)
         return CLI_EXIT_FAIL;
     printf("%s: spectrum record, N = %llu, %llu trials from %d rank%s\n", save,
@@ -305,7 +331,8 @@ int main(int argc, char **argv)
         MPI_Bcast(weights_buf, (int)prm.n, MPI_DOUBLE, 0, MPI_COMM_WORLD);
     char cmd[64];
     snprintf(cmd, sizeof cmd, "%s: rank %d", CMD, rank);
-    node me = {rank, nranks, cmd, {MCS_IO_KIND_SPECTRUM, NULL}, 0u, 0u};
+    node me = {rank, nranks, cmd, {MCS_IO_KIND_SPECTRUM, NULL},
+               cli_alloc(cmd, 1, sizeof(mcs_io_provenance)), 0u, 0u};
     double trial_s = 0.0;
     run_rank(&me, &prm, weights_buf, &trial_s);
     /* Time the reduction alone, not the wait for the slowest rank's trials. */
@@ -322,6 +349,7 @@ int main(int argc, char **argv)
         status = rank_s != NULL ? finish(&me, save, &prm, reduce_s, rank_s) : CLI_EXIT_FAIL;
     MPI_Bcast(&status, 1, MPI_INT, 0, MPI_COMM_WORLD);
     free(rank_s);
+    free(me.prov);
     cli_acc_free(&me.acc);
     fflush(stdout);
     MPI_Finalize();

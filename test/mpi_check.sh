@@ -7,7 +7,10 @@
 # `mpirun -np P mcspec-mpi pattern ...` against `mcspec pattern ... --streams P`
 # and against `mcspec merge` of the P files of `--stream I`, every entry of
 # `mcspec show --csv` within 1e-12 relative, and the bytes identical (the
-# three do the same merges in the same order). Then the failure paths: a rank
+# three do the same merges in the same order), the provenance of the mpi
+# record ('streams 0..P-1 of P', the same bytes as the single process's), and
+# mcspec show of it printing the single run's table, predictions included
+# (with --importance given again). Then the failure paths: a rank
 # that reports a failure, a rank that dies, and bad usage, each with a
 # non-zero exit, a message and no file (an old file of that name untouched).
 # Ends with a Unity-style "N Tests N Failures 0 Ignored" line.
@@ -76,7 +79,7 @@ check_run() {
             continue
         fi
         "$MCSPEC" pattern "$kind" --n "$n" --k "$k" --trials "$t" --seed "$seed" "$@" \
-            --streams "$p" --save "$work/one.rec" --csv >/dev/null ||
+            --streams "$p" --save "$work/one.rec" --csv >"$work/one.csv" ||
             { fail "$tag: mcspec pattern --streams failed"; continue; }
         files=
         i=0
@@ -92,6 +95,17 @@ check_run() {
             { fail "$tag: mcspec merge failed"; continue; }
         compare "$tag: mpi vs --streams" "$out" "$work/one.rec"
         compare "$tag: mpi vs merge of --stream files" "$out" "$work/merged.rec"
+        streams="streams 0..$((p - 1)) of $p"
+        [ "$p" -eq 1 ] && streams="stream 0 of 1"
+        origin=$("$MCSPEC" show "$out" | sed -n 2p)
+        case $origin in
+        "drawn: $kind, N = $n bins, K = $k samples,"*"seed $seed: $streams (trials 0..$((t - 1)) of $t)")
+            pass "$tag: the mpi record holds $streams" ;;
+        *) fail "$tag: the mpi record's provenance: '$origin'" ;;
+        esac
+        if "$MCSPEC" show "$out" "$@" --csv >"$work/show.csv" && cmp -s "$work/show.csv" "$work/one.csv"
+        then pass "$tag: mcspec show of the mpi record prints the single run's table"
+        else fail "$tag: mcspec show $* of the mpi record differs from mcspec pattern --csv"; fi
     done
 }
 

@@ -2,8 +2,10 @@
  *
  * A record is a fixed 32-byte header (magic, format version, kind, shape
  * length, trial count, payload length), the shape words, the payload as
- * little-endian IEEE-754 binary64 holding only the entries in use, and a
- * CRC-32 of everything before it. All fields are written byte by byte, so a
+ * little-endian IEEE-754 binary64 holding only the entries in use, in
+ * version 2 a provenance block (where the trials came from: a pattern run
+ * and its streams, or the input files), and a CRC-32 of everything before
+ * it. All fields are written byte by byte, so a
  * record does not depend on the host's byte order, the compiler or MCS_MAX_*:
  * a file saved on a laptop loads on a cluster node or a microcontroller whose
  * capacities hold its N, and merges there with the library's merge.
@@ -15,6 +17,13 @@
  * before it writes anything, so on any error the destination is
  * byte-identical and the status says what was wrong. Save refuses an object
  * that load would refuse, so every record save writes loads back.
+ *
+ * Provenance: mcs_io_save_* write a record without it (version 1, the bytes
+ * of every earlier build); mcs_io_set_provenance adds a block to a saved
+ * record (version 2), mcs_io_peek_provenance reads it back, and
+ * mcs_io_provenance_merge gives the provenance of a merge, refusing the
+ * merges that would count trials twice or mix patterns. Loading ignores the
+ * block (after checking it): an accumulator holds statistics, not history.
  *
  * Nothing here allocates or touches stdio; the caller reads and writes files. */
 #ifndef MCSPEC_IO_H
@@ -35,8 +44,10 @@
 extern "C" {
 #endif
 
-/* The format version this build writes and the only one it reads. */
-#define MCS_IO_VERSION 1u
+/* The newest format version, which this build reads with every earlier one:
+ * 2 is version 1 plus a provenance block. A record without provenance is
+ * written as version 1, so it loads in builds that know no other. */
+#define MCS_IO_VERSION 2u
 
 /* Bytes of the fixed header, and of the trailing CRC-32. */
 #define MCS_IO_HEADER_BYTES 32u
@@ -71,7 +82,7 @@ typedef enum {
 
 /* What mcs_io_peek reads from a header. */
 typedef struct {
-    uint32_t version;                   /* format version (MCS_IO_VERSION) */
+    uint32_t version;                   /* format version: 1, or 2 (with provenance) */
     uint32_t kind;                      /* an mcs_io_kind, or a kind this build does not know */
     uint32_t shape_len;                 /* shape words in use, <= MCS_IO_MAX_SHAPE */
     uint64_t shape[MCS_IO_MAX_SHAPE];   /* shape words; the rest 0 */
@@ -81,11 +92,13 @@ typedef struct {
 } mcs_io_info;
 
 /* Reads and checks the framing of the record in buf[len]: magic, version,
- * lengths (the record must fill buf exactly) and the CRC-32. It does not look
- * at the kind, the shape or the values, so it also describes records of kinds
- * this build does not know. MCS_ERR_NULL, MCS_ERR_MAGIC, MCS_ERR_TRUNCATED,
- * MCS_ERR_VERSION, MCS_ERR_FORMAT (shape_len above MCS_IO_MAX_SHAPE, or bytes
- * after the record), MCS_ERR_CHECKSUM. *info untouched on error. */
+ * lengths (the record must fill buf exactly), the CRC-32 and, in version 2,
+ * the provenance block. It does not look at the kind, the shape or the
+ * values, so it also describes records of kinds this build does not know.
+ * MCS_ERR_NULL, MCS_ERR_MAGIC, MCS_ERR_TRUNCATED, MCS_ERR_VERSION,
+ * MCS_ERR_FORMAT (shape_len above MCS_IO_MAX_SHAPE, bytes after the record,
+ * a provenance block that breaks the rules), MCS_ERR_CHECKSUM. *info
+ * untouched on error. */
 mcs_status mcs_io_peek(size_t len, const void *buf, mcs_io_info *info);
 
 /* Name of a kind ("spectrum", "moment", "autocorr", "welford", "pointset",
@@ -130,6 +143,116 @@ mcs_status mcs_io_load_welford(mcs_welford *acc, size_t len, const void *buf);
 mcs_status mcs_io_load_pointset(mcs_pointset *acc, size_t len, const void *buf);
 mcs_status mcs_io_load_pointset2d(mcs_pointset2d *acc, size_t len, const void *buf);
 mcs_status mcs_io_load_spectrum2d(mcs_spectrum2d *acc, size_t len, const void *buf);
+
+/* ---- Provenance (docs/format.md, "Provenance") ---------------------------- */
+
+/* Capacities of a provenance, part of the format (not build options): the
+ * stream ranges of a pattern record, the inputs of a point-set record, and
+ * the bytes of a pattern's and an input's name, each with its NUL. */
+#define MCS_IO_PROV_MAX_RANGES 32u
+#define MCS_IO_PROV_MAX_INPUTS 16u
+#define MCS_IO_PROV_PATTERN_BYTES 16u
+#define MCS_IO_PROV_NAME_BYTES 64u
+
+/* Bytes of the largest provenance block (16 inputs of 80 bytes after an
+ * 8-byte head; a pattern block is at most 64 + 24 * 32 = 832): a record
+ * with provenance is at most this much longer than mcs_io_save_* wrote it. */
+#define MCS_IO_PROV_MAX_BYTES (8u + 80u * MCS_IO_PROV_MAX_INPUTS)
+
+/* Where a record's trials came from. Numbers are part of the format. */
+typedef enum {
+    MCS_IO_SOURCE_NONE = 0,    /* not said: a version 1 record */
+    MCS_IO_SOURCE_PATTERN = 1, /* drawn from a named pattern, a run split into streams */
+    MCS_IO_SOURCE_POINTS = 2   /* point sets read from input files */
+} mcs_io_source;
+
+/* Streams first .. end - 1 of the run with this seed: stream i drew its
+ * trials from PCG32 seeded (initstate = seed, initseq = i), so two records
+ * holding the same (seed, i) hold the same trials. */
+typedef struct {
+    uint64_t seed;  /* the run's seed */
+    uint64_t first; /* first stream, < end */
+    uint64_t end;   /* one past the last stream, <= the run's streams */
+} mcs_io_streams;
+
+/* One input file of a point-set record. */
+typedef struct {
+    uint32_t crc;   /* mcs_io_crc32 of the file's bytes */
+    uint64_t bytes; /* its length in bytes */
+    char name[MCS_IO_PROV_NAME_BYTES]; /* its name as the writer gives it (mcspec: the path,
+                                        * shortened to its last 60 bytes after "..."),
+                                        * NUL-terminated; may be empty */
+} mcs_io_input;
+
+/* A record's provenance. For MCS_IO_SOURCE_PATTERN the fields up to range[]
+ * (the rest 0 when read), for MCS_IO_SOURCE_POINTS ninputs and input[] (the
+ * rest 0). The lists are in their canonical order, which makes the union of
+ * a set of records one value whatever the order of their merges:
+ * - range[]: sorted by (seed, first); two ranges of one seed neither overlap
+ *   nor touch (touching ones are one range), so the P streams of a run
+ *   merged in any order are the one range [0, P);
+ * - input[]: sorted by crc, no crc twice.
+ * Every call below checks these rules and the field rules given here
+ * (MCS_ERR_FORMAT). */
+typedef struct {
+    uint32_t source;                         /* an mcs_io_source */
+    /* MCS_IO_SOURCE_PATTERN: what was drawn, and how the run was split */
+    uint32_t dim;                            /* 1 (binned, N bins) or 2 (points in the square) */
+    char pattern[MCS_IO_PROV_PATTERN_BYTES]; /* its name ("stratified", "jittered"):
+                                              * printable ASCII, no space, NUL-terminated */
+    uint64_t n;                              /* bins N, >= 1 when dim = 1 */
+    uint64_t k;                              /* samples per trial K, >= 1 */
+    uint32_t importance;                     /* 1: warped by an importance function; 0: none */
+    uint32_t importance_crc;                 /* with importance, the CRC-32 of its N weights as
+                                              * mcspec read them, each as little-endian
+                                              * binary64; else 0 */
+    uint64_t streams;                        /* P >= 1, the streams the run was split into */
+    uint64_t trials;                         /* T >= P, the trials of the whole run (stream i
+                                              * took floor(T/P), one more for i < T mod P) */
+    uint32_t nranges;                        /* 1 .. MCS_IO_PROV_MAX_RANGES */
+    mcs_io_streams range[MCS_IO_PROV_MAX_RANGES]; /* the streams the record holds */
+    /* MCS_IO_SOURCE_POINTS */
+    uint32_t ninputs;                        /* 1 .. MCS_IO_PROV_MAX_INPUTS */
+    mcs_io_input input[MCS_IO_PROV_MAX_INPUTS]; /* the files the record's point sets came from */
+} mcs_io_provenance;
+
+/* Reads the provenance of the record in buf[len] into *prov: its block, or,
+ * for a version 1 record, source MCS_IO_SOURCE_NONE and every field 0. The
+ * framing is checked as mcs_io_peek does (the kind and values are not).
+ * MCS_ERR_NULL and the statuses of mcs_io_peek. *prov untouched on error. */
+mcs_status mcs_io_peek_provenance(size_t len, const void *buf, mcs_io_provenance *prov);
+
+/* Bytes the block of prov adds to a record (0 for MCS_IO_SOURCE_NONE): a
+ * record of len bytes from mcs_io_save_* needs len + *bytes with it.
+ * MCS_ERR_NULL, MCS_ERR_FORMAT (prov breaks the rules above). *bytes
+ * untouched on error. */
+mcs_status mcs_io_provenance_bytes(const mcs_io_provenance *prov, size_t *bytes);
+
+/* Gives the record in buf[*len] (either version, as mcs_io_save_* or this
+ * call wrote it) the provenance prov, in place: the block it had, if any, is
+ * replaced by prov's, the version becomes 2 and the CRC is rewritten; with
+ * source MCS_IO_SOURCE_NONE the block is removed and the record is version 1
+ * again, byte for byte as saved. *len gets the new size; cap is the bytes
+ * buf holds. The statuses of mcs_io_peek for buf[*len], MCS_ERR_NULL,
+ * MCS_ERR_FORMAT (prov breaks the rules), MCS_ERR_SPACE (cap below the new
+ * size). buf and *len untouched on error. */
+mcs_status mcs_io_set_provenance(const mcs_io_provenance *prov, size_t cap, void *buf,
+                                 size_t *len);
+
+/* dst <- the provenance of the merge of a record of dst with one of src: the
+ * union of their stream ranges (pattern) or inputs (points), in canonical
+ * order, so every order and tree of merges of a set of records gives the
+ * same provenance. Records of different seeds of one run may merge; a
+ * caller wanting one seed compares the seeds itself. MCS_ERR_NULL,
+ * MCS_ERR_FORMAT (dst or src breaks the rules), MCS_ERR_KIND (different
+ * sources, or MCS_IO_SOURCE_NONE: the union of an unknown is not known),
+ * MCS_ERR_MISMATCH (another pattern or run: dim, pattern, n, k, importance,
+ * importance_crc, streams or trials differ), MCS_ERR_ALIAS (the same trials
+ * in both: a stream of one seed, or an input crc, in dst and src; so also
+ * dst == src), MCS_ERR_SPACE (the union needs more than
+ * MCS_IO_PROV_MAX_RANGES ranges or MCS_IO_PROV_MAX_INPUTS inputs). *dst
+ * untouched on error. */
+mcs_status mcs_io_provenance_merge(mcs_io_provenance *dst, const mcs_io_provenance *src);
 
 #ifdef __cplusplus
 }

@@ -29,23 +29,9 @@ static const uint8_t io_magic[8] = {0x89u, 0x4du, 0x43u, 0x53u, 0x0du, 0x0au, 0x
 #define OFF_COUNT 16u
 #define OFF_PAYLOAD_LEN 24u
 
-static void put_le(uint8_t *p, uint64_t v, size_t bytes)
-{
-    for (size_t i = 0; i < bytes; ++i)
-        p[i] = (uint8_t)(v >> (8u * i));
-}
-
-static uint64_t get_le(const uint8_t *p, size_t bytes)
-{
-    uint64_t v = 0u;
-    for (size_t i = 0; i < bytes; ++i)
-        v |= (uint64_t)p[i] << (8u * i);
-    return v;
-}
-
 static double get_f64(const uint8_t *payload, size_t i)
 {
-    const uint64_t bits = get_le(payload + 8u * i, 8u);
+    const uint64_t bits = io_get_le(payload + 8u * i, 8u);
     double v;
     memcpy(&v, &bits, sizeof v);
     return v;
@@ -135,39 +121,63 @@ static size_t head_bytes(uint32_t shape_len)
     return (size_t)MCS_IO_HEADER_BYTES + 8u * (size_t)shape_len;
 }
 
-/* Magic, header, lengths (the record fills buf exactly), CRC. */
-static mcs_status frame(size_t len, const uint8_t *p, mcs_io_info *info)
+/* Version 1 and 2 records differ only by the provenance block of version 2,
+ * between the payload and the CRC; a record without provenance is version 1. */
+#define VERSION_PLAIN 1u
+
+/* Magic, header, lengths (the record fills buf exactly, a version 2 block
+ * included), CRC, then the block's contents; out->block gets the block's
+ * offset (0: none). */
+typedef struct {
+    mcs_io_info info;
+    size_t block, block_bytes;
+} io_frame;
+
+static mcs_status frame(size_t len, const uint8_t *p, io_frame *out)
 {
     const size_t magic_len = len < sizeof io_magic ? len : sizeof io_magic;
     if (memcmp(p, io_magic, magic_len) != 0)
         return MCS_ERR_MAGIC;
     if (len < (size_t)MCS_IO_HEADER_BYTES)
         return MCS_ERR_TRUNCATED;
-    if (get_le(p + OFF_VERSION, 2u) != MCS_IO_VERSION)
+    const uint64_t version = io_get_le(p + OFF_VERSION, 2u);
+    if (version != VERSION_PLAIN && version != MCS_IO_VERSION)
         return MCS_ERR_VERSION;
-    const uint64_t shape_len = get_le(p + OFF_SHAPE_LEN, 4u);
+    const uint64_t shape_len = io_get_le(p + OFF_SHAPE_LEN, 4u);
     if (shape_len > MCS_IO_MAX_SHAPE)
         return MCS_ERR_FORMAT;
     /* payload_len is untrusted: compare it with the bytes there are rather
      * than multiply it (no overflow for any value). */
     const size_t fixed = head_bytes((uint32_t)shape_len) + MCS_IO_CRC_BYTES;
-    const uint64_t payload_len = get_le(p + OFF_PAYLOAD_LEN, 8u);
+    const uint64_t payload_len = io_get_le(p + OFF_PAYLOAD_LEN, 8u);
     if (len < fixed || payload_len > (uint64_t)((len - fixed) / 8u))
         return MCS_ERR_TRUNCATED;
-    if ((uint64_t)(len - fixed) != 8u * payload_len)
+    const size_t block = head_bytes((uint32_t)shape_len) + 8u * (size_t)payload_len;
+    const size_t rest = len - fixed - 8u * (size_t)payload_len; /* the block's bytes */
+    if (version == VERSION_PLAIN && rest != 0u)
         return MCS_ERR_FORMAT;
+    if (version != VERSION_PLAIN) {
+        mcs_status st = mcs_io_block_frame(p + block, rest);
+        if (st != MCS_OK)
+            return st;
+    }
     const size_t body = len - MCS_IO_CRC_BYTES;
-    if (crc32_of(p, body) != (uint32_t)get_le(p + body, MCS_IO_CRC_BYTES))
+    if (crc32_of(p, body) != (uint32_t)io_get_le(p + body, MCS_IO_CRC_BYTES))
         return MCS_ERR_CHECKSUM;
-    memset(info, 0, sizeof *info);
-    info->version = MCS_IO_VERSION;
-    info->kind = (uint32_t)get_le(p + OFF_KIND, 2u);
+    if (version != VERSION_PLAIN && mcs_io_block_read(p + block, rest, NULL) != MCS_OK)
+        return MCS_ERR_FORMAT;
+    mcs_io_info *info = &out->info;
+    memset(out, 0, sizeof *out);
+    info->version = (uint32_t)version;
+    info->kind = (uint32_t)io_get_le(p + OFF_KIND, 2u);
     info->shape_len = (uint32_t)shape_len;
     for (size_t i = 0; i < info->shape_len; ++i)
-        info->shape[i] = get_le(p + MCS_IO_HEADER_BYTES + 8u * i, 8u);
-    info->count = get_le(p + OFF_COUNT, 8u);
+        info->shape[i] = io_get_le(p + MCS_IO_HEADER_BYTES + 8u * i, 8u);
+    info->count = io_get_le(p + OFF_COUNT, 8u);
     info->payload_len = payload_len;
     info->size = len;
+    out->block = version != VERSION_PLAIN ? block : 0u;
+    out->block_bytes = rest;
     return MCS_OK;
 }
 
@@ -175,11 +185,53 @@ mcs_status mcs_io_peek(size_t len, const void *buf, mcs_io_info *info)
 {
     if (buf == NULL || info == NULL)
         return MCS_ERR_NULL;
-    mcs_io_info tmp;
+    io_frame tmp;
     mcs_status st = frame(len, (const uint8_t *)buf, &tmp);
     if (st != MCS_OK)
         return st;
-    *info = tmp;
+    *info = tmp.info;
+    return MCS_OK;
+}
+
+mcs_status mcs_io_peek_provenance(size_t len, const void *buf, mcs_io_provenance *prov)
+{
+    if (buf == NULL || prov == NULL)
+        return MCS_ERR_NULL;
+    io_frame f;
+    mcs_status st = frame(len, (const uint8_t *)buf, &f);
+    if (st != MCS_OK)
+        return st;
+    if (f.block == 0u) {
+        memset(prov, 0, sizeof *prov);
+        prov->source = MCS_IO_SOURCE_NONE;
+        return MCS_OK;
+    }
+    return mcs_io_block_read((const uint8_t *)buf + f.block, f.block_bytes, prov);
+}
+
+mcs_status mcs_io_set_provenance(const mcs_io_provenance *prov, size_t cap, void *buf,
+                                 size_t *len)
+{
+    if (prov == NULL || buf == NULL || len == NULL)
+        return MCS_ERR_NULL;
+    io_frame f;
+    uint8_t *p = (uint8_t *)buf;
+    mcs_status st = frame(*len, p, &f);
+    size_t bytes = 0u;
+    if (st == MCS_OK)
+        st = mcs_io_block_size(prov, &bytes);
+    if (st != MCS_OK)
+        return st;
+    /* The record without its block ends where the block (or the CRC) starts. */
+    const size_t plain = f.block != 0u ? f.block : *len - MCS_IO_CRC_BYTES;
+    const size_t size = plain + bytes + MCS_IO_CRC_BYTES;
+    if (cap < size)
+        return MCS_ERR_SPACE;
+    io_put_le(p + OFF_VERSION, bytes != 0u ? MCS_IO_VERSION : VERSION_PLAIN, 2u);
+    if (bytes != 0u)
+        mcs_io_block_write(prov, p + plain);
+    io_put_le(p + plain + bytes, crc32_of(p, plain + bytes), MCS_IO_CRC_BYTES);
+    *len = size;
     return MCS_OK;
 }
 
@@ -255,7 +307,7 @@ static void visit(io_pass *pass, const io_field *field, size_t at)
     if (pass->out != NULL) {
         uint64_t bits;
         memcpy(&bits, &v, sizeof bits);
-        put_le(pass->out + 8u * pass->index, bits, 8u);
+        io_put_le(pass->out + 8u * pass->index, bits, 8u);
     } else if (pass->into != NULL) {
         store_value(pass->into, field, values->size[field->len], at, v);
     } else {
@@ -338,13 +390,13 @@ static void write_header(const io_kind *kind, const uint64_t *shape, uint64_t co
                          size_t payload, uint8_t *p)
 {
     memcpy(p, io_magic, sizeof io_magic);
-    put_le(p + OFF_VERSION, MCS_IO_VERSION, 2u);
-    put_le(p + OFF_KIND, kind->kind, 2u);
-    put_le(p + OFF_SHAPE_LEN, kind->shape_len, 4u);
-    put_le(p + OFF_COUNT, count, 8u);
-    put_le(p + OFF_PAYLOAD_LEN, payload, 8u);
+    io_put_le(p + OFF_VERSION, VERSION_PLAIN, 2u); /* no provenance */
+    io_put_le(p + OFF_KIND, kind->kind, 2u);
+    io_put_le(p + OFF_SHAPE_LEN, kind->shape_len, 4u);
+    io_put_le(p + OFF_COUNT, count, 8u);
+    io_put_le(p + OFF_PAYLOAD_LEN, payload, 8u);
     for (size_t i = 0; i < kind->shape_len; ++i)
-        put_le(p + MCS_IO_HEADER_BYTES + 8u * i, shape[i], 8u);
+        io_put_le(p + MCS_IO_HEADER_BYTES + 8u * i, shape[i], 8u);
 }
 
 mcs_status mcs_io_save(const io_kind *kind, const void *obj, size_t cap, void *buf, size_t *len)
@@ -377,38 +429,39 @@ mcs_status mcs_io_save(const io_kind *kind, const void *obj, size_t cap, void *b
     write_header(kind, shape, count, payload, p);
     io_pass writer = {&values, count, p + head, NULL, 0u, 0, 0};
     walk(&writer);
-    put_le(p + size - MCS_IO_CRC_BYTES, crc32_of(p, size - MCS_IO_CRC_BYTES), MCS_IO_CRC_BYTES);
+    io_put_le(p + size - MCS_IO_CRC_BYTES, crc32_of(p, size - MCS_IO_CRC_BYTES), MCS_IO_CRC_BYTES);
     *len = size;
     return MCS_OK;
 }
 
 mcs_status mcs_io_load(const io_kind *kind, void *obj, size_t len, const void *buf)
 {
-    mcs_io_info info;
+    io_frame f;
+    const mcs_io_info *info = &f.info;
     io_values values = {kind, {1u}, NULL, NULL};
     if (obj == NULL || buf == NULL)
         return MCS_ERR_NULL;
-    mcs_status st = frame(len, (const uint8_t *)buf, &info);
+    mcs_status st = frame(len, (const uint8_t *)buf, &f);
     if (st != MCS_OK)
         return st;
-    if (info.kind != kind->kind)
+    if (info->kind != kind->kind)
         return MCS_ERR_KIND;
-    if (info.shape_len != kind->shape_len)
+    if (info->shape_len != kind->shape_len)
         return MCS_ERR_FORMAT;
-    st = kind->sizes(info.shape, values.size);
+    st = kind->sizes(info->shape, values.size);
     if (st != MCS_OK)
         return st;
-    if (info.payload_len != (uint64_t)payload_len(kind, values.size))
+    if (info->payload_len != (uint64_t)payload_len(kind, values.size))
         return MCS_ERR_FORMAT;
     values.payload = (const uint8_t *)buf + head_bytes(kind->shape_len);
-    st = check_values(&values, info.count);
+    st = check_values(&values, info->count);
     if (st != MCS_OK)
         return st;
-    st = kind->init(obj, info.shape); /* leaves obj as it was on error */
+    st = kind->init(obj, info->shape); /* leaves obj as it was on error */
     if (st != MCS_OK)
         return st;
-    io_pass store = {&values, info.count, NULL, obj, 0u, 0, 0};
+    io_pass store = {&values, info->count, NULL, obj, 0u, 0, 0};
     walk(&store);
-    memcpy((unsigned char *)obj + kind->count_at, &info.count, sizeof info.count);
+    memcpy((unsigned char *)obj + kind->count_at, &info->count, sizeof info->count);
     return MCS_OK;
 }

@@ -13,6 +13,22 @@
 #include <stdint.h>
 #include "mcspec/io.h"
 
+/* Little-endian fields, byte by byte: neither the host's byte order nor its
+ * struct layout reaches the bytes. */
+static inline void io_put_le(uint8_t *p, uint64_t v, size_t bytes)
+{
+    for (size_t i = 0; i < bytes; ++i)
+        p[i] = (uint8_t)(v >> (8u * i));
+}
+
+static inline uint64_t io_get_le(const uint8_t *p, size_t bytes)
+{
+    uint64_t v = 0u;
+    for (size_t i = 0; i < bytes; ++i)
+        v |= (uint64_t)p[i] << (8u * i);
+    return v;
+}
+
 /* Rules a payload value obeys besides being finite (every value, with a zero
  * count, is 0: an empty accumulator holds nothing). */
 #define IO_RULE_NONNEG 1u /* >= 0: a sum of (products of) weights, a mean power, an M2 */
@@ -82,5 +98,26 @@ double mcs_io_value(const io_values *values, size_t i);
  * the object's count, the rules and the kind's invariants, framing. */
 mcs_status mcs_io_save(const io_kind *kind, const void *obj, size_t cap, void *buf, size_t *len);
 mcs_status mcs_io_load(const io_kind *kind, void *obj, size_t len, const void *buf);
+
+/* ---- the provenance block of a version 2 record (io_provenance.c) ----
+ * It sits between the payload and the CRC; its first 4 bytes are its length. */
+
+/* The framing of the rest bytes at p between a version 2 record's payload
+ * and its CRC: MCS_ERR_TRUNCATED (no room for the length field, or fewer
+ * bytes than it says), MCS_ERR_FORMAT (more bytes, or a length below the
+ * block's 8-byte head). Read before the CRC, as the header's lengths are. */
+mcs_status mcs_io_block_frame(const uint8_t *p, size_t rest);
+
+/* Checks the block of `bytes` bytes at p (framed) against the rules of
+ * docs/format.md and, when prov is not NULL, reads it into *prov (zeroed
+ * first). MCS_ERR_FORMAT; *prov untouched on error. */
+mcs_status mcs_io_block_read(const uint8_t *p, size_t bytes, mcs_io_provenance *prov);
+
+/* Bytes of the block of prov (0 for MCS_IO_SOURCE_NONE), after checking prov
+ * against the rules: MCS_ERR_FORMAT. *bytes untouched on error. */
+mcs_status mcs_io_block_size(const mcs_io_provenance *prov, size_t *bytes);
+
+/* Writes the block of prov, which mcs_io_block_size accepted, to p. */
+void mcs_io_block_write(const mcs_io_provenance *prov, uint8_t *p);
 
 #endif /* MCSPEC_IO_INTERNAL_H */
