@@ -208,7 +208,7 @@ static MCS_ALWAYS_INLINE double nearest_grid(const grid *g, mcs_points_ p, size_
     size_t home[MAXD];
     for (size_t a = 0; a < g->dim; ++a)
         home[a] = axis_cell(mcs_point_(p, i * g->dim + a), g->m);
-    double best = INFINITY;
+    double best = HUGE_VAL;
     for (size_t r = 0;; ++r) {
         best = scan_ring(g, p, i, home, r, best);
         const double reach = ((double)r - REACH_MARGIN) / (double)g->m;
@@ -219,7 +219,7 @@ static MCS_ALWAYS_INLINE double nearest_grid(const grid *g, mcs_points_ p, size_
 
 static MCS_ALWAYS_INLINE double nearest_brute(mcs_points_ p, size_t dim, size_t k, size_t i)
 {
-    double best = INFINITY;
+    double best = HUGE_VAL;
     for (size_t j = 0; j < k; ++j) {
         if (j == i)
             continue;
@@ -271,7 +271,7 @@ static MCS_ALWAYS_INLINE void statistics(const set_view *s, size_t side, double 
 {
     const size_t k = s->k, dim = s->dim;
     const mcs_points_ p = s->p;
-    double mn = INFINITY, sum = 0.0;
+    double mn = HUGE_VAL, sum = 0.0;
     if (side > 0u) {
         grid g;
         g.dim = dim;
