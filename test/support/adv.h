@@ -201,6 +201,7 @@ void adv_refine_rows(adv_row *rows, size_t nrows);
 int measures_work_of_exactly_the_queried_size_at_any_alignment_is_enough(const adv_val *a);
 int measures_overlapping_buffers_are_refused_unchanged(const adv_val *a);
 int nufft_edited_plan_headers_are_refused_unchanged(const adv_val *a);
+int nufft_size_accepts_the_edges_of_tol_and_freq_and_no_more(const adv_val *a);
 int io_provenances_breaking_a_rule_are_refused_unchanged(const adv_val *a);
 
 /* Objects (adv_objects.c). */
