@@ -508,6 +508,7 @@ static const scenario scenarios[] = {
     SCENARIO(measures_overlapping_buffers_are_refused_unchanged, 0),
     SCENARIO(nufft_edited_plan_headers_are_refused_unchanged, 0),
     SCENARIO(nufft_size_accepts_the_edges_of_tol_and_freq_and_no_more, 0),
+    SCENARIO(io_provenances_breaking_a_rule_are_refused_unchanged, 0),
 };
 
 static const scenario *current_scenario;
