@@ -131,7 +131,8 @@ static void prov_build(int ov, int v, int s, mcs_io_provenance *p)
         p->source = MCS_IO_SOURCE_POINTS;
         p->ninputs = ov == OV_BIG ? MCS_IO_PROV_MAX_INPUTS : 2u;
         for (uint32_t i = 0; i < p->ninputs; ++i) {
-            p->input[i].crc = ov == OV_BIG ? 0x20000u + 2u * i : (i + 1u) * 0x1000u + 16u * (uint32_t)own;
+            p->input[i].crc =
+                ov == OV_BIG ? 0x20000u + 2u * i : (i + 1u) * 0x1000u + 16u * (uint32_t)own;
             p->input[i].bytes = 100u + i;
             memcpy(p->input[i].name, names[i % 2], strlen(names[i % 2]));
         }
@@ -252,7 +253,9 @@ static const char *meas_variant_name(int type, int v)
  * a plan's output of 2 (2F + 1)^d doubles. */
 static size_t meas_state_n(int type, int ov)
 {
-    return type == T_NUFFT ? nufft_freq(ov, 0) : type == T_DISC || type == T_SPACING ? meas_dim(type, ov) : 0u;
+    if (type == T_NUFFT)
+        return nufft_freq(ov, 0);
+    return type == T_DISC || type == T_SPACING ? meas_dim(type, ov) : 0u;
 }
 
 static size_t meas_state_nn(int type, int ov, int v)

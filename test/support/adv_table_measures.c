@@ -245,7 +245,9 @@ static int t_discrepancy_exact_random(const adv_val *a)
 /* The least distance is at most the mean of the nearest ones. */
 static int distances_sound(int st, const double *out)
 {
-    return st == MCS_OK && !(out[0] <= out[1]) ? broken("min %.17g above avg min %.17g", out[0], out[1]) : st;
+    if (st == MCS_OK && !(out[0] <= out[1]))
+        return broken("min %.17g above avg min %.17g", out[0], out[1]);
+    return st;
 }
 
 static int t_spacing_statistic_str(const adv_val *a)
@@ -369,7 +371,8 @@ static const double *keep_points(const void *p, int is_f)
     for (int g = 0; p != NULL && g < adv_nregs; ++g)
         if (adv_arena + adv_regs[g].off == (const unsigned char *)p)
             n = adv_regs[g].bytes / sizeof(double);
-    n = n < sizeof points_before / sizeof points_before[0] ? n : sizeof points_before / sizeof points_before[0];
+    const size_t cap = sizeof points_before / sizeof points_before[0];
+    n = n < cap ? n : cap;
     for (size_t j = 0; j < n; ++j)
         points_before[j] = coord(p, is_f, j);
     return points_before;
@@ -649,11 +652,13 @@ int measures_overlapping_buffers_are_refused_unchanged(const adv_val *a)
     keep_pool();
     if ((st = refused(mcs_discrepancy_star(k, pts, over, star_need, out), "star, work on the points")))
         return st;
-    if ((st = refused(mcs_spacing_distances(k, 2u, pts, over, need, out), "distances, work on the points")))
+    if ((st = refused(mcs_spacing_distances(k, 2u, pts, over, need, out),
+                      "distances, work on the points")))
         return st;
     (void)mcs_discrepancy_init(dacc, 2u);
     keep_pool();
-    if ((st = refused(mcs_discrepancy_add(dacc, k, pts, over, star_need), "discrepancy add, work on the points")))
+    if ((st = refused(mcs_discrepancy_add(dacc, k, pts, over, star_need),
+                      "discrepancy add, work on the points")))
         return st;
     if ((st = refused(mcs_discrepancy_add(dacc, k, pts, pool + 16384u - 64u, star_need),
                       "discrepancy add, work on the accumulator")))
@@ -662,7 +667,8 @@ int measures_overlapping_buffers_are_refused_unchanged(const adv_val *a)
     keep_pool();
     if ((st = refused(mcs_spacing_add(sacc, k, pts, over, need), "spacing add, work on the points")))
         return st;
-    if ((st = refused(mcs_spacing_add(sacc, k, pts, pool + 16384u - 64u, need), "spacing add, work on the accumulator")))
+    if ((st = refused(mcs_spacing_add(sacc, k, pts, pool + 16384u - 64u, need),
+                      "spacing add, work on the accumulator")))
         return st;
 
     /* The plan: a header inside its buffer; points or c in the buffer or on
@@ -675,7 +681,8 @@ int measures_overlapping_buffers_are_refused_unchanged(const adv_val *a)
         (void)mcs_nufft_size(dim, 8u, 1e-9, &bytes);
         memset(pool, 0x5A, sizeof pool);
         keep_pool();
-        if ((st = refused(mcs_nufft_init(inside, dim, 8u, 1e-9, mem, bytes), "init, the plan in its buffer")))
+        if ((st = refused(mcs_nufft_init(inside, dim, 8u, 1e-9, mem, bytes),
+                          "init, the plan in its buffer")))
             return st;
         if (mcs_nufft_init(plan, dim, 8u, 1e-9, mem, bytes) != MCS_OK)
             return broken("no plan");
@@ -690,8 +697,8 @@ int measures_overlapping_buffers_are_refused_unchanged(const adv_val *a)
         if ((st = refused(mcs_nufft_type1(plan, pts, 10u, (double *)(void *)(pool + 16384u - 64u)),
                           "type1, c on the plan")))
             return st;
-        if ((st = refused(mcs_nufft_type1(plan, (const double *)(const void *)(pool + 16384u + 64u), 1u, out),
-                          "type1, points on the plan")))
+        const double *on_plan = (const double *)(const void *)(pool + 16384u + 64u);
+        if ((st = refused(mcs_nufft_type1(plan, on_plan, 1u, out), "type1, points on the plan")))
             return st;
     }
     return MCS_OK;
