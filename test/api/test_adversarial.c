@@ -30,7 +30,7 @@ void tearDown(void) {}
  * label and, if why is not NULL, its failure message holds why. Rows matched
  * without a message (hangs) are not even run under ADVERSARIAL_KNOWN=skip;
  * the others run and their failure is excused if it is the known one. Items
- * above 100 are the new findings N1-N3 of this table and the fuzzer (their
+ * above 100 are the new findings N1-N5 of this table and the fuzzer (their
  * regression tests below say what they are). */
 
 typedef struct {
@@ -39,6 +39,9 @@ typedef struct {
 } known_row;
 
 static const known_row known[] = {
+    {"mcs_discrepancy_add", "acc=count=UINT64_MAX", "changed work", 104},
+    {"mcs_spacing_add", "acc=count=UINT64_MAX", "changed work", 104},
+    {"mcs_spacing_work_size", "k=SIZE_MAX", NULL, 105},
     {NULL, NULL, NULL, 0},
 };
 
@@ -79,6 +82,7 @@ static void run_rows(const adv_fn *fn)
 {
     size_t n = adv_rows(fn, rows, MAX_ROWS), kept = 0;
     TEST_ASSERT_TRUE_MESSAGE(n < MAX_ROWS, "row buffer too small");
+    adv_refine_rows(rows, n);
     for (size_t i = 0; i < n; ++i) {
         const known_row *k = known_of(&rows[i], NULL);
         if (skip_known && k != NULL && k->why == NULL)
@@ -427,6 +431,56 @@ static int n3_a_loaded_moment_reads_out_like_the_saved_one(const adv_val *a)
     return MCS_OK;
 }
 
+/* N4: mcs_discrepancy_add and mcs_spacing_add compute the set's measures
+ * in the caller's work (the star's sorted copy, the grid) before
+ * mcs_welford_add finds the counts at MCS_MAX_COUNT: MCS_ERR_COUNT with the
+ * work written, where a refused call changes nothing. */
+static int n4_a_measure_add_refused_for_its_count_leaves_its_work_alone(const adv_val *a)
+{
+    static mcs_discrepancy dacc;
+    static mcs_spacing sacc;
+    static unsigned char work[MCS_DISCREPANCY_STAR_WORK_SIZE(64)], before[sizeof work];
+    static double pts[128];
+    (void)a;
+    for (int j = 0; j < 128; ++j)
+        pts[j] = fmod(0.6180339887 * j + 0.05, 1.0);
+    mcs_discrepancy_init(&dacc, 2u);
+    mcs_spacing_init(&sacc, 2u);
+    mcs_discrepancy_add(&dacc, 64u, pts, work, sizeof work);
+    mcs_spacing_add(&sacc, 64u, pts, work, sizeof work);
+    dacc.inv_k.count = MCS_MAX_COUNT;
+    for (int m = 0; m < MCS_DISCREPANCY_MEASURES; ++m)
+        dacc.d2[m].count = MCS_MAX_COUNT;
+    sacc.stat[0].count = sacc.stat[1].count = MCS_MAX_COUNT;
+    for (int which = 0; which < 2; ++which) {
+        memset(work, 0x5A, sizeof work);
+        memcpy(before, work, sizeof work);
+        int st = which == 0 ? mcs_discrepancy_add(&dacc, 64u, pts, work, sizeof work)
+                            : mcs_spacing_add(&sacc, 64u, pts, work, sizeof work);
+        if (st == MCS_OK)
+            return broken("%s: MCS_OK past MCS_MAX_COUNT", which == 0 ? "discrepancy" : "spacing");
+        if (memcmp(work, before, sizeof work) != 0)
+            return broken("%s_add: %s with its work written", which == 0 ? "discrepancy" : "spacing",
+                          mcs_status_str((mcs_status)st));
+    }
+    return MCS_OK;
+}
+
+/* N5: mcs_spacing_work_size's grid side, m = (size_t)pow(k, 1/d) and then
+ * ++m while power_sat(m + 1, d) <= k, never stops for k = SIZE_MAX (the
+ * saturated power is SIZE_MAX <= k) in any d, nor in 1D for k above
+ * SIZE_MAX - 1024 (pow gives 2^64, past size_t: the cast is undefined);
+ * mcs_spacing_distances and _add take the same path for such k in 1D. */
+static int n5_spacing_work_size_of_any_k_returns(const adv_val *a)
+{
+    size_t bytes = 0;
+    (void)a;
+    for (size_t d = 1u; d <= MCS_SPACING_MAX_DIM; ++d)
+        (void)mcs_spacing_work_size(d, SIZE_MAX, &bytes);
+    (void)mcs_spacing_work_size(1u, SIZE_MAX - 1000u, &bytes);
+    return MCS_OK;
+}
+
 typedef struct {
     const char *name;
     adv_thunk fn;
@@ -448,6 +502,13 @@ static const scenario scenarios[] = {
     SCENARIO(n1_pattern2d_permute_is_a_permutation_for_every_key, 0),
     SCENARIO(n2_annulus_read_outs_of_any_radius_return, 0),
     SCENARIO(n3_a_loaded_moment_reads_out_like_the_saved_one, 0),
+    SCENARIO(n4_a_measure_add_refused_for_its_count_leaves_its_work_alone, 104),
+    SCENARIO(n5_spacing_work_size_of_any_k_returns, 105),
+    SCENARIO(measures_work_of_exactly_the_queried_size_at_any_alignment_is_enough, 0),
+    SCENARIO(measures_overlapping_buffers_are_refused_unchanged, 0),
+    SCENARIO(nufft_edited_plan_headers_are_refused_unchanged, 0),
+    SCENARIO(nufft_size_accepts_the_edges_of_tol_and_freq_and_no_more, 0),
+    SCENARIO(io_provenances_breaking_a_rule_are_refused_unchanged, 0),
 };
 
 static const scenario *current_scenario;
@@ -482,6 +543,7 @@ int main(void)
     run_table(adv_fns_eq, adv_fns_eq_count);
     run_table(adv_fns_2d, adv_fns_2d_count);
     run_table(adv_fns_io, adv_fns_io_count);
+    run_table(adv_fns_measures, adv_fns_measures_count);
     for (size_t i = 0; i < sizeof scenarios / sizeof scenarios[0]; ++i) {
         current_scenario = &scenarios[i];
         UnityDefaultTestRun(test_scenario, scenarios[i].name, __LINE__);

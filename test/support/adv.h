@@ -20,8 +20,20 @@
 /* Object types a slot can hold. */
 enum {
     T_NONE, T_RNG, T_IMP, T_PAT, T_SAMPLER, T_PAT2D, T_WELFORD, T_DFT, T_SPECTRUM,
-    T_MOMENT, T_AUTOCORR, T_POINTSET, T_POINTSET2D, T_SPECTRUM2D, T_THEORY, T_TSPEC, T_COUNT
+    T_MOMENT, T_AUTOCORR, T_POINTSET, T_POINTSET2D, T_SPECTRUM2D, T_THEORY, T_TSPEC,
+    /* adv_objects.c's measure, NUFFT and provenance section: */
+    T_DISC,    /* mcs_discrepancy; its N is the dimension */
+    T_SPACING, /* mcs_spacing; its N is the dimension */
+    T_NUFFT,   /* mcs_nufft over a work buffer of the row's arena; its N is F */
+    T_PROV,    /* mcs_io_provenance */
+    T_RECORD,  /* a caller buffer of ADV_RECORD_CAP bytes holding a saved record */
+    T_RECLEN,  /* the size_t holding that record's length (mcs_io_set_provenance) */
+    T_COUNT
 };
+
+/* Bytes of a T_RECORD buffer: the record of the largest spectrum and the
+ * largest provenance block, with room. */
+#define ADV_RECORD_CAP (192u << 10)
 
 /* Object states a row may substitute for the baseline object. */
 enum {
@@ -63,7 +75,8 @@ enum {
     O_NN,     /* output: finite and >= 0 (a power, a variance, a standard error) */
     O_U01,    /* output: in [0, 1) */
     O_BIN,    /* output: a bin in [0, N) */
-    O_RAW     /* output: any bits */
+    O_RAW,    /* output: any bits */
+    R_RANGE   /* a double scalar valid in [dlo, dhi] (a tolerance; adv_refine_rows) */
 };
 
 /* Roles of size_t scalars. */
@@ -83,7 +96,8 @@ enum {
     F_SIZED = 4,   /* an object of another N (or shape) must be refused */
     F_OKIN = 8,    /* every in-range size must succeed */
     F_NOMAX = 16,  /* Z_DEF without a documented maximum (hi = SIZE_MAX) */
-    F_FREE = 32    /* every value is meaningful (no status to check) */
+    F_FREE = 32,   /* every value is meaningful (no status to check) */
+    F_ZEROOK = 64  /* the zeroed object is a valid state (adv_refine_rows) */
 };
 
 /* Array length: op over slot values. */
@@ -102,6 +116,7 @@ typedef struct {
     double dbase;
     uint64_t base; /* baseline scalar */
     adv_len len;
+    double dlo, dhi; /* R_RANGE */
 } adv_slot;
 
 /* What a successful call does to the count of its first object slot. */
@@ -174,6 +189,20 @@ extern const adv_fn adv_fns_2d[];
 extern const size_t adv_fns_2d_count;
 extern const adv_fn adv_fns_io[];
 extern const size_t adv_fns_io_count;
+extern const adv_fn adv_fns_measures[];
+extern const size_t adv_fns_measures_count;
+
+/* The outcomes adv_rows does not derive, for the slots of R_RANGE and
+ * F_ZEROOK (adv_table_measures.c): run on the rows of every function. */
+void adv_refine_rows(adv_row *rows, size_t nrows);
+
+/* Checks of the measure, NUFFT and provenance calls that a row cannot
+ * express (adv_table_measures.c), run as scenarios: MCS_OK or ADV_BROKEN. */
+int measures_work_of_exactly_the_queried_size_at_any_alignment_is_enough(const adv_val *a);
+int measures_overlapping_buffers_are_refused_unchanged(const adv_val *a);
+int nufft_edited_plan_headers_are_refused_unchanged(const adv_val *a);
+int nufft_size_accepts_the_edges_of_tol_and_freq_and_no_more(const adv_val *a);
+int io_provenances_breaking_a_rule_are_refused_unchanged(const adv_val *a);
 
 /* Objects (adv_objects.c). */
 size_t adv_type_size(int type);

@@ -3,12 +3,269 @@
  * a full count), and the read-outs that must stay finite after a successful
  * update. */
 #include "adv.h"
+#include "adv_world.h" /* the arena: a plan's buffer, a provenance's slot */
 
 #include <math.h>
 #include <string.h>
 
 #define BASE_N 12u
 #define BASE_K 6u
+
+/* ---- measure accumulators, NUFFT plans, provenances and records ----
+ * Their N: the dimension of an accumulator (1 small, 2 base, the largest it
+ * accepts max), F of a plan (3 small, 8 base, and as max the largest F whose
+ * buffer and output the row's arena holds, 16384 in 1D and 128 in 2D, where
+ * nufft.h accepts 2^26 and 2^16), for a provenance another run (its N of 7
+ * bins, small) or its list full (max), and the record of another spectrum.
+ * OV_FULL of an accumulator is every count at MCS_MAX_COUNT, the most one
+ * holds, so adds and merges must answer MCS_ERR_COUNT (a count of
+ * UINT64_MAX is only a bad state, which the zeroed and 0xFF rows give). */
+
+static double meas_frac(double x) { return x - floor(x); }
+
+/* Set t of k points in dim coordinates, spread and in [0, 1). */
+static void meas_points(int t, size_t k, size_t dim, double *p)
+{
+    for (size_t i = 0; i < k; ++i)
+        for (size_t a = 0; a < dim; ++a)
+            p[i * dim + a] = meas_frac(0.1 * t + 0.6180339887 * (double)i +
+                                       0.7548776662 * (double)(i * a + a) + 0.05);
+}
+
+static size_t meas_dim(int type, int ov)
+{
+    const int disc = type == T_DISC;
+    return ov == OV_SMALL ? 1u
+           : ov == OV_BIG ? (disc ? (size_t)MCS_DISCREPANCY_MAX_DIM : (size_t)MCS_SPACING_MAX_DIM)
+                          : 2u;
+}
+
+static void disc_build(int ov, mcs_discrepancy *acc)
+{
+    static double pts[7u * MCS_DISCREPANCY_MAX_DIM];
+    static unsigned char work[MCS_DISCREPANCY_STAR_WORK_SIZE(7)];
+    const size_t dim = meas_dim(T_DISC, ov);
+    (void)mcs_discrepancy_init(acc, dim);
+    for (int t = 0; t < 3 && ov != OV_EMPTY; ++t) { /* 5, 6, 7 points: 1/K varies too */
+        meas_points(t, 5u + (size_t)t, dim, pts);
+        (void)mcs_discrepancy_add(acc, 5u + (size_t)t, pts, work, sizeof work);
+    }
+    if (ov == OV_FULL) {
+        acc->inv_k.count = MCS_MAX_COUNT;
+        for (int m = 0; m < MCS_DISCREPANCY_MEASURES; ++m)
+            acc->d2[m].count = MCS_MAX_COUNT;
+    }
+}
+
+static void spacing_build(int ov, mcs_spacing *acc)
+{
+    static double pts[64u * MCS_SPACING_MAX_DIM];
+    static unsigned char work[MCS_SPACING_WORK_SIZE(64)];
+    const size_t dim = meas_dim(T_SPACING, ov);
+    (void)mcs_spacing_init(acc, dim);
+    for (int t = 0; t < 3 && ov != OV_EMPTY; ++t) { /* 16, 40, 64 points: 64 takes the grid */
+        const size_t k = t == 0 ? 16u : t == 1 ? 40u : 64u;
+        meas_points(t, k, dim, pts);
+        (void)mcs_spacing_add(acc, k, pts, work, sizeof work);
+    }
+    if (ov == OV_FULL)
+        for (int s = 0; s < MCS_SPACING_STATISTICS; ++s)
+            acc->stat[s].count = MCS_MAX_COUNT;
+}
+
+/* Plan variants: the dimension as L_KDIM reads it (1 for v % 7 < 3), so
+ * that points[k d] follow the plan, and a tolerance each (1e-15: the widest
+ * kernel; 1e-14 in 2D: sigma 5/2; 1e-1: the narrowest). */
+static const double nufft_tols[6] = {1e-9, 1e-15, 1e-1, 1e-6, 1e-14, 1e-1};
+static const char *const nufft_names[6] = {"1d-tol1e-9", "1d-tol1e-15", "1d-tol1e-1",
+                                           "2d-tol1e-6", "2d-tol1e-14", "2d-tol1e-1"};
+
+static size_t nufft_dim(int v) { return v % 7 < 3 ? 1u : 2u; }
+
+static size_t nufft_freq(int ov, int v)
+{
+    return ov == OV_SMALL ? 3u : ov != OV_BIG ? 8u : nufft_dim(v) == 1u ? 16384u : 128u;
+}
+
+/* The plan over a buffer of the row's arena (a dependency the call may
+ * write, as a transform uses it as scratch), set up for another header and
+ * copied in (copies share the buffer, nufft.h); the zeroed and 0xFF states
+ * are the header's, over a real buffer. */
+static void nufft_build(int ov, int v, mcs_nufft *plan)
+{
+    const size_t dim = nufft_dim(v % 6), freq = nufft_freq(ov, v % 6);
+    const double tol = nufft_tols[v % 6];
+    size_t bytes = 0;
+    mcs_nufft made;
+    memset(&made, 0, sizeof made);
+    (void)mcs_nufft_size(dim, freq, tol, &bytes);
+    void *mem = adv_region_for(bytes, -1, K_OBJ_IO);
+    if (mem != NULL) { /* else the overflow flag fails the row */
+        memset(mem, 0, bytes);
+        (void)mcs_nufft_init(&made, dim, freq, tol, mem, bytes);
+    }
+    memcpy(plan, &made, sizeof made);
+    if (ov == OV_ZERO || ov == OV_FF)
+        memset(plan, ov == OV_ZERO ? 0 : 0xFF, sizeof *plan);
+}
+
+/* The slot of the arena region obj starts, -1 outside the arena. */
+static int arena_slot(const void *obj)
+{
+    for (int g = 0; g < adv_nregs; ++g)
+        if (adv_arena + adv_regs[g].off == (const unsigned char *)obj)
+            return adv_regs[g].slot;
+    return -1;
+}
+
+/* A provenance, variant v % 2: 0 a pattern run (one stream range), 1 point
+ * sets (two input files). Slot s holds streams or inputs of its own, so a
+ * merge of two baselines is one of disjoint pieces; the block of a record
+ * (s < 0) its own too. */
+static void prov_build(int ov, int v, int s, mcs_io_provenance *p)
+{
+    static const char *const names[2] = {"in/first.txt", "in/second.csv"};
+    const uint64_t own = s < 0 ? 2u : (uint64_t)s;
+    memset(p, 0, sizeof *p);
+    if (v % 2 == 1 && ov != OV_SMALL) {
+        p->source = MCS_IO_SOURCE_POINTS;
+        p->ninputs = ov == OV_BIG ? MCS_IO_PROV_MAX_INPUTS : 2u;
+        for (uint32_t i = 0; i < p->ninputs; ++i) {
+            p->input[i].crc =
+                ov == OV_BIG ? 0x20000u + 2u * i : (i + 1u) * 0x1000u + 16u * (uint32_t)own;
+            p->input[i].bytes = 100u + i;
+            memcpy(p->input[i].name, names[i % 2], strlen(names[i % 2]));
+        }
+        return;
+    }
+    p->source = MCS_IO_SOURCE_PATTERN;
+    p->dim = 1u;
+    memcpy(p->pattern, "stratified", 10);
+    p->n = ov == OV_SMALL ? 7u : BASE_N;
+    p->k = BASE_K;
+    p->importance = 1u;
+    p->importance_crc = 0xC0FFEEu;
+    p->streams = 64u;
+    p->trials = 643u;
+    p->nranges = ov == OV_BIG ? MCS_IO_PROV_MAX_RANGES : 1u;
+    for (uint32_t i = 0; i < p->nranges; ++i) {
+        p->range[i].seed = ov == OV_BIG ? 100u + i : 42u;
+        p->range[i].first = ov == OV_BIG ? 0u : 2u * own;
+        p->range[i].end = ov == OV_BIG ? 1u : 2u * own + 1u;
+    }
+}
+
+/* A record buffer, variant v % 4: a saved spectrum (N 12; 7 small, the
+ * largest max) with the block of a pattern run (0), of point sets (1), or
+ * none (version 1: 2, 3); zeros after it. Its length into *len. */
+static void record_build(int ov, int v, unsigned char *buf, size_t *len)
+{
+    static _Alignas(64) unsigned char acc[sizeof(mcs_spectrum)];
+    mcs_io_provenance prov;
+    memset(buf, 0, ADV_RECORD_CAP);
+    *len = 0;
+    (void)adv_build(T_SPECTRUM, ov == OV_SMALL || ov == OV_BIG ? ov : OV_BASE, 0, acc);
+    (void)mcs_io_save_spectrum((const mcs_spectrum *)(const void *)acc, ADV_RECORD_CAP, buf, len);
+    if (v % 4 < 2) {
+        prov_build(OV_BASE, v % 4, -1, &prov);
+        (void)mcs_io_set_provenance(&prov, ADV_RECORD_CAP, buf, len);
+    }
+}
+
+/* The base record of variant v, and its length into *len. */
+static const unsigned char *record_of(int v, size_t *len)
+{
+    static unsigned char buf[ADV_RECORD_CAP];
+    record_build(OV_BASE, v, buf, len);
+    return buf;
+}
+
+static size_t record_length(int v)
+{
+    size_t len = 0;
+    (void)record_of(v, &len);
+    return len;
+}
+
+/* Builds a type of this section (adv_build's contract). */
+static int meas_build(int type, int ov, int v, void *obj)
+{
+    if ((ov == OV_EMPTY || ov == OV_FULL) && !adv_has_count(type))
+        return 0;
+    if (ov == OV_BIGK)
+        return 0;
+    if ((ov == OV_ZERO || ov == OV_FF) && type != T_NUFFT) {
+        memset(obj, ov == OV_ZERO ? 0 : 0xFF, adv_type_size(type));
+        return 1;
+    }
+    memset(obj, 0x3C, adv_type_size(type)); /* padding bytes get a known value too */
+    switch (type) {
+    case T_DISC: disc_build(ov, obj); break;
+    case T_SPACING: spacing_build(ov, obj); break;
+    case T_NUFFT: nufft_build(ov, v, obj); break;
+    case T_PROV: prov_build(ov, v, arena_slot(obj), obj); break;
+    case T_RECORD: {
+        size_t len = 0;
+        record_build(ov, v, obj, &len);
+        break;
+    }
+    default: { /* T_RECLEN: the base record's length, or one byte short or over */
+        const size_t len = record_length(v);
+        *(size_t *)obj = ov == OV_SMALL ? len - 1u : ov == OV_BIG ? len + 1u : len;
+        break;
+    }
+    }
+    return 1;
+}
+
+static size_t meas_type_size(int type)
+{
+    switch (type) {
+    case T_DISC: return sizeof(mcs_discrepancy);
+    case T_SPACING: return sizeof(mcs_spacing);
+    case T_NUFFT: return sizeof(mcs_nufft);
+    case T_PROV: return sizeof(mcs_io_provenance);
+    case T_RECORD: return ADV_RECORD_CAP;
+    default: return sizeof(size_t);
+    }
+}
+
+static const char *const meas_type_names[T_COUNT - T_DISC] = {"discrepancy", "spacing", "nufft",
+                                                              "provenance", "record", "record_len"};
+
+/* Variant names: a plan's dimension and tolerance, a provenance's source,
+ * and (a record appears only in mcs_io_set_provenance's rows) the source
+ * set on which record. */
+static const char *meas_variant_name(int type, int v)
+{
+    static const char *const set_names[4] = {"pattern-on-pattern-block", "points-on-points-block",
+                                             "pattern-on-version-1", "points-on-version-1"};
+    switch (type) {
+    case T_NUFFT: return nufft_names[v % 6];
+    case T_PROV: return v % 2 ? "points" : "pattern";
+    case T_RECORD: return set_names[v % 4];
+    default: return "";
+    }
+}
+
+/* N of a state, as adv_state_n (a plan: its F in 1D) and as adv_state_nn:
+ * an accumulator's set of ADV_LONG_LEN points (the add rows' points[k d]),
+ * a plan's output of 2 (2F + 1)^d doubles. */
+static size_t meas_state_n(int type, int ov)
+{
+    if (type == T_NUFFT)
+        return nufft_freq(ov, 0);
+    return type == T_DISC || type == T_SPACING ? meas_dim(type, ov) : 0u;
+}
+
+static size_t meas_state_nn(int type, int ov, int v)
+{
+    if (type == T_NUFFT) {
+        const size_t side = 2u * nufft_freq(ov, v % 6) + 1u;
+        return 2u * (nufft_dim(v % 6) == 1u ? side : side * side);
+    }
+    return type == T_DISC || type == T_SPACING ? (size_t)ADV_LONG_LEN * meas_dim(type, ov) : 0u;
+}
 
 static const size_t type_sizes[T_COUNT] = {
     0, sizeof(mcs_rng), sizeof(mcs_importance), sizeof(mcs_pattern), sizeof(mcs_sampler),
@@ -21,8 +278,19 @@ static const char *const type_names[T_COUNT] = {
     "spectrum", "moment", "autocorr", "pointset", "pointset2d", "spectrum2d", "theory",
     "theory_spectrum"};
 
-size_t adv_type_size(int type) { return type_sizes[type]; }
-const char *adv_type_name(int type) { return type_names[type]; }
+size_t adv_type_size(int type)
+{
+    if (type >= T_DISC)
+        return meas_type_size(type);
+    return type_sizes[type];
+}
+
+const char *adv_type_name(int type)
+{
+    if (type >= T_DISC)
+        return meas_type_names[type - T_DISC];
+    return type_names[type];
+}
 
 /* ---- baseline variants ---- */
 
@@ -38,6 +306,8 @@ static char variant_buf[48];
 
 const char *adv_variant_name(int type, int v)
 {
+    if (type >= T_DISC)
+        return meas_variant_name(type, v);
     switch (type) {
     case T_SPECTRUM: return path_names[v % 3];
     case T_PAT:
@@ -189,6 +459,8 @@ static void init_sized(int type, int v, size_t n, void *obj)
 
 int adv_build(int type, int ov, int v, void *obj)
 {
+    if (type >= T_DISC)
+        return meas_build(type, ov, v, obj);
     const size_t bytes = type_sizes[type];
     const int acc = adv_has_count(type);
     switch (ov) {
@@ -237,12 +509,17 @@ size_t adv_obj_n(int type, const void *obj)
     case T_SPECTRUM2D: return ((const mcs_spectrum2d *)obj)->n_x;
     case T_THEORY: return ((const mcs_theory *)obj)->n;
     case T_TSPEC: return ((const mcs_theory_spectrum *)obj)->n;
+    case T_DISC: return ((const mcs_discrepancy *)obj)->dim;
+    case T_SPACING: return ((const mcs_spacing *)obj)->dim;
+    case T_NUFFT: return ((const mcs_nufft *)obj)->freq;
     default: return 0;
     }
 }
 
 size_t adv_state_n(int type, int ov)
 {
+    if (type >= T_DISC)
+        return meas_state_n(type, ov);
     return size_of_state(type, ov);
 }
 
@@ -250,6 +527,8 @@ size_t adv_state_n(int type, int ov)
  * 2D spectrum, K dim coordinates of a sampler). */
 size_t adv_state_nn(int type, int ov, int v)
 {
+    if (type >= T_DISC)
+        return meas_state_nn(type, ov, v);
     size_t n = size_of_state(type, ov);
     if (type == T_SPECTRUM2D)
         return n * (n == 6u ? 4u : n == 3u ? 5u : n);
@@ -260,6 +539,8 @@ size_t adv_state_nn(int type, int ov, int v)
 
 int adv_has_count(int type)
 {
+    if (type == T_DISC || type == T_SPACING)
+        return 1;
     return type == T_WELFORD || type == T_SPECTRUM || type == T_MOMENT || type == T_AUTOCORR ||
            type == T_POINTSET || type == T_POINTSET2D || type == T_SPECTRUM2D;
 }
@@ -274,6 +555,8 @@ uint64_t adv_count(int type, const void *obj)
     case T_POINTSET: return ((const mcs_pointset *)obj)->count;
     case T_POINTSET2D: return ((const mcs_pointset2d *)obj)->count;
     case T_SPECTRUM2D: return ((const mcs_spectrum2d *)obj)->count;
+    case T_DISC: return ((const mcs_discrepancy *)obj)->inv_k.count;
+    case T_SPACING: return ((const mcs_spacing *)obj)->stat[0].count;
     default: return 0;
     }
 }
@@ -305,6 +588,8 @@ static const void *record_source(int type)
 size_t adv_record_size(int type)
 {
     size_t len = 0;
+    if (type == T_RECORD) /* the baseline record with a pattern run's block */
+        return record_length(0);
     (void)save(type, record_source(type), 0u, NULL, &len);
     return len;
 }
@@ -312,5 +597,10 @@ size_t adv_record_size(int type)
 void adv_record(int type, void *buf)
 {
     size_t len = 0;
+    if (type == T_RECORD) {
+        const unsigned char *rec = record_of(0, &len);
+        memcpy(buf, rec, len);
+        return;
+    }
     (void)save(type, record_source(type), adv_record_size(type), buf, &len);
 }
