@@ -255,6 +255,13 @@ static MCS_ALWAYS_INLINE mcs_status add(mcs_discrepancy *acc, size_t k, mcs_poin
         st = MCS_ERR_ALIAS;
     if (st == MCS_OK)
         st = check_set(k, acc->dim, p);
+    /* A full count is refused before the work memory is written (the star's
+     * sorted copy): a refused add changes nothing, work included. */
+    for (int m = 0; m < MCS_DISCREPANCY_MEASURES && st == MCS_OK; ++m)
+        if ((m < L2N || star) && acc->d2[m].count >= MCS_MAX_COUNT)
+            st = MCS_ERR_COUNT;
+    if (st == MCS_OK && acc->inv_k.count >= MCS_MAX_COUNT)
+        st = MCS_ERR_COUNT;
     if (st != MCS_OK)
         return st;
     /* The closed forms through the entry points, not inlined here: the

@@ -90,7 +90,9 @@ static mcs_status check_size(size_t dim, size_t k, size_t *side, size_t *need)
 {
     if (!dim_ok(dim))
         return MCS_ERR_DOMAIN;
-    if (k < 2u)
+    /* The set's k dim doubles must fit in memory: this also keeps the grid
+     * search below finite (m^dim saturates at SIZE_MAX, never above k). */
+    if (k < 2u || k > SIZE_MAX / (dim * sizeof(double)))
         return MCS_ERR_K_RANGE;
     *side = grid_side(dim, k);
     *need = 0u;
@@ -352,6 +354,11 @@ static MCS_ALWAYS_INLINE mcs_status add(mcs_spacing *acc, const set_view *s)
         st = check_set(s, &side);
     if (st == MCS_OK && side > 0u && mcs_overlap_(s->work, s->work_bytes, acc, sizeof *acc))
         st = MCS_ERR_ALIAS;
+    /* A full count is refused before the grid is built in the work memory:
+     * a refused add changes nothing, work included. */
+    for (int i = 0; i < MCS_SPACING_STATISTICS && st == MCS_OK; ++i)
+        if (acc->stat[i].count >= MCS_MAX_COUNT)
+            st = MCS_ERR_COUNT;
     if (st != MCS_OK)
         return st;
     double v[MCS_SPACING_STATISTICS];
