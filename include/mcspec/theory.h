@@ -263,6 +263,22 @@ mcs_status mcs_theory_spectrum_power(const mcs_theory_spectrum *ts, size_t freq,
  * equal to the pattern's N (else MCS_ERR_MISMATCH). O(N^2). */
 mcs_status mcs_theory_power_spectrum(const mcs_theory_spectrum *ts, size_t n, double *power);
 
+/* Every stored frequency k = 0..N/2 at once (the exact counterpart of
+ * mcs_spectrum_read_all, spectrum.h): mean_re[k] + i mean_im[k] = <S_k>,
+ * variance[k] = Var(S_k) = E|S_k - <S_k>|^2 (the exact counterpart of T
+ * times a measured mean_stderr^2 over T trials) and power[k] = <|S_k|^2>,
+ * each bit for bit what mcs_theory_spectrum_mean, mcs_theory_spectrum_
+ * covariance(k, k) and mcs_theory_spectrum_power return. Exact values
+ * have no standard errors, so there are no arrays for them. Caller arrays
+ * of n_out doubles, n_out equal to N/2 + 1 (else MCS_ERR_MISMATCH); exactly
+ * n_out entries written to each array given. Any array may be NULL when
+ * not wanted, not all of them (MCS_ERR_NULL); the arrays must overlap
+ * neither one another nor *ts (MCS_ERR_ALIAS). MCS_ERR_INVARIANT (a body
+ * init does not write, checked before anything is written). O(N^2). */
+mcs_status mcs_theory_spectrum_read_all(const mcs_theory_spectrum *ts, size_t n_out,
+                                        double *mean_re, double *mean_im, double *variance,
+                                        double *power);
+
 /* <S_k S_l*> (eq. 16) for k = freq_k, l = freq_l; at k = l the power
  * read-out bit for bit, imaginary part 0. O(N) (homogenized: its
  * covariance is circulant, so Cov(S_k, S_l) = 0 for k != l).

@@ -110,3 +110,76 @@ mcs_status mcs_spectrum_power_stderr(const mcs_spectrum *acc, size_t freq, doubl
     mcs_status st = readout(stderr_out != NULL, acc, freq, 1, &fs, &conj);
     return st == MCS_OK ? set_finite(stderr_out, stderr_of(acc, &fs, fs.m2_pow)) : st;
 }
+
+/* ---- every stored frequency at once ---------------------------------------- */
+
+/* The five arrays of mcs_spectrum_read_all, in argument order; NULL where
+ * not wanted. */
+enum { ALL_MEAN_RE, ALL_MEAN_IM, ALL_MEAN_SE, ALL_POWER, ALL_POWER_SE, ALL_COUNT };
+
+/* The values of stored frequency q, each as its per-frequency call forms it
+ * (the same stats_at and stderr_of, so the same bits); the standard errors
+ * only where asked (they need two units). */
+static void values_at(const mcs_spectrum *acc, size_t q, double *const out[ALL_COUNT],
+                      double v[ALL_COUNT])
+{
+    freq_stats fs;
+    stats_at(acc, q, &fs);
+    v[ALL_MEAN_RE] = fs.mean_re;
+    v[ALL_MEAN_IM] = fs.mean_im;
+    v[ALL_MEAN_SE] = out[ALL_MEAN_SE] != NULL ? stderr_of(acc, &fs, fs.m2_s) : 0.0;
+    v[ALL_POWER] = fs.mean_pow;
+    v[ALL_POWER_SE] = out[ALL_POWER_SE] != NULL ? stderr_of(acc, &fs, fs.m2_pow) : 0.0;
+}
+
+/* Whether two of the arrays (each n_out doubles) share a byte, or one lies
+ * in *acc (which is read while they are written). */
+static int arrays_alias(const mcs_spectrum *acc, size_t n_out, double *const out[ALL_COUNT])
+{
+    const size_t bytes = mcs_bytes_(n_out, sizeof(double));
+    int hit = 0;
+    for (int a = 0; a < ALL_COUNT; ++a) {
+        if (out[a] == NULL)
+            continue;
+        hit |= mcs_overlap_(out[a], bytes, acc, sizeof *acc);
+        for (int b = a + 1; b < ALL_COUNT; ++b)
+            hit |= out[b] != NULL && mcs_overlap_(out[a], bytes, out[b], bytes);
+    }
+    return hit;
+}
+
+mcs_status mcs_spectrum_read_all(const mcs_spectrum *acc, size_t n_out, double *mean_re,
+                                 double *mean_im, double *mean_stderr, double *power,
+                                 double *power_stderr)
+{
+    double *const out[ALL_COUNT] = {mean_re, mean_im, mean_stderr, power, power_stderr};
+    int any = 0;
+    for (int a = 0; a < ALL_COUNT; ++a)
+        any |= out[a] != NULL;
+    uint64_t units = 0u;
+    mcs_status st = any ? mcs_spectrum_units(acc, &units) : MCS_ERR_NULL;
+    if (st != MCS_OK)
+        return st;
+    if (n_out != acc->n / 2u + 1u)
+        return MCS_ERR_MISMATCH;
+    if (acc->count == 0u || ((mean_stderr != NULL || power_stderr != NULL) && units < 2u))
+        return MCS_ERR_EMPTY;
+    if (arrays_alias(acc, n_out, out))
+        return MCS_ERR_ALIAS;
+    /* Every value is checked before any is written (an overwritten object
+     * can hold a non-finite one), then formed again and written. */
+    double v[ALL_COUNT];
+    for (size_t q = 0; q < n_out; ++q) {
+        values_at(acc, q, out, v);
+        for (int a = 0; a < ALL_COUNT; ++a)
+            if (out[a] != NULL && !isfinite(v[a]))
+                return MCS_ERR_NOT_FINITE;
+    }
+    for (size_t q = 0; q < n_out; ++q) {
+        values_at(acc, q, out, v);
+        for (int a = 0; a < ALL_COUNT; ++a)
+            if (out[a] != NULL)
+                out[a][q] = v[a];
+    }
+    return MCS_OK;
+}

@@ -271,6 +271,51 @@ mcs_status mcs_theory_spectrum_cross(const mcs_theory_spectrum *ts, size_t freq_
     return set_complex(re, im, cr + (kr * lr + ki * li), ci + (ki * lr - kr * li), 0);
 }
 
+/* Every stored frequency at once: the per-frequency values (mean_at,
+ * covariance_at, power_at: the same bits), for a body checked once
+ * (body_is_sound: every value is then finite and no variance or power
+ * negative, so nothing needs checking per value before the writes). */
+mcs_status mcs_theory_spectrum_read_all(const mcs_theory_spectrum *ts, size_t n_out,
+                                        double *mean_re, double *mean_im, double *variance,
+                                        double *power)
+{
+    double *const out[4] = {mean_re, mean_im, variance, power};
+    int any = 0;
+    for (int a = 0; a < 4; ++a)
+        any |= out[a] != NULL;
+    mcs_status st = check_ts(any, ts);
+    if (st != MCS_OK)
+        return st;
+    if (n_out != ts->n / 2u + 1u)
+        return MCS_ERR_MISMATCH;
+    const size_t bytes = mcs_bytes_(n_out, sizeof(double));
+    for (int a = 0; a < 4; ++a)
+        for (int b = a; b < 4; ++b)
+            if (out[a] != NULL &&
+                (b == a ? mcs_overlap_(out[a], bytes, ts, sizeof *ts)
+                        : out[b] != NULL && mcs_overlap_(out[a], bytes, out[b], bytes)))
+                return MCS_ERR_ALIAS;
+    if (!body_is_sound(ts))
+        return MCS_ERR_INVARIANT;
+    for (size_t q = 0; q < n_out; ++q) {
+        if (mean_re != NULL || mean_im != NULL) {
+            double r, i;
+            mean_at(ts, q, &r, &i);
+            if (mean_re != NULL)
+                mean_re[q] = r;
+            if (mean_im != NULL)
+                mean_im[q] = i;
+        }
+        if (variance != NULL) {
+            double zero;
+            covariance_at(ts, q, q, &variance[q], &zero);
+        }
+        if (power != NULL)
+            power[q] = power_at(ts, q);
+    }
+    return MCS_OK;
+}
+
 /* ---- the estimator ---------------------------------------------------------- */
 
 mcs_status mcs_theory_spectrum_estimator_mean(const mcs_theory_spectrum *ts, size_t n,

@@ -30,6 +30,11 @@ static int t_eq52_variance_corrected(const adv_val *a) { return mcs_eq52_varianc
 static int t_eq55_variance_convolution(const adv_val *a) { return mcs_eq55_variance_convolution(a[0].p, a[1].z, a[2].p, a[3].p); }
 static int t_eq58_bound_printed(const adv_val *a) { return mcs_eq58_bound_printed(a[0].p, a[1].z, a[2].p, a[3].p); }
 static int t_eq58_bound_corrected(const adv_val *a) { return mcs_eq58_bound_corrected(a[0].p, a[1].z, a[2].p, a[3].p); }
+/* The exact read-outs added beside the closed forms (theory.h). */
+static int t_theory_spectrum_read_all(const adv_val *a)
+{
+    return mcs_theory_spectrum_read_all(a[0].p, a[1].z, a[2].p, a[3].p, a[4].p, a[5].p);
+}
 
 #define TH OBJ_IN("th", T_THEORY, F_SIZED)
 #define N_MATCH SZ_MATCH("n", BN, MCS_MAX_COV_N)
@@ -90,5 +95,11 @@ const adv_fn adv_fns_eq[] = {
     EQ_IMP_F(eq55_variance_convolution, OUT_VAL("out")),
     EQ_IMP_F(eq58_bound_printed, OUT_NN("out")),
     EQ_IMP_F(eq58_bound_corrected, OUT_NN("out")),
+    FN(theory_spectrum_read_all, EF_NONE, 1, 0, OBJ_IN("ts", T_TSPEC, F_SIZED),
+       SZ_MATCH("n_out", BN / 2u + 1u, MCS_MAX_N / 2u + 1u),
+       AOUT("mean_re", E_D, O_VAL, LEN(L_SLOT, 1), F_NULLOK),
+       AOUT("mean_im", E_D, O_VAL, LEN(L_SLOT, 1), F_NULLOK),
+       AOUT("variance", E_D, O_NN, LEN(L_SLOT, 1), F_NULLOK),
+       AOUT("power", E_D, O_NN, LEN(L_SLOT, 1), F_NULLOK)),
 };
 const size_t adv_fns_eq_count = sizeof adv_fns_eq / sizeof adv_fns_eq[0];
