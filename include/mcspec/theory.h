@@ -313,6 +313,80 @@ mcs_status mcs_theory_spectrum_estimator_covariance(const mcs_theory_spectrum *t
                                                     size_t k, const double *f, const double *g,
                                                     double *out);
 
+/* ==== The rotation average of a fixed point set: mcs_theory_rotation ======
+ *
+ * A renderer's Cranley-Patterson rotation: a fixed set of K points a_j in
+ * [0, 1), the same for every pixel, moved by one uniform beta per pixel,
+ * x_j = a_j + beta mod 1, and binned over N bins. Its exact binned <S_k>,
+ * <|S_k|^2> and Var[I] (averaged over beta) for any set, not only the
+ * ones that reduce to a pattern kind (K = 2^m van der Corput points rotated
+ * are uniform jitter; Halton base 3 points are no pattern kind):
+ *
+ *     static double work[MCS_THEORY_ROTATION_LEN(64)];
+ *     mcs_theory_rotation rot;
+ *     mcs_theory_rotation_init(&rot, n, k, points, work, 64);   O(K^2)
+ *     mcs_theory_rotation_power(&rot, freq, &p);                O(N)
+ *     mcs_theory_rotation_variance(&rot, n, k, f, &v);          O(N^2)
+ *
+ * How. With A_j = N a_j the bin offset n_j - n_j' (mod N) of two rotated
+ * points is floor(D) or floor(D) + 1, D = A_j - A_j', the latter with
+ * probability frac(D), and the bin of a rotated point is uniform on [0, N)
+ * and independent of that offset. So the rotation-averaged histogram h(d)
+ * of the bin offsets of the K^2 ordered pairs (init: O(K^2), about 16 M
+ * pair steps at K = 4096) carries every read-out:
+ *     <|S_q|^2> = (1/N) sum_d h(d) cos(2 pi q d / N),
+ *     Var[I]    = (1/K^2) sum_d h(d) R(d) - fbar^2,  R(d) = (1/N) sum_n f_n f_{n+d},
+ * and <S_k> = (K / sqrt N) delta_k0 exactly (the rotation is stationary, and
+ * S_0 = K / sqrt N in every trial). h lives in the caller's work array,
+ * which must stay as init left it while the object is read.
+ *
+ * Every call validates its inputs before writing: on error nothing
+ * changes. Nothing allocates. ============================================== */
+
+/* Doubles of work memory the rotation of a set over n bins needs (a
+ * constant expression, for a static array): h(d), d < n. */
+#define MCS_THEORY_ROTATION_LEN(n) ((size_t)(n))
+
+/* Set up by mcs_theory_rotation_init; read-only to the caller. */
+typedef struct {
+    size_t n;        /* bins N, 1..MCS_MAX_N (0: not set up) */
+    size_t k;        /* points K, 1..MCS_MAX_K */
+    double *offsets; /* h(d), d < N, in the caller's work array: the rotation-averaged
+                        number of ordered pairs (j, j') whose bins lie d apart (mod N);
+                        they sum to K^2 */
+} mcs_theory_rotation;
+
+/* Sets up *rot for the k points points[k] in [0, 1) over n bins, h(d) into
+ * work[len], len >= MCS_THEORY_ROTATION_LEN(n) (exactly n entries
+ * written). O(K^2). points is read, not kept. MCS_ERR_NULL, MCS_ERR_N_RANGE
+ * (n = 0 or above MCS_MAX_N), MCS_ERR_K_RANGE (k = 0 or above MCS_MAX_K),
+ * MCS_ERR_SPACE (len too small), MCS_ERR_ALIAS (any two of work, points and
+ * *rot overlapping), MCS_ERR_POINT_RANGE (a point outside [0, 1) or NaN).
+ * On error neither *rot nor work changes. */
+mcs_status mcs_theory_rotation_init(mcs_theory_rotation *rot, size_t n, size_t k,
+                                    const double *points, double *work, size_t len);
+
+/* The read-outs: MCS_ERR_NULL, MCS_ERR_UNINIT (rot not set up), and
+ * MCS_ERR_INVARIANT where an offset is negative, above 2^61 or NaN (the
+ * work array was written since init), as stated; outputs untouched on
+ * error. */
+
+/* <S_freq>: K / sqrt(N) at freq 0, 0 elsewhere, exactly. MCS_ERR_FREQ_RANGE
+ * (freq >= N), MCS_ERR_ALIAS (re and im one double). */
+mcs_status mcs_theory_rotation_mean(const mcs_theory_rotation *rot, size_t freq, double *re,
+                                    double *im);
+
+/* <|S_freq|^2> averaged over the rotation (above). O(N). MCS_ERR_FREQ_RANGE. */
+mcs_status mcs_theory_rotation_power(const mcs_theory_rotation *rot, size_t freq, double *out);
+
+/* Var[I] of I = (1/K) sum_j f[n_j] (eq. 8) averaged over the rotation, f[n]
+ * as for mcs_theory_spectrum_variance: n equal to the set's N, k to its K
+ * (MCS_ERR_MISMATCH; k = 0 MCS_ERR_K_RANGE), f finite (MCS_ERR_NOT_FINITE)
+ * with |f_n| <= MCS_ESTIMATE_MAX_ABS (MCS_ERR_MAGNITUDE). <I> is the mean
+ * of f (eq. 11): every rotated point's bin is uniform. O(N^2). */
+mcs_status mcs_theory_rotation_variance(const mcs_theory_rotation *rot, size_t n, size_t k,
+                                        const double *f, double *out);
+
 #ifdef __cplusplus
 }
 #endif
