@@ -376,14 +376,21 @@ mcs_status mcs_theory_rotation_init(mcs_theory_rotation *rot, size_t n, size_t k
 mcs_status mcs_theory_rotation_mean(const mcs_theory_rotation *rot, size_t freq, double *re,
                                     double *im);
 
-/* <|S_freq|^2> averaged over the rotation (above). O(N). MCS_ERR_FREQ_RANGE. */
+/* <|S_freq|^2> averaged over the rotation (above). O(N). MCS_ERR_FREQ_RANGE.
+ * Never negative: the sum has terms of both signs, and one in [-b, 0) is
+ * rounding and reads 0, b = (2 K^2 + N + 16) DBL_EPSILON K^2 / N (init adds
+ * each h(d) from up to 2 K^2 terms; a rotated van der Corput set, which is
+ * jitter, has exact zeros the sum leaves near -1e-16); below -b comes from
+ * no work array init writes: MCS_ERR_INVARIANT. */
 mcs_status mcs_theory_rotation_power(const mcs_theory_rotation *rot, size_t freq, double *out);
 
 /* Var[I] of I = (1/K) sum_j f[n_j] (eq. 8) averaged over the rotation, f[n]
  * as for mcs_theory_spectrum_variance: n equal to the set's N, k to its K
  * (MCS_ERR_MISMATCH; k = 0 MCS_ERR_K_RANGE), f finite (MCS_ERR_NOT_FINITE)
  * with |f_n| <= MCS_ESTIMATE_MAX_ABS (MCS_ERR_MAGNITUDE). <I> is the mean
- * of f (eq. 11): every rotated point's bin is uniform. O(N^2). */
+ * of f (eq. 11): every rotated point's bin is uniform. O(N^2). Never
+ * negative, as the power: a value in [-b, 0) reads 0, b = 2 (2 K^2 + N + 16)
+ * DBL_EPSILON (1/N) sum_n (f_n - fbar)^2; below -b MCS_ERR_INVARIANT. */
 mcs_status mcs_theory_rotation_variance(const mcs_theory_rotation *rot, size_t n, size_t k,
                                         const double *f, double *out);
 

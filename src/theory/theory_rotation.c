@@ -10,6 +10,7 @@
  *     Var[I]    = (1/K^2) sum_d h(d) R(d) - fbar^2,  R(d) = (1/N) sum_n f_n f_{n+d}. */
 #include "theory_internal.h"
 
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -113,6 +114,28 @@ mcs_status mcs_theory_rotation_mean(const mcs_theory_rotation *rot, size_t freq,
     return MCS_OK;
 }
 
+/* How far rounding can take a read-out below its exact value, per unit of
+ * its scale: init adds each h(d) from up to 2 K^2 terms in [0, 1], so an
+ * entry errs by up to 2 K^2 DBL_EPSILON of itself; the read-out's own sum
+ * of N terms (and the cosines and the centring of f) add N + 16. */
+static double rounding_factor(const mcs_theory_rotation *rot)
+{
+    const double kd = (double)rot->k;
+    return (2.0 * kd * kd + (double)rot->n + 16.0) * DBL_EPSILON;
+}
+
+/* A power or a variance that cannot be negative: one in [-tol, 0) is
+ * rounding and reads 0 (a rotated van der Corput set, which is jitter, has
+ * exact zeros the sum of mixed-sign terms leaves at -2.5e-16); one below
+ * -tol comes from no offsets init writes (MCS_ERR_INVARIANT). */
+static mcs_status set_nonnegative(double *out, double v, double tol)
+{
+    if (!(v >= -tol))
+        return MCS_ERR_INVARIANT;
+    *out = v > 0.0 ? v : 0.0;
+    return MCS_OK;
+}
+
 mcs_status mcs_theory_rotation_power(const mcs_theory_rotation *rot, size_t freq, double *out)
 {
     mcs_status st = check_rotation(out != NULL, rot);
@@ -120,8 +143,21 @@ mcs_status mcs_theory_rotation_power(const mcs_theory_rotation *rot, size_t freq
         st = MCS_ERR_FREQ_RANGE;
     if (st != MCS_OK)
         return st;
-    *out = rotation_power(rot->n, rot->offsets, freq);
-    return MCS_OK;
+    /* |sum_d h(d) cos| <= sum_d h(d) = K^2 */
+    const double kd = (double)rot->k, tol = rounding_factor(rot) * kd * kd / (double)rot->n;
+    return set_nonnegative(out, rotation_power(rot->n, rot->offsets, freq), tol);
+}
+
+/* (1/N) sum_n (f_n - fbar)^2, the scale of the variance read-out: |R(d)|
+ * is at most it (Cauchy-Schwarz) and sum_d h(d) / K^2 = 1. */
+static double centred_energy(size_t n, const double *f)
+{
+    double fbar = 0.0, e = 0.0;
+    for (size_t b = 0; b < n; ++b)
+        fbar += f[b] / (double)n;
+    for (size_t b = 0; b < n; ++b)
+        e += (f[b] - fbar) * (f[b] - fbar);
+    return e / (double)n;
 }
 
 mcs_status mcs_theory_rotation_variance(const mcs_theory_rotation *rot, size_t n, size_t k,
@@ -139,6 +175,6 @@ mcs_status mcs_theory_rotation_variance(const mcs_theory_rotation *rot, size_t n
     st = mcs_check_integrand_(n, f);
     if (st != MCS_OK)
         return st;
-    *out = rotation_variance(n, k, rot->offsets, f);
-    return MCS_OK;
+    return set_nonnegative(out, rotation_variance(n, k, rot->offsets, f),
+                           2.0 * rounding_factor(rot) * centred_energy(n, f));
 }

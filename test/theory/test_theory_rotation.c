@@ -149,6 +149,40 @@ static void test_a_rotated_van_der_corput_set_is_uniform_jitter(void)
     }
 }
 
+/* The rotated van der Corput set is jitter, whose power is 0 off the
+ * multiples of K and whose Var[I] is 0 for an f without energy there; the
+ * rotation average, a sum of terms of both signs, left those at -2.5e-16
+ * (power) and -1e-18 (variance): they read 0 now, and no read-out is
+ * negative. */
+static void test_rotation_powers_and_variances_are_never_negative(void)
+{
+    const size_t n = 64u, k = 16u;
+    double a[16];
+    for (size_t j = 0; j < k; ++j) /* radical inverse in base 2 of j < 16 */
+        a[j] = (double)(((j & 1u) << 3) | ((j & 2u) << 1) | ((j & 4u) >> 1) | ((j & 8u) >> 3)) /
+               16.0;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_theory_rotation_init(&rot, n, k, a, work, n));
+    int zeros = 0;
+    for (size_t q = 0; q < n; ++q) {
+        double p;
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_theory_rotation_power(&rot, q, &p));
+        TEST_ASSERT_TRUE_MESSAGE(p >= 0.0, "a negative power");
+        zeros += p == 0.0;
+        if (q % k == 0u)
+            TEST_ASSERT_DOUBLE_WITHIN(1e-13, (double)(k * k) / (double)n, p);
+        else
+            TEST_ASSERT_TRUE(p <= 1e-13);
+    }
+    TEST_ASSERT_TRUE(zeros > 0);
+    for (size_t m = 1; m < 16u; ++m) { /* cos(2 pi m n / N): no energy at multiples of 16 */
+        for (size_t b = 0; b < n; ++b)
+            f[b] = 0.5 + cos(2.0 * THEORY_PI * (double)((m * b) % n) / (double)n);
+        double v;
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_theory_rotation_variance(&rot, n, k, f, &v));
+        TEST_ASSERT_TRUE_MESSAGE(v >= 0.0 && v <= 1e-15, "Var[I] not at rounding level");
+    }
+}
+
 /* ---- Monte Carlo over beta ---- */
 
 static void test_monte_carlo_over_beta_agrees_within_five_standard_errors(void)
@@ -297,6 +331,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_rotation_averages_equal_a_brute_force_average_over_beta);
     RUN_TEST(test_a_rotated_van_der_corput_set_is_uniform_jitter);
+    RUN_TEST(test_rotation_powers_and_variances_are_never_negative);
     RUN_TEST(test_monte_carlo_over_beta_agrees_within_five_standard_errors);
     RUN_TEST(test_bad_set_ups_change_nothing);
     RUN_TEST(test_bad_read_outs_change_nothing);
