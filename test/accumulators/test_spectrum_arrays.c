@@ -230,6 +230,53 @@ static void test_measured_arrays_refuse_an_overwritten_object_and_write_nothing(
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_read_all(&acc, 9u, out[0], NULL, NULL, NULL, NULL));
 }
 
+/* S_0 and S_{N/2} are real for a real s, so Im <S_0> and Im <S_{N/2}> are
+ * 0, exactly and with a + sign, on every path (the SPARSE path's sums
+ * carried the sine table's sin(pi) = 1.2e-16 into them: -7.65e-17 for the
+ * hand-worked file of test/golden/hand_n4_weights.txt). */
+static int is_plus_zero(double x)
+{
+    const double zero = 0.0;
+    return memcmp(&x, &zero, sizeof x) == 0;
+}
+
+static void test_the_imaginary_mean_at_k_0_and_nyquist_is_exactly_0(void)
+{
+    static const mcs_spectrum_path paths[] = {MCS_SPECTRUM_PATH_SPARSE, MCS_SPECTRUM_PATH_FFT,
+                                              MCS_SPECTRUM_PATH_PAIR, MCS_SPECTRUM_PATH_AUTO};
+    /* the hand-worked file: s = (1, 2, 0, 0) and s = (0, 0, 0, 0.5) */
+    const size_t b1[2] = {0u, 1u}, b2[1] = {3u};
+    const double w1[2] = {1.0, 2.0}, w2[1] = {0.5};
+    for (size_t p = 0; p < 4u; ++p) {
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&acc, 4u));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_set_path(&acc, paths[p]));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_bins(&acc, 2u, b1, w1));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_bins(&acc, 1u, b2, w2));
+        double re, im;
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_mean(&acc, 2u, &re, &im));
+        TEST_ASSERT_EQUAL_DOUBLE(-0.375, re);
+        TEST_ASSERT_TRUE_MESSAGE(is_plus_zero(im), "Im <S_2> of the hand-worked file");
+    }
+    for (size_t i = 0; i < SIZES; ++i)
+        for (size_t p = 0; p < 4u; ++p) {
+            const size_t n = sizes[i];
+            fill(&acc, n, paths[p], 37u);
+            for (size_t q = 0; q < n; q += (n + 1u) / 2u) { /* 0, and N/2 when N is even */
+                if (q != 0u && 2u * q != n)
+                    continue;
+                double re, im;
+                TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_mean(&acc, q, &re, &im));
+                TEST_ASSERT_TRUE_MESSAGE(is_plus_zero(im), "Im <S_k> at k = 0 or N/2");
+            }
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_read_all(&acc, n / 2u + 1u, NULL, out[1],
+                                                                NULL, NULL, NULL));
+            TEST_ASSERT_TRUE(is_plus_zero(out[1][0]));
+            if (n % 2u == 0u) {
+                TEST_ASSERT_TRUE(is_plus_zero(out[1][n / 2u]));
+            }
+        }
+}
+
 /* ---------------- exact ---------------- */
 
 static void exact_reference(const mcs_theory_spectrum *t)
@@ -330,6 +377,7 @@ int main(void)
     RUN_TEST(test_measured_arrays_refuse_overlapping_arrays);
     RUN_TEST(test_measured_standard_errors_need_two_units);
     RUN_TEST(test_measured_arrays_refuse_an_overwritten_object_and_write_nothing);
+    RUN_TEST(test_the_imaginary_mean_at_k_0_and_nyquist_is_exactly_0);
     RUN_TEST(test_exact_arrays_equal_the_per_frequency_calls_for_every_kind);
     RUN_TEST(test_exact_arrays_refuse_bad_calls_and_write_nothing);
     return UNITY_END();
