@@ -41,6 +41,31 @@
  * Cov(S_k, S_l), and the exact mean and Var[I] = (1/K^2) f^T Cov(s) f of the
  * estimator of a caller's f. The note's closed forms are in eq.h.
  *
+ * Exact zeros. Where theory proves a value 0 for every trial, both objects
+ * read it as 0 (+0), not as the rounding its sums leave (1e-17 to 1e-32);
+ * nowhere else is a value forced, however small:
+ * - S_0 and S_{N/2} (N even) are real: the imaginary part of <S_k>, and of
+ *   <S_k S_l*> and Cov(S_k, S_l) with both k and l such, is 0;
+ * - without importance S_0 = K / sqrt(N) in every trial: Cov(S_0, S_l) = 0,
+ *   and Var[I] = Cov(I_f, I_g) = 0 for an f (or g) constant over the bins;
+ *   every kind but uniform has <s_n> = K/N: <S_k> = 0 for k != 0;
+ * - random, homogenized and jitter without importance are stationary:
+ *   Cov(S_k, S_l) = 0 for k != l; stratified without importance is unchanged
+ *   by a shift of N/g bins, g = gcd(N, K): Cov(S_k, S_l) = 0 unless g
+ *   divides k - l (eq. 30 corrected);
+ * - jitter without importance, and uniform whose stored counts repeat every
+ *   N/g bins: s repeats every N/g bins in every trial, so S_k = 0 (its
+ *   mean, power and every second moment with it) unless g divides k;
+ * - uniform, and stratified, homogenized and jitter without importance with
+ *   N dividing K: s is the same in every trial, every covariance and Var[I]
+ *   is 0;
+ * and <S_k S_l*> is 0 where Cov(S_k, S_l) and <S_k> or <S_l> are. A small
+ * value theory does not prove 0 is left as computed: jitter's Var[I] of an
+ * f whose exact values have no energy at the multiples of K is ~1e-32 for
+ * its rounded doubles (their exact variance), which mcs_theory_spectrum_
+ * variance gives; mcs_theory_variance gives it only to its absolute
+ * rounding (3e-19 for examples/sec1_gradient's f).
+ *
  * Conventions: n = N bins, k = K samples per trial, freq a frequency index in
  * [0, N); S_k = N^{-1/2} sum_n e^{-2 pi i k n / N} s_n (eq. 7). Every function
  * validates all inputs before writing anything: on error every output and

@@ -269,6 +269,28 @@ static void fill_view(const mcs_theory *th, mcs_readout *view)
                           .sin_table = th->sin_table};
 }
 
+/* The zeros theory proves for th (theory_internal.h), formed before a
+ * read-out writes (its outputs may lie in *th); 0 for an object that is not
+ * set up (the read-out then refuses it). */
+static int zeros_of(const mcs_theory *th, mcs_theory_zeros *z)
+{
+    if (th == NULL || !theory_is_valid(th))
+        return 0;
+    *z = mcs_theory_zeros_of_(th->kind, th->n, th->k, th->has_importance == 1, th->mean_s);
+    return 1;
+}
+
+/* A complex read-out at (k, l) with the zeros of z applied: all of it where
+ * zero says so, its imaginary part where both S are real (or k = l). */
+static void apply_zeros(const mcs_theory_zeros *z, int zero, size_t k, size_t l, double *re,
+                        double *im)
+{
+    if (zero)
+        *re = *im = 0.0;
+    if (mcs_theory_im_zero_(z, k, l))
+        *im = 0.0;
+}
+
 /* Opens th for a read-out of <s> alone (bin_mean, mean, estimator_mean):
  * MCS_ERR_UNINIT, then MCS_ERR_INVARIANT for the O(N) part. */
 static mcs_status open_first(const void *obj, mcs_readout *view)
@@ -347,12 +369,17 @@ static mcs_status clamp_nonnegative(double tol, double *v)
     return MCS_OK;
 }
 
-/* <|S_freq|^2> from the shared eq. 16, real (as mcs_readout_power). */
+/* <|S_freq|^2> from the shared eq. 16, real (as mcs_readout_power); 0 where
+ * S_freq is 0 in every trial. */
 static mcs_status power_at(const mcs_theory *th, const mcs_readout *view, size_t freq, double *p)
 {
     double im;
+    mcs_theory_zeros z;
     mcs_readout_cross_at(view, freq, freq, p, &im);
-    return clamp_nonnegative(*p < 0.0 ? power_tolerance(th, view) : 0.0, p);
+    mcs_status st = clamp_nonnegative(*p < 0.0 ? power_tolerance(th, view) : 0.0, p);
+    if (st == MCS_OK && zeros_of(th, &z) && mcs_theory_s_zero_(&z, freq))
+        *p = 0.0;
+    return st;
 }
 
 /* Cov(S_freq, S_freq) with the arithmetic of the shared covariance_at
@@ -365,7 +392,11 @@ static mcs_status variance_at(const mcs_theory *th, const mcs_readout *view, siz
     mcs_readout_dft(view, view->first, freq, &kr, &ki);
     *re += -1.0 * (kr * kr + ki * ki);
     *im += -1.0 * (ki * kr - kr * ki);
-    return clamp_nonnegative(*re < 0.0 ? variance_tolerance(th, view) : 0.0, re);
+    mcs_status st = clamp_nonnegative(*re < 0.0 ? variance_tolerance(th, view) : 0.0, re);
+    mcs_theory_zeros z;
+    if (st == MCS_OK && zeros_of(th, &z))
+        apply_zeros(&z, mcs_theory_cov_zero_(&z, freq, freq), freq, freq, re, im);
+    return st;
 }
 
 mcs_status mcs_theory_bin_mean(const mcs_theory *th, size_t bin, double *out)
@@ -392,7 +423,16 @@ mcs_status mcs_theory_bin_second(const mcs_theory *th, size_t bin_m, size_t bin_
 mcs_status mcs_theory_mean(const mcs_theory *th, size_t freq, double *re, double *im)
 {
     const mcs_readout_source src = {th, open_first};
-    return mcs_readout_mean(&src, freq, re, im);
+    mcs_theory_zeros z;
+    const int known = zeros_of(th, &z);
+    mcs_status st = mcs_readout_mean(&src, freq, re, im);
+    if (st == MCS_OK && known) {
+        if (mcs_theory_mean_zero_(&z, freq))
+            *re = *im = 0.0;
+        if (mcs_theory_real_freq_(&z, freq))
+            *im = 0.0;
+    }
+    return st;
 }
 
 mcs_status mcs_theory_power(const mcs_theory *th, size_t freq, double *out)
@@ -440,7 +480,12 @@ mcs_status mcs_theory_cross(const mcs_theory *th, size_t freq_k, size_t freq_l, 
     if (freq_k == freq_l)
         return read_diagonal(th, freq_k, re, im, power_im);
     const mcs_readout_source src = {th, mcs_readout_open_theory};
-    return mcs_readout_cross(&src, freq_k, freq_l, re, im);
+    mcs_theory_zeros z;
+    const int known = zeros_of(th, &z);
+    mcs_status st = mcs_readout_cross(&src, freq_k, freq_l, re, im);
+    if (st == MCS_OK && known)
+        apply_zeros(&z, mcs_theory_cross_zero_(&z, freq_k, freq_l), freq_k, freq_l, re, im);
+    return st;
 }
 
 mcs_status mcs_theory_covariance(const mcs_theory *th, size_t freq_k, size_t freq_l,
@@ -449,7 +494,23 @@ mcs_status mcs_theory_covariance(const mcs_theory *th, size_t freq_k, size_t fre
     if (freq_k == freq_l)
         return read_diagonal(th, freq_k, re, im, variance_at);
     const mcs_readout_source src = {th, mcs_readout_open_theory};
-    return mcs_readout_covariance(&src, freq_k, freq_l, re, im);
+    mcs_theory_zeros z;
+    const int known = zeros_of(th, &z);
+    mcs_status st = mcs_readout_covariance(&src, freq_k, freq_l, re, im);
+    if (st == MCS_OK && known)
+        apply_zeros(&z, mcs_theory_cov_zero_(&z, freq_k, freq_l), freq_k, freq_l, re, im);
+    return st;
+}
+
+/* Every entry of a matrix read-out (re, im of n * n, not in *th) with the
+ * zeros of z; cov picks the covariance's rule, else the cross moment's. */
+static void matrix_zeros(const mcs_theory_zeros *z, size_t n, int cov, double *re, double *im)
+{
+    for (size_t k = 0; k < n; ++k)
+        for (size_t l = 0; l < n; ++l) {
+            const int zero = cov ? mcs_theory_cov_zero_(z, k, l) : mcs_theory_cross_zero_(z, k, l);
+            apply_zeros(z, zero, k, l, &re[k * n + l], &im[k * n + l]);
+        }
 }
 
 /* The matrices: every diagonal judged first (O(N^3), as the matrix), so a
@@ -475,6 +536,9 @@ mcs_status mcs_theory_cross_matrix(const mcs_theory *th, size_t n, double *re, d
         st = mcs_readout_cross_matrix(&src, n, re, im);
     for (size_t k = 0; st == MCS_OK && k < n; ++k) /* rounding, as power_at found */
         re[k * n + k] = fmax(re[k * n + k], 0.0);
+    mcs_theory_zeros z;
+    if (st == MCS_OK && zeros_of(th, &z))
+        matrix_zeros(&z, n, 0, re, im);
     return st;
 }
 
@@ -513,6 +577,9 @@ mcs_status mcs_theory_covariance_matrix(const mcs_theory *th, size_t n, double *
     }
     for (size_t k = 0; st == MCS_OK && k < n; ++k) /* rounding, as variance_at found */
         re[k * n + k] = fmax(re[k * n + k], 0.0);
+    mcs_theory_zeros z;
+    if (st == MCS_OK && zeros_of(th, &z))
+        matrix_zeros(&z, n, 1, re, im);
     return st;
 }
 
@@ -547,6 +614,9 @@ mcs_status mcs_theory_variance(const mcs_theory *th, size_t n, size_t k, const d
     if (!isfinite(var)) /* f so large that the form overflows */
         return MCS_ERR_MAGNITUDE;
     st = clamp_nonnegative(var < 0.0 ? mcs_theory_form_tolerance_(th, &v, f) : 0.0, &var);
+    mcs_theory_zeros z;
+    if (st == MCS_OK && zeros_of(th, &z) && mcs_theory_estimator_zero_(&z, n, f, f))
+        var = 0.0;
     return st == MCS_OK ? mcs_set_(out, var) : st;
 }
 
@@ -554,5 +624,12 @@ mcs_status mcs_theory_estimator_covariance(const mcs_theory *th, size_t n, size_
                                            const double *f, const double *g, double *out)
 {
     const mcs_readout_source src = {th, mcs_readout_open_theory};
-    return mcs_readout_estimator_covariance(&src, n, k, f, g, out);
+    /* judged before the read-out writes: out may be an element of f or g */
+    mcs_theory_zeros z;
+    const int zero = f != NULL && g != NULL && zeros_of(th, &z) && n == th->n &&
+                     mcs_theory_estimator_zero_(&z, n, f, g);
+    mcs_status st = mcs_readout_estimator_covariance(&src, n, k, f, g, out);
+    if (st == MCS_OK && zero)
+        *out = 0.0;
+    return st;
 }

@@ -174,6 +174,12 @@ static mcs_status check_integrands(int outputs, const mcs_theory_spectrum *ts, s
 
 /* Eq. 15 from <s> with the object's twiddles: the read-out shared with the
  * N x N moments, so both give <S_k> to the last bit. */
+static mcs_theory_zeros zeros_of(const mcs_theory_spectrum *ts)
+{
+    return mcs_theory_zeros_of_(ts->kind, ts->n, ts->k, ts->has_importance, ts->mean_s);
+}
+
+/* Eq. 15 from <s>, with the zeros theory proves (theory_internal.h). */
 static void mean_at(const mcs_theory_spectrum *ts, size_t freq, double *re, double *im)
 {
     const mcs_readout view = {.n = ts->n,
@@ -182,7 +188,12 @@ static void mean_at(const mcs_theory_spectrum *ts, size_t freq, double *re, doub
                               .first = ts->mean_s,
                               .cos_table = ts->cos_table,
                               .sin_table = ts->sin_table};
+    const mcs_theory_zeros z = zeros_of(ts);
     mcs_readout_dft(&view, ts->mean_s, freq, re, im);
+    if (mcs_theory_mean_zero_(&z, freq))
+        *re = *im = 0.0;
+    if (mcs_theory_real_freq_(&z, freq))
+        *im = 0.0;
 }
 
 /* Cov(S_k, S_l). The homogenized covariance is circulant (a function of the
@@ -201,8 +212,11 @@ static void covariance_at(const mcs_theory_spectrum *ts, size_t freq_k, size_t f
     } else {
         mcs_theory_cov_(ts, &x, yp, re, im);
     }
-    if (freq_k == freq_l)
-        *im = 0.0; /* a variance: real (the parts cancel to rounding) */
+    const mcs_theory_zeros z = zeros_of(ts);
+    if (mcs_theory_cov_zero_(&z, freq_k, freq_l))
+        *re = *im = 0.0;
+    if (mcs_theory_im_zero_(&z, freq_k, freq_l))
+        *im = 0.0; /* a variance, or two real S: real (the parts cancel to rounding) */
 }
 
 static double power_at(const mcs_theory_spectrum *ts, size_t freq)
@@ -267,8 +281,14 @@ mcs_status mcs_theory_spectrum_cross(const mcs_theory_spectrum *ts, size_t freq_
     covariance_at(ts, freq_k, freq_l, &cr, &ci);
     mean_at(ts, freq_k, &kr, &ki);
     mean_at(ts, freq_l, &lr, &li);
-    /* + <S_k><S_l>* = (kr + i ki)(lr - i li) */
-    return set_complex(re, im, cr + (kr * lr + ki * li), ci + (ki * lr - kr * li), 0);
+    /* + <S_k><S_l>* = (kr + i ki)(lr - i li); the zeros exactly (above) */
+    const mcs_theory_zeros z = zeros_of(ts);
+    double r = cr + (kr * lr + ki * li), i = ci + (ki * lr - kr * li);
+    if (mcs_theory_cross_zero_(&z, freq_k, freq_l))
+        r = i = 0.0;
+    if (mcs_theory_im_zero_(&z, freq_k, freq_l))
+        i = 0.0;
+    return set_complex(re, im, r, i, 0);
 }
 
 /* Every stored frequency at once: the per-frequency values (mean_at,
@@ -330,9 +350,12 @@ mcs_status mcs_theory_spectrum_estimator_mean(const mcs_theory_spectrum *ts, siz
     return set_real(out, sum / (double)k, 0);
 }
 
-/* (1/K^2) Cov(sum f s, sum g s): I = (1/K) sum f s. */
+/* (1/K^2) Cov(sum f s, sum g s): I = (1/K) sum f s; 0 where theory says so. */
 static double estimator_cov(const mcs_theory_spectrum *ts, const double *f, const double *g)
 {
+    const mcs_theory_zeros z = zeros_of(ts);
+    if (mcs_theory_estimator_zero_(&z, ts->n, f, g))
+        return 0.0;
     const mcs_theory_weight x = {f, 0u, 1.0, 0u}, y = {g, 0u, 1.0, 0u};
     double re, im;
     mcs_theory_cov_(ts, &x, f == g ? &x : &y, &re, &im);
