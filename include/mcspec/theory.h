@@ -105,7 +105,10 @@ typedef struct {
  * importance, any K in [1, MCS_MAX_K], pat->n <= MCS_MAX_COV_N). pat is read,
  * not kept. MCS_ERR_NULL, MCS_ERR_N_RANGE (pat->n > MCS_MAX_COV_N),
  * MCS_ERR_UNINIT (pat->n == 0, pat->k == 0 or above MCS_MAX_K, unknown kind,
- * or an importance function of the wrong n), MCS_ERR_KIND (homogenized with importance). *th untouched on error. */
+ * or an importance function of the wrong n or not as mcs_importance_init
+ * leaves one), MCS_ERR_KIND (homogenized with importance). *th untouched on
+ * error. An importance function with bins of g_n = 0 is fine: no sample
+ * lands there, s_n = 0 in every trial, and every moment of such a bin is 0. */
 mcs_status mcs_theory_init(mcs_theory *th, const mcs_pattern *pat);
 
 /* ---- Read-out: the expectations. Every call returns MCS_ERR_NULL,
@@ -168,12 +171,24 @@ mcs_status mcs_theory_covariance_matrix(const mcs_theory *th, size_t n, double *
                                         double *im);
 
 /* <I> = (1/K) sum_n f_n <s_n> (eq. 9 in the primal domain); equals eq. 11 for
- * every unbiased kind, not for uniform. f[n], n == th->n, else
+ * every unbiased kind, not for uniform, and not where an importance function
+ * has bins with g_n = 0 (their f_n is never sampled: mcs_theory_bias). f[n], n == th->n, else
  * MCS_ERR_MISMATCH; f finite, else MCS_ERR_NOT_FINITE. k is the K of the
  * pattern, named as for mcs_moment_estimator_mean: MCS_ERR_K_RANGE (k = 0),
  * MCS_ERR_MISMATCH (k != th->k). */
 mcs_status mcs_theory_estimator_mean(const mcs_theory *th, size_t n, size_t k, const double *f,
                                      double *out);
+
+/* The estimator's bias <I> - (1/N) sum_n f_n (eq. 11's integral). Random,
+ * stratified, homogenized and jitter are unbiased on the importance
+ * function's support, so it is -(1/N) sum over the bins with g_n = 0 of
+ * f_n, exactly (one sum, no difference of <I> and the integral; 0 without
+ * importance or with every g_n > 0); uniform's is that of its
+ * deterministic counts, (1/(K N)) sum_n f_n (N <s_n> - K). Arguments and
+ * statuses as mcs_theory_estimator_mean, and MCS_ERR_MAGNITUDE (|f_n| above
+ * MCS_ESTIMATE_MAX_ABS). O(N). */
+mcs_status mcs_theory_bias(const mcs_theory *th, size_t n, size_t k, const double *f,
+                           double *out);
 
 /* Exact Var[I] = (1/K^2) f^T Cov(s) f for I = (1/K) sum_n f_n s_n (eq. 8).
  * Arguments and statuses as mcs_theory_estimator_mean. Never negative: the
@@ -262,7 +277,8 @@ typedef struct {
  * O(N log K) for uniform) and, for jitter, the sorted bin edges
  * (O(N log N)). pat is read, not kept. MCS_ERR_NULL,
  * MCS_ERR_UNINIT (pat->n == 0, pat->k == 0 or above MCS_MAX_K, unknown kind,
- * an importance function not initialised or of another n), MCS_ERR_N_RANGE (pat->n >
+ * an importance function not initialised, overwritten or of another n;
+ * bins with g_n = 0 are fine, as for mcs_theory_init), MCS_ERR_N_RANGE (pat->n >
  * MCS_MAX_N), MCS_ERR_KIND (homogenized with importance). *ts untouched on
  * error. */
 mcs_status mcs_theory_spectrum_init(mcs_theory_spectrum *ts, const mcs_pattern *pat);
@@ -325,6 +341,12 @@ mcs_status mcs_theory_spectrum_covariance(const mcs_theory_spectrum *ts, size_t 
  * so this and the two calls below return finite values. O(N). */
 mcs_status mcs_theory_spectrum_estimator_mean(const mcs_theory_spectrum *ts, size_t n,
                                               size_t k, const double *f, double *out);
+
+/* The bias <I> - (1/N) sum_n f_n, as mcs_theory_bias (the same arithmetic):
+ * -(1/N) sum over the bins outside the support of f_n but for uniform.
+ * Arguments and statuses as mcs_theory_spectrum_estimator_mean. O(N). */
+mcs_status mcs_theory_spectrum_bias(const mcs_theory_spectrum *ts, size_t n, size_t k,
+                                    const double *f, double *out);
 
 /* Var[I] of I = (1/K) sum_n f_n s_n (eq. 8), never negative. Arguments and
  * statuses as mcs_theory_spectrum_estimator_mean. O(N) (homogenized

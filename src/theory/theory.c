@@ -590,6 +590,22 @@ mcs_status mcs_theory_estimator_mean(const mcs_theory *th, size_t n, size_t k, c
     return mcs_readout_estimator_mean(&src, n, k, f, out);
 }
 
+mcs_status mcs_theory_bias(const mcs_theory *th, size_t n, size_t k, const double *f,
+                           double *out)
+{
+    if (out == NULL)
+        return MCS_ERR_NULL;
+    const mcs_readout_source src = {th, open_first};
+    mcs_readout v;
+    mcs_status st = mcs_readout_check_integrand(&src, n, k, f, &v);
+    if (st == MCS_OK)
+        st = mcs_check_integrand_(n, f);
+    if (st != MCS_OK)
+        return st;
+    const double bias = mcs_theory_bias_of_(th->kind, n, k, th->mean_s, f);
+    return isfinite(bias) ? mcs_set_(out, bias) : MCS_ERR_INVARIANT;
+}
+
 double mcs_theory_form_tolerance_(const mcs_theory *th, const mcs_readout *view,
                                   const double *f)
 {

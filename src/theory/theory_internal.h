@@ -10,6 +10,7 @@
 
 #include "core/internal.h"
 #include "accumulators/readout.h"
+#include "patterns/importance_internal.h"
 #include "mcspec/importance.h"
 #include "mcspec/pattern.h"
 #include "mcspec/theory.h"
@@ -32,9 +33,13 @@ static inline double mcs_theory_length_(const mcs_pattern *pat, size_t b)
     return 1.0 / (double)pat->n;
 }
 
+/* 0 outside the support (p_b = 0): no sample lands there, none weighs. */
 static inline double mcs_theory_inv_p_(const mcs_pattern *pat, size_t b)
 {
-    return pat->importance != NULL ? 1.0 / pat->importance->p[b] : 1.0;
+    if (pat->importance == NULL)
+        return 1.0;
+    const double p = pat->importance->p[b];
+    return p > 0.0 ? 1.0 / p : 0.0;
 }
 
 /* Bin of the uniform pattern's u_j = (j + 1/2)/K, by the generator's own
@@ -93,7 +98,8 @@ static inline mcs_status mcs_theory_check_pattern_(const mcs_pattern *pat, size_
     if (pat->importance != NULL) {
         if (pat->kind == MCS_PATTERN_HOMOGENIZED)
             return MCS_ERR_KIND;
-        if (pat->importance->n != pat->n || !mcs_importance_is_valid_(pat->importance))
+        if (pat->importance->n != pat->n || !mcs_importance_is_valid_(pat->importance) ||
+            !mcs_importance_sound_(pat->importance))
             return MCS_ERR_UNINIT;
     }
     return MCS_OK;
@@ -225,6 +231,31 @@ static inline int mcs_theory_estimator_zero_(const mcs_theory_zeros *z, size_t n
                                              const double *g)
 {
     return z->fixed || (z->no_imp && (mcs_theory_constant_(n, f) || mcs_theory_constant_(n, g)));
+}
+
+/* ---- the bias of the estimator ------------------------------------------------ */
+
+/* <I> - (1/N) sum_n f_n, from the stored <s>: random, stratified, homogenized
+ * and jitter have <s_n> = K/N on the importance function's support (p_n and
+ * the sampled interval lengths agree) and 0 outside it (<s_n> = 0 there, and
+ * only there), so the bias is -(1/N) sum over those bins of f_n, one sum and
+ * no difference of nearby values; uniform's <s_n> are its weighted counts,
+ * and its bias (1/(K N)) sum_n f_n (N <s_n> - K), each N <s_n> - K with one
+ * rounding (exact without importance: integer counts). */
+static inline double mcs_theory_bias_of_(mcs_pattern_kind kind, size_t n, size_t k,
+                                         const double *mean_s, const double *f)
+{
+    const double kd = (double)k, nd = (double)n;
+    double sum = 0.0;
+    if (kind == MCS_PATTERN_UNIFORM) {
+        for (size_t b = 0; b < n; ++b)
+            sum += f[b] * fma(nd, mean_s[b], -kd);
+        return sum / (kd * nd);
+    }
+    for (size_t b = 0; b < n; ++b)
+        if (mean_s[b] == 0.0)
+            sum += f[b];
+    return -sum / nd;
 }
 
 /* ---- src/theory/theory.c: the rounding exact moments carry ------------------ */

@@ -67,7 +67,8 @@ static int in_range(double x, double lo, double hi)
 }
 
 /* The body as mcs_theory_spectrum_init writes it: edges rising from 0 to K,
- * lengths in [0, 1], weights 1/p_b in (0, 2^33], means and twiddles
+ * lengths in [0, 1], weights 1/p_b in (0, 2^33] (0 for a bin of length 0:
+ * outside the support), means and twiddles
  * bounded. Then every covariance term is a weight >= 0 times a squared
  * deviation (the strata overlaps are >= 0 because the edges rise), so
  * variances and powers are sums of non-negative finite terms: >= 0 with no
@@ -81,7 +82,9 @@ static int body_is_sound(const mcs_theory_spectrum *ts)
     for (size_t b = 0; b < n; ++b) {
         sound &= ts->edge[b] <= ts->edge[b + 1u];
         sound &= in_range(ts->length[b], 0.0, 1.0);
-        sound &= in_range(ts->inv_p[b], DBL_MIN, MAX_INV_P);
+        /* 0 only outside the support, where no sample lands (length 0) */
+        sound &= in_range(ts->inv_p[b], DBL_MIN, MAX_INV_P) |
+                 (ts->inv_p[b] == 0.0 && ts->length[b] == 0.0);
         sound &= in_range(ts->mean_s[b], -MAX_MEAN_S, MAX_MEAN_S);
         sound &= in_range(ts->cos_table[b], -1.0, 1.0) & in_range(ts->sin_table[b], -1.0, 1.0);
     }
@@ -348,6 +351,14 @@ mcs_status mcs_theory_spectrum_estimator_mean(const mcs_theory_spectrum *ts, siz
     for (size_t b = 0; b < n; ++b)
         sum += f[b] * ts->mean_s[b];
     return set_real(out, sum / (double)k, 0);
+}
+
+mcs_status mcs_theory_spectrum_bias(const mcs_theory_spectrum *ts, size_t n, size_t k,
+                                    const double *f, double *out)
+{
+    mcs_status st = check_integrands(out != NULL, ts, n, k, f, NULL);
+    return st == MCS_OK ? set_real(out, mcs_theory_bias_of_(ts->kind, n, k, ts->mean_s, f), 0)
+                        : st;
 }
 
 /* (1/K^2) Cov(sum f s, sum g s): I = (1/K) sum f s; 0 where theory says so. */

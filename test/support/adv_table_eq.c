@@ -31,6 +31,11 @@ static int t_eq55_variance_convolution(const adv_val *a) { return mcs_eq55_varia
 static int t_eq58_bound_printed(const adv_val *a) { return mcs_eq58_bound_printed(a[0].p, a[1].z, a[2].p, a[3].p); }
 static int t_eq58_bound_corrected(const adv_val *a) { return mcs_eq58_bound_corrected(a[0].p, a[1].z, a[2].p, a[3].p); }
 /* The exact read-outs added beside the closed forms (theory.h). */
+static int t_theory_bias(const adv_val *a) { return mcs_theory_bias(a[0].p, a[1].z, a[2].z, a[3].p, a[4].p); }
+static int t_theory_spectrum_bias(const adv_val *a)
+{
+    return mcs_theory_spectrum_bias(a[0].p, a[1].z, a[2].z, a[3].p, a[4].p);
+}
 static int t_theory_rotation_init(const adv_val *a)
 {
     return mcs_theory_rotation_init(a[0].p, a[1].z, a[2].z, a[3].p, a[4].p, a[5].z);
@@ -127,6 +132,9 @@ const adv_fn adv_fns_eq[] = {
        AOUT("mean_im", E_D, O_VAL, LEN(L_SLOT, 1), F_NULLOK),
        AOUT("variance", E_D, O_NN, LEN(L_SLOT, 1), F_NULLOK),
        AOUT("power", E_D, O_NN, LEN(L_SLOT, 1), F_NULLOK)),
+    FN(theory_bias, EF_NONE, 1, 0, TH, N_MATCH, K_MATCH, F_N("f", 1), OUT_VAL("out")),
+    FN(theory_spectrum_bias, EF_NONE, 1, 0, OBJ_IN("ts", T_TSPEC, F_SIZED),
+       SZ_MATCH("n", BN, MCS_MAX_N), K_MATCH, F_N("f", 1), OUT_VAL("out")),
     FN(theory_rotation_init, EF_NONE, 1, 1,
        AOUT("rot", E_U8, O_RAW, ROT_LEN, 0),
        SZ_DEF("n", BN, 1, MCS_MAX_N, 0), SZ_LEN("k", BK),
