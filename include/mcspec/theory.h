@@ -219,7 +219,7 @@ mcs_status mcs_theory_estimator_covariance(const mcs_theory *th, size_t n, size_
  * with and without importance, any K. The object copies what it needs, so
  * the pattern and its importance function may go away after the init:
  *
- *     static mcs_theory_spectrum ts;         (about 224 KiB: not on a small stack)
+ *     static mcs_theory_spectrum ts;         (about 256 KiB: not on a small stack)
  *     mcs_pattern_init(&pat, MCS_PATTERN_JITTER, n, k, &imp);
  *     mcs_theory_spectrum_init(&ts, &pat);              O(N log N)
  *     mcs_theory_power_spectrum(&ts, n, power);         power[n] = <|S_k|^2>, all k, O(N^2)
@@ -245,7 +245,13 @@ mcs_status mcs_theory_estimator_covariance(const mcs_theory *th, size_t n, size_
  * accuracy. The bins, edges and weights are those of mcs_theory (the same
  * arithmetic), so where N <= MCS_MAX_COV_N the two objects agree to 1e-12 of
  * the scale of the moments (tested for every kind, with and without
- * importance, K dividing N or not, K > N).
+ * importance, K dividing N or not, K > N), and so do both with the exact
+ * values (edges taken as exact integers, long double sums) under an extreme
+ * importance function: weights 1e6 and 1 (N = 39, K = 19, g ~ 2.5e-7 in
+ * the small bins, which weigh 1/p ~ 1e5). That needs each bin's edge with
+ * its rounding (edge_lo): a small bin's overlap with a stratum, or its
+ * piece of jitter's beta, is a difference of nearby edges, and from the
+ * rounded edges alone it erred by K 2^-53, 1.6e-11 of the scale there.
  *
  * Every read-out validates all inputs first and writes nothing on error:
  * MCS_ERR_NULL, MCS_ERR_UNINIT (ts not set up), and as stated. Nothing
@@ -255,7 +261,7 @@ mcs_status mcs_theory_estimator_covariance(const mcs_theory *th, size_t n, size_
  * covariances are formed from, for N up to MCS_MAX_N. Caller-owned; filled by
  * mcs_theory_spectrum_init, which copies everything it needs (the pattern's
  * importance function need not outlive it). sizeof at the default
- * MCS_MAX_N = 4096 is 229,416 bytes on LP64 (7 arrays of N). */
+ * MCS_MAX_N = 4096 is 262,192 bytes on LP64 (8 arrays of N). */
 typedef struct {
     mcs_pattern_kind kind;        /* pattern kind */
     size_t n;                     /* bins N, 1..MCS_MAX_N (0: not set up) */
@@ -264,6 +270,9 @@ typedef struct {
     double mean_s[MCS_MAX_N];     /* <s_n>, n in [0, N) */
     double edge[MCS_MAX_N + 1];   /* bin b is [edge[b], edge[b+1]) in t = u K units (the
                                      CDF interval times K), edge[0] = 0, edge[N] = K */
+    double edge_lo[MCS_MAX_N + 1]; /* the rounding of edge[b]: edge + edge_lo is the exact
+                                      K cdf[b] (to ~2^-106 of it); a small bin's overlaps
+                                      are differences of nearby edges, taken with it */
     double length[MCS_MAX_N];     /* P(one uniform u lands in bin b) */
     double inv_p[MCS_MAX_N];      /* the weight 1/p_b of a sample in bin b */
     size_t order[MCS_MAX_N];      /* jitter: bins 1..N-1 ordered by the fractional part of

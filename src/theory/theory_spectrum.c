@@ -14,8 +14,10 @@
 static void fill_bins(mcs_theory_spectrum *ts, const mcs_pattern *pat)
 {
     const size_t n = pat->n;
-    for (size_t b = 0; b <= n; ++b)
+    for (size_t b = 0; b <= n; ++b) {
         ts->edge[b] = mcs_theory_edge_(pat, b);
+        ts->edge_lo[b] = mcs_theory_edge_lo_(pat, b);
+    }
     for (size_t b = 0; b < n; ++b) {
         ts->length[b] = mcs_theory_length_(pat, b);
         ts->inv_p[b] = mcs_theory_inv_p_(pat, b);
@@ -79,6 +81,8 @@ static int body_is_sound(const mcs_theory_spectrum *ts)
 {
     const size_t n = ts->n;
     int sound = ts->edge[0] == 0.0 && ts->edge[n] == (double)ts->k;
+    for (size_t b = 0; b <= n; ++b) /* an edge's rounding: at most half its ulp */
+        sound &= fabs(ts->edge_lo[b]) <= 0x1p-52 * fabs(ts->edge[b]);
     for (size_t b = 0; b < n; ++b) {
         sound &= ts->edge[b] <= ts->edge[b + 1u];
         sound &= in_range(ts->length[b], 0.0, 1.0);
@@ -101,15 +105,27 @@ static int order_is_sound(const mcs_theory_spectrum *ts)
     return sound;
 }
 
+/* The edges rise from 0 to K: the strata overlaps and jitter pieces are
+ * read from them (a bin inside a stratum by its length, so edges out of
+ * order would not show as a negative overlap). O(N). */
+static int edges_are_sound(const mcs_theory_spectrum *ts)
+{
+    int sound = ts->edge[0] == 0.0 && ts->edge[ts->n] == (double)ts->k;
+    for (size_t b = 0; b < ts->n; ++b)
+        sound &= ts->edge[b] <= ts->edge[b + 1u];
+    return sound;
+}
+
 /* Outputs given (else NULL), ts set up (else UNINIT), its indices inside
- * the object (else INVARIANT: a corrupted object, refused before a read). */
+ * the object and its edges in order (else INVARIANT: a corrupted object,
+ * refused before a read). */
 static mcs_status check_ts(int outputs, const mcs_theory_spectrum *ts)
 {
     if (!outputs || ts == NULL)
         return MCS_ERR_NULL;
     if (ts->n == 0u || ts->n > (size_t)MCS_MAX_N || ts->k == 0u || !mcs_kind_is_valid_(ts->kind))
         return MCS_ERR_UNINIT;
-    return order_is_sound(ts) ? MCS_OK : MCS_ERR_INVARIANT;
+    return order_is_sound(ts) && edges_are_sound(ts) ? MCS_OK : MCS_ERR_INVARIANT;
 }
 
 /* check_ts, then frequencies below N (else FREQ_RANGE). */
