@@ -20,15 +20,13 @@
  * jitter, exactly. The generator is random. The first 2^m Halton base-3
  * points are no mcspec pattern: they are compared with jitter (what a
  * renderer might expect of a low-discrepancy dimension), and their exact
- * value is the average over the rotation of their fixed set, computed here:
- * with A_j = N a_j, the bin offset n_j - n_j' of two rotated points is
- * floor(D) or floor(D) + 1, D = A_j - A_j', the latter with probability
- * frac(D); both read-outs follow from that offset histogram h(d):
- *     <|S_q|^2> = (1/N) sum_d h(d) cos(2 pi q d / N),
- *     Var[I]    = (1/K^2) sum_d h(d) R(d) - fbar^2,  R(d) = (1/N) sum_n f_n f_{n+d},
- * the latter because the bin of a rotated point is uniform and independent
- * of the offset. The same formula on the van der Corput set must give
- * mcspec's jitter theory: the example checks that. */
+ * value is the average over the rotation of their fixed set,
+ * mcs_theory_rotation (theory.h: with A_j = N a_j, the bin offset
+ * n_j - n_j' of two rotated points is floor(D) or floor(D) + 1,
+ * D = A_j - A_j', the latter with probability frac(D), and both read-outs
+ * follow from that offset histogram). The same rotation average of the van
+ * der Corput set must give mcspec's jitter theory: the example checks
+ * that, two independent routes to the same exact numbers. */
 #include "mcspec.h"
 #include "measure.h"
 #include "readout.h"
@@ -37,7 +35,6 @@
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
-#include <string.h>
 
 static const char help_text[] =
     "A renderer's pixel loop with its own samplers (issue 9): an image of T pixels,\n"
@@ -55,13 +52,12 @@ static const char help_text[] =
     "(closed: eq. 23, eq. 25). Halton base 3 with K = 2^m is not jitter: its\n"
     "closed column holds mcspec's exact jitter value (the comparison a renderer\n"
     "might make) and its exact column the rotation average of its fixed set,\n"
-    "computed by this example. --trials is the pixel count T, --k must be a\n"
+    "mcs_theory_rotation. --trials is the pixel count T, --k must be a\n"
     "power of 2, --n is the texture's texels and the spectrum's bins.\n";
 
 #define WIDTH 32u   /* pixels per image row */
 #define MAX_K 4096u /* samples per pixel */
 #define SECTION "renderer"
-#define TWO_PI 6.283185307179586476925286766559
 
 enum { D_VDC, D_HALTON3, D_RANDOM, D_COUNT };
 static const char *const dim_name[D_COUNT] = {"vdc-cp", "halton3-cp", "rng"};
@@ -82,8 +78,25 @@ static double theory_power(const mcs_theory *th, size_t freq)
     double v = 0.0;
     return ex_or_na(mcs_theory_power(th, freq, &v), &v);
 }
-static double offsets[2][MCS_MAX_COV_N]; /* h(d) of the rotated vdc and halton3 sets */
+/* The rotation averages of the fixed vdc and halton3 sets (mcspec's exact
+ * theory of a Cranley-Patterson rotated set), their h(d) in work. */
+static mcs_theory_rotation rotation[2];
+static double rotation_work[2][MCS_THEORY_ROTATION_LEN(MCS_MAX_COV_N)];
 static double base_set[MAX_K];
+
+/* The rotation average's <|S_freq|^2> and Var[I] of the texture, EX_NA if
+ * the read-out fails. */
+static double rotation_power(int s, size_t freq)
+{
+    double v = 0.0;
+    return ex_or_na(mcs_theory_rotation_power(&rotation[s], freq, &v), &v);
+}
+
+static double rotation_variance(int s, size_t n, size_t k)
+{
+    double v = 0.0;
+    return ex_or_na(mcs_theory_rotation_variance(&rotation[s], n, k, texture, &v), &v);
+}
 
 /* What the summary reads: per dimension the largest |z| against the closed
  * and the exact column, and the measured Var[I]; jitter's exact Var[I]. */
@@ -198,47 +211,7 @@ static mcs_status render(const ex_options *opt)
 
 /* ---- predictions ---- */
 
-/* h(d): the rotation-averaged histogram of the bin offsets of all K^2
- * ordered pairs of the fixed set a (see the top of the file). */
-static void rotation_offsets(size_t n, size_t k, const double *a, double *h)
-{
-    memset(h, 0, n * sizeof h[0]);
-    for (size_t j = 0; j < k; ++j)
-        for (size_t jj = 0; jj < k; ++jj) {
-            double dist = (double)n * (a[j] - a[jj]);
-            double fl = floor(dist), phi = dist - fl;
-            long m = (long)fl % (long)n;
-            size_t d = (size_t)(m < 0 ? m + (long)n : m);
-            h[d] += 1.0 - phi;
-            h[(d + 1u) % n] += phi;
-        }
-}
-
-static double rotation_power(size_t n, const double *h, size_t freq)
-{
-    double sum = 0.0;
-    for (size_t d = 0; d < n; ++d)
-        sum += h[d] * cos(TWO_PI * (double)((freq * d) % n) / (double)n);
-    return sum / (double)n;
-}
-
-static double rotation_variance(size_t n, size_t k, const double *h)
-{
-    /* sum_d h(d) = K^2, so subtracting fbar^2 is centring f: the sum then
-     * holds no O(fbar^2) terms that cancel. */
-    double fbar = 0.0, second = 0.0;
-    for (size_t b = 0; b < n; ++b)
-        fbar += texture[b] / (double)n;
-    for (size_t d = 0; d < n; ++d) {
-        double r = 0.0;
-        for (size_t b = 0; b < n; ++b)
-            r += (texture[b] - fbar) * (texture[(b + d) % n] - fbar);
-        second += h[d] * r / (double)n;
-    }
-    return second / ((double)k * (double)k);
-}
-
-/* mcspec's theory of jitter and random, and h(d) of the two rotated sets
+/* mcspec's theory of jitter and random, and of the two rotated sets
  * (their unrotated points from the samplers above). */
 static mcs_status predict(const ex_options *opt)
 {
@@ -254,7 +227,8 @@ static mcs_status predict(const ex_options *opt)
     for (int s = 0; s < 2 && st == MCS_OK; ++s) {
         for (uint32_t j = 0; j < (uint32_t)opt->k; ++j)
             base_set[j] = (double)unit(s == 0 ? vdc_bits(j) : halton3_bits(j));
-        rotation_offsets(opt->n, opt->k, base_set, offsets[s]);
+        st = mcs_theory_rotation_init(&rotation[s], opt->n, opt->k, base_set,
+                                      rotation_work[s], MCS_THEORY_ROTATION_LEN(MCS_MAX_COV_N));
     }
     return st;
 }
@@ -297,7 +271,7 @@ static void spectrum_section(const ex_options *opt, summary *sum)
             } else {
                 eq = "as jitter";
                 closed = theory_power(&jitter, q);
-                exact = rotation_power(n, offsets[1], q);
+                exact = rotation_power(1, q);
             }
             ex_row r = ex_row_of(SECTION, "<|S_k|^2>", eq, dim_name[d], (long)q, EX_NO_FREQ,
                                  closed, exact, meas, se, floor_);
@@ -319,8 +293,7 @@ static void estimator_section(const ex_options *opt, summary *sum)
     double mean_jitter = ex_or_na(mcs_theory_estimator_mean(&jitter, n, k, texture, &v), &v);
     double mean_random = ex_or_na(mcs_theory_estimator_mean(&random_th, n, k, texture, &v), &v);
     const double closed_var[D_COUNT] = {eq14, var_jitter, eq25};
-    const double exact_var[D_COUNT] = {var_jitter, rotation_variance(n, k, offsets[1]),
-                                       var_random};
+    const double exact_var[D_COUNT] = {var_jitter, rotation_variance(1, n, k), var_random};
     const double exact_mean[D_COUNT] = {mean_jitter, fbar, mean_random};
     const char *const eq_var[D_COUNT] = {"eq. 14+37", "as jitter", "eq. 25"};
     ex_heading(opt, "the pixel estimate I = (1/K) sum_j f(x_j): mean (eq. 11) and variance");
@@ -345,9 +318,9 @@ static void check_section(const ex_options *opt)
     const size_t n = opt->n, k = opt->k;
     double worst = 0.0, v = 0.0;
     for (size_t q = 0; q < n; ++q)
-        worst = fmax(worst, fabs(rotation_power(n, offsets[0], q) - theory_power(&jitter, q)));
+        worst = fmax(worst, fabs(rotation_power(0, q) - theory_power(&jitter, q)));
     double vj = ex_or_na(mcs_theory_variance(&jitter, n, k, texture, &v), &v);
-    double gap_var = ex_rel_gap(rotation_variance(n, k, offsets[0]), vj, 1e-300);
+    double gap_var = ex_rel_gap(rotation_variance(0, n, k), vj, 1e-300);
     ex_heading(opt, "check: the rotation average of the fixed van der Corput set is jitter");
     ex_notef(opt,
              "over all k, |rotation average - mcspec jitter theory| <= %.2g K^2/N in "

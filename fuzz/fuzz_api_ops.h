@@ -172,7 +172,12 @@ static void op_importance(void)
     begin("importance");
     if (byte() % 2u == 0u) {
         mcs_status st = end(mcs_importance_init(inout(IMP, imp), n, reg(darray(0, len), len * 8, 0)));
-        if (st == MCS_OK && !(imp->harmonic_mean > 0.0 && imp->harmonic_mean <= 1.0))
+        int full = 1; /* H <= 1 when every bin is in the support (a weight of 0 is not) */
+        for (size_t b = 0; st == MCS_OK && b < n; ++b)
+            full &= imp->p[b] > 0.0;
+        if (st == MCS_OK &&
+            !(imp->harmonic_mean > 0.0 && isfinite(imp->harmonic_mean) &&
+              (imp->harmonic_mean <= 1.0 || !full)))
             finding(8, cur_fn, "harmonic mean %.17g outside (0, 1]", imp->harmonic_mean);
         return;
     }

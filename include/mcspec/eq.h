@@ -185,11 +185,27 @@ mcs_status mcs_eq37_jitter_power(size_t n, size_t k, size_t freq, double *out);
  * MCS_ERR_FREQ_RANGE (freq >= N), MCS_ERR_NOT_FINITE (f), MCS_ERR_MAGNITUDE
  * (|f_n| above MCS_ESTIMATE_MAX_ABS), MCS_ERR_ALIAS (re == im, where the
  * result is complex), and last MCS_ERR_INVARIANT when imp holds values
- * mcs_importance_init never makes (a zeroed p_n or H) and the result would
- * not be finite: for every object init makes it is (1/p_n < 2^32). */
+ * mcs_importance_init never makes (a p_n zeroed on a bin that is drawn,
+ * negative or NaN, an empty support, a zeroed H: checked, O(N)) or the
+ * result would not be finite: for every object init makes it is
+ * (1/p_n < 2^32).
+ *
+ * Over the support. A bin with g_n = 0 (importance.h) is never drawn and
+ * s_n = 0 there, so every form below reads 1/p_n and f_n as 0 on such a bin
+ * and nothing divides by p_n = 0: Q_k, H (1/H = (1/N) sum over the support
+ * of 1/p_n), F_k (the transform of f on the support) and the sums. The
+ * statements of exactness below are for an importance function with every
+ * g_n > 0 unless they say otherwise; with bins outside the support the
+ * random pattern's <s_m s_n> gains the indicator of the support on both
+ * bins, so <S_k S_l*> gains (K^2 - K)/N^3 X_k X_l* (X the transform of the
+ * support's indicator) and eq. 43, 45 and 46 miss that term; eq. 41, eq. 52
+ * corrected (with fbar the mean of f on the support, the estimator's <I>)
+ * and the bound of eq. 58 corrected (its 1/N read as N_s / N^2, N_s the
+ * bins of the support) stay exact. */
 
 /* Eq. 41: random with importance, <s_m s_n> = (K^2 - K)/N^2 + (K/N) delta_mn / p_n
- * (exact) for bins bin_m, bin_n of imp: MCS_ERR_BIN_RANGE. */
+ * (exact) for bins bin_m, bin_n of imp: MCS_ERR_BIN_RANGE. 0, exactly, when
+ * either bin is outside the support (s = 0 there in every trial). */
 mcs_status mcs_eq41_importance_second(const mcs_importance *imp, size_t k, size_t bin_m,
                                       size_t bin_n, double *out);
 
@@ -241,7 +257,9 @@ mcs_status mcs_eq52_variance_printed(const mcs_importance *imp, size_t k, const 
 
 /* Eq. 52 corrected: (1/K) [N^{-3/2} sum_{all k,l} F_k* F_l Q_{k-l} - |F_0|^2/N],
  * the exact Var[I] of random sampling with importance, equal by Parseval to
- * the primal (1/K) [(1/N) sum_n f_n^2 / p_n - fbar^2]. Same arguments.
+ * the primal (1/K) [(1/N) sum_n f_n^2 / p_n - fbar^2]; with bins outside the
+ * support, F of f on the support and fbar its mean (the sums over the
+ * support), still the exact variance. Same arguments.
  * Never negative, nor is eq. 52 as printed (both are sums of squares by
  * Parseval): a term-by-term sum in [-b, 0) is rounding and reads 0, b =
  * (N^2 + 4N + 16) DBL_EPSILON (sum_n |f_n|)^2 / (H K) bounding it; one
@@ -268,7 +286,11 @@ mcs_status mcs_eq58_bound_printed(const mcs_importance *imp, size_t k, const dou
 
 /* Eq. 58 corrected: (1/K) (sum_{all n} |F_n|^2) (1/H - 1/N), the
  * Cauchy-Schwarz step applied over every k (sum_k Var S_k = K/H - K/N); a
- * valid upper bound on the random-with-importance Var[I]. f[imp->n],
+ * valid upper bound on the random-with-importance Var[I]. With N_s < N bins
+ * in the support sum_k Var S_k = K/H - K N_s / N^2, and the bound is
+ * (1/K) (sum over the support of f_n^2) (1/H - N_s / N^2): with 1/N in its
+ * place it is no bound (g = (1, 1, 0, 0)/2, f = (1, 0, 0, 0): 0 against
+ * Var[I] = 1/(16 K)). f[imp->n],
  * |f_n| <= MCS_ESTIMATE_MAX_ABS (sum |F_n|^2 = sum f_n^2 by Parseval, so
  * any N). */
 mcs_status mcs_eq58_bound_corrected(const mcs_importance *imp, size_t k, const double *f,

@@ -62,6 +62,7 @@ mcs_status mcs_pattern_init(mcs_pattern *pat, mcs_pattern_kind kind, size_t n, s
 
 /* Draws one trial: bins[k] (n_j in [0,N)), weights[k] (w_j = 1/p_{n_j}, 1 without
  * importance) and, if points is not NULL, points[k] (x_j in [0,1), floor(N x_j) = n_j).
+ * No sample lands in a bin outside the importance function's support.
  * k must equal pat->k (it is the length of every caller array). The three
  * arrays must not overlap each other, *pat, *rng or the importance function.
  * MCS_ERR_NULL, MCS_ERR_MISMATCH (k != pat->k), MCS_ERR_UNINIT (pat not as
@@ -71,12 +72,14 @@ mcs_status mcs_pattern_draw(const mcs_pattern *pat, mcs_rng *rng, size_t k, size
                             double *weights, double *points);
 
 /* Bins caller points (a renderer's own samples) into (bin, weight) form over
- * n bins: bin floor(N x_j), weight 1/p_bin (1 if importance is NULL).
+ * n bins: bin floor(N x_j), weight 1/p_bin (1 if importance is NULL; 0 in a
+ * bin outside the support, g_bin = 0: s_n = 0 there, as for drawn trials).
  * points[k] in [0,1); bins[k], weights[k] written; no two of the three arrays
  * (nor an output and the importance function) may overlap.
  * MCS_ERR_NULL, MCS_ERR_N_RANGE, MCS_ERR_K_RANGE (k = 0), MCS_ERR_MISMATCH
  * (importance->n != n), MCS_ERR_POINT_RANGE, MCS_ERR_ALIAS, MCS_ERR_INVARIANT
- * (an importance object with p_n <= 0 at a bin in use: only a corrupted one).
+ * (an importance object with p_n < 0, NaN, too small for 1/p_n to be finite,
+ * or 0 with g_n > 0, at a bin in use: only a corrupted one).
  * Outputs untouched on error. */
 mcs_status mcs_pattern_bin_points(size_t n, size_t k, const mcs_importance *importance,
                                   const double *points, size_t *bins, double *weights);

@@ -243,6 +243,24 @@ mcs_status mcs_spectrum_power(const mcs_spectrum *acc, size_t freq, double *powe
 /* Standard error of <|S_k|^2>. MCS_ERR_EMPTY for fewer than 2 units. */
 mcs_status mcs_spectrum_power_stderr(const mcs_spectrum *acc, size_t freq, double *stderr_out);
 
+/* Every stored frequency k = 0..N/2 at once (a renderer's or a wrapper's
+ * read-out): mean_re[k] + i mean_im[k] = <S_k>, mean_stderr[k], power[k] =
+ * <|S_k|^2> and power_stderr[k], each bit for bit what mcs_spectrum_mean,
+ * _mean_stderr, _power and _power_stderr return at freq = k (k > N/2 is
+ * conj of N - k: s is real). Caller arrays of n_out doubles, n_out equal to
+ * N/2 + 1 (else MCS_ERR_MISMATCH); exactly n_out entries are written to each
+ * array given. Any array may be NULL when not wanted, not all of them
+ * (MCS_ERR_NULL). The arrays must not overlap one another or *acc
+ * (MCS_ERR_ALIAS). MCS_ERR_NULL, MCS_ERR_UNINIT, MCS_ERR_EMPTY (no trials,
+ * or fewer than 2 units when a standard error is asked), MCS_ERR_NOT_FINITE
+ * (an overwritten object, as the per-frequency calls). Every value is
+ * checked before any is written: on error no array changes. O(N) (O(N^2)
+ * with an open PAIR batch, as N calls of the per-frequency read-outs;
+ * mcs_spectrum_flush makes it O(N) again). */
+mcs_status mcs_spectrum_read_all(const mcs_spectrum *acc, size_t n_out, double *mean_re,
+                                 double *mean_im, double *mean_stderr, double *power,
+                                 double *power_stderr);
+
 #ifdef __cplusplus
 }
 #endif

@@ -14,8 +14,13 @@ typedef struct {
 
 static void stats_at(const mcs_spectrum *acc, size_t q, freq_stats *fs)
 {
+    /* S_0 and S_{N/2} (N even) are real for a real s: their twiddles are
+     * +-1, but the sine table's sin(pi) is 1.2e-16, which the SPARSE path's
+     * sums carried into Im <S_{N/2}> (-7.7e-17 for the hand-worked N = 4
+     * file). Their imaginary mean is 0 exactly, not rounding. */
+    const int real = q == 0u || 2u * q == acc->n;
     fs->mean_re = acc->mean_re[q];
-    fs->mean_im = acc->mean_im[q];
+    fs->mean_im = real ? 0.0 : acc->mean_im[q];
     fs->mean_pow = acc->mean_pow[q];
     fs->m2_s = acc->m2_s[q];
     fs->m2_pow = acc->m2_pow[q];
@@ -28,7 +33,7 @@ static void stats_at(const mcs_spectrum *acc, size_t q, freq_stats *fs)
     const double f = wb / (wa + wb), g = wa * wb / (wa + wb); /* f = 1, g = 0 when wa = 0 */
     const double dr = xr - fs->mean_re, di = xi - fs->mean_im, dp = xp - fs->mean_pow;
     fs->mean_re += f * dr;
-    fs->mean_im += f * di;
+    fs->mean_im = real ? 0.0 : fs->mean_im + f * di;
     fs->mean_pow += f * dp;
     fs->m2_s += g * (dr * dr + di * di);
     fs->m2_pow += g * (dp * dp);
@@ -109,4 +114,77 @@ mcs_status mcs_spectrum_power_stderr(const mcs_spectrum *acc, size_t freq, doubl
     int conj;
     mcs_status st = readout(stderr_out != NULL, acc, freq, 1, &fs, &conj);
     return st == MCS_OK ? set_finite(stderr_out, stderr_of(acc, &fs, fs.m2_pow)) : st;
+}
+
+/* ---- every stored frequency at once ---------------------------------------- */
+
+/* The five arrays of mcs_spectrum_read_all, in argument order; NULL where
+ * not wanted. */
+enum { ALL_MEAN_RE, ALL_MEAN_IM, ALL_MEAN_SE, ALL_POWER, ALL_POWER_SE, ALL_COUNT };
+
+/* The values of stored frequency q, each as its per-frequency call forms it
+ * (the same stats_at and stderr_of, so the same bits); the standard errors
+ * only where asked (they need two units). */
+static void values_at(const mcs_spectrum *acc, size_t q, double *const out[ALL_COUNT],
+                      double v[ALL_COUNT])
+{
+    freq_stats fs;
+    stats_at(acc, q, &fs);
+    v[ALL_MEAN_RE] = fs.mean_re;
+    v[ALL_MEAN_IM] = fs.mean_im;
+    v[ALL_MEAN_SE] = out[ALL_MEAN_SE] != NULL ? stderr_of(acc, &fs, fs.m2_s) : 0.0;
+    v[ALL_POWER] = fs.mean_pow;
+    v[ALL_POWER_SE] = out[ALL_POWER_SE] != NULL ? stderr_of(acc, &fs, fs.m2_pow) : 0.0;
+}
+
+/* Whether two of the arrays (each n_out doubles) share a byte, or one lies
+ * in *acc (which is read while they are written). */
+static int arrays_alias(const mcs_spectrum *acc, size_t n_out, double *const out[ALL_COUNT])
+{
+    const size_t bytes = mcs_bytes_(n_out, sizeof(double));
+    int hit = 0;
+    for (int a = 0; a < ALL_COUNT; ++a) {
+        if (out[a] == NULL)
+            continue;
+        hit |= mcs_overlap_(out[a], bytes, acc, sizeof *acc);
+        for (int b = a + 1; b < ALL_COUNT; ++b)
+            hit |= out[b] != NULL && mcs_overlap_(out[a], bytes, out[b], bytes);
+    }
+    return hit;
+}
+
+mcs_status mcs_spectrum_read_all(const mcs_spectrum *acc, size_t n_out, double *mean_re,
+                                 double *mean_im, double *mean_stderr, double *power,
+                                 double *power_stderr)
+{
+    double *const out[ALL_COUNT] = {mean_re, mean_im, mean_stderr, power, power_stderr};
+    int any = 0;
+    for (int a = 0; a < ALL_COUNT; ++a)
+        any |= out[a] != NULL;
+    uint64_t units = 0u;
+    mcs_status st = any ? mcs_spectrum_units(acc, &units) : MCS_ERR_NULL;
+    if (st != MCS_OK)
+        return st;
+    if (n_out != acc->n / 2u + 1u)
+        return MCS_ERR_MISMATCH;
+    if (acc->count == 0u || ((mean_stderr != NULL || power_stderr != NULL) && units < 2u))
+        return MCS_ERR_EMPTY;
+    if (arrays_alias(acc, n_out, out))
+        return MCS_ERR_ALIAS;
+    /* Every value is checked before any is written (an overwritten object
+     * can hold a non-finite one), then formed again and written. */
+    double v[ALL_COUNT];
+    for (size_t q = 0; q < n_out; ++q) {
+        values_at(acc, q, out, v);
+        for (int a = 0; a < ALL_COUNT; ++a)
+            if (out[a] != NULL && !isfinite(v[a]))
+                return MCS_ERR_NOT_FINITE;
+    }
+    for (size_t q = 0; q < n_out; ++q) {
+        values_at(acc, q, out, v);
+        for (int a = 0; a < ALL_COUNT; ++a)
+            if (out[a] != NULL)
+                out[a][q] = v[a];
+    }
+    return MCS_OK;
 }

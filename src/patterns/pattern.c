@@ -348,6 +348,14 @@ mcs_status mcs_pattern_draw(const mcs_pattern *pat, mcs_rng *rng, size_t k, size
     return draw_other(pat, rng, bins, weights, points);
 }
 
+/* The weight 1/p of a caller's sample in a bin of density p; 0 in a bin
+ * outside the support (p = 0), which the importance function never draws: a
+ * renderer's sample there (its own sampler's) adds nothing, as s_n = 0. */
+static double support_weight(double p)
+{
+    return p > 0.0 ? 1.0 / p : 0.0;
+}
+
 /* The body of both bin_points calls, over double or float points
  * (internal.h): the same bins and weights from the widened points. */
 static MCS_ALWAYS_INLINE mcs_status bin_points(size_t n, size_t k, const mcs_importance *importance,
@@ -372,18 +380,19 @@ static MCS_ALWAYS_INLINE mcs_status bin_points(size_t n, size_t k, const mcs_imp
     mcs_status st = mcs_check_points_(k, points, NULL);
     if (st != MCS_OK)
         return st;
-    /* mcs_importance_init keeps every p_n positive, so 1/p_n is finite; an
-     * object that says otherwise at a bin in use is refused before anything
-     * is written (fuzz_api: a zeroed importance object gave weights of inf). */
-    for (size_t j = 0; importance != NULL && j < k; ++j) {
-        const double p = importance->p[mcs_point_bin_(mcs_point_(points, j), n)];
-        if (!(p > 0.0 && isfinite(1.0 / p)))
+    /* mcs_importance_init keeps every p_n positive and bounded below, or 0
+     * with g_n = 0 (outside the support); an object that says otherwise at a
+     * bin in use is refused before anything is written (fuzz_api: a zeroed
+     * importance object gave weights of inf). */
+    if (importance != NULL && !mcs_importance_support_ok_(importance))
+        return MCS_ERR_INVARIANT;
+    for (size_t j = 0; importance != NULL && j < k; ++j)
+        if (!mcs_importance_bin_ok_(importance, mcs_point_bin_(mcs_point_(points, j), n)))
             return MCS_ERR_INVARIANT;
-    }
     for (size_t j = 0; j < k; ++j) {
         size_t b = mcs_point_bin_(mcs_point_(points, j), n);
         bins[j] = b;
-        weights[j] = importance != NULL ? 1.0 / importance->p[b] : 1.0;
+        weights[j] = importance != NULL ? support_weight(importance->p[b]) : 1.0;
     }
     return MCS_OK;
 }

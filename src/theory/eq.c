@@ -40,10 +40,13 @@ mcs_status mcs_eq_check_pair(int outputs, size_t n, size_t k, size_t freq_k, siz
     return MCS_OK;
 }
 
-void mcs_eq_dft_at(size_t n, const double *x, size_t freq, double *re, double *im)
+void mcs_eq_dft_at(size_t n, const double *x, const double *support, size_t freq, double *re,
+                   double *im)
 {
     double r = 0.0, i = 0.0;
     for (size_t t = 0; t < n; ++t) {
+        if (support != NULL && !(support[t] > 0.0))
+            continue;
         double a = mcs_twiddle_angle_((freq * t) % n, n);
         r += cos(a) * x[t];
         i -= sin(a) * x[t];
@@ -53,7 +56,7 @@ void mcs_eq_dft_at(size_t n, const double *x, size_t freq, double *re, double *i
     *im = i * scale;
 }
 
-double mcs_eq_ac_energy(size_t n, const double *f)
+double mcs_eq_ac_energy(size_t n, const double *f, const double *support)
 {
     double sum = 0.0;
     if (n > (size_t)MCS_MAX_COV_N) {
@@ -61,15 +64,17 @@ double mcs_eq_ac_energy(size_t n, const double *f)
          * in two passes (no cancellation of sum f^2 against N fbar^2) */
         double mean = 0.0;
         for (size_t b = 0; b < n; ++b)
-            mean += f[b];
+            mean += mcs_eq_on_support(f, support, b);
         mean /= (double)n;
-        for (size_t b = 0; b < n; ++b)
-            sum += (f[b] - mean) * (f[b] - mean);
+        for (size_t b = 0; b < n; ++b) {
+            const double d = mcs_eq_on_support(f, support, b) - mean;
+            sum += d * d;
+        }
         return sum;
     }
     for (size_t b = 1; b < n; ++b) { /* the note's sum, term by term */
         double fr, fi;
-        mcs_eq_dft_at(n, f, b, &fr, &fi);
+        mcs_eq_dft_at(n, f, support, b, &fr, &fi);
         sum += fr * fr + fi * fi;
     }
     return sum;
@@ -271,7 +276,7 @@ mcs_status mcs_eq14_variance(size_t n, size_t k, const double *f, const double *
     double sum = 0.0;
     for (size_t b = 1; b < n; ++b) {
         double fr, fi;
-        mcs_eq_dft_at(n, f, b, &fr, &fi);
+        mcs_eq_dft_at(n, f, NULL, b, &fr, &fi);
         sum += (fr * fr + fi * fi) * power[b];
     }
     double kd = (double)k;
@@ -309,7 +314,7 @@ mcs_status mcs_eq23_random_power(size_t n, size_t k, size_t freq, double *out)
 mcs_status mcs_eq24_random_variance(size_t n, size_t k, const double *f, double *out)
 {
     mcs_status st = check_f(f != NULL && out != NULL, n, (size_t)MCS_MAX_N, k, f);
-    return st == MCS_OK ? mcs_set_(out, mcs_eq_ac_energy(n, f) / ((double)k * (double)n)) : st;
+    return st == MCS_OK ? mcs_set_(out, mcs_eq_ac_energy(n, f, NULL) / ((double)k * (double)n)) : st;
 }
 
 mcs_status mcs_eq25_random_variance(size_t n, size_t k, const double *f, double *out)

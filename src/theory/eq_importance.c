@@ -1,5 +1,7 @@
 /* The note's closed forms of section 4: importance sampling. Every form reads
- * N, p_n and the harmonic mean H from the caller's importance function. */
+ * N, p_n and the harmonic mean H from the caller's importance function, over
+ * its support: a bin with p_n = 0 is never drawn (s_n = 0), so 1/p_n and f_n
+ * are read as 0 there (eq.h). */
 #include "mcspec/eq.h"
 #include "eq_internal.h"
 #include "patterns/importance_internal.h"
@@ -24,22 +26,37 @@ static mcs_status check_imp(int outputs, const mcs_importance *imp, size_t k)
     return MCS_OK;
 }
 
-/* Writes a result formed from imp. It is finite for every object
- * mcs_importance_init makes (1/p_n < 2^32, H >= 2^-32; f within its bound),
- * so a value that is not comes from stored values init never makes (a
- * zeroed p_n, say): MCS_ERR_INVARIANT, nothing written. */
-static mcs_status set_from_imp(double *out, double v)
+/* Writes a result formed from imp, the last check of every form. It is
+ * finite for every object mcs_importance_init makes (1/p_n < 2^32 or a bin
+ * outside the support, H >= 2^-32; f within its bound), so a value that is
+ * not, or an object init does not make (a p_n zeroed on a bin that is
+ * drawn, an empty support, a zeroed H: mcs_importance_sound_, O(N)), is
+ * MCS_ERR_INVARIANT, nothing written. */
+static mcs_status set_from_imp(const mcs_importance *imp, double *out, double v)
 {
-    return isfinite(v) ? mcs_set_(out, v) : MCS_ERR_INVARIANT;
+    return isfinite(v) && mcs_importance_sound_(imp) ? mcs_set_(out, v) : MCS_ERR_INVARIANT;
 }
 
-static mcs_status set_complex_from_imp(double *re, double *im, double r, double i)
+static mcs_status set_complex_from_imp(const mcs_importance *imp, double *re, double *im,
+                                       double r, double i)
 {
-    if (!(isfinite(r) && isfinite(i)))
+    if (!(isfinite(r) && isfinite(i) && mcs_importance_sound_(imp)))
         return MCS_ERR_INVARIANT;
     *re = r;
     *im = i;
     return MCS_OK;
+}
+
+/* f_b on the support (0 where the importance function never draws). */
+static double f_on(const mcs_importance *imp, const double *f, size_t b)
+{
+    return mcs_eq_on_support(f, imp->p, b);
+}
+
+/* 1/p_b on the support, 0 outside it. */
+static double q_on(const mcs_importance *imp, size_t b)
+{
+    return imp->p[b] > 0.0 ? 1.0 / imp->p[b] : 0.0;
 }
 
 /* check_imp, then freq < N (FREQ_RANGE) and, as asked, freq >= 1 and K
@@ -80,8 +97,11 @@ mcs_status mcs_eq41_importance_second(const mcs_importance *imp, size_t k, size_
     double kd = (double)k, nd = (double)imp->n;
     double v = (kd * kd - kd) / (nd * nd);
     if (bin_m == bin_n)
-        v += kd / nd / imp->p[bin_n];
-    return set_from_imp(out, v);
+        v += kd / nd * q_on(imp, bin_n);
+    /* s_n = 0 in every trial outside the support: its moments are 0 */
+    if (!(imp->p[bin_m] > 0.0 && imp->p[bin_n] > 0.0))
+        v = 0.0;
+    return set_from_imp(imp, out, v);
 }
 
 /* (K/N) N^{-1/2} Q_{k-l}, the importance-sampled random cross spectrum. */
@@ -109,14 +129,15 @@ mcs_status mcs_eq43_importance_cross(const mcs_importance *imp, size_t k, size_t
         return st;
     double qr, qi;
     q_term(imp, k, freq_k, freq_l, &qr, &qi);
-    return set_complex_from_imp(re, im, qr, qi);
+    return set_complex_from_imp(imp, re, im, qr, qi);
 }
 
 mcs_status mcs_eq45_importance_power(const mcs_importance *imp, size_t k, size_t freq,
                                      double *out)
 {
     mcs_status st = check_imp_freq(out != NULL, imp, k, freq, 1, 0);
-    return st == MCS_OK ? set_from_imp(out, (double)k / (double)imp->n / imp->harmonic_mean) : st;
+    return st == MCS_OK ? set_from_imp(imp, out, (double)k / (double)imp->n / imp->harmonic_mean)
+                        : st;
 }
 
 mcs_status mcs_eq46_importance_power0(const mcs_importance *imp, size_t k, double *out)
@@ -125,7 +146,7 @@ mcs_status mcs_eq46_importance_power0(const mcs_importance *imp, size_t k, doubl
     if (st != MCS_OK)
         return st;
     double kn = (double)k / (double)imp->n;
-    return set_from_imp(out, (double)k * kn + kn * (1.0 / imp->harmonic_mean - 1.0));
+    return set_from_imp(imp, out, (double)k * kn + kn * (1.0 / imp->harmonic_mean - 1.0));
 }
 
 mcs_status mcs_eq49_importance_stratified_cross(const mcs_importance *imp, size_t k,
@@ -143,7 +164,7 @@ mcs_status mcs_eq49_importance_stratified_cross(const mcs_importance *imp, size_
     double qr, qi, dr, di;
     q_term(imp, k, freq_k, freq_l, &qr, &qi);
     mcs_eq_delta_printed(imp->n, k, freq_k, freq_l, &dr, &di);
-    return set_complex_from_imp(re, im, qr + dr, qi + di);
+    return set_complex_from_imp(imp, re, im, qr + dr, qi + di);
 }
 
 mcs_status mcs_eq50_importance_stratified_power(const mcs_importance *imp, size_t k, size_t freq,
@@ -153,12 +174,13 @@ mcs_status mcs_eq50_importance_stratified_power(const mcs_importance *imp, size_
     if (st != MCS_OK)
         return st;
     double kn = (double)k / (double)imp->n;
-    return set_from_imp(out, kn * (1.0 / imp->harmonic_mean - mcs_eq_sinc2(imp->n, k, freq)));
+    return set_from_imp(imp, out,
+                        kn * (1.0 / imp->harmonic_mean - mcs_eq_sinc2(imp->n, k, freq)));
 }
 
 /* (1/K) N^{-3/2} Re sum_{k >= k0, l >= l0} F_k* F_l Q_{k-l}: F of f, Q of 1/p,
- * both eq. 7, each coefficient computed where it is used (O(N^3) trig, no
- * work arrays). */
+ * both eq. 7 over the support, each coefficient computed where it is used
+ * (O(N^3) trig, no work arrays). */
 static double fq_variance(const mcs_importance *imp, size_t k, const double *f, size_t k0,
                           size_t l0)
 {
@@ -166,10 +188,10 @@ static double fq_variance(const mcs_importance *imp, size_t k, const double *f, 
     double sum = 0.0;
     for (size_t a = k0; a < n; ++a) {
         double far, fai;
-        mcs_eq_dft_at(n, f, a, &far, &fai);
+        mcs_eq_dft_at(n, f, imp->p, a, &far, &fai);
         for (size_t b = l0; b < n; ++b) {
             double fbr, fbi, qr, qi;
-            mcs_eq_dft_at(n, f, b, &fbr, &fbi);
+            mcs_eq_dft_at(n, f, imp->p, b, &fbr, &fbi);
             mcs_importance_q_unchecked(imp, (a + n - b) % n, &qr, &qi);
             double ar = far * fbr + fai * fbi; /* F_a* F_b */
             double ai = far * fbi - fai * fbr;
@@ -194,14 +216,14 @@ static double fq_variance_parseval(const mcs_importance *imp, size_t k, const do
     const size_t n = imp->n;
     double fbar = 0.0, sum = 0.0;
     for (size_t b = 0; b < n; ++b)
-        fbar += f[b];
+        fbar += f_on(imp, f, b);
     fbar /= (double)n;
     for (size_t b = 0; b < n; ++b) {
-        const double q = 1.0 / imp->p[b], d = f[b] - fbar;
+        const double fb = f_on(imp, f, b), q = q_on(imp, b), d = fb - fbar;
         if (k0 == 0u)
-            sum += imp->p[b] * (f[b] * q - fbar) * (f[b] * q - fbar);
+            sum += imp->p[b] * (fb * q - fbar) * (fb * q - fbar);
         else
-            sum += l0 == 0u ? f[b] * q * d : q * d * d;
+            sum += l0 == 0u ? fb * q * d : q * d * d;
     }
     return sum / ((double)n * (double)k);
 }
@@ -220,14 +242,14 @@ static mcs_status set_nonnegative(const mcs_importance *imp, size_t k, const dou
                                   double v, double *out)
 {
     if (!(v < 0.0))
-        return set_from_imp(out, v);
+        return set_from_imp(imp, out, v);
     const double nd = (double)imp->n;
     double abs_sum = 0.0;
     for (size_t b = 0; b < imp->n; ++b)
-        abs_sum += fabs(f[b]);
+        abs_sum += fabs(f_on(imp, f, b));
     const double bound = (nd * nd + 4.0 * nd + 16.0) * DBL_EPSILON * abs_sum * abs_sum /
                          (imp->harmonic_mean * (double)k);
-    return -v <= bound ? mcs_set_(out, 0.0) : MCS_ERR_INVARIANT;
+    return -v <= bound ? set_from_imp(imp, out, 0.0) : MCS_ERR_INVARIANT;
 }
 
 /* The double sums of eq. 52 as printed and corrected and eq. 55, checked:
@@ -241,17 +263,17 @@ static mcs_status fq_form(const mcs_importance *imp, size_t k, const double *f, 
         return st;
     if (imp->n > (size_t)MCS_MAX_COV_N) {
         const double v = fq_variance_parseval(imp, k, f, k0, l0);
-        return k0 == l0 ? set_nonnegative(imp, k, f, v, out) : set_from_imp(out, v);
+        return k0 == l0 ? set_nonnegative(imp, k, f, v, out) : set_from_imp(imp, out, v);
     }
     if (k0 != 0u) {
         const double v = fq_variance(imp, k, f, k0, l0);
-        return l0 != 0u ? set_nonnegative(imp, k, f, v, out) : set_from_imp(out, v);
+        return l0 != 0u ? set_nonnegative(imp, k, f, v, out) : set_from_imp(imp, out, v);
     }
     const double nd = (double)imp->n;
     double sum = 0.0;
     for (size_t b = 0; b < imp->n; ++b)
-        sum += f[b];
-    const double f0_sq = sum * sum / nd; /* |F_0|^2 */
+        sum += f_on(imp, f, b);
+    const double f0_sq = sum * sum / nd; /* |F_0|^2 of f on the support */
     const double v = (fq_variance(imp, 1u, f, 0u, 0u) - f0_sq / nd) / (double)k;
     return set_nonnegative(imp, k, f, v, out);
 }
@@ -280,7 +302,8 @@ mcs_status mcs_eq58_bound_printed(const mcs_importance *imp, size_t k, const dou
     mcs_status st = check_imp_f(imp, k, f, out, (size_t)MCS_MAX_N);
     if (st != MCS_OK) /* sum_{k >= 1} |F_k|^2 needs the DFT of f */
         return st;
-    return set_from_imp(out, mcs_eq_ac_energy(imp->n, f) / imp->harmonic_mean / (double)k);
+    return set_from_imp(imp, out,
+                        mcs_eq_ac_energy(imp->n, f, imp->p) / imp->harmonic_mean / (double)k);
 }
 
 mcs_status mcs_eq58_bound_corrected(const mcs_importance *imp, size_t k, const double *f,
@@ -289,9 +312,16 @@ mcs_status mcs_eq58_bound_corrected(const mcs_importance *imp, size_t k, const d
     mcs_status st = check_imp_f(imp, k, f, out, (size_t)MCS_MAX_N);
     if (st != MCS_OK)
         return st;
-    double energy = 0.0; /* sum_{all n} |F_n|^2 = sum f_n^2 (Parseval, eq. 7 is unitary) */
-    for (size_t b = 0; b < imp->n; ++b)
-        energy += f[b] * f[b];
-    return set_from_imp(out, energy * (1.0 / imp->harmonic_mean - 1.0 / (double)imp->n) /
-                                 (double)k);
+    /* sum_{all n} |F_n|^2 = sum f_n^2 (Parseval, eq. 7 is unitary), f on the
+     * support; sum_k Var S_k = sum_n Var s_n = K/H - K N_s / N^2 over the N_s
+     * bins of the support (K/H - K/N when that is every bin) */
+    const double nd = (double)imp->n;
+    double energy = 0.0, support = 0.0;
+    for (size_t b = 0; b < imp->n; ++b) {
+        const double fb = f_on(imp, f, b);
+        energy += fb * fb;
+        support += imp->p[b] > 0.0 ? 1.0 : 0.0;
+    }
+    return set_from_imp(imp, out,
+                        energy * (1.0 / imp->harmonic_mean - support / (nd * nd)) / (double)k);
 }

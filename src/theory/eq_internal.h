@@ -31,12 +31,22 @@ static inline mcs_status mcs_eq_check_complex(mcs_status st, const double *re, c
 }
 
 /* Eq. 7 at one frequency with the twiddle computed per term from the reduced
- * index (freq t mod N): no table, so any N. */
-void mcs_eq_dft_at(size_t n, const double *x, size_t freq, double *re, double *im);
+ * index (freq t mod N): no table, so any N. support (an importance
+ * function's p, or NULL for every bin): x_t read as 0 where support[t] is
+ * not > 0, the bins an importance function never draws. */
+void mcs_eq_dft_at(size_t n, const double *x, const double *support, size_t freq, double *re,
+                   double *im);
 
-/* sum_{k >= 1} |F_k|^2: by direct DFTs, O(N^2) trig, for N <= MCS_MAX_COV_N;
- * above, its equal by Parseval, sum_n (f_n - fbar)^2, O(N). */
-double mcs_eq_ac_energy(size_t n, const double *f);
+/* x_t on the support (as mcs_eq_dft_at reads it). */
+static inline double mcs_eq_on_support(const double *x, const double *support, size_t t)
+{
+    return support == NULL || support[t] > 0.0 ? x[t] : 0.0;
+}
+
+/* sum_{k >= 1} |F_k|^2 of f on the support (as mcs_eq_dft_at): by direct
+ * DFTs, O(N^2) trig, for N <= MCS_MAX_COV_N; above, its equal by Parseval,
+ * sum_n (f_n - fbar)^2, O(N). */
+double mcs_eq_ac_energy(size_t n, const double *f, const double *support);
 
 /* Delta_kl of eq. 30 as printed, unchecked: K dividing N, freq_k and freq_l
  * in [1, N) (the caller checks). */

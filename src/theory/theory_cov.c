@@ -138,6 +138,28 @@ static void random_cov(const mcs_theory_spectrum *ts, const mcs_theory_weight *x
 
 /* ---- stratified: sample j uniform on the stratum [j, j+1) in t units ------ */
 
+/* |[edge[c], edge[c+1]) cap [j, j + 1)| for a bin c that meets stratum j,
+ * without the cancellation of two rounded edges: a bin inside the stratum
+ * has K length[c] (its length is exact); one cut by the stratum's lower
+ * end j has edge[c+1] - j, exact (the two lie within a factor of 2), plus
+ * the edge's rounding edge_lo; one cut by its upper end likewise; one over
+ * all of it has 1. Each keeps its relative accuracy however small the bin
+ * (the plain difference erred by up to K 2^-53, 4e-10 of a bin of
+ * g = 2.5e-7 at K = 19, which weighs 1/p ~ 1e5 and so carried the error
+ * into every covariance). */
+static double stratum_overlap(const mcs_theory_spectrum *ts, double j, size_t c)
+{
+    const double a = ts->edge[c], b = ts->edge[c + 1u];
+    const int cut_low = a < j, cut_high = b > j + 1.0;
+    if (!cut_low && !cut_high)
+        return (double)ts->k * ts->length[c];
+    if (cut_low && cut_high)
+        return 1.0;
+    if (cut_low)
+        return (b - j) + ts->edge_lo[c + 1u];
+    return ((j + 1.0) - a) - ts->edge_lo[c];
+}
+
 /* Stratum j holds bins lo..hi; the covariance of its one sample, whose
  * probability of bin c is the overlap of [edge[c], edge[c+1]) with it. */
 static void stratum_cov(const mcs_theory_spectrum *ts, const mcs_theory_weight *x,
@@ -148,8 +170,7 @@ static void stratum_cov(const mcs_theory_spectrum *ts, const mcs_theory_weight *
     for (int pass = 0; pass < 2; ++pass) {
         size_t tx = tx0, ty = ty0;
         for (size_t c = lo; c <= hi; ++c) {
-            const double hi_t = ts->edge[c + 1u] < j + 1.0 ? ts->edge[c + 1u] : j + 1.0;
-            const double o = hi_t - (ts->edge[c] > j ? ts->edge[c] : j);
+            const double o = stratum_overlap(ts, j, c);
             const cval vx = value(ts, x, c, tx), vy = x == y ? vx : value(ts, y, c, ty);
             if (pass == 0)
                 add_mean(&m, o, vx, vy);
@@ -241,26 +262,37 @@ static void jitter_step(const mcs_theory_spectrum *ts, const mcs_theory_weight *
     v->im += in.im - out.im;
 }
 
+/* The rounding of breakpoint b (edge_lo: its exact value is the breakpoint
+ * plus this); 0 without importance, whose breakpoints are r / N with r an
+ * exact integer. */
+static double breakpoint_lo(const mcs_theory_spectrum *ts, size_t b)
+{
+    return ts->has_importance ? ts->edge_lo[b] : 0.0;
+}
+
 /* X(beta) is constant between the sorted fractional edges: the covariance
- * over beta is the weighted one over those pieces. */
+ * over beta is the weighted one over those pieces. A piece's width is the
+ * difference of two breakpoints, exact when they are close (a small bin),
+ * plus the difference of their roundings: relative accuracy for any width. */
 static void jitter_cov(const mcs_theory_spectrum *ts, const mcs_theory_weight *x,
                        const mcs_theory_weight *y, cval *out)
 {
     moments m = no_moments;
     cval vx = jitter_start(ts, x), vy = x == y ? vx : jitter_start(ts, y);
-    double at = 0.0;
+    double at = 0.0, at_lo = 0.0;
     for (size_t i = 0; i + 1u < ts->n; ++i) {
         const size_t b = ts->order[i];
-        const double next = breakpoint_of(ts, b);
+        const double next = breakpoint_of(ts, b), next_lo = breakpoint_lo(ts, b);
         if (!(next > 0.0))
             continue; /* an edge on a whole t moves its sample at beta = 0: in the start */
-        add(&m, next - at, vx, x == y ? vx : vy);
+        add(&m, (next - at) + (next_lo - at_lo), vx, x == y ? vx : vy);
         at = next;
+        at_lo = next_lo;
         jitter_step(ts, x, b, &vx);
         if (x != y)
             jitter_step(ts, y, b, &vy);
     }
-    add(&m, 1.0 - at, vx, x == y ? vx : vy);
+    add(&m, (1.0 - at) - at_lo, vx, x == y ? vx : vy);
     add_result(&m, 1.0, out);
 }
 

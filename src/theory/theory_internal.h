@@ -10,6 +10,7 @@
 
 #include "core/internal.h"
 #include "accumulators/readout.h"
+#include "patterns/importance_internal.h"
 #include "mcspec/importance.h"
 #include "mcspec/pattern.h"
 #include "mcspec/theory.h"
@@ -25,6 +26,23 @@ static inline double mcs_theory_edge_(const mcs_pattern *pat, size_t b)
     return ((double)b * kd) / (double)pat->n; /* exact product, one rounding */
 }
 
+/* The rounding of mcs_theory_edge_: edge + edge_lo is the exact edge K
+ * cdf[b] (b K / N without importance) to about 2^-106 of it. With
+ * importance the product's error is exact (fma); without, b K - edge N is
+ * exact (a multiple of the edge's ulp, at most N/2 of them), then divided.
+ * The overlaps of a small bin with a stratum, and jitter's pieces of beta,
+ * are differences of nearby edges: taken with edge_lo they keep their
+ * relative accuracy, where the rounded edges alone left them an absolute
+ * error of K 2^-53 (4e-10 of a bin of g = 2.5e-7 at K = 19). */
+static inline double mcs_theory_edge_lo_(const mcs_pattern *pat, size_t b)
+{
+    const double kd = (double)pat->k, e = mcs_theory_edge_(pat, b);
+    if (pat->importance != NULL)
+        return fma(pat->importance->cdf[b], kd, -e);
+    const double nd = (double)pat->n;
+    return fma(-e, nd, (double)b * kd) / nd;
+}
+
 static inline double mcs_theory_length_(const mcs_pattern *pat, size_t b)
 {
     if (pat->importance != NULL)
@@ -32,9 +50,13 @@ static inline double mcs_theory_length_(const mcs_pattern *pat, size_t b)
     return 1.0 / (double)pat->n;
 }
 
+/* 0 outside the support (p_b = 0): no sample lands there, none weighs. */
 static inline double mcs_theory_inv_p_(const mcs_pattern *pat, size_t b)
 {
-    return pat->importance != NULL ? 1.0 / pat->importance->p[b] : 1.0;
+    if (pat->importance == NULL)
+        return 1.0;
+    const double p = pat->importance->p[b];
+    return p > 0.0 ? 1.0 / p : 0.0;
 }
 
 /* Bin of the uniform pattern's u_j = (j + 1/2)/K, by the generator's own
@@ -93,10 +115,164 @@ static inline mcs_status mcs_theory_check_pattern_(const mcs_pattern *pat, size_
     if (pat->importance != NULL) {
         if (pat->kind == MCS_PATTERN_HOMOGENIZED)
             return MCS_ERR_KIND;
-        if (pat->importance->n != pat->n || !mcs_importance_is_valid_(pat->importance))
+        if (pat->importance->n != pat->n || !mcs_importance_is_valid_(pat->importance) ||
+            !mcs_importance_sound_(pat->importance))
             return MCS_ERR_UNINIT;
     }
     return MCS_OK;
+}
+
+/* ---- exact zeros: values theory proves 0, read as 0 (not rounding) -------------
+ *
+ * The read-outs of both objects form their values as sums whose terms
+ * cancel where the value is 0 by symmetry, leaving rounding (1e-17 to
+ * 1e-32). These rules say where a value is 0 for every trial the pattern
+ * can draw, whatever f (so whatever the rounding): there it reads 0.
+ * - S_0 and S_{N/2} (N even) are real (their twiddles are +-1): the
+ *   imaginary part of <S_k>, and of <S_k S_l*> and Cov(S_k, S_l) with both
+ *   k and l such, is 0.
+ * - Without importance sum_n s_n = K in every trial: S_0 = K / sqrt(N) is
+ *   deterministic, Cov(S_0, S_l) = 0, and an f constant on the bins gives
+ *   Var[I] = 0.
+ * - Without importance <s_n> = K/N for every kind but uniform: <S_k> = 0 for
+ *   k != 0.
+ * - Random, homogenized and jitter without importance are stationary (a
+ *   shift by one bin is a shift of the uniform draws: of beta by K/N for
+ *   jitter): Cov(S_k, S_l) = 0 for k != l. Stratified without importance is
+ *   unchanged by a shift of N/g bins, g = gcd(N, K) (it maps strata onto
+ *   strata): Cov(S_k, S_l) = 0 unless g divides k - l (eq. 30 corrected,
+ *   for K dividing N).
+ * - Jitter without importance, and uniform whose s is periodic with period
+ *   N/g (checked on its stored <s>: the generator's arithmetic decides its
+ *   bins), g = gcd(N, K): s repeats every N/g bins in every trial, so
+ *   S_k = 0 unless g divides k.
+ * - Uniform, and stratified, homogenized and jitter without importance with
+ *   N dividing K (every bin holds K/N samples in every trial): s is
+ *   deterministic, every covariance and Var[I] is 0.
+ * Anything else is left as computed, even when it is small: an f whose
+ * values have no energy at the multiples of K gives jitter a Var[I] of
+ * ~1e-32, not 0, because its stored values are rounded (that is the exact
+ * variance of the doubles given). */
+typedef struct {
+    size_t n;       /* N */
+    size_t g;       /* S_k = 0 in every trial unless g divides k (1: no such rule) */
+    int no_imp;     /* no importance function: sum s = K, S_0 deterministic */
+    int mean_const; /* <s_n> = K/N: <S_k> = 0 for k != 0 */
+    size_t step;    /* Cov(S_k, S_l) = 0 unless step divides k - l (mod N); step divides N */
+    int fixed;      /* s deterministic: every covariance 0 */
+} mcs_theory_zeros;
+
+static inline size_t mcs_theory_gcd_(size_t a, size_t b)
+{
+    while (b != 0u) {
+        const size_t t = a % b;
+        a = b;
+        b = t;
+    }
+    return a;
+}
+
+/* kind, N, K, importance and the stored <s> (read for uniform) of an object. */
+static inline mcs_theory_zeros mcs_theory_zeros_of_(mcs_pattern_kind kind, size_t n, size_t k,
+                                                    int has_importance, const double *mean_s)
+{
+    mcs_theory_zeros z = {n, 1u, !has_importance, 0, 1u, 0};
+    const size_t g = mcs_theory_gcd_(n, k);
+    z.mean_const = z.no_imp && kind != MCS_PATTERN_UNIFORM;
+    if (z.no_imp && (kind == MCS_PATTERN_RANDOM || kind == MCS_PATTERN_HOMOGENIZED ||
+                     kind == MCS_PATTERN_JITTER))
+        z.step = n;
+    else if (z.no_imp && kind == MCS_PATTERN_STRATIFIED)
+        z.step = g;
+    z.fixed = kind == MCS_PATTERN_UNIFORM || (z.no_imp && kind != MCS_PATTERN_RANDOM && k % n == 0u);
+    if (z.no_imp && kind == MCS_PATTERN_JITTER) {
+        z.g = g;
+    } else if (kind == MCS_PATTERN_UNIFORM && g > 1u) {
+        int periodic = 1;
+        for (size_t b = 0; b + n / g < n; ++b)
+            periodic &= mean_s[b] == mean_s[b + n / g];
+        z.g = periodic ? g : 1u;
+    }
+    return z;
+}
+
+/* S_q = 0 in every trial. */
+static inline int mcs_theory_s_zero_(const mcs_theory_zeros *z, size_t q)
+{
+    return q % z->g != 0u || (q != 0u && z->fixed && z->mean_const);
+}
+
+static inline int mcs_theory_real_freq_(const mcs_theory_zeros *z, size_t q)
+{
+    return q == 0u || 2u * q == z->n;
+}
+
+/* <S_q> = 0. */
+static inline int mcs_theory_mean_zero_(const mcs_theory_zeros *z, size_t q)
+{
+    return mcs_theory_s_zero_(z, q) || (q != 0u && z->mean_const);
+}
+
+/* Cov(S_k, S_l) = 0. */
+static inline int mcs_theory_cov_zero_(const mcs_theory_zeros *z, size_t k, size_t l)
+{
+    return z->fixed || mcs_theory_s_zero_(z, k) || mcs_theory_s_zero_(z, l) ||
+           (z->no_imp && (k == 0u || l == 0u)) || (k + z->n - l) % z->step != 0u;
+}
+
+/* <S_k S_l*> = Cov(S_k, S_l) + <S_k><S_l>* = 0. */
+static inline int mcs_theory_cross_zero_(const mcs_theory_zeros *z, size_t k, size_t l)
+{
+    return mcs_theory_s_zero_(z, k) || mcs_theory_s_zero_(z, l) ||
+           (mcs_theory_cov_zero_(z, k, l) &&
+            (mcs_theory_mean_zero_(z, k) || mcs_theory_mean_zero_(z, l)));
+}
+
+/* The imaginary part of a second moment of S_k and S_l is 0. */
+static inline int mcs_theory_im_zero_(const mcs_theory_zeros *z, size_t k, size_t l)
+{
+    return k == l || (mcs_theory_real_freq_(z, k) && mcs_theory_real_freq_(z, l));
+}
+
+/* f[n] the same value on every bin. */
+static inline int mcs_theory_constant_(size_t n, const double *f)
+{
+    int same = 1;
+    for (size_t b = 1; b < n; ++b)
+        same &= f[b] == f[0];
+    return same;
+}
+
+/* Cov(I_f, I_g) = 0 (g == f for Var[I]). */
+static inline int mcs_theory_estimator_zero_(const mcs_theory_zeros *z, size_t n, const double *f,
+                                             const double *g)
+{
+    return z->fixed || (z->no_imp && (mcs_theory_constant_(n, f) || mcs_theory_constant_(n, g)));
+}
+
+/* ---- the bias of the estimator ------------------------------------------------ */
+
+/* <I> - (1/N) sum_n f_n, from the stored <s>: random, stratified, homogenized
+ * and jitter have <s_n> = K/N on the importance function's support (p_n and
+ * the sampled interval lengths agree) and 0 outside it (<s_n> = 0 there, and
+ * only there), so the bias is -(1/N) sum over those bins of f_n, one sum and
+ * no difference of nearby values; uniform's <s_n> are its weighted counts,
+ * and its bias (1/(K N)) sum_n f_n (N <s_n> - K), each N <s_n> - K with one
+ * rounding (exact without importance: integer counts). */
+static inline double mcs_theory_bias_of_(mcs_pattern_kind kind, size_t n, size_t k,
+                                         const double *mean_s, const double *f)
+{
+    const double kd = (double)k, nd = (double)n;
+    double sum = 0.0;
+    if (kind == MCS_PATTERN_UNIFORM) {
+        for (size_t b = 0; b < n; ++b)
+            sum += f[b] * fma(nd, mean_s[b], -kd);
+        return sum / (kd * nd);
+    }
+    for (size_t b = 0; b < n; ++b)
+        if (mean_s[b] == 0.0)
+            sum += f[b];
+    return -sum / nd;
 }
 
 /* ---- src/theory/theory.c: the rounding exact moments carry ------------------ */

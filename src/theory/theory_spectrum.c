@@ -14,8 +14,10 @@
 static void fill_bins(mcs_theory_spectrum *ts, const mcs_pattern *pat)
 {
     const size_t n = pat->n;
-    for (size_t b = 0; b <= n; ++b)
+    for (size_t b = 0; b <= n; ++b) {
         ts->edge[b] = mcs_theory_edge_(pat, b);
+        ts->edge_lo[b] = mcs_theory_edge_lo_(pat, b);
+    }
     for (size_t b = 0; b < n; ++b) {
         ts->length[b] = mcs_theory_length_(pat, b);
         ts->inv_p[b] = mcs_theory_inv_p_(pat, b);
@@ -67,7 +69,8 @@ static int in_range(double x, double lo, double hi)
 }
 
 /* The body as mcs_theory_spectrum_init writes it: edges rising from 0 to K,
- * lengths in [0, 1], weights 1/p_b in (0, 2^33], means and twiddles
+ * lengths in [0, 1], weights 1/p_b in (0, 2^33] (0 for a bin of length 0:
+ * outside the support), means and twiddles
  * bounded. Then every covariance term is a weight >= 0 times a squared
  * deviation (the strata overlaps are >= 0 because the edges rise), so
  * variances and powers are sums of non-negative finite terms: >= 0 with no
@@ -78,10 +81,14 @@ static int body_is_sound(const mcs_theory_spectrum *ts)
 {
     const size_t n = ts->n;
     int sound = ts->edge[0] == 0.0 && ts->edge[n] == (double)ts->k;
+    for (size_t b = 0; b <= n; ++b) /* an edge's rounding: at most half its ulp */
+        sound &= fabs(ts->edge_lo[b]) <= 0x1p-52 * fabs(ts->edge[b]);
     for (size_t b = 0; b < n; ++b) {
         sound &= ts->edge[b] <= ts->edge[b + 1u];
         sound &= in_range(ts->length[b], 0.0, 1.0);
-        sound &= in_range(ts->inv_p[b], DBL_MIN, MAX_INV_P);
+        /* 0 only outside the support, where no sample lands (length 0) */
+        sound &= in_range(ts->inv_p[b], DBL_MIN, MAX_INV_P) |
+                 (ts->inv_p[b] == 0.0 && ts->length[b] == 0.0);
         sound &= in_range(ts->mean_s[b], -MAX_MEAN_S, MAX_MEAN_S);
         sound &= in_range(ts->cos_table[b], -1.0, 1.0) & in_range(ts->sin_table[b], -1.0, 1.0);
     }
@@ -98,15 +105,27 @@ static int order_is_sound(const mcs_theory_spectrum *ts)
     return sound;
 }
 
+/* The edges rise from 0 to K: the strata overlaps and jitter pieces are
+ * read from them (a bin inside a stratum by its length, so edges out of
+ * order would not show as a negative overlap). O(N). */
+static int edges_are_sound(const mcs_theory_spectrum *ts)
+{
+    int sound = ts->edge[0] == 0.0 && ts->edge[ts->n] == (double)ts->k;
+    for (size_t b = 0; b < ts->n; ++b)
+        sound &= ts->edge[b] <= ts->edge[b + 1u];
+    return sound;
+}
+
 /* Outputs given (else NULL), ts set up (else UNINIT), its indices inside
- * the object (else INVARIANT: a corrupted object, refused before a read). */
+ * the object and its edges in order (else INVARIANT: a corrupted object,
+ * refused before a read). */
 static mcs_status check_ts(int outputs, const mcs_theory_spectrum *ts)
 {
     if (!outputs || ts == NULL)
         return MCS_ERR_NULL;
     if (ts->n == 0u || ts->n > (size_t)MCS_MAX_N || ts->k == 0u || !mcs_kind_is_valid_(ts->kind))
         return MCS_ERR_UNINIT;
-    return order_is_sound(ts) ? MCS_OK : MCS_ERR_INVARIANT;
+    return order_is_sound(ts) && edges_are_sound(ts) ? MCS_OK : MCS_ERR_INVARIANT;
 }
 
 /* check_ts, then frequencies below N (else FREQ_RANGE). */
@@ -174,6 +193,12 @@ static mcs_status check_integrands(int outputs, const mcs_theory_spectrum *ts, s
 
 /* Eq. 15 from <s> with the object's twiddles: the read-out shared with the
  * N x N moments, so both give <S_k> to the last bit. */
+static mcs_theory_zeros zeros_of(const mcs_theory_spectrum *ts)
+{
+    return mcs_theory_zeros_of_(ts->kind, ts->n, ts->k, ts->has_importance, ts->mean_s);
+}
+
+/* Eq. 15 from <s>, with the zeros theory proves (theory_internal.h). */
 static void mean_at(const mcs_theory_spectrum *ts, size_t freq, double *re, double *im)
 {
     const mcs_readout view = {.n = ts->n,
@@ -182,7 +207,12 @@ static void mean_at(const mcs_theory_spectrum *ts, size_t freq, double *re, doub
                               .first = ts->mean_s,
                               .cos_table = ts->cos_table,
                               .sin_table = ts->sin_table};
+    const mcs_theory_zeros z = zeros_of(ts);
     mcs_readout_dft(&view, ts->mean_s, freq, re, im);
+    if (mcs_theory_mean_zero_(&z, freq))
+        *re = *im = 0.0;
+    if (mcs_theory_real_freq_(&z, freq))
+        *im = 0.0;
 }
 
 /* Cov(S_k, S_l). The homogenized covariance is circulant (a function of the
@@ -201,8 +231,11 @@ static void covariance_at(const mcs_theory_spectrum *ts, size_t freq_k, size_t f
     } else {
         mcs_theory_cov_(ts, &x, yp, re, im);
     }
-    if (freq_k == freq_l)
-        *im = 0.0; /* a variance: real (the parts cancel to rounding) */
+    const mcs_theory_zeros z = zeros_of(ts);
+    if (mcs_theory_cov_zero_(&z, freq_k, freq_l))
+        *re = *im = 0.0;
+    if (mcs_theory_im_zero_(&z, freq_k, freq_l))
+        *im = 0.0; /* a variance, or two real S: real (the parts cancel to rounding) */
 }
 
 static double power_at(const mcs_theory_spectrum *ts, size_t freq)
@@ -267,8 +300,59 @@ mcs_status mcs_theory_spectrum_cross(const mcs_theory_spectrum *ts, size_t freq_
     covariance_at(ts, freq_k, freq_l, &cr, &ci);
     mean_at(ts, freq_k, &kr, &ki);
     mean_at(ts, freq_l, &lr, &li);
-    /* + <S_k><S_l>* = (kr + i ki)(lr - i li) */
-    return set_complex(re, im, cr + (kr * lr + ki * li), ci + (ki * lr - kr * li), 0);
+    /* + <S_k><S_l>* = (kr + i ki)(lr - i li); the zeros exactly (above) */
+    const mcs_theory_zeros z = zeros_of(ts);
+    double r = cr + (kr * lr + ki * li), i = ci + (ki * lr - kr * li);
+    if (mcs_theory_cross_zero_(&z, freq_k, freq_l))
+        r = i = 0.0;
+    if (mcs_theory_im_zero_(&z, freq_k, freq_l))
+        i = 0.0;
+    return set_complex(re, im, r, i, 0);
+}
+
+/* Every stored frequency at once: the per-frequency values (mean_at,
+ * covariance_at, power_at: the same bits), for a body checked once
+ * (body_is_sound: every value is then finite and no variance or power
+ * negative, so nothing needs checking per value before the writes). */
+mcs_status mcs_theory_spectrum_read_all(const mcs_theory_spectrum *ts, size_t n_out,
+                                        double *mean_re, double *mean_im, double *variance,
+                                        double *power)
+{
+    double *const out[4] = {mean_re, mean_im, variance, power};
+    int any = 0;
+    for (int a = 0; a < 4; ++a)
+        any |= out[a] != NULL;
+    mcs_status st = check_ts(any, ts);
+    if (st != MCS_OK)
+        return st;
+    if (n_out != ts->n / 2u + 1u)
+        return MCS_ERR_MISMATCH;
+    const size_t bytes = mcs_bytes_(n_out, sizeof(double));
+    for (int a = 0; a < 4; ++a)
+        for (int b = a; b < 4; ++b)
+            if (out[a] != NULL &&
+                (b == a ? mcs_overlap_(out[a], bytes, ts, sizeof *ts)
+                        : out[b] != NULL && mcs_overlap_(out[a], bytes, out[b], bytes)))
+                return MCS_ERR_ALIAS;
+    if (!body_is_sound(ts))
+        return MCS_ERR_INVARIANT;
+    for (size_t q = 0; q < n_out; ++q) {
+        if (mean_re != NULL || mean_im != NULL) {
+            double r, i;
+            mean_at(ts, q, &r, &i);
+            if (mean_re != NULL)
+                mean_re[q] = r;
+            if (mean_im != NULL)
+                mean_im[q] = i;
+        }
+        if (variance != NULL) {
+            double zero;
+            covariance_at(ts, q, q, &variance[q], &zero);
+        }
+        if (power != NULL)
+            power[q] = power_at(ts, q);
+    }
+    return MCS_OK;
 }
 
 /* ---- the estimator ---------------------------------------------------------- */
@@ -285,9 +369,20 @@ mcs_status mcs_theory_spectrum_estimator_mean(const mcs_theory_spectrum *ts, siz
     return set_real(out, sum / (double)k, 0);
 }
 
-/* (1/K^2) Cov(sum f s, sum g s): I = (1/K) sum f s. */
+mcs_status mcs_theory_spectrum_bias(const mcs_theory_spectrum *ts, size_t n, size_t k,
+                                    const double *f, double *out)
+{
+    mcs_status st = check_integrands(out != NULL, ts, n, k, f, NULL);
+    return st == MCS_OK ? set_real(out, mcs_theory_bias_of_(ts->kind, n, k, ts->mean_s, f), 0)
+                        : st;
+}
+
+/* (1/K^2) Cov(sum f s, sum g s): I = (1/K) sum f s; 0 where theory says so. */
 static double estimator_cov(const mcs_theory_spectrum *ts, const double *f, const double *g)
 {
+    const mcs_theory_zeros z = zeros_of(ts);
+    if (mcs_theory_estimator_zero_(&z, ts->n, f, g))
+        return 0.0;
     const mcs_theory_weight x = {f, 0u, 1.0, 0u}, y = {g, 0u, 1.0, 0u};
     double re, im;
     mcs_theory_cov_(ts, &x, f == g ? &x : &y, &re, &im);

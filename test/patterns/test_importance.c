@@ -90,7 +90,7 @@ static void test_bad_weights_return_an_error_and_leave_the_struct_untouched(void
     const double nan_w[3] = {1.0, NAN, 1.0};
     const double inf_w[3] = {1.0, INFINITY, 1.0};
     const double neg_w[3] = {1.0, -1.0, 3.0};
-    const double zero_w[3] = {1.0, 0.0, 3.0};
+    const double zero_w[3] = {0.0, -0.0, 0.0}; /* nothing to sample */
     const double tiny_w[3] = {1e308, 0.3, 0.3};
     TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_importance_init(NULL, 3u, good));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_importance_init(&imp, 3u, NULL));
@@ -210,6 +210,65 @@ static void test_any_scale_is_accepted_and_a_negligible_weight_is_refused(void)
     TEST_ASSERT_EQUAL_INT(MCS_ERR_ZERO_WEIGHT, mcs_importance_init(&imp, 2u, below));
 }
 
+/* Issue 23 item 4: g_n = 0 is the support condition of a renderer's
+ * importance sampling. A weight of exactly 0 puts its bin outside the
+ * support: g_n = p_n = 0 exactly, an empty CDF interval (its two entries
+ * the same double, 1 past the last positive weight), never reached by the
+ * warp, and left out of H and Q (1/p_n read as 0). Leading, consecutive
+ * and trailing zeros, and -0.0. */
+static void test_a_zero_weight_puts_its_bin_outside_the_support(void)
+{
+    const double w[9] = {0.0, 2.0, 0.0, -0.0, 1.0, 3.0, 0.0, 2.0, 0.0};
+    const int in[9] = {0, 1, 0, 0, 1, 1, 0, 1, 0};
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_init(&imp, 9u, w));
+    double inv = 0.0;
+    for (size_t b = 0; b < 9u; ++b) {
+        if (!in[b]) {
+            TEST_ASSERT_TRUE(imp.g[b] == 0.0 && imp.p[b] == 0.0 && !signbit(imp.p[b]));
+            TEST_ASSERT_TRUE(imp.cdf[b] == imp.cdf[b + 1u]);
+        } else {
+            TEST_ASSERT_DOUBLE_WITHIN(1e-15, w[b] / 8.0, imp.g[b]);
+            TEST_ASSERT_EQUAL_DOUBLE(9.0 * imp.g[b], imp.p[b]);
+            inv += 1.0 / imp.p[b];
+        }
+    }
+    TEST_ASSERT_EQUAL_DOUBLE(0.0, imp.cdf[1]);
+    TEST_ASSERT_EQUAL_DOUBLE(1.0, imp.cdf[8]);
+    TEST_ASSERT_EQUAL_DOUBLE(1.0, imp.cdf[9]);
+    /* 1/H = (1/N) sum over the support of 1/p_n: above 1 here (4 bins of 9) */
+    TEST_ASSERT_DOUBLE_WITHIN(1e-14, 9.0 / inv, imp.harmonic_mean);
+    TEST_ASSERT_TRUE(imp.harmonic_mean > 1.0);
+    double qr, qi;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_q(&imp, 0u, &qr, &qi));
+    TEST_ASSERT_DOUBLE_WITHIN(1e-14, 1.0 / imp.harmonic_mean, qr / 3.0);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_q(&imp, 4u, &qr, &qi));
+    TEST_ASSERT_TRUE(isfinite(qr) && isfinite(qi));
+    /* the warp never returns a bin outside the support: a fine grid of u,
+     * each CDF entry itself, and the largest u below 1 */
+    for (size_t i = 0; i <= 20000u; ++i) {
+        double u = i < 20000u ? (double)i / 20000.0 : nextafter(1.0, 0.0), x;
+        size_t bin;
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_warp(&imp, u, &x, &bin));
+        TEST_ASSERT_TRUE(in[bin]);
+        TEST_ASSERT_EQUAL_UINT(bin, (size_t)(x * 9.0));
+        if (i < 9u && imp.cdf[i] < 1.0) {
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_warp(&imp, imp.cdf[i], &x, &bin));
+            TEST_ASSERT_TRUE(in[bin]);
+        }
+    }
+    /* a single positive weight: every sample in its bin, weight 1/N */
+    const double one[5] = {0.0, 0.0, 7.0, 0.0, 0.0};
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_init(&imp, 5u, one));
+    TEST_ASSERT_EQUAL_DOUBLE(1.0, imp.g[2]);
+    TEST_ASSERT_EQUAL_DOUBLE(5.0, imp.p[2]);
+    TEST_ASSERT_EQUAL_DOUBLE(25.0, imp.harmonic_mean); /* 5 / (1/5) */
+    /* a tiny positive weight is still refused, beside zeros */
+    const double tiny[4] = {0.0, 1.0, 1e-12, 0.0};
+    memcpy(&imp_copy, &imp, sizeof imp);
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ZERO_WEIGHT, mcs_importance_init(&imp, 4u, tiny));
+    TEST_ASSERT_EQUAL_MEMORY(&imp_copy, &imp, sizeof imp);
+}
+
 /* Issue 10 item 10: one double for both outputs of a call is refused. */
 static void test_one_storage_for_two_outputs_is_refused(void)
 {
@@ -311,6 +370,7 @@ int main(void)
     RUN_TEST(test_bad_q_input_returns_an_error_and_leaves_outputs_untouched);
     RUN_TEST(test_any_scale_is_accepted_and_a_negligible_weight_is_refused);
     RUN_TEST(test_bin_probabilities_are_the_stored_g_so_the_estimator_is_unbiased);
+    RUN_TEST(test_a_zero_weight_puts_its_bin_outside_the_support);
     RUN_TEST(test_one_storage_for_two_outputs_is_refused);
     RUN_TEST(test_q_of_a_corrupted_object_is_refused_not_nan);
     RUN_TEST(test_a_corrupted_cdf_entry_still_gives_a_point_inside_the_returned_bin);

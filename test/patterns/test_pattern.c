@@ -492,6 +492,55 @@ static void test_a_flat_importance_function_reproduces_the_pattern_without_one(v
     TEST_ASSERT_EQUAL_UINT_ARRAY(expect, bins, 5);
 }
 
+/* Issue 23 item 4: an importance function with bins of g_n = 0 (leading,
+ * inner and trailing): no kind ever draws one (every sample weighs 1/p > 0
+ * of a bin in the support, and the point lies in it), over many trials and
+ * K not dividing N; a renderer's own sample in such a bin is binned with
+ * weight 0 (s_n = 0 there, as in every drawn trial). */
+static void test_no_kind_draws_a_bin_outside_the_support(void)
+{
+    const size_t n = 13u;
+    double w[13];
+    for (size_t b = 0; b < n; ++b)
+        w[b] = (b == 0u || b == 5u || b == 6u || b == 12u) ? 0.0 : 1.0 + (double)((b * 7u) % 5u);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_importance_init(&imp, n, w));
+    mcs_rng rng;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_rng_seed(&rng, 77u, 23u));
+    static const size_t ks[] = {1u, 3u, 7u, 13u, 40u};
+    for (size_t ki = 0; ki < sizeof ks / sizeof ks[0]; ++ki)
+        for (int i = 0; i < MCS_PATTERN_KIND_COUNT; ++i) {
+            if (all_kinds[i] == MCS_PATTERN_HOMOGENIZED)
+                continue;
+            mcs_pattern pat;
+            const size_t k = ks[ki];
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_init(&pat, all_kinds[i], n, k, &imp));
+            for (int t = 0; t < 2000; ++t) {
+                TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern_draw(&pat, &rng, k, bins, weights, points));
+                for (size_t j = 0; j < k; ++j) {
+                    TEST_ASSERT_TRUE(w[bins[j]] > 0.0);
+                    TEST_ASSERT_EQUAL_DOUBLE(1.0 / imp.p[bins[j]], weights[j]);
+                    TEST_ASSERT_EQUAL_UINT(bins[j], (size_t)(points[j] * (double)n));
+                }
+            }
+        }
+    const double x[4] = {0.01, 0.2, 0.45, 0.99}; /* bins 0, 2, 5, 12 */
+    const float xf[4] = {0.01f, 0.2f, 0.45f, 0.99f};
+    for (int f = 0; f < 2; ++f) {
+        TEST_ASSERT_EQUAL_INT(MCS_OK, f ? mcs_pattern_bin_points_f(n, 4u, &imp, xf, bins, weights)
+                                        : mcs_pattern_bin_points(n, 4u, &imp, x, bins, weights));
+        const size_t want[4] = {0u, 2u, 5u, 12u};
+        for (size_t j = 0; j < 4u; ++j) {
+            TEST_ASSERT_EQUAL_UINT(want[j], bins[j]);
+            TEST_ASSERT_EQUAL_DOUBLE(j == 1u ? 1.0 / imp.p[2] : 0.0, weights[j]);
+        }
+    }
+    /* a bin that is drawn but whose p was overwritten to 0 is refused */
+    imp.p[2] = 0.0;
+    bins[0] = GUARD_BIN;
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_INVARIANT, mcs_pattern_bin_points(n, 4u, &imp, x, bins, weights));
+    TEST_ASSERT_EQUAL_UINT(GUARD_BIN, bins[0]);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -512,5 +561,6 @@ int main(void)
     RUN_TEST(test_k_above_the_documented_maximum_is_refused);
     RUN_TEST(test_overlapping_arrays_are_refused_and_nothing_is_written);
     RUN_TEST(test_a_flat_importance_function_reproduces_the_pattern_without_one);
+    RUN_TEST(test_no_kind_draws_a_bin_outside_the_support);
     return UNITY_END();
 }

@@ -178,18 +178,24 @@ static int tspec_bad(const mcs_theory_spectrum *ts)
     return 0;
 }
 
-/* Importance: p_n finite and > 0, the CDF monotone up to exactly 1, and the
- * harmonic mean in (0, 1] as documented. */
+/* Importance: p_n finite and > 0, or 0 with g_n = 0 (a bin outside the
+ * support), the CDF monotone up to exactly 1, and the harmonic mean in
+ * (0, 1] as documented when every bin is in the support, positive and
+ * finite otherwise. */
 static int importance_bad(const mcs_importance *imp)
 {
     const size_t n = imp->n;
+    int full = 1;
     for (size_t j = 0; j < n; ++j) {
-        CHECK("importance p", j, MCS_OK, imp->p[j] > 0.0 ? imp->p[j] : -1.0, 1);
+        const int outside = imp->p[j] == 0.0 && imp->g[j] == 0.0;
+        full &= !outside;
+        CHECK("importance p", j, MCS_OK, imp->p[j] > 0.0 || outside ? imp->p[j] : -1.0, 1);
         CHECK("importance cdf step", j, MCS_OK, imp->cdf[j + 1] - imp->cdf[j], 1);
     }
     const double h = imp->harmonic_mean;
     CHECK("importance cdf[n] - 1", n, MCS_OK, imp->cdf[n] == 1.0 ? 0.0 : -1.0, 1);
-    CHECK("importance harmonic_mean in (0,1]", n, MCS_OK, h > 0.0 && h <= 1.0 ? h : -1.0, 1);
+    CHECK("importance harmonic_mean in (0,1], or > 0 with bins outside the support", n, MCS_OK,
+          h > 0.0 && (h <= 1.0 || !full) ? h : -1.0, 1);
     double re = 0.0, im = 0.0;
     CHECK("importance_q re", 0, mcs_importance_q(imp, 0, &re, &im), re, 1);
     return 0;

@@ -67,9 +67,11 @@ static int expect_dbl(int role, int mv, int is_array)
         if (mv == MV_NEG)
             return EX_ERR;
         return mv == MV_HUGE || mv == MV_SQRTMAX || mv == MV_ALLMAX ? EX_ANY : EX_OK;
-    case R_IMPW:
-        if (mv == MV_NEG || mv == MV_ZERO)
+    case R_IMPW: /* 0 puts a bin outside the support; not every weight is mutated */
+        if (mv == MV_NEG)
             return EX_ERR;
+        if (mv == MV_ZERO)
+            return EX_OK;
         return mv == MV_ONE || mv == MV_BELOW1 ? EX_OK : EX_ANY;
     default: /* R_F */
         (void)is_array;

@@ -146,6 +146,10 @@ static int t_spectrum_mean(const adv_val *a) { return mcs_spectrum_mean(a[0].p, 
 static int t_spectrum_mean_stderr(const adv_val *a) { return mcs_spectrum_mean_stderr(a[0].p, a[1].z, a[2].p); }
 static int t_spectrum_power(const adv_val *a) { return mcs_spectrum_power(a[0].p, a[1].z, a[2].p); }
 static int t_spectrum_power_stderr(const adv_val *a) { return mcs_spectrum_power_stderr(a[0].p, a[1].z, a[2].p); }
+static int t_spectrum_read_all(const adv_val *a)
+{
+    return mcs_spectrum_read_all(a[0].p, a[1].z, a[2].p, a[3].p, a[4].p, a[5].p, a[6].p);
+}
 
 /* ---- descriptors ---- */
 
@@ -161,6 +165,8 @@ static const uint8_t path_vars[3] = {0, 1, 2};
 #define RNG_IO OBJ_IO("rng", T_RNG, 0)
 #define SPEC_IN OBJ_IN("acc", T_SPECTRUM, 0)
 #define FREQ SZ_INDEX("freq", 1, 0, BN - 1u, F_OKIN)
+/* n_out of the array read-outs: the stored frequencies k = 0..N/2 */
+#define HALF_MATCH SZ_MATCH("n_out", BN / 2u + 1u, MCS_MAX_N / 2u + 1u)
 
 const adv_fn adv_fns_core[] = {
     FN(status_str, EF_NONE, 1, 0, ENM("status", 0, -15, 0, F_FREE)),
@@ -235,5 +241,11 @@ const adv_fn adv_fns_core[] = {
     FN(spectrum_mean_stderr, EF_NONE, 1, 0, SPEC_IN, FREQ, OUT("stderr", E_D, O_NN, 0)),
     FN(spectrum_power, EF_NONE, 1, 0, SPEC_IN, FREQ, OUT("power", E_D, O_NN, 0)),
     FN(spectrum_power_stderr, EF_NONE, 1, 0, SPEC_IN, FREQ, OUT("stderr", E_D, O_NN, 0)),
+    FN(spectrum_read_all, EF_NONE, 1, 0, OBJ_IN("acc", T_SPECTRUM, F_SIZED), HALF_MATCH,
+       AOUT("mean_re", E_D, O_VAL, LEN(L_SLOT, 1), F_NULLOK),
+       AOUT("mean_im", E_D, O_VAL, LEN(L_SLOT, 1), F_NULLOK),
+       AOUT("mean_stderr", E_D, O_NN, LEN(L_SLOT, 1), F_NULLOK),
+       AOUT("power", E_D, O_NN, LEN(L_SLOT, 1), F_NULLOK),
+       AOUT("power_stderr", E_D, O_NN, LEN(L_SLOT, 1), F_NULLOK)),
 };
 const size_t adv_fns_core_count = sizeof adv_fns_core / sizeof adv_fns_core[0];

@@ -30,8 +30,44 @@ static int t_eq52_variance_corrected(const adv_val *a) { return mcs_eq52_varianc
 static int t_eq55_variance_convolution(const adv_val *a) { return mcs_eq55_variance_convolution(a[0].p, a[1].z, a[2].p, a[3].p); }
 static int t_eq58_bound_printed(const adv_val *a) { return mcs_eq58_bound_printed(a[0].p, a[1].z, a[2].p, a[3].p); }
 static int t_eq58_bound_corrected(const adv_val *a) { return mcs_eq58_bound_corrected(a[0].p, a[1].z, a[2].p, a[3].p); }
+/* The exact read-outs added beside the closed forms (theory.h). */
+static int t_theory_bias(const adv_val *a) { return mcs_theory_bias(a[0].p, a[1].z, a[2].z, a[3].p, a[4].p); }
+static int t_theory_spectrum_bias(const adv_val *a)
+{
+    return mcs_theory_spectrum_bias(a[0].p, a[1].z, a[2].z, a[3].p, a[4].p);
+}
+static int t_theory_rotation_init(const adv_val *a)
+{
+    return mcs_theory_rotation_init(a[0].p, a[1].z, a[2].z, a[3].p, a[4].p, a[5].z);
+}
+/* The read-outs of the rotation of a fixed set of BK points over BN bins
+ * (set up here: the table has no object type for it). */
+static const mcs_theory_rotation *base_rotation(void)
+{
+    static mcs_theory_rotation rot;
+    static double work[BN];
+    const double a[BK] = {0.0, 0.5, 0.25, 0.75, 0.3, 0.93};
+    return mcs_theory_rotation_init(&rot, BN, BK, a, work, BN) == MCS_OK ? &rot : NULL;
+}
+static int t_theory_rotation_mean(const adv_val *a)
+{
+    return mcs_theory_rotation_mean(base_rotation(), a[0].z, a[1].p, a[2].p);
+}
+static int t_theory_rotation_power(const adv_val *a)
+{
+    return mcs_theory_rotation_power(base_rotation(), a[0].z, a[1].p);
+}
+static int t_theory_rotation_variance(const adv_val *a)
+{
+    return mcs_theory_rotation_variance(base_rotation(), a[0].z, a[1].z, a[2].p, a[3].p);
+}
+static int t_theory_spectrum_read_all(const adv_val *a)
+{
+    return mcs_theory_spectrum_read_all(a[0].p, a[1].z, a[2].p, a[3].p, a[4].p, a[5].p);
+}
 
 #define TH OBJ_IN("th", T_THEORY, F_SIZED)
+#define ROT_LEN {.op = L_CONST, .c = sizeof(mcs_theory_rotation)}
 #define N_MATCH SZ_MATCH("n", BN, MCS_MAX_COV_N)
 #define K_MATCH SZ_MATCH("k", BK, SIZE_MAX)
 #define N_ANY SZ_DEF("n", BN, 1, MCS_MAX_N, 0)
@@ -90,5 +126,25 @@ const adv_fn adv_fns_eq[] = {
     EQ_IMP_F(eq55_variance_convolution, OUT_VAL("out")),
     EQ_IMP_F(eq58_bound_printed, OUT_NN("out")),
     EQ_IMP_F(eq58_bound_corrected, OUT_NN("out")),
+    FN(theory_spectrum_read_all, EF_NONE, 1, 0, OBJ_IN("ts", T_TSPEC, F_SIZED),
+       SZ_MATCH("n_out", BN / 2u + 1u, MCS_MAX_N / 2u + 1u),
+       AOUT("mean_re", E_D, O_VAL, LEN(L_SLOT, 1), F_NULLOK),
+       AOUT("mean_im", E_D, O_VAL, LEN(L_SLOT, 1), F_NULLOK),
+       AOUT("variance", E_D, O_NN, LEN(L_SLOT, 1), F_NULLOK),
+       AOUT("power", E_D, O_NN, LEN(L_SLOT, 1), F_NULLOK)),
+    FN(theory_bias, EF_NONE, 1, 0, TH, N_MATCH, K_MATCH, F_N("f", 1), OUT_VAL("out")),
+    FN(theory_spectrum_bias, EF_NONE, 1, 0, OBJ_IN("ts", T_TSPEC, F_SIZED),
+       SZ_MATCH("n", BN, MCS_MAX_N), K_MATCH, F_N("f", 1), OUT_VAL("out")),
+    FN(theory_rotation_init, EF_NONE, 1, 1,
+       AOUT("rot", E_U8, O_RAW, ROT_LEN, 0),
+       SZ_DEF("n", BN, 1, MCS_MAX_N, 0), SZ_LEN("k", BK),
+       AIN("points", E_D, R_POINT, LEN(L_SLOT, 2), 0), AOUT("work", E_D, O_NN, LEN(L_SLOT, 5), 0),
+       SZ_LEN("len", BN)),
+    FN(theory_rotation_mean, EF_NONE, 1, 0, SZ_INDEX("freq", 0, 0, BN - 1u, F_OKIN),
+       OUT_VAL("re"), OUT_VAL("im")),
+    FN(theory_rotation_power, EF_NONE, 1, 0, SZ_INDEX("freq", 1, 0, BN - 1u, F_OKIN),
+       OUT_NN("out")),
+    FN(theory_rotation_variance, EF_NONE, 1, 0, SZ_MATCH("n", BN, MCS_MAX_N),
+       SZ_MATCH("k", BK, SIZE_MAX), F_N("f", 0), OUT_NN("out")),
 };
 const size_t adv_fns_eq_count = sizeof adv_fns_eq / sizeof adv_fns_eq[0];

@@ -64,11 +64,12 @@ static const double specials[] = {-1.0, -1e-300, -0.0, 0.0, 0.5, 2.5, -2.5, 1e30
                                   -(double)INFINITY, (double)NAN};
 #define NSPECIALS (sizeof specials / sizeof specials[0])
 
-/* Field f of the body as doubles (the six arrays of doubles in the struct). */
+/* Field f of the body as doubles (the seven arrays of doubles in the struct). */
+#define FIELDS 7
 static double *field(mcs_theory_spectrum *t, int f)
 {
-    double *const fields[6] = {t->mean_s, t->edge, t->length, t->inv_p, t->cos_table,
-                               t->sin_table};
+    double *const fields[FIELDS] = {t->mean_s, t->edge,    t->length,   t->inv_p,
+                                    t->cos_table, t->sin_table, t->edge_lo};
     return fields[f];
 }
 
@@ -112,7 +113,7 @@ static void test_a_corrupted_body_is_refused_or_reads_finite_never_negative_powe
             continue;
         spectrum_init(&sound, all_kinds[j / 2], n, k, im);
         memcpy(&ts, &sound, sizeof ts);
-        for (int fi = 0; fi < 6; ++fi)
+        for (int fi = 0; fi < FIELDS; ++fi)
             for (size_t b = 0; b <= n; ++b)
                 for (size_t s = 0; s < NSPECIALS; ++s) {
                     field(&ts, fi)[b] = specials[s];
