@@ -88,7 +88,7 @@ static const char help_2d[] =
     "                     the P files that --stream 0 .. P-1 --save (in any order)\n"
     "                     equals --streams P --save: a run split over batch jobs\n"
     "  --importance FILE  warp the samples through the importance function whose N\n"
-    "                     weights (> 0, any scale; one per line, '#' lines skipped)\n"
+    "                     weights (>= 0, any scale, 0: a bin never drawn; one per line)\n"
     "                     are in FILE\n"
     "  --dim D            1 (default: N bins, the KIND above) or 2 (KIND2, no bins)\n"
     "  --freq F           --dim 2: the cutoff, |kx|, |ky| <= F, 1.." CLI_STR(MCS_MAX_FREQ) " (required)\n"

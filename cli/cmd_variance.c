@@ -47,7 +47,7 @@ static const char help[] =
     "  --kind KIND        only this kind (default: every kind; with --importance,\n"
     "                     every kind but homogenized, which is not defined there)\n"
     "  --importance FILE  warp the samples through the importance function whose N\n"
-    "                     weights (> 0, one per line) are in FILE\n"
+    "                     weights (>= 0, one per line) are in FILE\n"
     "  --csv              print CSV only: the header\n"
     "                     " CSV_HEADER "\n"
     "                     and one row per kind; an empty field has no value\n"

@@ -342,8 +342,9 @@ static int read_value_lines(reader *r, const char *what, int positive, size_t ma
         int rc = parse_number(r, tok[0], what, &v);
         if (rc != 0)
             return rc;
-        if (positive && !(v > 0.0))
-            return cli_fail(r->cmd, "%s: line %lu: %s %s must be > 0", r->name, r->line, what,
+        /* Importance weights: 0 is a bin that is never drawn (importance.h). */
+        if (positive && !(v >= 0.0))
+            return cli_fail(r->cmd, "%s: line %lu: %s %s must be >= 0", r->name, r->line, what,
                             tok[0]);
         if (*count == max)
             return cli_fail(r->cmd, "%s: line %lu: more than %zu values (the most this build "

@@ -52,7 +52,8 @@ int cli_read_pointsets(const char *cmd, const char *path, const cli_pointset_for
                        cli_progress *progress);
 
 /* A list of values, one finite number per line ('#' lines and blank lines
- * are skipped), at most max of them; with `positive`, each must be > 0.
+ * are skipped), at most max of them; with `nonneg`, each must be >= 0
+ * (importance weights: 0 is a bin that is never drawn).
  * *values is allocated (the caller frees it) and holds *count >= 1 values.
  * what names the values in messages ("integrand value"). Returns 0 or an
  * exit status after one line on stderr. */

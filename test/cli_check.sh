@@ -273,12 +273,16 @@ usage_error "error after 200 good sets" 'line 601: expected 1 column' "$MCSPEC" 
 : >"$tmp/in"
 printf '1\n2\n3\n' >"$tmp/f3.txt"
 printf '1\n0\n1\n' >"$tmp/g0.txt"
+printf '1\n-1\n1\n' >"$tmp/gneg.txt"
 printf '1\n1\n' >"$tmp/g2.txt"
 printf '0.5\n0.25\nx\n' >"$tmp/fbad.txt"
 usage_error "integrand bad number" "fbad.txt: line 3: integrand value 'x' is not a number" \
     "$MCSPEC" variance --k 2 "$tmp/fbad.txt"
-usage_error "importance weight 0" "g0.txt: line 2: importance weight 0 must be > 0" \
-    "$MCSPEC" variance --k 2 --importance "$tmp/g0.txt" "$tmp/f3.txt"
+usage_error "importance weight -1" "gneg.txt: line 2: importance weight -1 must be >= 0" \
+    "$MCSPEC" variance --k 2 --importance "$tmp/gneg.txt" "$tmp/f3.txt"
+run "$MCSPEC" variance --k 2 --importance "$tmp/g0.txt" "$tmp/f3.txt"
+if [ "$rc" -ne 0 ]; then bad "importance weight 0 (a bin never drawn) refused: $(head -n 1 "$tmp/err")"
+else ok; fi
 usage_error "importance of the wrong length" 'holds 2 importance weights, but the integrand has 3' \
     "$MCSPEC" variance --k 2 --importance "$tmp/g2.txt" "$tmp/f3.txt"
 usage_error "pattern importance of the wrong length" 'holds 2 importance weights, but --n is 3' \

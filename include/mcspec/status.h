@@ -13,7 +13,7 @@ typedef enum {
     MCS_ERR_K_RANGE = -3,         /* sample count k is 0 or above a capacity */
     MCS_ERR_NOT_FINITE = -4,      /* a weight or value is NaN or infinite */
     MCS_ERR_NEGATIVE = -5,        /* a weight is negative */
-    MCS_ERR_ZERO_WEIGHT = -6,     /* an importance weight is 0, or too small next to the total to be
+    MCS_ERR_ZERO_WEIGHT = -6,     /* every importance weight is 0, or one is positive but too small next to the total to be
                                      sampled as asked (below MCS_IMPORTANCE_MIN_G of it) */
     MCS_ERR_BIN_RANGE = -7,       /* a bin index is outside [0, n) */
     MCS_ERR_POINT_RANGE = -8,     /* a point is outside [0, 1) */
