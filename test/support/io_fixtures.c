@@ -16,13 +16,42 @@
     static mcs_status mg_##name(void *d, const void *s) { return mcs_##name##_merge((type *)d, (const type *)s); }
 #define KIND(name, type) LD(name, type) SV(name, type) MG(name, type)
 
+/* The objects over caller memory: the same calls on the slot's header. */
+#define SLOT_SV(name, slot) \
+    static mcs_status sv_##name(const void *s, size_t c, void *b, size_t *l) \
+    { return mcs_io_save_##name(&((const slot *)s)->acc, c, b, l); }
+#define SLOT_MG(name, slot) \
+    static mcs_status mg_##name(void *d, const void *s) \
+    { return mcs_##name##_merge(&((slot *)d)->acc, &((const slot *)s)->acc); }
+
 KIND(spectrum, mcs_spectrum)
 KIND(moment, mcs_moment)
 KIND(autocorr, mcs_autocorr)
 KIND(welford, mcs_welford)
-KIND(pointset, mcs_pointset)
-KIND(pointset2d, mcs_pointset2d)
-KIND(spectrum2d, mcs_spectrum2d)
+SLOT_SV(pointset, io_pointset)
+SLOT_MG(pointset, io_pointset)
+SLOT_SV(pointset2d, io_pointset2d)
+SLOT_MG(pointset2d, io_pointset2d)
+SLOT_SV(spectrum2d, io_spectrum2d)
+SLOT_MG(spectrum2d, io_spectrum2d)
+
+static mcs_status ld_pointset(void *d, size_t l, const void *b)
+{
+    io_pointset *s = d;
+    return mcs_io_load_pointset(&s->acc, 0u, s->mem, sizeof s->mem, l, b);
+}
+
+static mcs_status ld_pointset2d(void *d, size_t l, const void *b)
+{
+    io_pointset2d *s = d;
+    return mcs_io_load_pointset2d(&s->acc, IO_FIX_FLAGS_2D, s->mem, sizeof s->mem, l, b);
+}
+
+static mcs_status ld_spectrum2d(void *d, size_t l, const void *b)
+{
+    io_spectrum2d *s = d;
+    return mcs_io_load_spectrum2d(&s->acc, s->mem, sizeof s->mem, l, b);
+}
 
 #define OPS(name, member, kind, shape_len) \
     {#name, kind, offsetof(io_set, member), sizeof(((io_set *)0)->member), shape_len, \
@@ -54,10 +83,14 @@ static void init_all(io_set *s, size_t n)
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_init(&s->mom, at_most(n, MCS_MAX_COV_N)));
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_autocorr_init(&s->ac, n));
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_welford_init(&s->wf));
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset_init(&s->ps, at_most(n, MCS_MAX_FREQ_1D)));
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_init(&s->ps2, at_most(n, MCS_MAX_FREQ)));
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_init(&s->sp2, at_most(n, MCS_MAX_SIDE),
-                                                      at_most(n / 2u + 1u, MCS_MAX_SIDE)));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset_init(&s->ps.acc, at_most(n, IO_FIX_FREQ_1D), 0u,
+                                                    s->ps.mem, sizeof s->ps.mem));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_init(&s->ps2.acc, at_most(n, IO_FIX_FREQ_2D),
+                                                      IO_FIX_FLAGS_2D, s->ps2.mem,
+                                                      sizeof s->ps2.mem));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_init(&s->sp2.acc, at_most(n, IO_FIX_SIDE),
+                                                      at_most(n / 2u + 1u, IO_FIX_SIDE),
+                                                      s->sp2.mem, sizeof s->sp2.mem));
 }
 
 void io_fill(io_set *s, size_t n, size_t trials, uint64_t seed)
@@ -75,9 +108,9 @@ void io_fill(io_set *s, size_t n, size_t trials, uint64_t seed)
             xy[j] = spectra_uniform(&state, 0.0, 1.0);
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_bins(&s->spec, K, bins, weights));
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_autocorr_add_bins(&s->ac, K, bins, weights));
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset_add(&s->ps, K, points));
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_add(&s->ps2, K, xy));
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_add_points(&s->sp2, K, xy, weights));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset_add(&s->ps.acc, K, points));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_add(&s->ps2.acc, K, xy));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_add_points(&s->sp2.acc, K, xy, weights));
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_welford_add(&s->wf, (double)bins[0] + 0.25 * weights[1]));
         for (size_t j = 0; j < K; ++j)
             bins[j] %= s->mom.n;
