@@ -63,14 +63,15 @@ static mcs_status layout_of(size_t fmax, unsigned flags, layout *lay)
 
 static uintptr_t key_of(const mcs_pointset2d *a)
 {
-    const uintptr_t words[] = {
-        (uintptr_t)a->freq_max,  (uintptr_t)a->flags,    (uintptr_t)a->path,
-        (uintptr_t)a->wrap,      (uintptr_t)a->mem,      (uintptr_t)a->bytes,
-        (uintptr_t)a->state,     (uintptr_t)a->mean,     (uintptr_t)a->m2,
-        (uintptr_t)a->ring_mean, (uintptr_t)a->ring_m2,  (uintptr_t)a->re,
-        (uintptr_t)a->im,        (uintptr_t)a->phase,    (uintptr_t)a->stage,
-        (uintptr_t)a->plan.dim,  (uintptr_t)a->plan.key, (uintptr_t)0x32u};
-    return mcs_ps_hash(words, sizeof words / sizeof words[0]);
+    enum { OWN = 16 };
+    uintptr_t w[OWN + MCS_PS_PLAN_WORDS] = {
+        (uintptr_t)a->freq_max,  (uintptr_t)a->flags,   (uintptr_t)a->path,  (uintptr_t)a->wrap,
+        (uintptr_t)a->mem,       (uintptr_t)a->bytes,   (uintptr_t)a->state, (uintptr_t)a->mean,
+        (uintptr_t)a->m2,        (uintptr_t)a->ring_mean, (uintptr_t)a->ring_m2,
+        (uintptr_t)a->re,        (uintptr_t)a->im,      (uintptr_t)a->phase, (uintptr_t)a->stage,
+        (uintptr_t)0x32u};
+    mcs_ps_plan_words(&a->plan, w + OWN);
+    return mcs_ps_hash(w, sizeof w / sizeof w[0]);
 }
 
 static const mcs_ps_head *head_of(const mcs_pointset2d *acc)

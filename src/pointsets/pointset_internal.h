@@ -84,6 +84,22 @@ static inline uintptr_t mcs_ps_hash(const uintptr_t *words, size_t n)
     return h;
 }
 
+/* The key's words of a NUFFT plan held in a header (all of its fields, the
+ * doubles by their bits): a header whose plan was edited fails the
+ * object's own check, before the plan is used. Writes 15 words. */
+static inline void mcs_ps_plan_words(const mcs_nufft *p, uintptr_t *w)
+{
+    uint64_t beta = 0u, tol = 0u;
+    memcpy(&beta, &p->beta, sizeof beta);
+    memcpy(&tol, &p->tol, sizeof tol);
+    w[0] = (uintptr_t)p->dim, w[1] = (uintptr_t)p->freq, w[2] = (uintptr_t)p->n;
+    w[3] = (uintptr_t)p->width, w[4] = (uintptr_t)beta, w[5] = (uintptr_t)tol;
+    w[6] = (uintptr_t)p->fft_len, w[7] = (uintptr_t)p->bytes, w[8] = (uintptr_t)p->mem;
+    w[9] = (uintptr_t)p->grid, w[10] = (uintptr_t)p->scratch, w[11] = (uintptr_t)p->corr;
+    w[12] = (uintptr_t)p->twiddle, w[13] = (uintptr_t)p->fft, w[14] = p->key;
+}
+#define MCS_PS_PLAN_WORDS 15
+
 /* ---- the caller's points ----
  * d[c] (or f[c] for float points) is coordinate c of point 0, and point j's
  * is step elements further on: interleaved 2D points have d[1] = d[0] + 1
