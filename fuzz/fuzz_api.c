@@ -428,9 +428,14 @@ static mcs_status init_acc(int type, void *o, size_t n, size_t n2)
     case SPEC: return mcs_spectrum_init(o, n);
     case MOM: return mcs_moment_init(o, n);
     case AC: return mcs_autocorr_init(o, n);
-    case PS: return mcs_pointset_init(o, n, 0u, ((fz_pointset *)o)->mem, sizeof o_ps[0].mem);
-    case PS2: return mcs_pointset2d_init(o, n, 0u, ((fz_pointset2d *)o)->mem, sizeof o_ps2[0].mem);
-    default: return mcs_spectrum2d_init(o, n, n2, ((fz_spectrum2d *)o)->mem, sizeof o_s2[0].mem);
+    /* the objects over caller memory: over their own buffer (none for NULL) */
+    case PS: return mcs_pointset_init(o, n, 0u, o ? ((fz_pointset *)o)->mem : NULL, sizeof o_ps[0].mem);
+    case PS2:
+        return mcs_pointset2d_init(o, n, 0u, o ? ((fz_pointset2d *)o)->mem : NULL,
+                                   sizeof o_ps2[0].mem);
+    default:
+        return mcs_spectrum2d_init(o, n, n2, o ? ((fz_spectrum2d *)o)->mem : NULL,
+                                   sizeof o_s2[0].mem);
     }
 }
 

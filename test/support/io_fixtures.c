@@ -118,6 +118,25 @@ void io_fill(io_set *s, size_t n, size_t trials, uint64_t seed)
     }
 }
 
+void io_assert_same(const io_kind_ops *o, const void *a, const void *b, const char *what)
+{
+    static uint8_t ra[IO_REC_MAX], rb[IO_REC_MAX];
+    if (o->kind != MCS_IO_KIND_POINTSET && o->kind != MCS_IO_KIND_POINTSET2D &&
+        o->kind != MCS_IO_KIND_SPECTRUM2D) {
+        TEST_ASSERT_EQUAL_MEMORY_MESSAGE(a, b, o->obj_size, what);
+        return;
+    }
+    size_t la = 0u, lb = 0u;
+    TEST_ASSERT_EQUAL_INT_MESSAGE(MCS_OK, o->save(a, sizeof ra, ra, &la), what);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(MCS_OK, o->save(b, sizeof rb, rb, &lb), what);
+    TEST_ASSERT_EQUAL_UINT64_MESSAGE((uint64_t)la, (uint64_t)lb, what);
+    TEST_ASSERT_EQUAL_MEMORY_MESSAGE(ra, rb, la, what);
+    /* the settings: the headers' fields before their pointers */
+    const size_t settings = o->kind == MCS_IO_KIND_SPECTRUM2D ? offsetof(mcs_spectrum2d, mem)
+                                                              : offsetof(mcs_pointset, mem);
+    TEST_ASSERT_EQUAL_MEMORY_MESSAGE(a, b, settings, what);
+}
+
 size_t io_save(const io_kind_ops *o, const void *src, uint8_t *buf)
 {
     size_t len = 0u, qlen = 0u;

@@ -91,6 +91,11 @@ void *io_obj(io_set *s, const io_kind_ops *o);
  * min(n/2 + 1, IO_FIX_SIDE) bins. Fails the test on any library error. */
 void io_fill(io_set *s, size_t n, size_t trials, uint64_t seed);
 
+/* Fails the test unless a and b, objects of kind o, hold the same: their
+ * bytes, or for the objects over caller memory (whose headers point into
+ * their own buffers) their records and settings. */
+void io_assert_same(const io_kind_ops *o, const void *a, const void *b, const char *what);
+
 /* Saves src of kind o into buf (IO_REC_MAX bytes) after checking that the
  * size query agrees; returns the size. */
 size_t io_save(const io_kind_ops *o, const void *src, uint8_t *buf);
