@@ -102,11 +102,11 @@ typedef enum {
  * only within a bound: nufft.h). Every array starts on 64 bytes, plus 63
  * for the buffer's own alignment. */
 #define MCS_POINTSET_RUP_(b) (((size_t)(b) + 63u) / 64u * 64u)
-#define MCS_POINTSET_BLOCKS_(f) ((size_t)(f) / MCS_POINTSET_BLOCK + 1u)
+#define MCS_POINTSET_BLOCKS_(f) ((size_t)(f) / (size_t)MCS_POINTSET_BLOCK + 1u)
 #define MCS_POINTSET_SIZE_DIRECT(f)                                                         \
-    (63u + 64u + 2u * MCS_POINTSET_RUP_(8u * ((size_t)(f) + 1u)) +                        \
-     2u * 8u * MCS_POINTSET_BLOCK * MCS_POINTSET_BLOCKS_(f) + 64u * MCS_POINTSET_BLOCK +   \
-     64u * MCS_POINTSET_BLOCKS_(f))
+    ((size_t)63u + 64u + 2u * MCS_POINTSET_RUP_(8u * ((size_t)(f) + 1u)) +                \
+     (size_t)16u * MCS_POINTSET_BLOCK * MCS_POINTSET_BLOCKS_(f) +                          \
+     (size_t)64u * MCS_POINTSET_BLOCK + 64u * MCS_POINTSET_BLOCKS_(f))
 #define MCS_POINTSET_STAGE_(f)                                                              \
     (2u * (2u * (size_t)(f) + 1u) > MCS_POINTSET_STAGE_MIN ? 2u * (2u * (size_t)(f) + 1u)   \
                                                            : (size_t)MCS_POINTSET_STAGE_MIN)

@@ -43,12 +43,9 @@ static mcs_status init_ready(void *obj, const uint64_t *shape)
     return MCS_OK; /* set up by the object's own init already */
 }
 
-/* Byte offset of an array from the head it follows (0 for the checking
- * walk's table, acc NULL: it reads the payload only). */
+/* Byte offset of an array from the head it follows. */
 static size_t at(const void *state, const double *array)
 {
-    if (state == NULL)
-        return 0u;
     return (size_t)((const unsigned char *)(const void *)array - (const unsigned char *)state);
 }
 
@@ -74,13 +71,13 @@ static void kind_base(io_kind *k, uint32_t kind, uint32_t shape_len,
     k->count_at = offsetof(mcs_ps_head, count);
 }
 
-/* The whole-buffer checks of a load once the record passed (the caller's
- * memory against the object, the record and each other). */
-static mcs_status check_load_memory(const void *acc, size_t acc_bytes, const void *mem,
-                                    size_t bytes, size_t need, size_t len, const void *buf)
+/* The memory checks of a load once the record passed: the caller's buffer
+ * (need bytes of it) against the object and the record, and those two
+ * against each other. Six arguments: a seventh would be pushed, a frame gcc
+ * calls dynamic (make stack). */
+static mcs_status check_load_alias(const void *acc, size_t acc_bytes, const void *mem,
+                                   size_t need, const void *buf, size_t len)
 {
-    if (bytes < need)
-        return MCS_ERR_SPACE;
     if (mcs_overlap_(mem, need, acc, acc_bytes) || mcs_overlap_(mem, need, buf, len) ||
         mcs_overlap_(acc, acc_bytes, buf, len))
         return MCS_ERR_ALIAS;
@@ -113,13 +110,18 @@ static mcs_status sizes_pointset(const uint64_t *shape, size_t *size)
     return MCS_OK;
 }
 
+/* The table of a pointset record; the offsets are acc's (acc NULL: 0, for
+ * the checking walk, which reads the payload only). */
 static void kind_pointset(io_kind *k, const mcs_pointset *acc)
 {
     kind_base(k, MCS_IO_KIND_POINTSET, 1u, sizes_pointset);
-    const void *s = acc != NULL ? (const void *)acc->state : NULL;
     k->nfields = 2u;
-    k->fields[0] = rows_of(at(s, s ? acc->mean : NULL), IO_ONE, PS_FREQS, IO_ONE, IO_RULE_NONNEG);
-    k->fields[1] = rows_of(at(s, s ? acc->m2 : NULL), IO_ONE, PS_FREQS, IO_ONE, IO_RULE_M2);
+    k->fields[0] = rows_of(0u, IO_ONE, PS_FREQS, IO_ONE, IO_RULE_NONNEG);
+    k->fields[1] = rows_of(0u, IO_ONE, PS_FREQS, IO_ONE, IO_RULE_M2);
+    if (acc != NULL) {
+        k->fields[0].offset = at(acc->state, acc->mean);
+        k->fields[1].offset = at(acc->state, acc->m2);
+    }
 }
 
 mcs_status mcs_io_save_pointset(const mcs_pointset *acc, size_t cap, void *buf, size_t *len)
@@ -150,7 +152,7 @@ mcs_status mcs_io_load_pointset(mcs_pointset *acc, unsigned flags, void *mem, si
         return st;
     const size_t f = (size_t)shape_word(buf, len, 0u);
     (void)mcs_pointset_size(f, flags, &need); /* cannot fail: F passed sizes_pointset */
-    st = check_load_memory(acc, sizeof *acc, mem, bytes, need, len, buf);
+    st = bytes < need ? MCS_ERR_SPACE : check_load_alias(acc, sizeof *acc, mem, need, buf, len);
     if (st != MCS_OK)
         return st;
     (void)mcs_pointset_init(acc, f, flags, mem, bytes); /* cannot fail: checked above */
@@ -179,14 +181,16 @@ static mcs_status sizes_pointset2d(const uint64_t *shape, size_t *size)
 static void kind_pointset2d(io_kind *k, const mcs_pointset2d *acc)
 {
     kind_base(k, MCS_IO_KIND_POINTSET2D, 1u, sizes_pointset2d);
-    const void *s = acc != NULL ? (const void *)acc->state : NULL;
     k->nfields = 4u;
-    k->fields[0] = rows_of(at(s, s ? acc->mean : NULL), P2_RADII, P2_WIDTH, P2_STRIDE,
-                           IO_RULE_NONNEG);
-    k->fields[1] = rows_of(at(s, s ? acc->m2 : NULL), P2_RADII, P2_WIDTH, P2_STRIDE, IO_RULE_M2);
-    k->fields[2] = rows_of(at(s, s ? acc->ring_mean : NULL), IO_ONE, P2_RADII, IO_ONE,
-                           IO_RULE_NONNEG);
-    k->fields[3] = rows_of(at(s, s ? acc->ring_m2 : NULL), IO_ONE, P2_RADII, IO_ONE, IO_RULE_M2);
+    k->fields[0] = rows_of(0u, P2_RADII, P2_WIDTH, P2_STRIDE, IO_RULE_NONNEG);
+    k->fields[1] = rows_of(0u, P2_RADII, P2_WIDTH, P2_STRIDE, IO_RULE_M2);
+    k->fields[2] = rows_of(0u, IO_ONE, P2_RADII, IO_ONE, IO_RULE_NONNEG);
+    k->fields[3] = rows_of(0u, IO_ONE, P2_RADII, IO_ONE, IO_RULE_M2);
+    if (acc != NULL) {
+        const double *const arrays[4] = {acc->mean, acc->m2, acc->ring_mean, acc->ring_m2};
+        for (size_t i = 0; i < 4u; ++i)
+            k->fields[i].offset = at(acc->state, arrays[i]);
+    }
 }
 
 mcs_status mcs_io_save_pointset2d(const mcs_pointset2d *acc, size_t cap, void *buf, size_t *len)
@@ -217,7 +221,7 @@ mcs_status mcs_io_load_pointset2d(mcs_pointset2d *acc, unsigned flags, void *mem
         return st;
     const size_t f = (size_t)shape_word(buf, len, 0u);
     (void)mcs_pointset2d_size(f, flags, &need); /* cannot fail: F passed sizes_pointset2d */
-    st = check_load_memory(acc, sizeof *acc, mem, bytes, need, len, buf);
+    st = bytes < need ? MCS_ERR_SPACE : check_load_alias(acc, sizeof *acc, mem, need, buf, len);
     if (st != MCS_OK)
         return st;
     (void)mcs_pointset2d_init(acc, f, flags, mem, bytes); /* cannot fail: checked above */
@@ -245,15 +249,17 @@ static mcs_status sizes_spectrum2d(const uint64_t *shape, size_t *size)
 
 static void kind_spectrum2d(io_kind *k, const mcs_spectrum2d *acc)
 {
+    static const unsigned rules[5] = {0u, 0u, IO_RULE_M2, IO_RULE_NONNEG, IO_RULE_M2};
     kind_base(k, MCS_IO_KIND_SPECTRUM2D, 2u, sizes_spectrum2d);
-    const void *s = acc != NULL ? (const void *)acc->state : NULL;
-    const double *const arrays[5] = {s ? acc->mean_re : NULL, s ? acc->mean_im : NULL,
-                                     s ? acc->m2_s : NULL, s ? acc->mean_pow : NULL,
-                                     s ? acc->m2_pow : NULL};
-    const unsigned rules[5] = {0u, 0u, IO_RULE_M2, IO_RULE_NONNEG, IO_RULE_M2};
     k->nfields = 5u;
     for (size_t i = 0; i < 5u; ++i)
-        k->fields[i] = rows_of(at(s, arrays[i]), S2_ROWS, S2_WIDTH, S2_STRIDE, rules[i]);
+        k->fields[i] = rows_of(0u, S2_ROWS, S2_WIDTH, S2_STRIDE, rules[i]);
+    if (acc != NULL) {
+        const double *const arrays[5] = {acc->mean_re, acc->mean_im, acc->m2_s, acc->mean_pow,
+                                         acc->m2_pow};
+        for (size_t i = 0; i < 5u; ++i)
+            k->fields[i].offset = at(acc->state, arrays[i]);
+    }
 }
 
 mcs_status mcs_io_save_spectrum2d(const mcs_spectrum2d *acc, size_t cap, void *buf, size_t *len)
@@ -282,7 +288,7 @@ mcs_status mcs_io_load_spectrum2d(mcs_spectrum2d *acc, void *mem, size_t bytes, 
     const size_t n_x = (size_t)shape_word(buf, len, 0u), n_y = (size_t)shape_word(buf, len, 1u);
     size_t need = 0u;
     (void)mcs_spectrum2d_size(n_x, n_y, &need); /* cannot fail: the sides passed */
-    st = check_load_memory(acc, sizeof *acc, mem, bytes, need, len, buf);
+    st = bytes < need ? MCS_ERR_SPACE : check_load_alias(acc, sizeof *acc, mem, need, buf, len);
     if (st != MCS_OK)
         return st;
     (void)mcs_spectrum2d_init(acc, n_x, n_y, mem, bytes); /* cannot fail: checked above */

@@ -4,7 +4,7 @@
 #include <math.h>
 #include <string.h>
 
-#define B MCS_POINTSET_BLOCK
+#define B ((size_t)MCS_POINTSET_BLOCK)
 
 /* Blocks of B frequencies up to F, and the sums' length (whole blocks). */
 static size_t blocks_of(size_t fmax)
@@ -20,13 +20,13 @@ typedef struct {
 
 static mcs_status layout_of(size_t fmax, unsigned flags, layout *lay)
 {
+    memset(lay, 0, sizeof *lay);
     if (fmax == 0u || fmax > (size_t)MCS_POINTSET_MAX_FREQ)
         return MCS_ERR_FREQ_RANGE;
     if ((flags & ~(unsigned)MCS_POINTSET_DIRECT_ONLY) != 0u)
         return MCS_ERR_DOMAIN;
     const size_t blocks = blocks_of(fmax), d = sizeof(double);
     mcs_ps_carve c = {0u, 0};
-    memset(lay, 0, sizeof *lay);
     (void)mcs_ps_take(&c, 1u, sizeof(mcs_ps_head));
     lay->mean = mcs_ps_take(&c, fmax + 1u, d);
     lay->m2 = mcs_ps_take(&c, fmax + 1u, d);
@@ -246,8 +246,8 @@ static void accumulate_four(mcs_pointset *acc)
 {
     const size_t blocks = blocks_of(acc->freq_max);
     const double *lo = acc->low, *hi = acc->high;
-    const double *const x[8] = {lo,         lo + B,     lo + 2 * B, lo + 3 * B,
-                                lo + 4 * B, lo + 5 * B, lo + 6 * B, lo + 7 * B};
+    const double *const x[8] = {lo,          lo + B,      lo + 2u * B, lo + 3u * B,
+                                lo + 4u * B, lo + 5u * B, lo + 6u * B, lo + 7u * B};
     const double *const y[8] = {hi,              hi + blocks,     hi + 2u * blocks,
                                 hi + 3u * blocks, hi + 4u * blocks, hi + 5u * blocks,
                                 hi + 6u * blocks, hi + 7u * blocks};

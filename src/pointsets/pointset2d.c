@@ -31,6 +31,7 @@ typedef struct {
 /* The checks of a size query and the layout for (fmax, flags). */
 static mcs_status layout_of(size_t fmax, unsigned flags, layout *lay)
 {
+    memset(lay, 0, sizeof *lay);
     if (fmax == 0u || fmax > (size_t)MCS_POINTSET2D_MAX_FREQ)
         return MCS_ERR_FREQ_RANGE;
     if ((flags & ~(unsigned)MCS_POINTSET_DIRECT_ONLY) != 0u)
@@ -38,7 +39,6 @@ static mcs_status layout_of(size_t fmax, unsigned flags, layout *lay)
     const size_t cells = cells_of(fmax), radii = fmax + 1u, side = 2u * fmax + 1u;
     const size_t d = sizeof(double);
     mcs_ps_carve c = {0u, 0};
-    memset(lay, 0, sizeof *lay);
     (void)mcs_ps_take(&c, 1u, sizeof(mcs_ps_head));
     lay->mean = mcs_ps_take(&c, cells, d);
     lay->m2 = mcs_ps_take(&c, cells, d);

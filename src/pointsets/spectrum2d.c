@@ -49,6 +49,7 @@ typedef struct {
 
 static mcs_status layout_of(size_t n_x, size_t n_y, layout *lay)
 {
+    memset(lay, 0, sizeof *lay);
     if (!side_ok(n_x) || !side_ok(n_y))
         return MCS_ERR_N_RANGE;
     const size_t cells = cells_for(n_x, n_y), d = sizeof(double);

@@ -16,13 +16,14 @@
     static mcs_status mg_##name(void *d, const void *s) { return mcs_##name##_merge((type *)d, (const type *)s); }
 #define KIND(name, type) LD(name, type) SV(name, type) MG(name, type)
 
-/* The objects over caller memory: the same calls on the slot's header. */
+/* The objects over caller memory: the same calls on the slot's header (its
+ * first member: a NULL slot is a NULL header). */
 #define SLOT_SV(name, slot) \
     static mcs_status sv_##name(const void *s, size_t c, void *b, size_t *l) \
-    { return mcs_io_save_##name(&((const slot *)s)->acc, c, b, l); }
+    { return mcs_io_save_##name((const mcs_##name *)s, c, b, l); }
 #define SLOT_MG(name, slot) \
     static mcs_status mg_##name(void *d, const void *s) \
-    { return mcs_##name##_merge(&((slot *)d)->acc, &((const slot *)s)->acc); }
+    { return mcs_##name##_merge((mcs_##name *)d, (const mcs_##name *)s); }
 
 KIND(spectrum, mcs_spectrum)
 KIND(moment, mcs_moment)
@@ -38,19 +39,19 @@ SLOT_MG(spectrum2d, io_spectrum2d)
 static mcs_status ld_pointset(void *d, size_t l, const void *b)
 {
     io_pointset *s = d;
-    return mcs_io_load_pointset(&s->acc, 0u, s->mem, sizeof s->mem, l, b);
+    return mcs_io_load_pointset(d, 0u, s ? s->mem : NULL, sizeof s->mem, l, b);
 }
 
 static mcs_status ld_pointset2d(void *d, size_t l, const void *b)
 {
     io_pointset2d *s = d;
-    return mcs_io_load_pointset2d(&s->acc, IO_FIX_FLAGS_2D, s->mem, sizeof s->mem, l, b);
+    return mcs_io_load_pointset2d(d, IO_FIX_FLAGS_2D, s ? s->mem : NULL, sizeof s->mem, l, b);
 }
 
 static mcs_status ld_spectrum2d(void *d, size_t l, const void *b)
 {
     io_spectrum2d *s = d;
-    return mcs_io_load_spectrum2d(&s->acc, s->mem, sizeof s->mem, l, b);
+    return mcs_io_load_spectrum2d(d, s ? s->mem : NULL, sizeof s->mem, l, b);
 }
 
 #define OPS(name, member, kind, shape_len) \
