@@ -61,7 +61,7 @@ static const char help[] =
     "  --n N        bins N, 1.." CLI_STR(MCS_MAX_N) " (default 256; not with --freq)\n"
     "  --freq F     the point-set spectrum up to frequency F instead (no bins):\n"
     "               F = 1.." CLI_STR(MCS_POINTSET_MAX_FREQ) " in 1D, 1.."
-    CLI_STR(MCS_POINTSET2D_MAX_FREQ) " in 2D, memory allowing (about 60 F^2 B in 2D)\n"
+    CLI_STR(MCS_POINTSET2D_MAX_FREQ) " in 2D, memory allowing (about 270 F^2 B in 2D)\n"
     "  --dim D      coordinates per point, 1 (default) or 2 (needs --freq)\n"
     "  --radial     --dim 2: one row per annulus instead of per wave vector\n"
     "  --weights    each line holds a point and its weight (binned only)\n"

@@ -35,7 +35,7 @@
  *
  * Caps: F from 1 to MCS_POINTSET_MAX_FREQ (2^24 with a 64-bit size_t, 2^22
  * with a 32-bit one, where the buffer then stays below 4 GB: about
- * 140 F bytes with the NUFFT, 48 F without); any K >= 1 on the DIRECT path,
+ * 186 F bytes with the NUFFT, 34 F without); any K >= 1 on the DIRECT path,
  * up to MCS_POINTSET_NUFFT_MAX_K = 2^24 on the NUFFT path (AUTO takes DIRECT
  * above it). The size query refuses what would not fit size_t. */
 #ifndef MCSPEC_POINTSET_H
@@ -53,9 +53,9 @@ extern "C" {
 
 /* Largest cutoff F (plain numbers, so the command's --help can quote them). */
 #if SIZE_MAX > 0xFFFFFFFFu
-#define MCS_POINTSET_MAX_FREQ 16777216 /* 2^24: a 2.3 GB buffer */
+#define MCS_POINTSET_MAX_FREQ 16777216 /* 2^24: a 3.1 GB buffer */
 #else
-#define MCS_POINTSET_MAX_FREQ 4194304 /* 2^22: a 590 MB buffer */
+#define MCS_POINTSET_MAX_FREQ 4194304 /* 2^22: a 780 MB buffer */
 #endif
 
 /* Largest set the NUFFT path takes, 2^24 points, and the tolerance its plan

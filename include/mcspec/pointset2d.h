@@ -39,11 +39,13 @@
  * buffer; mcs_pointset2d_copy makes an independent object.
  *
  * Caps: F from 1 to MCS_POINTSET2D_MAX_FREQ (16384 with a 64-bit size_t,
- * 2048 with a 32-bit one: its buffer is then 1.2 GB with the NUFFT, 0.3 GB
- * without); about 32 (F + 1)^2 bytes without the NUFFT, 60 (F + 1)^2 with it
- * (its staging, 32 F^2, and its grid, 8 n^2 with n about 4.3 F: 1.1 GB at
- * F = 2048, 34 MB at F = 320). K as in pointset.h: any K >= 1 on the DIRECT
- * path, up to MCS_POINTSET_NUFFT_MAX_K = 2^24 on the NUFFT path. */
+ * 2048 with a 32-bit one, whose buffer is then 1.14 GB with the NUFFT,
+ * 0.27 GB without). The buffer is about 64 (F + 1)^2 bytes without the
+ * NUFFT (statistics and scratch over the stored half plane) and 260 to
+ * 270 (F + 1)^2 with it (its output and staging, 32 F^2, and its grid,
+ * 8 n^2 with n about 4.3 F): 27 MB at F = 320, 1.14 GB at F = 2048, 69 GB at
+ * F = 16384. K as in pointset.h: any K >= 1 on the DIRECT path, up to
+ * MCS_POINTSET_NUFFT_MAX_K = 2^24 on the NUFFT path. */
 #ifndef MCSPEC_POINTSET2D_H
 #define MCSPEC_POINTSET2D_H
 

@@ -492,29 +492,32 @@ static void draw_set(int kind, mcs_rng *rng, size_t k, double *p)
     }
 }
 
-/* The largest |a - b| / max(b, 1) over every stored wave vector and annulus,
- * of the means (want 0) or the standard errors (1). */
+/* The largest |a - b| / max(P_b, 1) over every stored wave vector and
+ * annulus, of the means (want 0) or the standard errors (1), each scaled by
+ * b's mean there (as in 1D: the criterion is relative to the periodogram). */
 static double worst_gap(const mcs_pointset2d *a, const mcs_pointset2d *b, int want_stderr)
 {
     const long f = (long)a->freq_max;
     double worst = 0.0;
     for (long fy = 0; fy <= f; ++fy)
         for (long fx = -f; fx <= f; ++fx) {
-            double pa = 0.0, pb = 0.0;
+            double pa = 0.0, pb = 0.0, scale = 0.0;
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_power(b, fx, fy, &scale));
             TEST_ASSERT_EQUAL_INT(MCS_OK, (want_stderr ? mcs_pointset2d_power_stderr
                                                        : mcs_pointset2d_power)(a, fx, fy, &pa));
             TEST_ASSERT_EQUAL_INT(MCS_OK, (want_stderr ? mcs_pointset2d_power_stderr
                                                        : mcs_pointset2d_power)(b, fx, fy, &pb));
-            const double gap = fabs(pa - pb) / fmax(fabs(pb), 1.0);
+            const double gap = fabs(pa - pb) / fmax(scale, 1.0);
             worst = gap > worst ? gap : worst;
         }
     for (size_t r = 0; r <= (size_t)f; ++r) {
-        double pa = 0.0, pb = 0.0;
+        double pa = 0.0, pb = 0.0, scale = 0.0;
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_radial(b, r, &scale));
         TEST_ASSERT_EQUAL_INT(MCS_OK, (want_stderr ? mcs_pointset2d_radial_stderr
                                                    : mcs_pointset2d_radial)(a, r, &pa));
         TEST_ASSERT_EQUAL_INT(MCS_OK, (want_stderr ? mcs_pointset2d_radial_stderr
                                                    : mcs_pointset2d_radial)(b, r, &pb));
-        const double gap = fabs(pa - pb) / fmax(fabs(pb), 1.0);
+        const double gap = fabs(pa - pb) / fmax(scale, 1.0);
         worst = gap > worst ? gap : worst;
     }
     return worst;
