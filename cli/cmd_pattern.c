@@ -91,7 +91,7 @@ static const char help_2d[] =
     "                     weights (>= 0, any scale, 0: a bin never drawn; one per line)\n"
     "                     are in FILE\n"
     "  --dim D            1 (default: N bins, the KIND above) or 2 (KIND2, no bins)\n"
-    "  --freq F           --dim 2: the cutoff, |kx|, |ky| <= F, 1.." CLI_STR(MCS_MAX_FREQ) " (required)\n"
+    "  --freq F           --dim 2: the cutoff, |kx|, |ky| <= F, 1.." CLI_STR(MCS_POINTSET2D_MAX_FREQ) " (required)\n"
     "  --radial           --dim 2: one row per annulus r <= |k| < r + 1 instead\n"
     "  --csv              print CSV only: the header\n"
     "                     freq,mean_re,mean_im,mean_stderr,power,power_stderr,\n"
@@ -172,7 +172,7 @@ static int parse(int argc, char **argv, pattern_opts *o)
         {"streams", CLI_OPT_U64, &o->streams, 1, CLI_MAX_STREAMS, 0},
         {"stream", CLI_OPT_U64, &o->stream, 0, CLI_MAX_STREAMS - 1u, 0},
         {"dim", CLI_OPT_SIZE, &o->dim, 1, 2, 0},
-        {"freq", CLI_OPT_SIZE, &o->freq, 1, MCS_MAX_FREQ, 0},
+        {"freq", CLI_OPT_SIZE, &o->freq, 1, MCS_POINTSET2D_MAX_FREQ, 0},
         {"radial", CLI_OPT_FLAG, &o->radial, 0, 0, 0},
         {"log", CLI_OPT_FLAG, &o->log_y, 0, 0, 0},
     };
@@ -379,7 +379,7 @@ static int report_2d(const pattern_opts *o, const cli_source2d *src, const mcs_p
                                 : "none for this kind (no closed form; not a rotated set)");
     const char *const notes[] = {line, exact, "", NULL};
     snprintf(title, sizeof title, "%s: 2D point-set spectrum, K = %zu points, %llu trials "
-             "(seed %llu)", o->kind_name, o->k, (unsigned long long)acc->count,
+             "(seed %llu)", o->kind_name, o->k, (unsigned long long)acc->state->count,
              (unsigned long long)o->seed);
     if (cli_source2d_uses_strata(src))
         snprintf(sub, sizeof sub, "%zu x %zu strata; |kx|, |ky| <= F = %zu",

@@ -60,8 +60,8 @@ static const char help[] =
     "Options:\n"
     "  --n N        bins N, 1.." CLI_STR(MCS_MAX_N) " (default 256; not with --freq)\n"
     "  --freq F     the point-set spectrum up to frequency F instead (no bins):\n"
-    "               F = 1.." CLI_STR(MCS_MAX_FREQ_1D) " in 1D (MCS_MAX_FREQ_1D), 1.."
-    CLI_STR(MCS_MAX_FREQ) " in 2D (MCS_MAX_FREQ)\n"
+    "               F = 1.." CLI_STR(MCS_POINTSET_MAX_FREQ) " in 1D, 1.."
+    CLI_STR(MCS_POINTSET2D_MAX_FREQ) " in 2D, memory allowing (about 270 F^2 B in 2D)\n"
     "  --dim D      coordinates per point, 1 (default) or 2 (needs --freq)\n"
     "  --radial     --dim 2: one row per annulus instead of per wave vector\n"
     "  --weights    each line holds a point and its weight (binned only)\n"
@@ -97,19 +97,20 @@ typedef struct {
     int log_y; /* --log */
 } spectrum_opts;
 
-/* --freq F into o->freq, within the capacity of the accumulator --dim picks:
- * MCS_MAX_FREQ_1D (mcs_pointset) or MCS_MAX_FREQ (mcs_pointset2d). */
+/* --freq F into o->freq, within the cap of the accumulator --dim picks:
+ * MCS_POINTSET_MAX_FREQ (mcs_pointset) or MCS_POINTSET2D_MAX_FREQ
+ * (mcs_pointset2d); whether this machine holds it is cli_acc_new's. */
 static int parse_freq(spectrum_opts *o)
 {
     if (o->freq_text == NULL)
         return 0;
     const int two = o->dim == 2u;
-    const size_t cap = two ? (size_t)MCS_MAX_FREQ : (size_t)MCS_MAX_FREQ_1D;
+    const size_t cap = two ? (size_t)MCS_POINTSET2D_MAX_FREQ : (size_t)MCS_POINTSET_MAX_FREQ;
     uint64_t v = 0;
     if (cli_parse_u64(o->freq_text, 1u, cap, &v) != 0)
-        return cli_fail(CMD, "--freq expects a whole number from 1 to %zu for --dim %zu (this "
-                        "build's %s), not '%s'", cap, o->dim,
-                        two ? "MCS_MAX_FREQ" : "MCS_MAX_FREQ_1D", o->freq_text);
+        return cli_fail(CMD, "--freq expects a whole number from 1 to %zu for --dim %zu (%s), "
+                        "not '%s'", cap, o->dim,
+                        two ? "MCS_POINTSET2D_MAX_FREQ" : "MCS_POINTSET_MAX_FREQ", o->freq_text);
     o->freq = (size_t)v;
     return 0;
 }

@@ -254,15 +254,17 @@ static void fill_exact(const cli_exact2d *ex, cli_ps_layout layout, cli_ps_row *
     cli_ps_rows_z(rows, nrows, ex->scale);
 }
 
-/* Both layouts' rows of acc, exact values filled: plane[], ring[]. */
+/* Both layouts' rows of acc, exact values filled: plane[] (when not NULL),
+ * ring[]. */
 static int rows2d(const char *cmd, const cli_ps_report *rep, const mcs_pointset2d *acc,
                   cli_ps_row *plane, size_t *nplane, cli_ps_row *ring, size_t *nring)
 {
-    int rc = cli_ps_rows(cmd, CLI_PS_2D, acc, plane, nplane);
+    int rc = plane != NULL ? cli_ps_rows(cmd, CLI_PS_2D, acc, plane, nplane) : 0;
     if (rc == 0)
         rc = cli_ps_rows(cmd, CLI_PS_RADIAL, acc, ring, nring);
     if (rc == 0 && rep->exact != NULL) {
-        fill_exact(rep->exact, CLI_PS_2D, plane, *nplane);
+        if (plane != NULL)
+            fill_exact(rep->exact, CLI_PS_2D, plane, *nplane);
         fill_exact(rep->exact, CLI_PS_RADIAL, ring, *nring);
     }
     return rc;
@@ -271,10 +273,14 @@ static int rows2d(const char *cmd, const cli_ps_report *rep, const mcs_pointset2
 int cli_report_pointset2d(const char *cmd, const cli_ps_report *rep, const mcs_pointset2d *acc)
 {
     const size_t f = acc->freq_max;
-    cli_ps_row *plane = cli_alloc(cmd, cli_ps_row_count(CLI_PS_2D, f), sizeof *plane);
+    /* The plane's (2F + 1)^2 rows only where they are printed or drawn: at
+     * F = 2048 they are 1.2 GB, the annuli 2049 rows. */
+    const int need_plane = !rep->radial || rep->plot != NULL;
+    cli_ps_row *plane =
+        need_plane ? cli_alloc(cmd, cli_ps_row_count(CLI_PS_2D, f), sizeof *plane) : NULL;
     cli_ps_row *ring = cli_alloc(cmd, cli_ps_row_count(CLI_PS_RADIAL, f), sizeof *ring);
     size_t nplane = 0u, nring = 0u;
-    int rc = plane != NULL && ring != NULL ? 0 : CLI_EXIT_FAIL;
+    int rc = (plane != NULL || !need_plane) && ring != NULL ? 0 : CLI_EXIT_FAIL;
     if (rc == 0)
         rc = rows2d(cmd, rep, acc, plane, &nplane, ring, &nring);
     if (rc == 0 && rep->plot != NULL) {

@@ -9,18 +9,26 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
-/* Largest record file read: far above any kind this build holds (a spectrum
- * at MCS_MAX_N = 4096 is 82 KB), small enough to refuse a wrong file early. */
+/* Largest record file read: above any kind of a usable size (a spectrum at
+ * MCS_MAX_N = 4096 is 82 KB, a pointset2d record 32 (F + 1)^2 bytes, 134 MB
+ * at F = 2048), small enough to refuse a wrong file early. */
 #define RECORD_FILE_MAX ((size_t)1 << 30)
 
 typedef struct {
     mcs_io_kind kind;
-    size_t size;
+    size_t size; /* the object; for the kinds over caller memory, its header */
     mcs_status (*init)(void *obj, const size_t *shape); /* NULL: not made here */
     mcs_status (*load)(void *obj, size_t len, const void *buf);
     mcs_status (*save)(const void *obj, size_t cap, void *buf, size_t *len);
     mcs_status (*merge)(void *dst, const void *src);
+    /* The kinds whose arrays live in caller memory (pointset.h,
+     * pointset2d.h, spectrum2d.h), NULL for the others: the buffer's size
+     * for a shape, and init and load over a buffer. */
+    mcs_status (*mem_size)(const size_t *shape, size_t *bytes);
+    mcs_status (*init_mem)(void *obj, const size_t *shape, void *mem, size_t bytes);
+    mcs_status (*load_mem)(void *obj, void *mem, size_t bytes, size_t len, const void *buf);
 } kind_ops;
 
 static mcs_status load_spectrum(void *o, size_t l, const void *b) { return mcs_io_load_spectrum(o, l, b); }
@@ -35,9 +43,6 @@ static mcs_status merge_spectrum(void *d, const void *s) { return mcs_spectrum_m
 static mcs_status merge_moment(void *d, const void *s) { return mcs_moment_merge(d, s); }
 static mcs_status merge_autocorr(void *d, const void *s) { return mcs_autocorr_merge(d, s); }
 static mcs_status merge_welford(void *d, const void *s) { return mcs_welford_merge(d, s); }
-static mcs_status load_pointset(void *o, size_t l, const void *b) { return mcs_io_load_pointset(o, l, b); }
-static mcs_status load_pointset2d(void *o, size_t l, const void *b) { return mcs_io_load_pointset2d(o, l, b); }
-static mcs_status load_spectrum2d(void *o, size_t l, const void *b) { return mcs_io_load_spectrum2d(o, l, b); }
 static mcs_status save_pointset(const void *o, size_t c, void *b, size_t *l) { return mcs_io_save_pointset(o, c, b, l); }
 static mcs_status save_pointset2d(const void *o, size_t c, void *b, size_t *l) { return mcs_io_save_pointset2d(o, c, b, l); }
 static mcs_status save_spectrum2d(const void *o, size_t c, void *b, size_t *l) { return mcs_io_save_spectrum2d(o, c, b, l); }
@@ -51,23 +56,32 @@ static mcs_status init_spectrum(void *o, const size_t *s)
     mcs_status st = mcs_spectrum_init(o, s[0]);
     return st == MCS_OK ? mcs_spectrum_set_batch(o, 1u) : st;
 }
-static mcs_status init_pointset(void *o, const size_t *s) { return mcs_pointset_init(o, s[0]); }
-static mcs_status init_pointset2d(void *o, const size_t *s) { return mcs_pointset2d_init(o, s[0]); }
-static mcs_status init_spectrum2d(void *o, const size_t *s) { return mcs_spectrum2d_init(o, s[0], s[1]); }
+/* The point sets take the NUFFT's memory too (flags 0): AUTO picks per set. */
+static mcs_status size_pointset(const size_t *s, size_t *b) { return mcs_pointset_size(s[0], 0u, b); }
+static mcs_status size_pointset2d(const size_t *s, size_t *b) { return mcs_pointset2d_size(s[0], 0u, b); }
+static mcs_status size_spectrum2d(const size_t *s, size_t *b) { return mcs_spectrum2d_size(s[0], s[1], b); }
+static mcs_status init_pointset(void *o, const size_t *s, void *m, size_t b) { return mcs_pointset_init(o, s[0], 0u, m, b); }
+static mcs_status init_pointset2d(void *o, const size_t *s, void *m, size_t b) { return mcs_pointset2d_init(o, s[0], 0u, m, b); }
+static mcs_status init_spectrum2d(void *o, const size_t *s, void *m, size_t b) { return mcs_spectrum2d_init(o, s[0], s[1], m, b); }
+static mcs_status load_pointset(void *o, void *m, size_t b, size_t l, const void *r) { return mcs_io_load_pointset(o, 0u, m, b, l, r); }
+static mcs_status load_pointset2d(void *o, void *m, size_t b, size_t l, const void *r) { return mcs_io_load_pointset2d(o, 0u, m, b, l, r); }
+static mcs_status load_spectrum2d(void *o, void *m, size_t b, size_t l, const void *r) { return mcs_io_load_spectrum2d(o, m, b, l, r); }
 
 static const kind_ops kinds[] = {
     {MCS_IO_KIND_SPECTRUM, sizeof(mcs_spectrum), init_spectrum, load_spectrum, save_spectrum,
-     merge_spectrum},
-    {MCS_IO_KIND_MOMENT, sizeof(mcs_moment), NULL, load_moment, save_moment, merge_moment},
+     merge_spectrum, NULL, NULL, NULL},
+    {MCS_IO_KIND_MOMENT, sizeof(mcs_moment), NULL, load_moment, save_moment, merge_moment, NULL,
+     NULL, NULL},
     {MCS_IO_KIND_AUTOCORR, sizeof(mcs_autocorr), NULL, load_autocorr, save_autocorr,
-     merge_autocorr},
-    {MCS_IO_KIND_WELFORD, sizeof(mcs_welford), NULL, load_welford, save_welford, merge_welford},
-    {MCS_IO_KIND_POINTSET, sizeof(mcs_pointset), init_pointset, load_pointset, save_pointset,
-     merge_pointset},
-    {MCS_IO_KIND_POINTSET2D, sizeof(mcs_pointset2d), init_pointset2d, load_pointset2d,
-     save_pointset2d, merge_pointset2d},
-    {MCS_IO_KIND_SPECTRUM2D, sizeof(mcs_spectrum2d), init_spectrum2d, load_spectrum2d,
-     save_spectrum2d, merge_spectrum2d},
+     merge_autocorr, NULL, NULL, NULL},
+    {MCS_IO_KIND_WELFORD, sizeof(mcs_welford), NULL, load_welford, save_welford, merge_welford,
+     NULL, NULL, NULL},
+    {MCS_IO_KIND_POINTSET, sizeof(mcs_pointset), NULL, NULL, save_pointset, merge_pointset,
+     size_pointset, init_pointset, load_pointset},
+    {MCS_IO_KIND_POINTSET2D, sizeof(mcs_pointset2d), NULL, NULL, save_pointset2d,
+     merge_pointset2d, size_pointset2d, init_pointset2d, load_pointset2d},
+    {MCS_IO_KIND_SPECTRUM2D, sizeof(mcs_spectrum2d), NULL, NULL, save_spectrum2d,
+     merge_spectrum2d, size_spectrum2d, init_spectrum2d, load_spectrum2d},
 };
 
 static const kind_ops *ops_of(uint32_t kind)
@@ -78,15 +92,76 @@ static const kind_ops *ops_of(uint32_t kind)
     return NULL;
 }
 
+/* Bytes of memory this machine has, or 0 where it cannot say. */
+static uint64_t physical_memory(void)
+{
+#if defined(_SC_PHYS_PAGES) && defined(_SC_PAGESIZE)
+    const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
+    if (pages > 0 && page > 0)
+        return (uint64_t)pages * (uint64_t)page;
+#endif
+    return 0u;
+}
+
+/* One block for an object over caller memory: its header, then its buffer
+ * of `bytes` (*mem). NULL, after one line naming `what` (e.g. "--freq 4096")
+ * and the bytes, where the size cannot be held: more than size_t counts,
+ * than the machine's memory, or than malloc gives. */
+static void *alloc_with_buffer(const char *cmd, const char *what, size_t header, size_t bytes,
+                               mcs_status size_status, void **mem)
+{
+    const size_t head = (header + 63u) / 64u * 64u;
+    if (size_status != MCS_OK || bytes > SIZE_MAX - head) {
+        (void)cli_fail(cmd, "%s needs more bytes than this machine can address", what);
+        return NULL;
+    }
+    const uint64_t have = physical_memory();
+    if (have > 0u && (uint64_t)(head + bytes) > have) {
+        (void)cli_fail(cmd, "%s needs %zu bytes, more than the %llu bytes of memory of this "
+                       "machine", what, head + bytes, (unsigned long long)have);
+        return NULL;
+    }
+    unsigned char *p = malloc(head + bytes);
+    if (p == NULL) {
+        (void)cli_fail(cmd, "%s needs %zu bytes, more than this machine can allocate", what,
+                       head + bytes);
+        return NULL;
+    }
+    *mem = p + head;
+    return p;
+}
+
+/* "--freq 4096" or "4096 x 4096 bins": what a new object of kind and shape
+ * is made for, as messages name it. */
+static void describe_shape(mcs_io_kind kind, const size_t *shape, char *buf, size_t size)
+{
+    if (kind == MCS_IO_KIND_SPECTRUM2D)
+        snprintf(buf, size, "%zu x %zu bins", shape[0], shape[1]);
+    else
+        snprintf(buf, size, "--freq %zu", shape[0]);
+}
+
 int cli_acc_new(const char *cmd, mcs_io_kind kind, const size_t shape[2], cli_acc *acc)
 {
     const kind_ops *ops = ops_of(kind);
-    if (ops == NULL || ops->init == NULL)
+    if (ops == NULL || (ops->init == NULL && ops->init_mem == NULL))
         return cli_internal(cmd, "cannot make a %s accumulator", mcs_io_kind_str(kind));
-    void *obj = cli_alloc(cmd, 1, ops->size);
-    if (obj == NULL)
-        return CLI_EXIT_FAIL;
-    mcs_status st = ops->init(obj, shape);
+    void *obj = NULL, *mem = NULL;
+    size_t bytes = 0u;
+    if (ops->init_mem != NULL) {
+        char what[64];
+        describe_shape(kind, shape, what, sizeof what);
+        const mcs_status st = ops->mem_size(shape, &bytes);
+        obj = alloc_with_buffer(cmd, what, ops->size, bytes, st, &mem);
+        if (obj == NULL)
+            return CLI_EXIT_USAGE;
+    } else {
+        obj = cli_alloc(cmd, 1, ops->size);
+        if (obj == NULL)
+            return CLI_EXIT_FAIL;
+    }
+    mcs_status st = ops->init_mem != NULL ? ops->init_mem(obj, shape, mem, bytes)
+                                          : ops->init(obj, shape);
     if (st != MCS_OK) {
         free(obj);
         return cli_internal(cmd, "setting up a %s accumulator: %s", mcs_io_kind_str(kind),
@@ -105,7 +180,26 @@ int cli_acc_new_spectrum(const char *cmd, size_t n, cli_acc *acc)
 
 void cli_acc_copy_to(const cli_acc *acc, void *obj)
 {
-    memcpy(obj, acc->obj, ops_of(acc->kind)->size);
+    /* The kinds over caller memory: obj is set up over its own buffer, which
+     * the copy reuses (a byte copy would share acc's). */
+    switch (acc->kind) {
+    case MCS_IO_KIND_POINTSET: {
+        mcs_pointset *d = obj;
+        (void)mcs_pointset_copy(d, d->mem, d->bytes, acc->obj);
+        break;
+    }
+    case MCS_IO_KIND_POINTSET2D: {
+        mcs_pointset2d *d = obj;
+        (void)mcs_pointset2d_copy(d, d->mem, d->bytes, acc->obj);
+        break;
+    }
+    case MCS_IO_KIND_SPECTRUM2D: {
+        mcs_spectrum2d *d = obj;
+        (void)mcs_spectrum2d_copy(d, d->mem, d->bytes, acc->obj);
+        break;
+    }
+    default: memcpy(obj, acc->obj, ops_of(acc->kind)->size); break;
+    }
 }
 
 void cli_acc_free(cli_acc *acc)
@@ -120,9 +214,9 @@ uint64_t cli_acc_count(const cli_acc *acc)
     case MCS_IO_KIND_SPECTRUM: return ((const mcs_spectrum *)acc->obj)->count;
     case MCS_IO_KIND_MOMENT: return ((const mcs_moment *)acc->obj)->count;
     case MCS_IO_KIND_AUTOCORR: return ((const mcs_autocorr *)acc->obj)->count;
-    case MCS_IO_KIND_POINTSET: return ((const mcs_pointset *)acc->obj)->count;
-    case MCS_IO_KIND_POINTSET2D: return ((const mcs_pointset2d *)acc->obj)->count;
-    case MCS_IO_KIND_SPECTRUM2D: return ((const mcs_spectrum2d *)acc->obj)->count;
+    case MCS_IO_KIND_POINTSET: return ((const mcs_pointset *)acc->obj)->state->count;
+    case MCS_IO_KIND_POINTSET2D: return ((const mcs_pointset2d *)acc->obj)->state->count;
+    case MCS_IO_KIND_SPECTRUM2D: return ((const mcs_spectrum2d *)acc->obj)->state->count;
     default: return ((const mcs_welford *)acc->obj)->count;
     }
 }
@@ -227,7 +321,7 @@ static int record_error(const char *cmd, const char *path, mcs_status st, const 
     case MCS_ERR_N_RANGE:
     case MCS_ERR_FREQ_RANGE:
         return cli_fail(cmd, "%s: a %s record of size %llu%s, beyond this build's capacity "
-                        "(MCS_MAX_* in docs/format.md)", path, mcs_io_kind_str(info->kind),
+                        "(docs/format.md)", path, mcs_io_kind_str(info->kind),
                         (unsigned long long)info->shape[0], info->shape_len > 1u ? " x ..." : "");
     case MCS_ERR_NOT_FINITE: return cli_fail(cmd, "%s: holds a NaN or infinite value", path);
     case MCS_ERR_INVARIANT:
@@ -294,10 +388,31 @@ int cli_acc_read_with(const char *cmd, const char *path, cli_acc *acc, mcs_io_pr
     if (p == NULL)
         return CLI_EXIT_FAIL;
     int rc = read_record(cmd, path, &buf, &len, &info, p, &ops);
-    void *obj = rc == 0 ? cli_alloc(cmd, 1, ops->size) : NULL;
-    if (rc == 0 && obj == NULL)
-        rc = CLI_EXIT_FAIL;
-    mcs_status st = rc == 0 ? ops->load(obj, len, buf) : MCS_OK;
+    /* The kinds over caller memory: the record says how much (an error in
+     * the record itself is the load's to name, below). */
+    size_t bytes = 0u;
+    void *obj = NULL, *mem = NULL;
+    mcs_status st = rc == 0 && ops->load_mem != NULL ? mcs_io_load_size(len, buf, 0u, &bytes)
+                                                      : MCS_OK;
+    if (rc == 0 && ops->load_mem != NULL && st == MCS_OK) {
+        char what[320];
+        if (info.kind == MCS_IO_KIND_SPECTRUM2D)
+            snprintf(what, sizeof what, "%s: a spectrum2d record of %llu x %llu bins", path,
+                     (unsigned long long)info.shape[0], (unsigned long long)info.shape[1]);
+        else
+            snprintf(what, sizeof what, "%s: a %s record of F = %llu", path,
+                     mcs_io_kind_str(info.kind), (unsigned long long)info.shape[0]);
+        obj = alloc_with_buffer(cmd, what, ops->size, bytes, MCS_OK, &mem);
+        if (obj == NULL)
+            rc = CLI_EXIT_USAGE;
+    } else if (rc == 0 && ops->load_mem == NULL) {
+        obj = cli_alloc(cmd, 1, ops->size);
+        if (obj == NULL)
+            rc = CLI_EXIT_FAIL;
+    }
+    if (rc == 0 && st == MCS_OK)
+        st = ops->load_mem != NULL ? ops->load_mem(obj, mem, bytes, len, buf)
+                                   : ops->load(obj, len, buf);
     if (rc == 0 && crc != NULL)
         *crc = record_crc(buf, len);
     free(buf);

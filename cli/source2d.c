@@ -37,18 +37,24 @@ static int has_base(const cli_source2d *src)
     return src->is_sampler && src->sampler.kind != MCS_SAMPLER_SOBOL;
 }
 
-/* One trial of the unrandomised set into src->base. */
+/* One trial of the unrandomised set into src->base, over a buffer of its
+ * own (src->base_mem), AUTO picking the path as for the trials. */
 static int measure_base(const char *cmd, cli_source2d *src, size_t freq)
 {
+    size_t bytes = 0u;
+    mcs_status st = mcs_pointset2d_size(freq, 0u, &bytes);
+    if (st != MCS_OK)
+        return cli_internal(cmd, "the unrandomised %s set: %s", src->name, mcs_status_str(st));
     double *pts = cli_alloc(cmd, 2u * src->k, sizeof *pts);
     src->base = cli_alloc(cmd, 1, sizeof *src->base);
-    if (pts == NULL || src->base == NULL) {
+    src->base_mem = cli_alloc(cmd, 1, bytes);
+    if (pts == NULL || src->base == NULL || src->base_mem == NULL) {
         free(pts);
         return CLI_EXIT_FAIL;
     }
-    mcs_status st = mcs_sampler_base_points(&src->sampler, src->k, pts);
+    st = mcs_sampler_base_points(&src->sampler, src->k, pts);
     if (st == MCS_OK)
-        st = mcs_pointset2d_init(src->base, freq);
+        st = mcs_pointset2d_init(src->base, freq, 0u, src->base_mem, bytes);
     if (st == MCS_OK)
         st = mcs_pointset2d_add(src->base, src->k, pts);
     free(pts);
@@ -81,7 +87,9 @@ int cli_source2d_init(const char *cmd, const char *name, size_t k, size_t freq,
 void cli_source2d_free(cli_source2d *src)
 {
     free(src->base);
+    free(src->base_mem);
     src->base = NULL;
+    src->base_mem = NULL;
 }
 
 const char *cli_source2d_exact_source(const cli_source2d *src)

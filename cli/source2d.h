@@ -32,6 +32,7 @@ typedef struct {
     mcs_sampler sampler;   /* when is_sampler */
     size_t k;              /* points per trial */
     mcs_pointset2d *base;  /* rotated samplers: the unrandomised set's periodogram; else NULL */
+    void *base_mem;        /* its buffer */
 } cli_source2d;
 
 /* 1 if name is a 2D source, else 0. */

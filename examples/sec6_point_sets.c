@@ -15,6 +15,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 static const char help_text[] =
@@ -38,9 +39,10 @@ static const char help_text[] =
     "   the spectrum, eq. 14 (stationary: closed) and eq. 13 (all k, l: exact),\n"
     "   measured for random, jittered and shifted grid.\n"
     "--k sets K of parts 1 and 3 (at most 4096), --n the bins per side of part 3\n"
-    "(at most MCS_MAX_SIDE).\n";
+    "(at most 64). Part 1's cutoff is F = 2 ceil(sqrt K) (at least 4).\n";
 
 #define MAX_K 4096u
+#define MAX_SIDE 64u /* part 3's largest N */
 #define N_CONV 5
 #define SLOPE_TOL 0.1
 
@@ -58,10 +60,15 @@ typedef struct {
 
 static const size_t conv_k[N_CONV] = {16u, 64u, 256u, 1024u, 4096u};
 static double pts[2u * MAX_K];
-static double fgrid[MCS_MAX_SIDE * MCS_MAX_SIDE], f_re[MCS_MAX_SIDE * MCS_MAX_SIDE],
-    f_im[MCS_MAX_SIDE * MCS_MAX_SIDE];
+static double fgrid[MAX_SIDE * MAX_SIDE], f_re[MAX_SIDE * MAX_SIDE], f_im[MAX_SIDE * MAX_SIDE];
+/* The point-set spectra over buffers from their size query (part 1 sets
+ * them up for its F); the binned one over a static buffer for the largest
+ * N it takes. */
 static mcs_pointset2d meas, base;
+static void *meas_mem, *base_mem;
+static size_t ps_bytes;
 static mcs_spectrum2d plan;
+static unsigned char plan_mem[MCS_SPECTRUM2D_SIZE(MAX_SIDE, MAX_SIDE)];
 
 /* The samplers' kinds, sources S_HALTON.. in order (the patterns' sources
  * are their mcs_pattern2d_kind values). */
@@ -124,13 +131,14 @@ static int radial_part(const ex_options *opt, size_t fmax, const size_t *radii, 
         mcs_rng_seed(&rng, opt->seed, 0x600u + (uint64_t)s);
         mcs_status st = source_init(&src, s, opt->k);
         if (st == MCS_OK)
-            st = mcs_pointset2d_init(&meas, fmax);
+            st = mcs_pointset2d_init(&meas, fmax, 0u, meas_mem, ps_bytes);
         for (unsigned long t = 0; st == MCS_OK && t < opt->trials; ++t) {
             st = source_draw(&src, &rng, opt->k);
             if (st == MCS_OK)
                 st = mcs_pointset2d_add(&meas, opt->k, pts);
         }
-        if (st == MCS_OK && src.is_sampler && mcs_pointset2d_init(&base, fmax) == MCS_OK &&
+        if (st == MCS_OK && src.is_sampler &&
+            mcs_pointset2d_init(&base, fmax, 0u, base_mem, ps_bytes) == MCS_OK &&
             mcs_sampler_base_points(&src.sampler, opt->k, pts) == MCS_OK)
             st = mcs_pointset2d_add(&base, opt->k, pts);
         if (st != MCS_OK) {
@@ -412,7 +420,7 @@ static int binned_part(const ex_options *opt)
             fgrid[b2 * n + b1] = f_smooth(x, y) + f_disk(x, y);
             mu += fgrid[b2 * n + b1] / (double)(n * n);
         }
-    if (mcs_spectrum2d_init(&plan, n, n) != MCS_OK ||
+    if (mcs_spectrum2d_init(&plan, n, n, plan_mem, sizeof plan_mem) != MCS_OK ||
         mcs_spectrum2d_transform(&plan, fgrid, f_re, f_im) != MCS_OK)
         return 0;
     const int kinds[3] = {S_RANDOM, S_JITTERED, S_SHIFTED};
@@ -449,13 +457,19 @@ static int binned_part(const ex_options *opt)
 int main(int argc, char **argv)
 {
     ex_options opt = {16u, 64u, 1000ul, 1u, 0};
-    int rc = ex_parse_options(argc, argv, &opt, MCS_MAX_SIDE, MAX_K, help_text);
+    int rc = ex_parse_options(argc, argv, &opt, MAX_SIDE, MAX_K, help_text);
     if (rc != EX_PARSE_OK)
         return rc == EX_PARSE_HELP ? 0 : 2;
-    /* Cutoff: twice the grid frequency sqrt(K), within the capacity. */
+    /* Cutoff: twice the grid frequency sqrt(K) (128 at most, K <= 4096). */
     size_t fmax = 2u * (size_t)ceil(sqrt((double)opt.k));
     fmax = fmax < 4u ? 4u : fmax;
-    fmax = fmax > (size_t)MCS_MAX_FREQ ? (size_t)MCS_MAX_FREQ : fmax;
+    /* The two-call size query, then the caller's memory. */
+    if (mcs_pointset2d_size(fmax, 0u, &ps_bytes) != MCS_OK ||
+        (meas_mem = malloc(ps_bytes)) == NULL || (base_mem = malloc(ps_bytes)) == NULL) {
+        fprintf(stderr, "sec6: no memory for the point-set spectra of F = %zu\n", fmax);
+        free(meas_mem);
+        return 1;
+    }
     double root = sqrt((double)opt.k);
     const size_t cand[5] = {(size_t)lround(root / 4.0), (size_t)lround(root / 2.0),
                             (size_t)lround(root), (size_t)lround(1.5 * root),
@@ -466,8 +480,10 @@ int main(int argc, char **argv)
     ex_begin(&opt, "Section 6: point sets, low-discrepancy samplers and 2D spectra (issue 15)");
     ex_notef(&opt, "per-axis frequency cutoff F = %zu; N is the bins per side of the binned part",
              fmax);
-    if (!radial_part(&opt, fmax, radii, nradii) || !convergence_part(&opt) ||
-        !binned_part(&opt))
+    rc = radial_part(&opt, fmax, radii, nradii) && convergence_part(&opt) && binned_part(&opt);
+    free(meas_mem);
+    free(base_mem);
+    if (!rc)
         return 1;
     ex_end(&opt);
     return 0;

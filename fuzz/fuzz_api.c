@@ -133,9 +133,26 @@ static mcs_dft o_dft[2];
 static mcs_spectrum o_spec[2];
 static mcs_moment o_mom[2];
 static mcs_autocorr o_ac[2];
-static mcs_pointset o_ps[2];
-static mcs_pointset2d o_ps2[2];
-static mcs_spectrum2d o_s2[2];
+/* The objects over caller memory: the header and a buffer for the largest
+ * shape kept here (a larger one is refused by init: MCS_ERR_SPACE). */
+#define FZ_FREQ_1D 256u
+#define FZ_FREQ_2D 40u
+#define FZ_SIDE 64u
+typedef struct {
+    mcs_pointset acc;
+    _Alignas(64) unsigned char mem[MCS_POINTSET_SIZE(FZ_FREQ_1D)];
+} fz_pointset;
+typedef struct {
+    mcs_pointset2d acc;
+    _Alignas(64) unsigned char mem[MCS_POINTSET2D_SIZE(FZ_FREQ_2D)];
+} fz_pointset2d;
+typedef struct {
+    mcs_spectrum2d acc;
+    _Alignas(64) unsigned char mem[MCS_SPECTRUM2D_SIZE(FZ_SIDE, FZ_SIDE)];
+} fz_spectrum2d;
+static fz_pointset o_ps[2];
+static fz_pointset2d o_ps2[2];
+static fz_spectrum2d o_s2[2];
 static mcs_theory o_th[2];
 static mcs_theory_spectrum o_ts[2];
 static void *const objs[NTYPES] = {o_rng, o_imp, o_pat, o_smp, o_p2d, o_wel, o_dft, o_spec, o_mom,
@@ -143,8 +160,8 @@ static void *const objs[NTYPES] = {o_rng, o_imp, o_pat, o_smp, o_p2d, o_wel, o_d
 static const size_t obj_size[NTYPES] = {
     sizeof(mcs_rng), sizeof(mcs_importance), sizeof(mcs_pattern), sizeof(mcs_sampler),
     sizeof(mcs_pattern2d), sizeof(mcs_welford), sizeof(mcs_dft), sizeof(mcs_spectrum),
-    sizeof(mcs_moment), sizeof(mcs_autocorr), sizeof(mcs_pointset), sizeof(mcs_pointset2d),
-    sizeof(mcs_spectrum2d), sizeof(mcs_theory), sizeof(mcs_theory_spectrum)};
+    sizeof(mcs_moment), sizeof(mcs_autocorr), sizeof(fz_pointset), sizeof(fz_pointset2d),
+    sizeof(fz_spectrum2d), sizeof(mcs_theory), sizeof(mcs_theory_spectrum)};
 static unsigned dirty;
 
 static void *obj(int type, unsigned i)
@@ -160,18 +177,42 @@ static void *obj_or_null(int type)
     return b % 32u == 31u ? NULL : obj(type, b);
 }
 
-static uint64_t *count_of(int type, void *o)
+/* The trial count of an accumulator: its field, or for the objects over
+ * caller memory (whose count is in their buffer, reached through a header
+ * that may be corrupted) what their count call says, 0 if it refuses. */
+static uint64_t count_of(int type, const void *o)
 {
+    uint64_t c = 0u;
     switch (type) {
-    case WEL: return &((mcs_welford *)o)->count;
-    case SPEC: return &((mcs_spectrum *)o)->count;
-    case MOM: return &((mcs_moment *)o)->count;
-    case AC: return &((mcs_autocorr *)o)->count;
-    case PS: return &((mcs_pointset *)o)->count;
-    case PS2: return &((mcs_pointset2d *)o)->count;
-    case S2: return &((mcs_spectrum2d *)o)->count;
-    default: return NULL;
+    case WEL: return ((const mcs_welford *)o)->count;
+    case SPEC: return ((const mcs_spectrum *)o)->count;
+    case MOM: return ((const mcs_moment *)o)->count;
+    case AC: return ((const mcs_autocorr *)o)->count;
+    case PS: return mcs_pointset_count(o, &c) == MCS_OK ? c : 0u;
+    case PS2: return mcs_pointset2d_count(o, &c) == MCS_OK ? c : 0u;
+    case S2: return mcs_spectrum2d_count(o, &c) == MCS_OK ? c : 0u;
+    default: return 0u;
     }
+}
+
+/* Bytes of an object over caller memory that hold its header and
+ * statistics (its scratch, and the NUFFT's KissFFT state, follow: no C
+ * library can validate a foreign struct, so corruption stays out of them);
+ * 64 (the header's start) while its header does not pass its own check. */
+static size_t stats_end(int type, const unsigned char *o, size_t bytes)
+{
+    uint64_t c = 0u;
+    const void *v = o;
+    const mcs_status st = type == PS    ? mcs_pointset_count(v, &c)
+                          : type == PS2 ? mcs_pointset2d_count(v, &c)
+                                        : mcs_spectrum2d_count(v, &c);
+    if (st != MCS_OK)
+        return 64u;
+    const double *re = type == PS    ? ((const mcs_pointset *)v)->re
+                       : type == PS2 ? ((const mcs_pointset2d *)v)->re
+                                     : ((const mcs_spectrum2d *)v)->re;
+    const uintptr_t at = (uintptr_t)(const void *)re - (uintptr_t)v;
+    return at >= 64u && at <= bytes ? (size_t)at : 64u;
 }
 
 /* The arrays of an object whose first N (or N^2) values its calls read: a
@@ -237,6 +278,8 @@ static void corrupt(void)
         break;
     default: {
         size_t lo = type == DFT ? bytes : type == SPEC ? offsetof(mcs_spectrum, mean_re) : 64u;
+        if (type == PS || type == PS2 || type == S2)
+            bytes = stats_end(type, o, bytes);
         if (bytes < lo + sizeof(double))
             break;
         double v = dbl();
@@ -301,7 +344,7 @@ typedef struct {
 static region regs[8];
 static int nregs;
 static size_t snap_used;
-static unsigned char snap[8u << 20]; /* above eight of the largest object (400 KB) */
+static unsigned char snap[8u << 20]; /* above eight of the largest object (about 600 KB) */
 static const char *cur_fn;
 
 static void begin(const char *fn)
@@ -367,11 +410,11 @@ static void vals(mcs_status st, const double *v, size_t n, int nonneg)
 }
 
 /* Count after a successful add (delta 1) or merge (delta the source's). */
-static void counted(mcs_status st, uint64_t before, uint64_t delta, const uint64_t *after)
+static void counted(mcs_status st, uint64_t before, uint64_t delta, uint64_t after)
 {
-    if (st == MCS_OK && (before + delta < before || *after != before + delta))
+    if (st == MCS_OK && (before + delta < before || after != before + delta))
         finding(9, cur_fn, "count %llu + %llu became %llu", (unsigned long long)before,
-                (unsigned long long)delta, (unsigned long long)*after);
+                (unsigned long long)delta, (unsigned long long)after);
 }
 
 /* ---- accumulators: init, add, merge, count ---- */
@@ -385,9 +428,14 @@ static mcs_status init_acc(int type, void *o, size_t n, size_t n2)
     case SPEC: return mcs_spectrum_init(o, n);
     case MOM: return mcs_moment_init(o, n);
     case AC: return mcs_autocorr_init(o, n);
-    case PS: return mcs_pointset_init(o, n);
-    case PS2: return mcs_pointset2d_init(o, n);
-    default: return mcs_spectrum2d_init(o, n, n2);
+    /* the objects over caller memory: over their own buffer (none for NULL) */
+    case PS: return mcs_pointset_init(o, n, 0u, o ? ((fz_pointset *)o)->mem : NULL, sizeof o_ps[0].mem);
+    case PS2:
+        return mcs_pointset2d_init(o, n, 0u, o ? ((fz_pointset2d *)o)->mem : NULL,
+                                   sizeof o_ps2[0].mem);
+    default:
+        return mcs_spectrum2d_init(o, n, n2, o ? ((fz_spectrum2d *)o)->mem : NULL,
+                                   sizeof o_s2[0].mem);
     }
 }
 
@@ -425,11 +473,11 @@ static void op_acc_init_merge_count(unsigned which)
     if (which == 0) {
         size_t n = size_any(), n2 = size_any();
         mcs_status st = end(init_acc(type, inout(type, o), n, n2));
-        if (st == MCS_OK && *count_of(type, o) != 0u)
-            finding(0, cur_fn, "init left the count at %llu", (unsigned long long)*count_of(type, o));
+        if (st == MCS_OK && count_of(type, o) != 0u)
+            finding(0, cur_fn, "init left the count at %llu", (unsigned long long)count_of(type, o));
     } else if (which == 1) {
         const void *src = obj_or_null(type); /* the same object half of the time: a self-merge */
-        uint64_t d = o ? *count_of(type, o) : 0u, sc = src ? *count_of(type, (void *)(uintptr_t)src) : 0u;
+        uint64_t d = o ? count_of(type, o) : 0u, sc = src ? count_of(type, src) : 0u;
         if (src != o)
             reg(src, src ? obj_size[type] : 0u, 0u);
         mcs_status st = end(merge_acc(type, inout(type, o), src));
@@ -439,9 +487,9 @@ static void op_acc_init_merge_count(unsigned which)
         uint64_t *c = out(uout, 1, 8);
         reg(o, o ? obj_size[type] : 0u, 0u);
         mcs_status st = end(count_acc(type, o, c));
-        if (st == MCS_OK && *c != *count_of(type, (void *)(uintptr_t)o))
+        if (st == MCS_OK && *c != count_of(type, o))
             finding(0, cur_fn, "count read-out %llu, field %llu", (unsigned long long)*c,
-                    (unsigned long long)*count_of(type, (void *)(uintptr_t)o));
+                    (unsigned long long)count_of(type, o));
     }
 }
 
@@ -475,7 +523,7 @@ static void op_add(void)
     const size_t k = len_arg(), nb = o != NULL && type != WEL ? *(const size_t *)o : 16u;
     /* One byte picks the input form and whether points go in as float. */
     const unsigned how_byte = byte(), how = how_byte % 3u, as_float = how_byte / 3u % 2u;
-    uint64_t before = o ? *count_of(type, o) : 0u;
+    uint64_t before = o ? count_of(type, o) : 0u;
     begin("add");
     const double *w = byte() % 8u == 0u ? NULL : reg(darray(0, k), k * 8, 0);
     const double *pts = reg(darray(1, 2u * k), 2u * k * 8, 0);

@@ -387,9 +387,21 @@ static void op_save_load(void)
     case SPEC: st = mcs_io_load_spectrum(inout(type, dst), *len, rec); break;
     case MOM: st = mcs_io_load_moment(inout(type, dst), *len, rec); break;
     case AC: st = mcs_io_load_autocorr(inout(type, dst), *len, rec); break;
-    case PS: st = mcs_io_load_pointset(inout(type, dst), *len, rec); break;
-    case PS2: st = mcs_io_load_pointset2d(inout(type, dst), *len, rec); break;
-    default: st = mcs_io_load_spectrum2d(inout(type, dst), *len, rec); break;
+    case PS: {
+        fz_pointset *d = inout(type, dst);
+        st = mcs_io_load_pointset(&d->acc, 0u, d->mem, sizeof d->mem, *len, rec);
+        break;
+    }
+    case PS2: {
+        fz_pointset2d *d = inout(type, dst);
+        st = mcs_io_load_pointset2d(&d->acc, 0u, d->mem, sizeof d->mem, *len, rec);
+        break;
+    }
+    default: {
+        fz_spectrum2d *d = inout(type, dst);
+        st = mcs_io_load_spectrum2d(&d->acc, d->mem, sizeof d->mem, *len, rec);
+        break;
+    }
     }
     if (end(st) != MCS_OK)
         finding(0, cur_fn, "a record save wrote does not load (%s)", mcs_status_str(st));
@@ -522,14 +534,14 @@ static void op_misc(void)
     case 0:
     case 1: {
         const mcs_pointset *ps = obj_or_null(PS);
-        reg(ps, ps ? sizeof *ps : 0u, 0u);
+        reg(ps, ps ? obj_size[PS] : 0u, 0u);
         st = end(which == 0 ? mcs_pointset_power(ps, fx, v) : mcs_pointset_power_stderr(ps, fx, v));
         break;
     }
     case 2:
     case 3: {
         const mcs_pointset2d *ps2 = obj_or_null(PS2);
-        reg(ps2, ps2 ? sizeof *ps2 : 0u, 0u);
+        reg(ps2, ps2 ? obj_size[PS2] : 0u, 0u);
         st = end(which == 2 ? mcs_pointset2d_power(ps2, fx, fy, v)
                             : mcs_pointset2d_power_stderr(ps2, fx, fy, v));
         break;

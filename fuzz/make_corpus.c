@@ -12,9 +12,13 @@ static mcs_spectrum spec;
 static mcs_moment mom;
 static mcs_autocorr ac;
 static mcs_welford wf;
+/* The point-set and 2D spectra over static buffers for the largest shape
+ * below (F = 16; 16 x 17 bins). */
 static mcs_pointset ps;
 static mcs_pointset2d ps2;
 static mcs_spectrum2d sp2;
+static unsigned char ps_mem[MCS_POINTSET_SIZE(16u)], ps2_mem[MCS_POINTSET2D_SIZE(16u)],
+    sp2_mem[MCS_SPECTRUM2D_SIZE(16u, 17u)];
 
 static int write_file(const char *dir, const char *name, size_t len)
 {
@@ -53,9 +57,9 @@ static int one_case(const char *dir, size_t n, size_t k, size_t trials, uint64_t
     bad |= check(mcs_moment_init(&mom, n), "moment");
     bad |= check(mcs_autocorr_init(&ac, n), "autocorr");
     bad |= check(mcs_welford_init(&wf), "welford");
-    bad |= check(mcs_pointset_init(&ps, n), "pointset");
-    bad |= check(mcs_pointset2d_init(&ps2, n), "pointset2d");
-    bad |= check(mcs_spectrum2d_init(&sp2, n, n + 1u), "spectrum2d");
+    bad |= check(mcs_pointset_init(&ps, n, 0u, ps_mem, sizeof ps_mem), "pointset");
+    bad |= check(mcs_pointset2d_init(&ps2, n, 0u, ps2_mem, sizeof ps2_mem), "pointset2d");
+    bad |= check(mcs_spectrum2d_init(&sp2, n, n + 1u, sp2_mem, sizeof sp2_mem), "spectrum2d");
     for (size_t t = 0; t < trials && !bad; ++t) {
         bad |= check(mcs_pattern_draw(&pat, &rng, k, bins, w, pts), "draw");
         bad |= check(mcs_pointset_add(&ps, k, pts), "pointset add");

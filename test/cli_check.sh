@@ -392,24 +392,31 @@ usage_error "spectrum --freq with --n" 'exclude each other' "$MCSPEC" spectrum -
 usage_error "spectrum --freq with --weights" 'needs binning' "$MCSPEC" spectrum --freq 4 --weights -
 usage_error "spectrum --radial in 1D" '--radial needs --dim 2' "$MCSPEC" spectrum --freq 4 --radial -
 usage_error "spectrum --radial binned" '--radial needs --dim 2 --freq' "$MCSPEC" spectrum --radial -
-# --freq's range is the build's: MCS_MAX_FREQ_1D in 1D, MCS_MAX_FREQ in 2D
-# (read from --help, which prints the same macros), not SIZE_MAX.
+# --freq's range is the caps of the objects: MCS_POINTSET_MAX_FREQ in 1D,
+# MCS_POINTSET2D_MAX_FREQ in 2D (read from --help, which prints the same
+# macros), not SIZE_MAX; within them, what the machine's memory holds.
 cap1=$("$MCSPEC" spectrum --help | sed -n 's/.*F = 1\.\.\([0-9][0-9]*\) in 1D.*/\1/p')
 cap2=$("$MCSPEC" spectrum --help | sed -n 's/.* 1\.\.\([0-9][0-9]*\) in 2D.*/\1/p')
 if [ -n "$cap1" ] && [ -n "$cap2" ]; then ok; else bad "spectrum --help gives no --freq range ('$cap1', '$cap2')"; fi
-usage_error "spectrum --freq 0" "^mcspec spectrum: --freq expects a whole number from 1 to $cap1 for --dim 1 \(this build's MCS_MAX_FREQ_1D\), not '0'$" \
+usage_error "spectrum --freq 0" "^mcspec spectrum: --freq expects a whole number from 1 to $cap1 for --dim 1 \(MCS_POINTSET_MAX_FREQ\), not '0'$" \
     "$MCSPEC" spectrum --freq 0 -
-usage_error "spectrum --dim 2 --freq 0" "--freq expects a whole number from 1 to $cap2 for --dim 2 \(this build's MCS_MAX_FREQ\), not '0'" \
+usage_error "spectrum --dim 2 --freq 0" "--freq expects a whole number from 1 to $cap2 for --dim 2 \(MCS_POINTSET2D_MAX_FREQ\), not '0'" \
     "$MCSPEC" spectrum --dim 2 --freq 0 -
 usage_error "spectrum --freq too big" "--freq expects a whole number from 1 to $cap1 for --dim 1 .*not '$((cap1 + 1))'" \
     "$MCSPEC" spectrum --freq "$((cap1 + 1))" -
 usage_error "spectrum --dim 2 --freq too big" "from 1 to $cap2 for --dim 2 .*not '99999999999999999999'" \
     "$MCSPEC" spectrum --freq 99999999999999999999 --dim 2 -
 usage_error "spectrum --freq x" "--freq expects a whole number from 1 to $cap1 .*not 'x'" "$MCSPEC" spectrum --freq x -
-input '0.5\n'
-succeeds "spectrum --freq at the 1D cap" "$MCSPEC" spectrum --freq "$cap1" --csv -
-input '0.5 0.5\n'
-succeeds "spectrum --dim 2 --freq at the 2D cap" "$MCSPEC" spectrum --dim 2 --freq "$cap2" --csv -
+# The sizes: F = 65536 in 1D, 2048 in 2D (its annuli: the plane's
+# 16.8 million rows are not made for --radial).
+input '0.5\n0.25\n'
+succeeds "spectrum --freq 65536" "$MCSPEC" spectrum --freq 65536 --csv -
+input '0.5 0.5\n0.25 0.75\n'
+succeeds "spectrum --dim 2 --freq 2048 --radial" "$MCSPEC" spectrum --dim 2 --freq 2048 --radial --csv -
+# The 2D cap's buffer (about 70 GB) is more than a test machine's memory:
+# refused up front with the bytes it needs, nothing allocated.
+usage_error "spectrum --dim 2 --freq at the 2D cap" "^mcspec spectrum: --freq $cap2 needs [0-9]+ bytes, more than " \
+    "$MCSPEC" spectrum --dim 2 --freq "$cap2" --csv -
 : >"$tmp/in"
 usage_error "pattern --dim 2 --freq 0" "--freq expects a whole number from 1 to $cap2, not '0'" \
     "$MCSPEC" pattern jittered --dim 2 --k 16 --freq 0

@@ -7,8 +7,11 @@
  *     (<|S_(1,1)|^2>), each beside its exact value from the library;
  *  3. a Cranley-Patterson rotated van der Corput set of 16 points into the
  *     1D point-set spectrum: <P(16)> = 16 and <P(1)> = 0 (uniform jitter).
- * Built by `make cross` (mk/cross.mk) with the library at FW_DEFS:
- * MCS_MAX_N = 256, MCS_MAX_FREQ = 8, MCS_MAX_FREQ_1D = 32, MCS_MAX_SIDE = 8. */
+ * Built by `make cross` (mk/cross.mk) with the library at FW_DEFS
+ * (MCS_MAX_N = 256 for the mcs_spectrum). The point-set and 2D spectra take
+ * their sizes at run time over caller memory: here static buffers of the
+ * exact size, from the constant size macros, without the NUFFT's memory
+ * (MCS_POINTSET_DIRECT_ONLY: sets of 16 points never need it). */
 #include <stddef.h>
 #include <stdint.h>
 #include "mcspec.h"
@@ -25,17 +28,17 @@
 #if FW_K2 != FW_STRATA * FW_STRATA
 #error "FW_K2 must be FW_STRATA squared"
 #endif
-#if MCS_MAX_FREQ < 8 || MCS_MAX_FREQ_1D < 32 || MCS_MAX_SIDE < 8
-#error "the firmware needs MCS_MAX_FREQ >= 8, MCS_MAX_FREQ_1D >= 32, MCS_MAX_SIDE >= 8"
-#endif
 
 int main(void);
 
-/* Sizes at FW_DEFS on Cortex-M: make sizes. */
+/* Sizes at FW_DEFS on Cortex-M (make sizes; the buffers' from the macros). */
 static mcs_spectrum spectrum;     /* 26 264 B */
-static mcs_pointset2d pointset2d; /* 7 648 B */
-static mcs_spectrum2d spectrum2d; /* 3 536 B */
-static mcs_pointset pointset;     /* 3 744 B */
+static mcs_pointset2d pointset2d; /* header 144 B */
+static mcs_spectrum2d spectrum2d; /* header 76 B */
+static mcs_pointset pointset;     /* header 136 B */
+static unsigned char pointset2d_mem[MCS_POINTSET2D_SIZE_DIRECT(FW_FREQ)]; /* 8 063 B */
+static unsigned char spectrum2d_mem[MCS_SPECTRUM2D_SIZE(FW_SIDE, FW_SIDE)]; /* 3 647 B */
+static unsigned char pointset_mem[MCS_POINTSET_SIZE_DIRECT(FW_FREQ_1D)];  /* 3 967 B */
 static mcs_pattern pattern;
 static mcs_pattern2d pattern2d;
 static mcs_sampler sampler;
@@ -79,9 +82,11 @@ static mcs_status run_2d_points(void)
     mcs_status st = mcs_pattern2d_init(&pattern2d, MCS_PATTERN2D_JITTERED, FW_K2, FW_STRATA,
                                        FW_STRATA);
     if (st == MCS_OK)
-        st = mcs_pointset2d_init(&pointset2d, FW_FREQ);
+        st = mcs_pointset2d_init(&pointset2d, FW_FREQ, MCS_POINTSET_DIRECT_ONLY, pointset2d_mem,
+                                 sizeof pointset2d_mem);
     if (st == MCS_OK)
-        st = mcs_spectrum2d_init(&spectrum2d, FW_SIDE, FW_SIDE);
+        st = mcs_spectrum2d_init(&spectrum2d, FW_SIDE, FW_SIDE, spectrum2d_mem,
+                                 sizeof spectrum2d_mem);
     for (uint32_t t = 0u; t < FW_TRIALS && st == MCS_OK; ++t) {
         st = mcs_pattern2d_draw(&pattern2d, &rng, FW_K2, points);
         if (st == MCS_OK)
@@ -111,7 +116,8 @@ static mcs_status run_1d_sampler(void)
 {
     mcs_status st = mcs_sampler_init(&sampler, MCS_SAMPLER_VAN_DER_CORPUT, 1u, FW_K);
     if (st == MCS_OK)
-        st = mcs_pointset_init(&pointset, FW_FREQ_1D);
+        st = mcs_pointset_init(&pointset, FW_FREQ_1D, MCS_POINTSET_DIRECT_ONLY, pointset_mem,
+                               sizeof pointset_mem);
     for (uint32_t t = 0u; t < FW_TRIALS && st == MCS_OK; ++t) {
         st = mcs_sampler_draw(&sampler, &rng, FW_K, points);
         if (st == MCS_OK)

@@ -1,5 +1,6 @@
 /* mcspec compile-time capacities: every macro that sizes a public struct is
- * defined here and nowhere else. Override any of them with -D on the command
+ * defined here and nowhere else (the objects sized at run time give their
+ * caps in their own headers). Override any of them with -D on the command
  * line, as a plain decimal number, for the library and for every file that
  * includes mcspec.h alike: the struct layouts depend on them, and the checks
  * below stop a build that mixes two sets of values. */
@@ -20,20 +21,20 @@
 #define MCS_MAX_COV_N 64
 #endif
 
-/* Largest per-axis cutoff F of the 2D point-set spectrum mcs_pointset2d
- * (about 64 (F + 1)^2 B). */
+/* MCS_MAX_FREQ, MCS_MAX_FREQ_1D and MCS_MAX_SIDE sized mcs_pointset2d,
+ * mcs_pointset and mcs_spectrum2d until those took their size at run time,
+ * over caller memory (issue 24: pointset.h, pointset2d.h, spectrum2d.h give
+ * their sizes and caps, MCS_POINTSET_MAX_FREQ, MCS_POINTSET2D_MAX_FREQ and
+ * MCS_SPECTRUM2D_MAX_SIDE, which no -D changes). They size nothing now and
+ * no call reads them; they keep their old defaults and their place in the
+ * link tag below only because the installed package's checks (pkg-config,
+ * CMake, mk/install.mk) still name them, and go when those do. */
 #ifndef MCS_MAX_FREQ
 #define MCS_MAX_FREQ 32
 #endif
-
-/* Largest cutoff F of the 1D point-set spectrum mcs_pointset (about 34 B per
- * frequency). */
 #ifndef MCS_MAX_FREQ_1D
 #define MCS_MAX_FREQ_1D 1024
 #endif
-
-/* Largest N1 and N2 of the 2D binned spectrum mcs_spectrum2d (about 28 S^2 B
- * for S = MCS_MAX_SIDE). */
 #ifndef MCS_MAX_SIDE
 #define MCS_MAX_SIDE 64
 #endif

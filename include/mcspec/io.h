@@ -122,6 +122,8 @@ mcs_status mcs_io_save_welford(const mcs_welford *acc, size_t cap, void *buf, si
 mcs_status mcs_io_save_pointset(const mcs_pointset *acc, size_t cap, void *buf, size_t *len);
 mcs_status mcs_io_save_pointset2d(const mcs_pointset2d *acc, size_t cap, void *buf, size_t *len);
 mcs_status mcs_io_save_spectrum2d(const mcs_spectrum2d *acc, size_t cap, void *buf, size_t *len);
+/* The point-set and 2D saves also return MCS_ERR_ALIAS for a buf that
+ * overlaps the object's header or buffer (they read it while writing buf). */
 
 /* Loading, one call per kind: buf[len] must hold exactly one record of that
  * kind. On success *acc is as its init for the record's N left it (a spectrum
@@ -130,7 +132,7 @@ mcs_status mcs_io_save_spectrum2d(const mcs_spectrum2d *acc, size_t cap, void *b
  * MCS_ERR_NULL, the framing errors of mcs_io_peek, MCS_ERR_KIND (another or
  * an unknown kind), MCS_ERR_FORMAT (shape or payload length not what the kind
  * needs), MCS_ERR_N_RANGE (N, N1 or N2 = 0 or above this build's capacity),
- * MCS_ERR_FREQ_RANGE (a point-set cutoff F = 0 or above this build's),
+ * MCS_ERR_FREQ_RANGE (a point-set cutoff F = 0 or above its cap),
  * MCS_ERR_NOT_FINITE (a NaN or infinite value), MCS_ERR_INVARIANT (a count
  * above MCS_IO_MAX_COUNT, data with a zero count, spread with one trial, a
  * negative M2, mean power, sum of weights or of weight products, a value
@@ -140,9 +142,35 @@ mcs_status mcs_io_load_spectrum(mcs_spectrum *acc, size_t len, const void *buf);
 mcs_status mcs_io_load_moment(mcs_moment *acc, size_t len, const void *buf);
 mcs_status mcs_io_load_autocorr(mcs_autocorr *acc, size_t len, const void *buf);
 mcs_status mcs_io_load_welford(mcs_welford *acc, size_t len, const void *buf);
-mcs_status mcs_io_load_pointset(mcs_pointset *acc, size_t len, const void *buf);
-mcs_status mcs_io_load_pointset2d(mcs_pointset2d *acc, size_t len, const void *buf);
-mcs_status mcs_io_load_spectrum2d(mcs_spectrum2d *acc, size_t len, const void *buf);
+
+/* The objects that live over caller memory (pointset.h, pointset2d.h,
+ * spectrum2d.h) are loaded over a buffer mem[bytes] the caller passes, as
+ * their init takes it: *acc is then as the init for the record's shape
+ * (and flags, 0 or MCS_POINTSET_DIRECT_ONLY, for the point sets) left it,
+ * over mem, plus the record's statistics (path AUTO, wrap off). Statuses as
+ * above, with MCS_ERR_NULL for mem, MCS_ERR_DOMAIN (an unknown flag) before
+ * the record's, and after them MCS_ERR_SPACE (bytes below what the record's
+ * object needs: mcs_io_load_size) and MCS_ERR_ALIAS (mem, *acc and buf
+ * overlapping). *acc and mem byte-identical on error. Records of these
+ * kinds written by builds whose objects had compile-time capacities have
+ * the same layout (shape [F], or [N1, N2]) and load as any other. */
+mcs_status mcs_io_load_pointset(mcs_pointset *acc, unsigned flags, void *mem, size_t bytes,
+                                size_t len, const void *buf);
+mcs_status mcs_io_load_pointset2d(mcs_pointset2d *acc, unsigned flags, void *mem, size_t bytes,
+                                  size_t len, const void *buf);
+mcs_status mcs_io_load_spectrum2d(mcs_spectrum2d *acc, void *mem, size_t bytes, size_t len,
+                                  const void *buf);
+
+/* Bytes of caller memory the load of the record in buf[len] needs for its
+ * object, into *bytes: the object's size query for the record's shape (and
+ * flags, for the point sets; ignored by the other kinds), 0 for the kinds
+ * whose objects hold their own arrays (spectrum, moment, autocorr,
+ * welford). Reads the framing (mcs_io_peek) and the shape, not the values.
+ * MCS_ERR_NULL, MCS_ERR_DOMAIN (an unknown flag), the framing errors of
+ * mcs_io_peek, MCS_ERR_KIND (a kind this build does not know),
+ * MCS_ERR_FORMAT (a shape of the wrong length), MCS_ERR_FREQ_RANGE and
+ * MCS_ERR_N_RANGE (a shape beyond the caps). *bytes untouched on error. */
+mcs_status mcs_io_load_size(size_t len, const void *buf, unsigned flags, size_t *bytes);
 
 /* ---- Provenance (docs/format.md, "Provenance") ---------------------------- */
 

@@ -2,9 +2,101 @@
  * mcs_pointset (kind 5), mcs_pointset2d (6) and mcs_spectrum2d (7). As in
  * io_kinds.c: sizes for a shape and a table of fields in payload order,
  * which io.c walks to save, check and load. Only the entries in use are
- * written, so the bytes depend on F or N1, N2 and not on MCS_MAX_FREQ_1D,
- * MCS_MAX_FREQ or MCS_MAX_SIDE. */
+ * written, so the bytes depend on F or N1, N2 and nothing else.
+ *
+ * These objects keep their statistics in a caller buffer behind a head
+ * (pointsets/pointset_internal.h: the shape words, then the trial count),
+ * so the walker's object is that head and each table is made per call with
+ * the offsets of the object's arrays from it. A load cannot set the object
+ * up before the record has passed every check (nothing may change on
+ * error), and the walker sets it up only after them, through the kind's
+ * init: so a load walks the record twice, first with an init that stops
+ * the walk once the record passed (CHECKED), then, once the caller's buffer
+ * is known to hold the object and the object is set up over it, to store
+ * the values. */
 #include "io_internal.h"
+#include "pointsets/pointset_internal.h"
+
+#include <string.h>
+
+/* The dry walk's init: every check passed. mcs_io_load returns no such
+ * status of its own before it calls init. */
+#define CHECKED MCS_ERR_ALIAS
+
+static mcs_status count_of_head(const void *obj, uint64_t *count)
+{
+    memcpy(count, (const unsigned char *)obj + offsetof(mcs_ps_head, count), sizeof *count);
+    return MCS_OK;
+}
+
+static mcs_status init_checked(void *obj, const uint64_t *shape)
+{
+    (void)obj;
+    (void)shape;
+    return CHECKED;
+}
+
+static mcs_status init_ready(void *obj, const uint64_t *shape)
+{
+    (void)obj;
+    (void)shape;
+    return MCS_OK; /* set up by the object's own init already */
+}
+
+/* Byte offset of an array from the head it follows. */
+static size_t at(const void *state, const double *array)
+{
+    return (size_t)((const unsigned char *)(const void *)array - (const unsigned char *)state);
+}
+
+static io_field rows_of(size_t offset, unsigned char rows, unsigned char len,
+                        unsigned char stride, unsigned rules)
+{
+    io_field f = {offset, IO_AS_ROWS, rows, len, stride, rules};
+    return f;
+}
+
+/* The fields common to every kind here. */
+static void kind_base(io_kind *k, uint32_t kind, uint32_t shape_len,
+                      mcs_status (*sizes)(const uint64_t *, size_t *))
+{
+    memset(k, 0, sizeof *k);
+    k->kind = kind;
+    k->shape_len = shape_len;
+    k->sizes = sizes;
+    k->shape_at[0] = offsetof(mcs_ps_head, shape);
+    k->shape_at[1] = offsetof(mcs_ps_head, shape) + sizeof(size_t);
+    k->count = count_of_head;
+    k->init = init_checked;
+    k->count_at = offsetof(mcs_ps_head, count);
+}
+
+/* The memory checks of a load once the record passed: the caller's buffer
+ * (need bytes of it) against the object and the record, and those two
+ * against each other. Six arguments: a seventh would be pushed, a frame gcc
+ * calls dynamic (make stack). */
+static mcs_status check_load_alias(const void *acc, size_t acc_bytes, const void *mem,
+                                   size_t need, const void *buf, size_t len)
+{
+    if (mcs_overlap_(mem, need, acc, acc_bytes) || mcs_overlap_(mem, need, buf, len) ||
+        mcs_overlap_(acc, acc_bytes, buf, len))
+        return MCS_ERR_ALIAS;
+    return MCS_OK;
+}
+
+/* A save's record buffer must not overlap the object it reads. */
+static int save_overlaps(const void *acc, size_t acc_bytes, const void *mem, size_t bytes,
+                         const void *buf, size_t cap)
+{
+    return buf != NULL && (mcs_overlap_(buf, cap, acc, acc_bytes) || mcs_overlap_(buf, cap, mem, bytes));
+}
+
+static uint64_t shape_word(const void *buf, size_t len, size_t i)
+{
+    mcs_io_info info;
+    (void)mcs_io_peek(len, buf, &info); /* cannot fail: the record passed */
+    return info.shape[i];
+}
 
 /* ---- pointset: mean P(f) (a periodogram is >= 0), then its M2, f = 0..F ---- */
 
@@ -12,36 +104,61 @@ enum { PS_FREQS = 1 };
 
 static mcs_status sizes_pointset(const uint64_t *shape, size_t *size)
 {
-    if (shape[0] == 0u || shape[0] > (uint64_t)MCS_MAX_FREQ_1D)
+    if (shape[0] == 0u || shape[0] > (uint64_t)MCS_POINTSET_MAX_FREQ)
         return MCS_ERR_FREQ_RANGE;
     size[PS_FREQS] = (size_t)shape[0] + 1u;
     return MCS_OK;
 }
 
-static mcs_status count_pointset(const void *obj, uint64_t *count)
+/* The table of a pointset record; the offsets are acc's (acc NULL: 0, for
+ * the checking walk, which reads the payload only). */
+static void kind_pointset(io_kind *k, const mcs_pointset *acc)
 {
-    return mcs_pointset_count((const mcs_pointset *)obj, count);
+    kind_base(k, MCS_IO_KIND_POINTSET, 1u, sizes_pointset);
+    k->nfields = 2u;
+    k->fields[0] = rows_of(0u, IO_ONE, PS_FREQS, IO_ONE, IO_RULE_NONNEG);
+    k->fields[1] = rows_of(0u, IO_ONE, PS_FREQS, IO_ONE, IO_RULE_M2);
+    if (acc != NULL) {
+        k->fields[0].offset = at(acc->state, acc->mean);
+        k->fields[1].offset = at(acc->state, acc->m2);
+    }
 }
-
-static mcs_status init_pointset(void *obj, const uint64_t *shape)
-{
-    return mcs_pointset_init((mcs_pointset *)obj, (size_t)shape[0]);
-}
-
-static const io_kind kind_pointset = {
-    MCS_IO_KIND_POINTSET, 1u, sizes_pointset, {offsetof(mcs_pointset, freq_max)},
-    count_pointset, init_pointset, offsetof(mcs_pointset, count), NULL, 2u,
-    {IO_ARRAY(mcs_pointset, mean, PS_FREQS, IO_RULE_NONNEG),
-     IO_ARRAY(mcs_pointset, m2, PS_FREQS, IO_RULE_M2)}};
 
 mcs_status mcs_io_save_pointset(const mcs_pointset *acc, size_t cap, void *buf, size_t *len)
 {
-    return mcs_io_save(&kind_pointset, acc, cap, buf, len);
+    uint64_t count = 0u;
+    mcs_status st = acc == NULL || len == NULL ? MCS_ERR_NULL : mcs_pointset_count(acc, &count);
+    if (st == MCS_OK && save_overlaps(acc, sizeof *acc, acc->mem, acc->bytes, buf, cap))
+        st = MCS_ERR_ALIAS;
+    if (st != MCS_OK)
+        return st;
+    io_kind k;
+    kind_pointset(&k, acc);
+    return mcs_io_save(&k, acc->state, cap, buf, len);
 }
 
-mcs_status mcs_io_load_pointset(mcs_pointset *acc, size_t len, const void *buf)
+mcs_status mcs_io_load_pointset(mcs_pointset *acc, unsigned flags, void *mem, size_t bytes,
+                                size_t len, const void *buf)
 {
-    return mcs_io_load(&kind_pointset, acc, len, buf);
+    if (acc == NULL || mem == NULL || buf == NULL)
+        return MCS_ERR_NULL;
+    size_t need = 0u;
+    if (mcs_pointset_size(1u, flags, &need) == MCS_ERR_DOMAIN)
+        return MCS_ERR_DOMAIN;
+    io_kind k;
+    kind_pointset(&k, NULL);
+    mcs_status st = mcs_io_load(&k, mem, len, buf); /* checks only */
+    if (st != CHECKED)
+        return st;
+    const size_t f = (size_t)shape_word(buf, len, 0u);
+    (void)mcs_pointset_size(f, flags, &need); /* cannot fail: F passed sizes_pointset */
+    st = bytes < need ? MCS_ERR_SPACE : check_load_alias(acc, sizeof *acc, mem, need, buf, len);
+    if (st != MCS_OK)
+        return st;
+    (void)mcs_pointset_init(acc, f, flags, mem, bytes); /* cannot fail: checked above */
+    kind_pointset(&k, acc);
+    k.init = init_ready;
+    return mcs_io_load(&k, acc->state, len, buf);
 }
 
 /* ---- pointset2d: mean and M2 of P at fy = 0..F, fx = -F..F (row by row:
@@ -52,7 +169,7 @@ enum { P2_RADII = 1, P2_WIDTH = 2, P2_STRIDE = 3 };
 
 static mcs_status sizes_pointset2d(const uint64_t *shape, size_t *size)
 {
-    if (shape[0] == 0u || shape[0] > (uint64_t)MCS_MAX_FREQ)
+    if (shape[0] == 0u || shape[0] > (uint64_t)MCS_POINTSET2D_MAX_FREQ)
         return MCS_ERR_FREQ_RANGE;
     const size_t f = (size_t)shape[0];
     size[P2_RADII] = f + 1u;
@@ -61,32 +178,56 @@ static mcs_status sizes_pointset2d(const uint64_t *shape, size_t *size)
     return MCS_OK;
 }
 
-static mcs_status count_pointset2d(const void *obj, uint64_t *count)
+static void kind_pointset2d(io_kind *k, const mcs_pointset2d *acc)
 {
-    return mcs_pointset2d_count((const mcs_pointset2d *)obj, count);
+    kind_base(k, MCS_IO_KIND_POINTSET2D, 1u, sizes_pointset2d);
+    k->nfields = 4u;
+    k->fields[0] = rows_of(0u, P2_RADII, P2_WIDTH, P2_STRIDE, IO_RULE_NONNEG);
+    k->fields[1] = rows_of(0u, P2_RADII, P2_WIDTH, P2_STRIDE, IO_RULE_M2);
+    k->fields[2] = rows_of(0u, IO_ONE, P2_RADII, IO_ONE, IO_RULE_NONNEG);
+    k->fields[3] = rows_of(0u, IO_ONE, P2_RADII, IO_ONE, IO_RULE_M2);
+    if (acc != NULL) {
+        const double *const arrays[4] = {acc->mean, acc->m2, acc->ring_mean, acc->ring_m2};
+        for (size_t i = 0; i < 4u; ++i)
+            k->fields[i].offset = at(acc->state, arrays[i]);
+    }
 }
-
-static mcs_status init_pointset2d(void *obj, const uint64_t *shape)
-{
-    return mcs_pointset2d_init((mcs_pointset2d *)obj, (size_t)shape[0]);
-}
-
-static const io_kind kind_pointset2d = {
-    MCS_IO_KIND_POINTSET2D, 1u, sizes_pointset2d, {offsetof(mcs_pointset2d, freq_max)},
-    count_pointset2d, init_pointset2d, offsetof(mcs_pointset2d, count), NULL, 4u,
-    {IO_GRID(mcs_pointset2d, mean, P2_RADII, P2_WIDTH, P2_STRIDE, IO_RULE_NONNEG),
-     IO_GRID(mcs_pointset2d, m2, P2_RADII, P2_WIDTH, P2_STRIDE, IO_RULE_M2),
-     IO_ARRAY(mcs_pointset2d, ring_mean, P2_RADII, IO_RULE_NONNEG),
-     IO_ARRAY(mcs_pointset2d, ring_m2, P2_RADII, IO_RULE_M2)}};
 
 mcs_status mcs_io_save_pointset2d(const mcs_pointset2d *acc, size_t cap, void *buf, size_t *len)
 {
-    return mcs_io_save(&kind_pointset2d, acc, cap, buf, len);
+    uint64_t count = 0u;
+    mcs_status st = acc == NULL || len == NULL ? MCS_ERR_NULL : mcs_pointset2d_count(acc, &count);
+    if (st == MCS_OK && save_overlaps(acc, sizeof *acc, acc->mem, acc->bytes, buf, cap))
+        st = MCS_ERR_ALIAS;
+    if (st != MCS_OK)
+        return st;
+    io_kind k;
+    kind_pointset2d(&k, acc);
+    return mcs_io_save(&k, acc->state, cap, buf, len);
 }
 
-mcs_status mcs_io_load_pointset2d(mcs_pointset2d *acc, size_t len, const void *buf)
+mcs_status mcs_io_load_pointset2d(mcs_pointset2d *acc, unsigned flags, void *mem, size_t bytes,
+                                  size_t len, const void *buf)
 {
-    return mcs_io_load(&kind_pointset2d, acc, len, buf);
+    if (acc == NULL || mem == NULL || buf == NULL)
+        return MCS_ERR_NULL;
+    size_t need = 0u;
+    if (mcs_pointset2d_size(1u, flags, &need) == MCS_ERR_DOMAIN)
+        return MCS_ERR_DOMAIN;
+    io_kind k;
+    kind_pointset2d(&k, NULL);
+    mcs_status st = mcs_io_load(&k, mem, len, buf); /* checks only */
+    if (st != CHECKED)
+        return st;
+    const size_t f = (size_t)shape_word(buf, len, 0u);
+    (void)mcs_pointset2d_size(f, flags, &need); /* cannot fail: F passed sizes_pointset2d */
+    st = bytes < need ? MCS_ERR_SPACE : check_load_alias(acc, sizeof *acc, mem, need, buf, len);
+    if (st != MCS_OK)
+        return st;
+    (void)mcs_pointset2d_init(acc, f, flags, mem, bytes); /* cannot fail: checked above */
+    kind_pointset2d(&k, acc);
+    k.init = init_ready;
+    return mcs_io_load(&k, acc->state, len, buf);
 }
 
 /* ---- spectrum2d: five arrays over k2 = 0..N2/2, k1 = 0..N1-1 (rows of N1
@@ -96,8 +237,8 @@ enum { S2_ROWS = 1, S2_WIDTH = 2, S2_STRIDE = 3 };
 
 static mcs_status sizes_spectrum2d(const uint64_t *shape, size_t *size)
 {
-    if (shape[0] == 0u || shape[0] > (uint64_t)MCS_MAX_SIDE || shape[1] == 0u ||
-        shape[1] > (uint64_t)MCS_MAX_SIDE)
+    if (shape[0] == 0u || shape[0] > (uint64_t)MCS_SPECTRUM2D_MAX_SIDE || shape[1] == 0u ||
+        shape[1] > (uint64_t)MCS_SPECTRUM2D_MAX_SIDE)
         return MCS_ERR_N_RANGE;
     const size_t n_x = (size_t)shape[0];
     size[S2_ROWS] = (size_t)shape[1] / 2u + 1u;
@@ -106,31 +247,98 @@ static mcs_status sizes_spectrum2d(const uint64_t *shape, size_t *size)
     return MCS_OK;
 }
 
-static mcs_status count_spectrum2d(const void *obj, uint64_t *count)
+static void kind_spectrum2d(io_kind *k, const mcs_spectrum2d *acc)
 {
-    return mcs_spectrum2d_count((const mcs_spectrum2d *)obj, count);
+    static const unsigned rules[5] = {0u, 0u, IO_RULE_M2, IO_RULE_NONNEG, IO_RULE_M2};
+    kind_base(k, MCS_IO_KIND_SPECTRUM2D, 2u, sizes_spectrum2d);
+    k->nfields = 5u;
+    for (size_t i = 0; i < 5u; ++i)
+        k->fields[i] = rows_of(0u, S2_ROWS, S2_WIDTH, S2_STRIDE, rules[i]);
+    if (acc != NULL) {
+        const double *const arrays[5] = {acc->mean_re, acc->mean_im, acc->m2_s, acc->mean_pow,
+                                         acc->m2_pow};
+        for (size_t i = 0; i < 5u; ++i)
+            k->fields[i].offset = at(acc->state, arrays[i]);
+    }
 }
-
-static mcs_status init_spectrum2d(void *obj, const uint64_t *shape)
-{
-    return mcs_spectrum2d_init((mcs_spectrum2d *)obj, (size_t)shape[0], (size_t)shape[1]);
-}
-
-#define S2_GRID(member, rules) IO_GRID(mcs_spectrum2d, member, S2_ROWS, S2_WIDTH, S2_STRIDE, rules)
-
-static const io_kind kind_spectrum2d = {
-    MCS_IO_KIND_SPECTRUM2D, 2u, sizes_spectrum2d,
-    {offsetof(mcs_spectrum2d, n_x), offsetof(mcs_spectrum2d, n_y)},
-    count_spectrum2d, init_spectrum2d, offsetof(mcs_spectrum2d, count), NULL, 5u,
-    {S2_GRID(mean_re, 0u), S2_GRID(mean_im, 0u), S2_GRID(m2_s, IO_RULE_M2),
-     S2_GRID(mean_pow, IO_RULE_NONNEG), S2_GRID(m2_pow, IO_RULE_M2)}};
 
 mcs_status mcs_io_save_spectrum2d(const mcs_spectrum2d *acc, size_t cap, void *buf, size_t *len)
 {
-    return mcs_io_save(&kind_spectrum2d, acc, cap, buf, len);
+    uint64_t count = 0u;
+    mcs_status st = acc == NULL || len == NULL ? MCS_ERR_NULL : mcs_spectrum2d_count(acc, &count);
+    if (st == MCS_OK && save_overlaps(acc, sizeof *acc, acc->mem, acc->bytes, buf, cap))
+        st = MCS_ERR_ALIAS;
+    if (st != MCS_OK)
+        return st;
+    io_kind k;
+    kind_spectrum2d(&k, acc);
+    return mcs_io_save(&k, acc->state, cap, buf, len);
 }
 
-mcs_status mcs_io_load_spectrum2d(mcs_spectrum2d *acc, size_t len, const void *buf)
+mcs_status mcs_io_load_spectrum2d(mcs_spectrum2d *acc, void *mem, size_t bytes, size_t len,
+                                  const void *buf)
 {
-    return mcs_io_load(&kind_spectrum2d, acc, len, buf);
+    if (acc == NULL || mem == NULL || buf == NULL)
+        return MCS_ERR_NULL;
+    io_kind k;
+    kind_spectrum2d(&k, NULL);
+    mcs_status st = mcs_io_load(&k, mem, len, buf); /* checks only */
+    if (st != CHECKED)
+        return st;
+    const size_t n_x = (size_t)shape_word(buf, len, 0u), n_y = (size_t)shape_word(buf, len, 1u);
+    size_t need = 0u;
+    (void)mcs_spectrum2d_size(n_x, n_y, &need); /* cannot fail: the sides passed */
+    st = bytes < need ? MCS_ERR_SPACE : check_load_alias(acc, sizeof *acc, mem, need, buf, len);
+    if (st != MCS_OK)
+        return st;
+    (void)mcs_spectrum2d_init(acc, n_x, n_y, mem, bytes); /* cannot fail: checked above */
+    kind_spectrum2d(&k, acc);
+    k.init = init_ready;
+    return mcs_io_load(&k, acc->state, len, buf);
+}
+
+/* ---- the memory a load needs ---- */
+
+mcs_status mcs_io_load_size(size_t len, const void *buf, unsigned flags, size_t *bytes)
+{
+    if (buf == NULL || bytes == NULL)
+        return MCS_ERR_NULL;
+    size_t need = 0u;
+    if (mcs_pointset_size(1u, flags, &need) == MCS_ERR_DOMAIN)
+        return MCS_ERR_DOMAIN;
+    mcs_io_info info;
+    mcs_status st = mcs_io_peek(len, buf, &info);
+    if (st != MCS_OK)
+        return st;
+    const uint64_t *shape = info.shape;
+    switch (info.kind) {
+    case MCS_IO_KIND_SPECTRUM:
+    case MCS_IO_KIND_MOMENT:
+    case MCS_IO_KIND_AUTOCORR:
+    case MCS_IO_KIND_WELFORD: need = 0u; break;
+    case MCS_IO_KIND_POINTSET:
+    case MCS_IO_KIND_POINTSET2D: {
+        if (info.shape_len != 1u)
+            return MCS_ERR_FORMAT;
+        const uint64_t cap = info.kind == MCS_IO_KIND_POINTSET ? MCS_POINTSET_MAX_FREQ
+                                                               : MCS_POINTSET2D_MAX_FREQ;
+        if (shape[0] == 0u || shape[0] > cap)
+            return MCS_ERR_FREQ_RANGE;
+        st = info.kind == MCS_IO_KIND_POINTSET ? mcs_pointset_size((size_t)shape[0], flags, &need)
+                                               : mcs_pointset2d_size((size_t)shape[0], flags, &need);
+        break;
+    }
+    case MCS_IO_KIND_SPECTRUM2D:
+        if (info.shape_len != 2u)
+            return MCS_ERR_FORMAT;
+        if (shape[0] == 0u || shape[0] > MCS_SPECTRUM2D_MAX_SIDE || shape[1] == 0u ||
+            shape[1] > MCS_SPECTRUM2D_MAX_SIDE)
+            return MCS_ERR_N_RANGE;
+        st = mcs_spectrum2d_size((size_t)shape[0], (size_t)shape[1], &need);
+        break;
+    default: return MCS_ERR_KIND;
+    }
+    if (st == MCS_OK)
+        *bytes = need;
+    return st;
 }

@@ -15,44 +15,251 @@ enum { XR = 0, XI = 1, YR = 2, YI = 3 };
  * K 1e-32; below this its mean counts as 0. */
 #define RING_ZERO 1e-20
 
-/* MCS_ERR_NULL without acc, MCS_ERR_UNINIT unless it came from init. */
-static mcs_status check_acc(const mcs_pointset2d *acc)
-{
-    return mcs_check_object_(acc, acc != NULL ? acc->freq_max : 0u, (size_t)MCS_MAX_FREQ);
-}
-
 /* Stored wave vectors: (2F + 2) columns by F + 1 rows. */
 static size_t cells_of(size_t fmax)
 {
     return (2u * fmax + 2u) * (fmax + 1u);
 }
 
-mcs_status mcs_pointset2d_init(mcs_pointset2d *acc, size_t freq_max)
+/* Offsets of the buffer's arrays from its first 64-byte boundary (the
+ * head's), the end of the statistics, and the bytes asked of the caller. */
+typedef struct {
+    size_t mean, m2, ring_mean, ring_m2, stats;
+    size_t re, im, phase, stage, stage_len, nufft, nufft_bytes, total;
+} layout;
+
+/* The checks of a size query and the layout for (fmax, flags). */
+static mcs_status layout_of(size_t fmax, unsigned flags, layout *lay)
 {
-    mcs_status st = mcs_ps_check_init(acc, freq_max, (size_t)MCS_MAX_FREQ);
+    memset(lay, 0, sizeof *lay);
+    if (fmax == 0u || fmax > (size_t)MCS_POINTSET2D_MAX_FREQ)
+        return MCS_ERR_FREQ_RANGE;
+    if ((flags & ~(unsigned)MCS_POINTSET_DIRECT_ONLY) != 0u)
+        return MCS_ERR_DOMAIN;
+    const size_t cells = cells_of(fmax), radii = fmax + 1u, side = 2u * fmax + 1u;
+    const size_t d = sizeof(double);
+    mcs_ps_carve c = {0u, 0};
+    (void)mcs_ps_take(&c, 1u, sizeof(mcs_ps_head));
+    lay->mean = mcs_ps_take(&c, cells, d);
+    lay->m2 = mcs_ps_take(&c, cells, d);
+    lay->ring_mean = mcs_ps_take(&c, radii, d);
+    lay->ring_m2 = mcs_ps_take(&c, radii, d);
+    lay->stats = c.at;
+    lay->re = mcs_ps_take(&c, cells, d);
+    lay->im = mcs_ps_take(&c, cells, d);
+    lay->phase = mcs_ps_take(&c, 16u * (side + 1u), d);
+    if ((flags & MCS_POINTSET_DIRECT_ONLY) == 0u) {
+        const size_t modes = 2u * side * side; /* within the caps: no overflow */
+        lay->stage_len = modes > MCS_POINTSET_STAGE_MIN ? modes : (size_t)MCS_POINTSET_STAGE_MIN;
+        lay->stage = mcs_ps_take(&c, lay->stage_len, d);
+        mcs_status st = mcs_nufft_size(2u, fmax, MCS_POINTSET_NUFFT_TOL, &lay->nufft_bytes);
+        if (st != MCS_OK)
+            return MCS_ERR_FREQ_RANGE;
+        lay->nufft = mcs_ps_take(&c, lay->nufft_bytes, 1u);
+    }
+    lay->total = mcs_ps_total(&c);
+    return lay->total == SIZE_MAX ? MCS_ERR_FREQ_RANGE : MCS_OK;
+}
+
+static uintptr_t key_of(const mcs_pointset2d *a)
+{
+    enum { OWN = 16 };
+    uintptr_t w[OWN + MCS_PS_PLAN_WORDS] = {
+        (uintptr_t)a->freq_max,  (uintptr_t)a->flags,   (uintptr_t)a->path,  (uintptr_t)a->wrap,
+        (uintptr_t)a->mem,       (uintptr_t)a->bytes,   (uintptr_t)a->state, (uintptr_t)a->mean,
+        (uintptr_t)a->m2,        (uintptr_t)a->ring_mean, (uintptr_t)a->ring_m2,
+        (uintptr_t)a->re,        (uintptr_t)a->im,      (uintptr_t)a->phase, (uintptr_t)a->stage,
+        (uintptr_t)0x32u};
+    mcs_ps_plan_words(&a->plan, w + OWN);
+    return mcs_ps_hash(w, sizeof w / sizeof w[0]);
+}
+
+static const mcs_ps_head *head_of(const mcs_pointset2d *acc)
+{
+    return (const mcs_ps_head *)(const void *)acc->state;
+}
+
+static uint64_t count_of(const mcs_pointset2d *acc)
+{
+    return head_of(acc)->count;
+}
+
+/* MCS_ERR_NULL without acc, MCS_ERR_UNINIT unless init set its header,
+ * MCS_ERR_INVARIANT for a buffer whose head no longer says F. */
+static mcs_status check_acc(const mcs_pointset2d *acc)
+{
+    if (acc == NULL)
+        return MCS_ERR_NULL;
+    if (acc->freq_max == 0u || acc->freq_max > (size_t)MCS_POINTSET2D_MAX_FREQ ||
+        acc->key != key_of(acc) || acc->state == NULL)
+        return MCS_ERR_UNINIT;
+    return head_of(acc)->shape[0] == acc->freq_max ? MCS_OK : MCS_ERR_INVARIANT;
+}
+
+mcs_status mcs_pointset2d_size(size_t freq_max, unsigned flags, size_t *bytes)
+{
+    if (bytes == NULL)
+        return MCS_ERR_NULL;
+    layout lay;
+    mcs_status st = layout_of(freq_max, flags, &lay);
+    if (st == MCS_OK)
+        *bytes = lay.total;
+    return st;
+}
+
+/* The header over mem for checked arguments: arrays at their offsets, the
+ * statistics zeroed, the NUFFT plan built. */
+static void set_up(mcs_pointset2d *h, size_t fmax, unsigned flags, void *mem, const layout *lay)
+{
+    unsigned char *base = mcs_ps_aligned(mem);
+    memset(h, 0, sizeof *h);
+    h->freq_max = fmax;
+    h->flags = flags;
+    h->path = (flags & MCS_POINTSET_DIRECT_ONLY) != 0u ? MCS_POINTSET_PATH_DIRECT
+                                                        : MCS_POINTSET_PATH_AUTO;
+    h->mem = mem;
+    h->bytes = lay->total;
+    h->state = (void *)base;
+    h->mean = (double *)(void *)(base + lay->mean);
+    h->m2 = (double *)(void *)(base + lay->m2);
+    h->ring_mean = (double *)(void *)(base + lay->ring_mean);
+    h->ring_m2 = (double *)(void *)(base + lay->ring_m2);
+    h->re = (double *)(void *)(base + lay->re);
+    h->im = (double *)(void *)(base + lay->im);
+    h->phase = (double *)(void *)(base + lay->phase);
+    memset(base, 0, lay->stats);
+    ((mcs_ps_head *)(void *)base)->shape[0] = fmax;
+    if ((flags & MCS_POINTSET_DIRECT_ONLY) == 0u) {
+        h->stage = (double *)(void *)(base + lay->stage);
+        /* cannot fail: the size query above took the same arguments */
+        (void)mcs_nufft_init(&h->plan, 2u, fmax, MCS_POINTSET_NUFFT_TOL, base + lay->nufft,
+                             lay->nufft_bytes);
+    }
+    h->key = key_of(h);
+}
+
+mcs_status mcs_pointset2d_init(mcs_pointset2d *acc, size_t freq_max, unsigned flags, void *mem,
+                               size_t bytes)
+{
+    if (acc == NULL || mem == NULL)
+        return MCS_ERR_NULL;
+    layout lay;
+    mcs_status st = layout_of(freq_max, flags, &lay);
     if (st != MCS_OK)
         return st;
-    memset(acc, 0, sizeof *acc);
-    acc->freq_max = freq_max;
+    if (bytes < lay.total)
+        return MCS_ERR_SPACE;
+    if (mcs_overlap_(mem, lay.total, acc, sizeof *acc))
+        return MCS_ERR_ALIAS;
+    mcs_pointset2d h;
+    set_up(&h, freq_max, flags, mem, &lay);
+    *acc = h;
     return MCS_OK;
 }
 
-/* Annulus of the stored wave vector at column c (fx = c - F), row fy. */
-static size_t ring_of(size_t fmax, size_t c, size_t fy)
+mcs_status mcs_pointset2d_copy(mcs_pointset2d *dst, void *mem, size_t bytes,
+                               const mcs_pointset2d *src)
 {
-    size_t ax = c >= fmax ? c - fmax : fmax - c;
-    return mcs_ps_isqrt(ax * ax + fy * fy);
+    if (dst == NULL || mem == NULL)
+        return MCS_ERR_NULL;
+    mcs_status st = check_acc(src);
+    if (st != MCS_OK)
+        return st;
+    layout lay;
+    (void)layout_of(src->freq_max, src->flags, &lay); /* cannot fail: src passed init */
+    if (bytes < lay.total)
+        return MCS_ERR_SPACE;
+    if (mcs_overlap_(mem, lay.total, dst, sizeof *dst) ||
+        mcs_overlap_(mem, lay.total, src, sizeof *src) ||
+        mcs_overlap_(mem, lay.total, src->mem, src->bytes) ||
+        (dst != src && mcs_overlap_(dst, sizeof *dst, src, sizeof *src)))
+        return MCS_ERR_ALIAS;
+    mcs_pointset2d h;
+    set_up(&h, src->freq_max, src->flags, mem, &lay);
+    memcpy(h.state, src->state, lay.stats);
+    h.path = src->path;
+    h.wrap = src->wrap;
+    h.key = key_of(&h);
+    *dst = h;
+    return MCS_OK;
 }
+
+mcs_status mcs_pointset2d_set_path(mcs_pointset2d *acc, mcs_pointset_path path)
+{
+    mcs_status st = check_acc(acc);
+    if (st != MCS_OK)
+        return st;
+    const int direct_only = (acc->flags & MCS_POINTSET_DIRECT_ONLY) != 0u;
+    if (path != MCS_POINTSET_PATH_AUTO && path != MCS_POINTSET_PATH_DIRECT &&
+        path != MCS_POINTSET_PATH_NUFFT)
+        return MCS_ERR_DOMAIN;
+    if (path == MCS_POINTSET_PATH_NUFFT && direct_only)
+        return MCS_ERR_DOMAIN;
+    acc->path = path;
+    acc->key = key_of(acc);
+    return MCS_OK;
+}
+
+mcs_status mcs_pointset2d_set_wrap(mcs_pointset2d *acc, int wrap)
+{
+    mcs_status st = check_acc(acc);
+    if (st == MCS_OK && wrap != 0 && wrap != 1)
+        st = MCS_ERR_DOMAIN;
+    if (st != MCS_OK)
+        return st;
+    acc->wrap = wrap;
+    acc->key = key_of(acc);
+    return MCS_OK;
+}
+
+/* Points the NUFFT takes per transform: its output holds the staged ones. */
+static size_t chunk_of(const mcs_pointset2d *acc)
+{
+    const size_t side = 2u * acc->freq_max + 1u, modes = 2u * side * side;
+    return (modes > MCS_POINTSET_STAGE_MIN ? modes : (size_t)MCS_POINTSET_STAGE_MIN) / 2u;
+}
+
+/* The path of a trial of k points (acc checked). */
+static mcs_status path_of(const mcs_pointset2d *acc, size_t k, mcs_pointset_path *out)
+{
+    if (k == 0u)
+        return MCS_ERR_K_RANGE;
+    mcs_pointset_path p = acc->path;
+    if ((acc->flags & MCS_POINTSET_DIRECT_ONLY) != 0u)
+        p = MCS_POINTSET_PATH_DIRECT;
+    else if (p == MCS_POINTSET_PATH_NUFFT && k > (size_t)MCS_POINTSET_NUFFT_MAX_K)
+        return MCS_ERR_K_RANGE;
+    else if (p == MCS_POINTSET_PATH_AUTO)
+        p = k > (size_t)MCS_POINTSET_NUFFT_MAX_K
+                ? MCS_POINTSET_PATH_DIRECT
+                : mcs_ps_auto_path_(2, acc->freq_max, acc->plan.n, chunk_of(acc), k);
+    *out = p;
+    return MCS_OK;
+}
+
+mcs_status mcs_pointset2d_path_for(const mcs_pointset2d *acc, size_t k, mcs_pointset_path *path)
+{
+    mcs_status st = path == NULL ? MCS_ERR_NULL : check_acc(acc);
+    mcs_pointset_path p = MCS_POINTSET_PATH_DIRECT;
+    if (st == MCS_OK)
+        st = path_of(acc, k, &p);
+    if (st == MCS_OK)
+        *path = p;
+    return st;
+}
+
+/* ---- the direct path ---- */
 
 /* Phase rows of point slot p for point q of k (a padding slot past the last
  * point contributes 0): x row over fx = -F..F (negative fx by conjugation,
  * exactly), y row over fy = 0..F scaled by the amplitude. */
-static void phase_rows(mcs_pointset2d *acc, int p, size_t k, mcs_points_ points, size_t q)
+static void phase_rows(mcs_pointset2d *acc, int p, size_t k, const mcs_ps_points *pts, size_t q)
 {
-    const size_t fmax = acc->freq_max;
-    const double x = q < k ? mcs_point_(points, 2u * q) : 0.0;
-    const double y = q < k ? mcs_point_(points, 2u * q + 1u) : 0.0;
-    double *xr = acc->phase[p][XR], *xi = acc->phase[p][XI];
+    const size_t fmax = acc->freq_max, stride = 2u * fmax + 2u;
+    const double x = q < k ? mcs_ps_coord(pts, q, 0) : 0.0;
+    const double y = q < k ? mcs_ps_coord(pts, q, 1) : 0.0;
+    double *rows = acc->phase + (size_t)(4 * p) * stride;
+    double *xr = rows + XR * stride, *xi = rows + XI * stride;
     mcs_ps_phase_row(x, 1.0, fmax, xr + fmax, xi + fmax);
     for (size_t f = 1; f <= fmax; ++f) {
         xr[fmax - f] = xr[fmax + f];
@@ -60,103 +267,186 @@ static void phase_rows(mcs_pointset2d *acc, int p, size_t k, mcs_points_ points,
     }
     xr[2u * fmax + 1u] = 0.0; /* the padding column */
     xi[2u * fmax + 1u] = 0.0;
-    mcs_ps_phase_row(y, q < k ? 1.0 : 0.0, fmax, acc->phase[p][YR], acc->phase[p][YI]);
+    mcs_ps_phase_row(y, q < k ? 1.0 : 0.0, fmax, rows + YR * stride, rows + YI * stride);
 }
 
 /* S(fx, fy) += sum over the four slots of ex_p(fx) ey_p(fy): one pass over
  * the stored wave vectors per four points. */
 static void accumulate_four(mcs_pointset2d *acc)
 {
-    double (*ph)[4][MCS_POINTSET2D_ROW] = acc->phase;
-    const double *const x[8] = {ph[0][XR], ph[0][XI], ph[1][XR], ph[1][XI],
-                                ph[2][XR], ph[2][XI], ph[3][XR], ph[3][XI]};
-    const double *const y[8] = {ph[0][YR], ph[0][YI], ph[1][YR], ph[1][YI],
-                                ph[2][YR], ph[2][YI], ph[3][YR], ph[3][YI]};
-    mcs_ps_outer4(acc->freq_max + 1u, 2u * acc->freq_max + 2u, acc->re, acc->im, x, y);
+    const size_t stride = 2u * acc->freq_max + 2u;
+    const double *ph = acc->phase;
+#define ROW_(p, r) (ph + (size_t)(4 * (p) + (r)) * stride)
+    const double *const x[8] = {ROW_(0, XR), ROW_(0, XI), ROW_(1, XR), ROW_(1, XI),
+                                ROW_(2, XR), ROW_(2, XI), ROW_(3, XR), ROW_(3, XI)};
+    const double *const y[8] = {ROW_(0, YR), ROW_(0, YI), ROW_(1, YR), ROW_(1, YI),
+                                ROW_(2, YR), ROW_(2, YI), ROW_(3, YR), ROW_(3, YI)};
+#undef ROW_
+    mcs_ps_outer4(acc->freq_max + 1u, stride, acc->re, acc->im, x, y);
 }
 
-/* Per-trial P into the Welford means, and the per-trial annulus averages
- * into theirs. The ring sums reuse the phase scratch (free by now). */
-static void update_statistics(mcs_pointset2d *acc, size_t k)
+static void direct_sums(mcs_pointset2d *acc, size_t k, const mcs_ps_points *pts)
 {
-    const size_t fmax = acc->freq_max, row = 2u * fmax + 1u, stride = row + 1u;
-    double *ring_sum = acc->phase[0][XR], *ring_n = acc->phase[0][XI];
-    memset(ring_sum, 0, (fmax + 1u) * sizeof *ring_sum);
-    memset(ring_n, 0, (fmax + 1u) * sizeof *ring_n);
-    acc->count++;
-    const double inv_k = 1.0 / (double)k;
-    for (size_t fy = 0; fy <= fmax; ++fy) {
-        const double w = fy == 0u ? 1.0 : 2.0;
-        for (size_t c = 0; c < row; ++c) {
-            size_t i = fy * stride + c;
-            double p = (acc->re[i] * acc->re[i] + acc->im[i] * acc->im[i]) * inv_k;
-            mcs_ps_welford(&acc->mean[i], &acc->m2[i], p, acc->count);
-            size_t r = ring_of(fmax, c, fy);
-            if (r <= fmax) {
-                ring_sum[r] += w * p;
-                ring_n[r] += w;
-            }
-        }
-    }
-    for (size_t r = 0; r <= fmax; ++r)
-        mcs_ps_welford(&acc->ring_mean[r], &acc->ring_m2[r], ring_sum[r] / ring_n[r],
-                       acc->count);
-}
-
-/* The body of mcs_pointset2d_add and mcs_pointset2d_add_f, over double or
- * float points (internal.h): the same bits from the widened points. */
-static MCS_ALWAYS_INLINE mcs_status add_points(mcs_pointset2d *acc, size_t k, mcs_points_ points)
-{
-    mcs_status st = mcs_points_addr_(points) == NULL ? MCS_ERR_NULL : check_acc(acc);
-    if (st == MCS_OK && k == 0u)
-        st = MCS_ERR_K_RANGE;
-    if (st == MCS_OK)
-        st = k > SIZE_MAX / 2u ? MCS_ERR_POINT_RANGE : mcs_check_points_(2u * k, points, NULL);
-    if (st == MCS_OK)
-        st = mcs_check_count_(acc->count, 1u);
-    if (st != MCS_OK)
-        return st;
     mcs_ps_clear(cells_of(acc->freq_max), acc->re, acc->im);
     for (size_t j = 0; j < k; j += 4u) {
         for (int p = 0; p < 4; ++p)
-            phase_rows(acc, p, k, points, j + (size_t)p);
+            phase_rows(acc, p, k, pts, j + (size_t)p);
         accumulate_four(acc);
     }
+}
+
+/* ---- the NUFFT path ---- */
+
+/* The sums from the NUFFT, chunk_of(acc) points per transform: the caller's
+ * interleaved points where they are, others (planar, or with a wrapped 1.0)
+ * staged as interleaved doubles in the output array, which the transform
+ * may overwrite. Every layout and type of the same values hands the same
+ * doubles to the same transforms, so gives the same bits. */
+static void nufft_sums(mcs_pointset2d *acc, size_t k, const mcs_ps_points *pts, int ones)
+{
+    const size_t fmax = acc->freq_max, side = 2u * fmax + 1u, stride = side + 1u;
+    const size_t chunk = chunk_of(acc);
+    double *stage = acc->stage;
+    mcs_ps_clear(cells_of(fmax), acc->re, acc->im);
+    for (size_t j0 = 0; j0 < k; j0 += chunk) {
+        const size_t m = k - j0 < chunk ? k - j0 : chunk;
+        /* cannot fail: the points are checked, outside the buffer, m >= 1 */
+        if (pts->interleaved && !ones && pts->f[0] != NULL) {
+            (void)mcs_nufft_type1_f(&acc->plan, pts->f[0] + 2u * j0, m, stage);
+        } else if (pts->interleaved && !ones) {
+            (void)mcs_nufft_type1(&acc->plan, pts->d[0] + 2u * j0, m, stage);
+        } else {
+            for (size_t j = 0; j < m; ++j) {
+                stage[2u * j] = mcs_ps_coord(pts, j0 + j, 0);
+                stage[2u * j + 1u] = mcs_ps_coord(pts, j0 + j, 1);
+            }
+            (void)mcs_nufft_type1(&acc->plan, stage, m, stage);
+        }
+        /* c at (fx, fy >= 0) is complex mode (fy + F) side + fx + F */
+        for (size_t fy = 0; fy <= fmax; ++fy) {
+            const double *c = stage + 2u * (fy + fmax) * side;
+            double *re = acc->re + fy * stride, *im = acc->im + fy * stride;
+            for (size_t col = 0; col < side; ++col) {
+                re[col] += c[2u * col];
+                im[col] += c[2u * col + 1u];
+            }
+        }
+    }
+}
+
+/* ---- the statistics, whichever path gave the sums ---- */
+
+/* Per-trial P into the Welford means, and the per-trial annulus averages
+ * into theirs. The ring sums and each row's annulus of every |fx| reuse the
+ * phase scratch (free by now); along a row the annulus of |fx| only grows,
+ * so it is found by steps instead of a square root per wave vector. */
+static void update_statistics(mcs_pointset2d *acc, size_t k)
+{
+    const size_t fmax = acc->freq_max, row = 2u * fmax + 1u, stride = row + 1u;
+    double *ring_sum = acc->phase, *ring_n = acc->phase + stride, *ring_at = acc->phase + 2u * stride;
+    memset(ring_sum, 0, (fmax + 1u) * sizeof *ring_sum);
+    memset(ring_n, 0, (fmax + 1u) * sizeof *ring_n);
+    mcs_ps_head *head = (mcs_ps_head *)(void *)acc->state;
+    const uint64_t count = ++head->count;
+    const double inv_k = 1.0 / (double)k;
+    for (size_t fy = 0; fy <= fmax; ++fy) {
+        const double w = fy == 0u ? 1.0 : 2.0;
+        size_t r = fy;
+        for (size_t ax = 0; ax <= fmax; ++ax) {
+            while ((r + 1u) * (r + 1u) <= ax * ax + fy * fy)
+                ++r;
+            ring_at[ax] = (double)r;
+        }
+        for (size_t c = 0; c < row; ++c) {
+            const size_t i = fy * stride + c;
+            const double p = (acc->re[i] * acc->re[i] + acc->im[i] * acc->im[i]) * inv_k;
+            mcs_ps_welford(&acc->mean[i], &acc->m2[i], p, count);
+            const size_t r_c = (size_t)ring_at[c >= fmax ? c - fmax : fmax - c];
+            if (r_c <= fmax) {
+                ring_sum[r_c] += w * p;
+                ring_n[r_c] += w;
+            }
+        }
+    }
+    for (size_t q = 0; q <= fmax; ++q)
+        mcs_ps_welford(&acc->ring_mean[q], &acc->ring_m2[q], ring_sum[q] / ring_n[q], count);
+}
+
+/* The body of every add: the checks in the order the header gives, then
+ * the sums by the trial's path and the statistics. */
+static mcs_status add_points(mcs_pointset2d *acc, size_t k, const mcs_ps_points *pts)
+{
+    mcs_status st = mcs_ps_points_null(pts) ? MCS_ERR_NULL : check_acc(acc);
+    mcs_pointset_path path = MCS_POINTSET_PATH_DIRECT;
+    if (st == MCS_OK)
+        st = path_of(acc, k, &path);
+    if (st == MCS_OK && k > SIZE_MAX / 2u)
+        st = MCS_ERR_POINT_RANGE; /* 2 k coordinates cannot fit memory */
+    if (st == MCS_OK && (mcs_ps_points_overlap(pts, k, acc, sizeof *acc) ||
+                         mcs_ps_points_overlap(pts, k, acc->mem, acc->bytes)))
+        st = MCS_ERR_ALIAS;
+    int ones = 0;
+    if (st == MCS_OK)
+        st = mcs_ps_check_points(pts, k, acc->wrap, &ones);
+    if (st == MCS_OK)
+        st = mcs_check_count_(count_of(acc), 1u);
+    if (st != MCS_OK)
+        return st;
+    if (path == MCS_POINTSET_PATH_NUFFT)
+        nufft_sums(acc, k, pts, ones);
+    else
+        direct_sums(acc, k, pts);
     update_statistics(acc, k);
     return MCS_OK;
 }
 
 mcs_status mcs_pointset2d_add(mcs_pointset2d *acc, size_t k, const double *points)
 {
-    return add_points(acc, k, mcs_points_d_(points));
+    const mcs_ps_points pts = mcs_ps_points_d(points, NULL, 2);
+    return add_points(acc, k, &pts);
 }
 
 mcs_status mcs_pointset2d_add_f(mcs_pointset2d *acc, size_t k, const float *points)
 {
-    return add_points(acc, k, mcs_points_f_(points));
+    const mcs_ps_points pts = mcs_ps_points_f(points, NULL, 2);
+    return add_points(acc, k, &pts);
+}
+
+mcs_status mcs_pointset2d_add_planar(mcs_pointset2d *acc, size_t k, const double *x,
+                                     const double *y)
+{
+    const mcs_ps_points pts = mcs_ps_points_d(x, y, 2);
+    return y == NULL ? MCS_ERR_NULL : add_points(acc, k, &pts);
+}
+
+mcs_status mcs_pointset2d_add_planar_f(mcs_pointset2d *acc, size_t k, const float *x,
+                                       const float *y)
+{
+    const mcs_ps_points pts = mcs_ps_points_f(x, y, 2);
+    return y == NULL ? MCS_ERR_NULL : add_points(acc, k, &pts);
 }
 
 mcs_status mcs_pointset2d_merge(mcs_pointset2d *dst, const mcs_pointset2d *src)
 {
     mcs_status st = mcs_check_pair_(check_acc(dst), check_acc(src));
     if (st == MCS_OK)
-        st = mcs_check_merge_(dst, src, sizeof *dst, dst->freq_max == src->freq_max, dst->count,
-                              src->count);
-    if (st != MCS_OK || src->count == 0u)
+        st = mcs_ps_check_merge(dst, src, sizeof *dst, dst->mem, dst->bytes, src->mem, src->bytes,
+                                dst->freq_max == src->freq_max, count_of(dst), count_of(src));
+    if (st != MCS_OK || count_of(src) == 0u)
         return st;
-    const uint64_t na = dst->count, nb = src->count;
+    const uint64_t na = count_of(dst), nb = count_of(src);
     const size_t fmax = dst->freq_max;
     mcs_ps_chan_cells(cells_of(fmax), dst->mean, dst->m2, na, src->mean, src->m2, nb);
     mcs_ps_chan_cells(fmax + 1u, dst->ring_mean, dst->ring_m2, na, src->ring_mean, src->ring_m2,
                       nb);
-    dst->count = na + nb;
+    ((mcs_ps_head *)(void *)dst->state)->count = na + nb;
     return MCS_OK;
 }
 
 mcs_status mcs_pointset2d_count(const mcs_pointset2d *acc, uint64_t *count)
 {
     mcs_status st = count == NULL ? MCS_ERR_NULL : check_acc(acc);
-    return mcs_ps_count_out(st, st == MCS_OK ? acc->count : 0u, count);
+    return mcs_ps_count_out(st, st == MCS_OK ? count_of(acc) : 0u, count);
 }
 
 /* <P(fx, fy)> (want_stderr 0) or its standard error (1), read at the stored
@@ -175,7 +465,7 @@ static mcs_status read_power(const mcs_pointset2d *acc, long fx, long fy, int wa
         fy = -fy;
     }
     const size_t i = (size_t)fy * (2u * fmax + 2u) + (size_t)(fx + (long)fmax);
-    return mcs_ps_read(acc->mean[i], acc->m2[i], acc->count, want_stderr, out);
+    return mcs_ps_read(acc->mean[i], acc->m2[i], count_of(acc), want_stderr, out);
 }
 
 mcs_status mcs_pointset2d_power(const mcs_pointset2d *acc, long freq_x, long freq_y, double *out)
@@ -200,31 +490,40 @@ mcs_status mcs_pointset2d_radial(const mcs_pointset2d *acc, size_t radius, doubl
 {
     mcs_status st = check_radius(acc, radius, out);
     return st != MCS_OK ? st
-                        : mcs_ps_read(acc->ring_mean[radius], 0.0, acc->count, 0, out);
+                        : mcs_ps_read(acc->ring_mean[radius], 0.0, count_of(acc), 0, out);
 }
 
 mcs_status mcs_pointset2d_radial_stderr(const mcs_pointset2d *acc, size_t radius, double *out)
 {
     mcs_status st = check_radius(acc, radius, out);
     return st != MCS_OK ? st
-                        : mcs_ps_read(0.0, acc->ring_m2[radius], acc->count, 1, out);
+                        : mcs_ps_read(0.0, acc->ring_m2[radius], count_of(acc), 1, out);
 }
 
-/* The mean periodogram over annulus r, the whole plane counted. */
+/* The mean periodogram over annulus r (r <= F), the whole plane counted:
+ * its rows fy = 0..r, in each the columns fx = -hi..-lo and lo..hi in
+ * ascending order (as a pass over the whole row would meet them; the
+ * stored half plane stands for both signs of fy). */
 static void ring_moments(const mcs_pointset2d *acc, size_t r, mcs_ps_ring *g)
 {
-    const size_t fmax = acc->freq_max, row = 2u * fmax + 1u;
+    const size_t fmax = acc->freq_max, stride = 2u * fmax + 2u;
     for (int pass = 0; pass < 2; ++pass)
-        for (size_t fy = 0; fy <= fmax; ++fy)
-            for (size_t c = 0; c < row; ++c)
-                if (ring_of(fmax, c, fy) == r)
-                    mcs_ps_ring_add(g, pass, fy == 0u ? 1.0 : 2.0, acc->mean[fy * (row + 1u) + c]);
+        for (size_t fy = 0; fy <= r; ++fy) {
+            size_t lo, hi;
+            mcs_ps_ring_span(r, fy, &lo, &hi);
+            const double w = fy == 0u ? 1.0 : 2.0;
+            const double *centre = acc->mean + fy * stride + fmax;
+            for (size_t ax = hi; ax >= lo && ax > 0u; --ax)
+                mcs_ps_ring_add(g, pass, w, *(centre - ax));
+            for (size_t ax = lo; ax <= hi; ++ax)
+                mcs_ps_ring_add(g, pass, w, centre[ax]);
+        }
 }
 
 mcs_status mcs_pointset2d_anisotropy(const mcs_pointset2d *acc, size_t radius, double *out_db)
 {
     mcs_status st = check_radius(acc, radius, out_db);
-    if (st == MCS_OK && acc->count == 0u)
+    if (st == MCS_OK && count_of(acc) == 0u)
         st = MCS_ERR_EMPTY;
     if (st != MCS_OK)
         return st;
@@ -247,7 +546,7 @@ mcs_status mcs_pointset2d_ring_size(size_t radius, size_t *out)
 {
     if (out == NULL)
         return MCS_ERR_NULL;
-    if (radius > (size_t)MCS_MAX_FREQ)
+    if (radius > (size_t)MCS_POINTSET2D_MAX_FREQ)
         return MCS_ERR_FREQ_RANGE;
     *out = disc_size((radius + 1u) * (radius + 1u)) - disc_size(radius * radius);
     return MCS_OK;

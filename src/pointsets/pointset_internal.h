@@ -1,6 +1,8 @@
 /* Helpers shared by the point-set periodogram accumulators (pointset.c,
  * pointset2d.c, pointset_exact.c) and the binned 2D spectrum (spectrum2d.c,
- * spectrum2d_exact.c): the outer-product kernel of a trial, the per-cell
+ * spectrum2d_exact.c), and by their records (io/io_points.c): the layout of
+ * the caller's buffer, the caller's points (interleaved or planar, double or
+ * float, wrapped or not), the outer-product kernel of a trial, the per-cell
  * Welford and Chan updates, the read-out of a mean or its standard error,
  * and the annulus arithmetic; private header. */
 #ifndef MCSPEC_POINTSET_INTERNAL_H
@@ -12,7 +14,175 @@
 #include <string.h>
 
 #include "accumulators/acc_internal.h"
+#include "mcspec/pointset.h"
+#include "mcspec/spectrum2d.h"
 #include "mcspec/status.h"
+
+_Static_assert(sizeof(mcs_pointset_head) == sizeof(mcs_spectrum2d_head) &&
+                   offsetof(mcs_pointset_head, count) == offsetof(mcs_spectrum2d_head, count),
+               "one head layout for every object over caller memory (io_points.c)");
+
+/* ---- the caller's buffer ----
+ * Every array starts at a multiple of MCS_PS_ALIGN from the first such
+ * address in the buffer (a cache line), and the size asked of the caller
+ * adds MCS_PS_ALIGN - 1 for that first step. The statistics come first,
+ * behind a head that holds the shape words and the trial count (so a
+ * buffer's statistics are one block: a copy is one memcpy, and a record's
+ * fields are offsets from the head, io_points.c), then the scratch. */
+#define MCS_PS_ALIGN 64u
+
+typedef mcs_pointset_head mcs_ps_head; /* F (and 0), or N1, N2; trials added */
+
+/* The first MCS_PS_ALIGN boundary at or after mem. */
+static inline unsigned char *mcs_ps_aligned(void *mem)
+{
+    const uintptr_t at = (uintptr_t)mem;
+    return (unsigned char *)mem + (MCS_PS_ALIGN - at % MCS_PS_ALIGN) % MCS_PS_ALIGN;
+}
+
+/* Offsets of a buffer's arrays, handed out in order: mcs_ps_take gives the
+ * offset of count elements of elem bytes and moves on by their size rounded
+ * up to MCS_PS_ALIGN; any size that would pass SIZE_MAX marks the layout
+ * as overflowed (its total is then SIZE_MAX: refused as too large). */
+typedef struct {
+    size_t at;
+    int overflow;
+} mcs_ps_carve;
+
+static inline size_t mcs_ps_take(mcs_ps_carve *c, size_t count, size_t elem)
+{
+    const size_t half = SIZE_MAX / 2u, off = c->at;
+    if (c->overflow || (elem > 0u && count > half / elem)) {
+        c->overflow = 1;
+        return 0u;
+    }
+    const size_t bytes = (count * elem + (MCS_PS_ALIGN - 1u)) / MCS_PS_ALIGN * MCS_PS_ALIGN;
+    if (bytes > half - off) { /* offsets stay below SIZE_MAX / 2 */
+        c->overflow = 1;
+        return 0u;
+    }
+    c->at = off + bytes;
+    return off;
+}
+
+/* Bytes to ask of the caller for the offsets handed out, or SIZE_MAX. */
+static inline size_t mcs_ps_total(const mcs_ps_carve *c)
+{
+    return c->overflow ? SIZE_MAX : c->at + (MCS_PS_ALIGN - 1u);
+}
+
+/* A hash of an object header's words (its key): a header that init did not
+ * set (zeroed, garbage, edited) fails it before any pointer is followed. */
+static inline uintptr_t mcs_ps_hash(const uintptr_t *words, size_t n)
+{
+    uintptr_t h = (uintptr_t)0x70737431u; /* "pst1" */
+    for (size_t j = 0; j < n; ++j) {
+        h ^= words[j];
+        h *= (uintptr_t)0x9e3779b1u;
+        h ^= h >> 15;
+    }
+    return h;
+}
+
+/* The key's words of a NUFFT plan held in a header (all of its fields, the
+ * doubles by their bits): a header whose plan was edited fails the
+ * object's own check, before the plan is used. Writes 15 words. */
+static inline void mcs_ps_plan_words(const mcs_nufft *p, uintptr_t *w)
+{
+    uint64_t beta = 0u, tol = 0u;
+    memcpy(&beta, &p->beta, sizeof beta);
+    memcpy(&tol, &p->tol, sizeof tol);
+    w[0] = (uintptr_t)p->dim, w[1] = (uintptr_t)p->freq, w[2] = (uintptr_t)p->n;
+    w[3] = (uintptr_t)p->width, w[4] = (uintptr_t)beta, w[5] = (uintptr_t)tol;
+    w[6] = (uintptr_t)p->fft_len, w[7] = (uintptr_t)p->bytes, w[8] = (uintptr_t)p->mem;
+    w[9] = (uintptr_t)p->grid, w[10] = (uintptr_t)p->scratch, w[11] = (uintptr_t)p->corr;
+    w[12] = (uintptr_t)p->twiddle, w[13] = (uintptr_t)p->fft, w[14] = p->key;
+}
+#define MCS_PS_PLAN_WORDS 15
+
+/* ---- the caller's points ----
+ * d[c] (or f[c] for float points) is coordinate c of point 0, and point j's
+ * is step elements further on: interleaved 2D points have d[1] = d[0] + 1
+ * and step 2, planar ones their own arrays and step 1, 1D points step 1. */
+typedef struct {
+    const double *d[2];
+    const float *f[2];
+    size_t step;
+    int dims;        /* 1 or 2 */
+    int interleaved; /* d[0] (or f[0]) holds the points as the NUFFT takes them */
+} mcs_ps_points;
+
+static inline mcs_ps_points mcs_ps_points_d(const double *x, const double *y, int dims)
+{
+    mcs_ps_points p = {{x, y}, {NULL, NULL}, 1u, dims, 0};
+    if (dims == 2 && y == NULL) { /* interleaved */
+        p.d[1] = x != NULL ? x + 1 : NULL;
+        p.step = 2u;
+    }
+    p.interleaved = dims == 1 || y == NULL;
+    return p;
+}
+
+static inline mcs_ps_points mcs_ps_points_f(const float *x, const float *y, int dims)
+{
+    mcs_ps_points p = {{NULL, NULL}, {x, y}, 1u, dims, 0};
+    if (dims == 2 && y == NULL) {
+        p.f[1] = x != NULL ? x + 1 : NULL;
+        p.step = 2u;
+    }
+    p.interleaved = dims == 1 || y == NULL;
+    return p;
+}
+
+static inline int mcs_ps_points_null(const mcs_ps_points *p)
+{
+    const int c = p->dims - 1;
+    return p->f[0] != NULL ? p->f[c] == NULL : (p->d[0] == NULL || p->d[c] == NULL);
+}
+
+/* Coordinate c of point j as given, widened exactly from float. */
+static inline double mcs_ps_raw(const mcs_ps_points *p, size_t j, int c)
+{
+    return p->f[0] != NULL ? (double)p->f[c][j * p->step] : p->d[c][j * p->step];
+}
+
+/* The same, with 1.0 taken as 0.0 (a check let it in only under wrap). */
+static inline double mcs_ps_coord(const mcs_ps_points *p, size_t j, int c)
+{
+    const double v = mcs_ps_raw(p, j, c);
+    return v == 1.0 ? 0.0 : v;
+}
+
+/* Every coordinate of the k points in [0, 1), or [0, 1] with wrap (NaN in
+ * neither): MCS_ERR_POINT_RANGE otherwise. *ones: some coordinate is 1.0. */
+static inline mcs_status mcs_ps_check_points(const mcs_ps_points *p, size_t k, int wrap, int *ones)
+{
+    const double top = wrap ? 1.0 : 0x1.fffffffffffffp-1;
+    int one = 0;
+    for (size_t j = 0; j < k; ++j)
+        for (int c = 0; c < p->dims; ++c) {
+            const double v = mcs_ps_raw(p, j, c);
+            if (!(v >= 0.0 && v <= top))
+                return MCS_ERR_POINT_RANGE;
+            one |= v == 1.0;
+        }
+    *ones = one;
+    return MCS_OK;
+}
+
+/* Whether the k points share a byte with [obj, obj + bytes). */
+static inline int mcs_ps_points_overlap(const mcs_ps_points *p, size_t k, const void *obj,
+                                        size_t bytes)
+{
+    const size_t elem = p->f[0] != NULL ? sizeof(float) : sizeof(double);
+    const size_t span = mcs_bytes_((k - 1u) * p->step + 1u, elem);
+    int hit = 0;
+    for (int c = 0; c < p->dims; ++c) {
+        const void *a = p->f[0] != NULL ? (const void *)p->f[c] : (const void *)p->d[c];
+        hit |= mcs_overlap_(a, span, obj, bytes);
+    }
+    return hit;
+}
 
 /* Phases are advanced by one complex multiplication per frequency; every
  * MCS_PS_ANCHOR steps they are recomputed from sin and cos, so rounding
@@ -190,12 +360,26 @@ static inline size_t mcs_ps_isqrt(size_t q)
     return r;
 }
 
-/* How many whole-plane wave vectors (+-ax, +-ay) the quadrant wave vector
- * (ax, ay) stands for if it lies in annulus r (r <= |f| < r + 1), else 0. */
-static inline double mcs_ps_ring_weight(size_t ax, size_t ay, size_t r)
+/* The columns ax = lo..hi (none when lo > hi) of row ay >= 0 of the
+ * quadrant that lie in annulus r (r^2 <= ax^2 + ay^2 < (r + 1)^2): an
+ * annulus is read in O(r) rows of O(1) isqrt each, not over the whole
+ * square. r below 2^31 (r^2 fits size_t on 32-bit targets for the caps). */
+static inline void mcs_ps_ring_span(size_t r, size_t ay, size_t *lo, size_t *hi)
 {
-    if (mcs_ps_isqrt(ax * ax + ay * ay) != r)
-        return 0.0;
+    if (ay > r) {
+        *lo = 1u;
+        *hi = 0u;
+        return;
+    }
+    const size_t below = r * r - ay * ay; /* ax^2 >= below */
+    *lo = below == 0u ? 0u : mcs_ps_isqrt(below - 1u) + 1u;
+    *hi = mcs_ps_isqrt((r + 1u) * (r + 1u) - 1u - ay * ay);
+}
+
+/* How many whole-plane wave vectors (+-ax, +-ay) the quadrant wave vector
+ * (ax, ay) stands for. */
+static inline double mcs_ps_ring_mult(size_t ax, size_t ay)
+{
     return (ax > 0u ? 2.0 : 1.0) * (ay > 0u ? 2.0 : 1.0);
 }
 
@@ -229,6 +413,32 @@ static inline mcs_status mcs_ps_ring_db(const mcs_ps_ring *g, double mean_min,
         return MCS_ERR_DOMAIN;
     *out_db = 10.0 * log10(var / (mean * mean));
     return MCS_OK;
+}
+
+/* ---- the cost model of AUTO (pointset_cost.c) ----
+ * The faster path for a trial of k points in dims = 1 or 2 at cutoff freq,
+ * with a NUFFT grid of n points per axis that takes at most chunk points per
+ * transform. */
+mcs_pointset_path mcs_ps_auto_path_(int dims, size_t freq, size_t n, size_t chunk, size_t k);
+
+/* The checks of merging src into dst once both passed their own
+ * (mcs_check_pair_): MISMATCH unless same_shape, COUNT if the counts would
+ * pass MCS_MAX_COUNT, ALIAS for distinct objects whose headers (hdr bytes)
+ * or buffers overlap in any way (dst == src is allowed: it doubles). */
+static inline mcs_status mcs_ps_check_merge(const void *dst, const void *src, size_t hdr,
+                                            const void *dst_mem, size_t dst_bytes,
+                                            const void *src_mem, size_t src_bytes,
+                                            int same_shape, uint64_t dst_count,
+                                            uint64_t src_count)
+{
+    if (!same_shape)
+        return MCS_ERR_MISMATCH;
+    mcs_status st = mcs_check_count_(dst_count, src_count);
+    if (st == MCS_OK && dst != src &&
+        (mcs_overlap_(dst, hdr, src, hdr) || mcs_overlap_(dst_mem, dst_bytes, src_mem, src_bytes) ||
+         mcs_overlap_(dst, hdr, src_mem, src_bytes) || mcs_overlap_(src, hdr, dst_mem, dst_bytes)))
+        st = MCS_ERR_ALIAS;
+    return st;
 }
 
 #endif /* MCSPEC_POINTSET_INTERNAL_H */

@@ -6,7 +6,8 @@
 #include <string.h>
 
 /* Layout: wave vector (k1, k2), k2 = 0..N2/2, at k2 * stride + k1 with
- * stride = N1 rounded up to even (the pad column stays 0, never read). */
+ * stride = N1 rounded up to even (the pad column stays 0, never read); the
+ * arrays in the caller's buffer behind the head (shape words, count). */
 
 enum { XR = 0, XI = 1, YR = 2, YI = 3 };
 
@@ -16,25 +17,96 @@ static size_t stride_of(size_t n_x)
 }
 
 /* Stored wave vectors of an N1 x N2 plane: rows k2 = 0..N2/2. */
+static size_t cells_for(size_t n_x, size_t n_y)
+{
+    return stride_of(n_x) * (n_y / 2u + 1u);
+}
+
 static size_t cells_of(const mcs_spectrum2d *acc)
 {
-    return stride_of(acc->n_x) * (acc->n_y / 2u + 1u);
+    return cells_for(acc->n_x, acc->n_y);
+}
+
+/* Entries of each per-point twiddle row: N1 padded to even (x rows) or
+ * N2/2 + 1 (y rows), whichever is more. */
+static size_t row_len_for(size_t n_x, size_t n_y)
+{
+    const size_t x = stride_of(n_x), y = n_y / 2u + 1u;
+    return x > y ? x : y;
 }
 
 static int side_ok(size_t n)
 {
-    return n >= 1u && n <= (size_t)MCS_MAX_SIDE;
+    return n >= 1u && n <= (size_t)MCS_SPECTRUM2D_MAX_SIDE;
 }
 
-/* MCS_ERR_NULL without acc, MCS_ERR_UNINIT unless it came from init,
- * MCS_ERR_INVARIANT for a count past the largest. O(1). */
+/* Offsets of the buffer's arrays from its first 64-byte boundary (the
+ * head's), the end of the statistics, and the bytes asked of the caller. */
+typedef struct {
+    size_t mean_re, mean_im, m2_s, mean_pow, m2_pow, stats;
+    size_t cos_x, sin_x, cos_y, sin_y, re, im, rows, total;
+} layout;
+
+static mcs_status layout_of(size_t n_x, size_t n_y, layout *lay)
+{
+    memset(lay, 0, sizeof *lay);
+    if (!side_ok(n_x) || !side_ok(n_y))
+        return MCS_ERR_N_RANGE;
+    const size_t cells = cells_for(n_x, n_y), d = sizeof(double);
+    mcs_ps_carve c = {0u, 0};
+    (void)mcs_ps_take(&c, 1u, sizeof(mcs_ps_head));
+    lay->mean_re = mcs_ps_take(&c, cells, d);
+    lay->mean_im = mcs_ps_take(&c, cells, d);
+    lay->m2_s = mcs_ps_take(&c, cells, d);
+    lay->mean_pow = mcs_ps_take(&c, cells, d);
+    lay->m2_pow = mcs_ps_take(&c, cells, d);
+    lay->stats = c.at;
+    lay->cos_x = mcs_ps_take(&c, n_x, d);
+    lay->sin_x = mcs_ps_take(&c, n_x, d);
+    lay->cos_y = mcs_ps_take(&c, n_y, d);
+    lay->sin_y = mcs_ps_take(&c, n_y, d);
+    lay->re = mcs_ps_take(&c, cells, d);
+    lay->im = mcs_ps_take(&c, cells, d);
+    lay->rows = mcs_ps_take(&c, 16u * row_len_for(n_x, n_y), d);
+    lay->total = mcs_ps_total(&c);
+    return lay->total == SIZE_MAX ? MCS_ERR_N_RANGE : MCS_OK;
+}
+
+static uintptr_t key_of(const mcs_spectrum2d *a)
+{
+    const uintptr_t words[] = {
+        (uintptr_t)a->n_x,     (uintptr_t)a->n_y,     (uintptr_t)a->wrap,  (uintptr_t)a->mem,
+        (uintptr_t)a->bytes,   (uintptr_t)a->state,   (uintptr_t)a->mean_re,
+        (uintptr_t)a->mean_im, (uintptr_t)a->m2_s,    (uintptr_t)a->mean_pow,
+        (uintptr_t)a->m2_pow,  (uintptr_t)a->cos_x,   (uintptr_t)a->sin_x, (uintptr_t)a->cos_y,
+        (uintptr_t)a->sin_y,   (uintptr_t)a->re,      (uintptr_t)a->im,    (uintptr_t)a->rows,
+        (uintptr_t)0x73u};
+    return mcs_ps_hash(words, sizeof words / sizeof words[0]);
+}
+
+static const mcs_ps_head *head_of(const mcs_spectrum2d *acc)
+{
+    return (const mcs_ps_head *)(const void *)acc->state;
+}
+
+static uint64_t count_of(const mcs_spectrum2d *acc)
+{
+    return head_of(acc)->count;
+}
+
+/* MCS_ERR_NULL without acc, MCS_ERR_UNINIT unless init set its header,
+ * MCS_ERR_INVARIANT for a buffer whose head no longer says N1, N2 or whose
+ * count is past the largest. O(1). */
 static mcs_status check_acc(const mcs_spectrum2d *acc)
 {
     if (acc == NULL)
         return MCS_ERR_NULL;
-    if (!side_ok(acc->n_x) || !side_ok(acc->n_y))
+    if (!side_ok(acc->n_x) || !side_ok(acc->n_y) || acc->key != key_of(acc) || acc->state == NULL)
         return MCS_ERR_UNINIT;
-    return acc->count <= MCS_SPECTRUM_MAX_COUNT ? MCS_OK : MCS_ERR_INVARIANT;
+    const mcs_ps_head *head = head_of(acc);
+    if (head->shape[0] != acc->n_x || head->shape[1] != acc->n_y)
+        return MCS_ERR_INVARIANT;
+    return head->count <= MCS_SPECTRUM_MAX_COUNT ? MCS_OK : MCS_ERR_INVARIANT;
 }
 
 /* What trials within MCS_SPECTRUM_MAX_SUM give (spectrum2d.h): |S_k| <=
@@ -66,8 +138,8 @@ static int twiddles_sound(const mcs_spectrum2d *acc)
 /* The statistics of stored cell i within the bounds above. O(1). */
 static int cell_sound(const mcs_spectrum2d *acc, size_t i)
 {
-    const double some = acc->count > 0u ? 1.0 : 0.0;
-    const double spread = acc->count > 0u ? (double)(acc->count - 1u) : 0.0;
+    const double some = count_of(acc) > 0u ? 1.0 : 0.0;
+    const double spread = count_of(acc) > 0u ? (double)(count_of(acc) - 1u) : 0.0;
     return fabs(acc->mean_re[i]) <= some * MAX_ABS_S &&
            fabs(acc->mean_im[i]) <= some * MAX_ABS_S &&
            in_range(acc->mean_pow[i], 0.0, some * MAX_POWER) &&
@@ -97,17 +169,105 @@ static mcs_status check_body(const mcs_spectrum2d *acc)
     return sound ? MCS_OK : MCS_ERR_INVARIANT;
 }
 
-mcs_status mcs_spectrum2d_init(mcs_spectrum2d *acc, size_t n_x, size_t n_y)
+mcs_status mcs_spectrum2d_size(size_t n_x, size_t n_y, size_t *bytes)
 {
-    if (acc == NULL)
+    if (bytes == NULL)
         return MCS_ERR_NULL;
-    if (!side_ok(n_x) || !side_ok(n_y))
-        return MCS_ERR_N_RANGE;
-    memset(acc, 0, sizeof *acc);
-    acc->n_x = n_x;
-    acc->n_y = n_y;
-    mcs_twiddles_(n_x, acc->cos_x, acc->sin_x);
-    mcs_twiddles_(n_y, acc->cos_y, acc->sin_y);
+    layout lay;
+    mcs_status st = layout_of(n_x, n_y, &lay);
+    if (st == MCS_OK)
+        *bytes = lay.total;
+    return st;
+}
+
+/* The header over mem for checked arguments: arrays at their offsets, the
+ * statistics zeroed, the twiddles built. */
+static void set_up(mcs_spectrum2d *h, size_t n_x, size_t n_y, void *mem, const layout *lay)
+{
+    unsigned char *base = mcs_ps_aligned(mem);
+    memset(h, 0, sizeof *h);
+    h->n_x = n_x;
+    h->n_y = n_y;
+    h->mem = mem;
+    h->bytes = lay->total;
+    h->state = (void *)base;
+#define AT_(field) ((double *)(void *)(base + lay->field))
+    h->mean_re = AT_(mean_re);
+    h->mean_im = AT_(mean_im);
+    h->m2_s = AT_(m2_s);
+    h->mean_pow = AT_(mean_pow);
+    h->m2_pow = AT_(m2_pow);
+    h->cos_x = AT_(cos_x);
+    h->sin_x = AT_(sin_x);
+    h->cos_y = AT_(cos_y);
+    h->sin_y = AT_(sin_y);
+    h->re = AT_(re);
+    h->im = AT_(im);
+    h->rows = AT_(rows);
+#undef AT_
+    memset(base, 0, lay->stats);
+    mcs_ps_head *head = (mcs_ps_head *)(void *)base;
+    head->shape[0] = n_x;
+    head->shape[1] = n_y;
+    mcs_twiddles_(n_x, h->cos_x, h->sin_x);
+    mcs_twiddles_(n_y, h->cos_y, h->sin_y);
+    h->key = key_of(h);
+}
+
+mcs_status mcs_spectrum2d_init(mcs_spectrum2d *acc, size_t n_x, size_t n_y, void *mem,
+                               size_t bytes)
+{
+    if (acc == NULL || mem == NULL)
+        return MCS_ERR_NULL;
+    layout lay;
+    mcs_status st = layout_of(n_x, n_y, &lay);
+    if (st != MCS_OK)
+        return st;
+    if (bytes < lay.total)
+        return MCS_ERR_SPACE;
+    if (mcs_overlap_(mem, lay.total, acc, sizeof *acc))
+        return MCS_ERR_ALIAS;
+    mcs_spectrum2d h;
+    set_up(&h, n_x, n_y, mem, &lay);
+    *acc = h;
+    return MCS_OK;
+}
+
+mcs_status mcs_spectrum2d_copy(mcs_spectrum2d *dst, void *mem, size_t bytes,
+                               const mcs_spectrum2d *src)
+{
+    if (dst == NULL || mem == NULL)
+        return MCS_ERR_NULL;
+    mcs_status st = check_acc(src);
+    if (st != MCS_OK)
+        return st;
+    layout lay;
+    (void)layout_of(src->n_x, src->n_y, &lay); /* cannot fail: src passed init */
+    if (bytes < lay.total)
+        return MCS_ERR_SPACE;
+    if (mcs_overlap_(mem, lay.total, dst, sizeof *dst) ||
+        mcs_overlap_(mem, lay.total, src, sizeof *src) ||
+        mcs_overlap_(mem, lay.total, src->mem, src->bytes) ||
+        (dst != src && mcs_overlap_(dst, sizeof *dst, src, sizeof *src)))
+        return MCS_ERR_ALIAS;
+    mcs_spectrum2d h;
+    set_up(&h, src->n_x, src->n_y, mem, &lay);
+    memcpy(h.state, src->state, lay.stats);
+    h.wrap = src->wrap;
+    h.key = key_of(&h);
+    *dst = h;
+    return MCS_OK;
+}
+
+mcs_status mcs_spectrum2d_set_wrap(mcs_spectrum2d *acc, int wrap)
+{
+    mcs_status st = check_acc(acc);
+    if (st == MCS_OK && wrap != 0 && wrap != 1)
+        st = MCS_ERR_DOMAIN;
+    if (st != MCS_OK)
+        return st;
+    acc->wrap = wrap;
+    acc->key = key_of(acc);
     return MCS_OK;
 }
 
@@ -115,14 +275,15 @@ mcs_status mcs_spectrum2d_init(mcs_spectrum2d *acc, size_t n_x, size_t n_y)
  * weight (a padding slot past the last point has weight 0):
  * x row e^{-2 pi i k1 b1/N1}, k1 < N1; y row w e^{-2 pi i k2 b2/N2}, k2 <= N2/2.
  * Table indices advance by b mod N, so every twiddle is an exact entry. */
-static void twiddle_rows(mcs_spectrum2d *acc, int p, size_t k, mcs_points_ points,
+static void twiddle_rows(mcs_spectrum2d *acc, int p, size_t k, const mcs_ps_points *pts,
                          const double *weights, size_t q)
 {
-    const size_t n1 = acc->n_x, n2 = acc->n_y;
-    const size_t b1 = q < k ? mcs_point_bin_(mcs_point_(points, 2u * q), n1) : 0u;
-    const size_t b2 = q < k ? mcs_point_bin_(mcs_point_(points, 2u * q + 1u), n2) : 0u;
+    const size_t n1 = acc->n_x, n2 = acc->n_y, len = row_len_for(n1, n2);
+    const size_t b1 = q < k ? mcs_point_bin_(mcs_ps_coord(pts, q, 0), n1) : 0u;
+    const size_t b2 = q < k ? mcs_point_bin_(mcs_ps_coord(pts, q, 1), n2) : 0u;
     const double w = q >= k ? 0.0 : weights != NULL ? weights[q] : 1.0;
-    double *xr = acc->rows[p][XR], *xi = acc->rows[p][XI];
+    double *rows = acc->rows + (size_t)(4 * p) * len;
+    double *xr = rows + XR * len, *xi = rows + XI * len, *yr = rows + YR * len, *yi = rows + YI * len;
     for (size_t k1 = 0, t = 0; k1 < n1; ++k1) {
         xr[k1] = acc->cos_x[t];
         xi[k1] = -acc->sin_x[t];
@@ -134,8 +295,8 @@ static void twiddle_rows(mcs_spectrum2d *acc, int p, size_t k, mcs_points_ point
         xi[n1] = 0.0;
     }
     for (size_t k2 = 0, t = 0; k2 <= n2 / 2u; ++k2) {
-        acc->rows[p][YR][k2] = w * acc->cos_y[t];
-        acc->rows[p][YI][k2] = -w * acc->sin_y[t];
+        yr[k2] = w * acc->cos_y[t];
+        yi[k2] = -w * acc->sin_y[t];
         t += b2;
         t = t >= n2 ? t - n2 : t;
     }
@@ -143,11 +304,14 @@ static void twiddle_rows(mcs_spectrum2d *acc, int p, size_t k, mcs_points_ point
 
 static void accumulate_four(mcs_spectrum2d *acc)
 {
-    double (*r)[4][MCS_SPECTRUM2D_STRIDE] = acc->rows;
-    const double *const x[8] = {r[0][XR], r[0][XI], r[1][XR], r[1][XI],
-                                r[2][XR], r[2][XI], r[3][XR], r[3][XI]};
-    const double *const y[8] = {r[0][YR], r[0][YI], r[1][YR], r[1][YI],
-                                r[2][YR], r[2][YI], r[3][YR], r[3][YI]};
+    const size_t len = row_len_for(acc->n_x, acc->n_y);
+    const double *r = acc->rows;
+#define ROW_(p, q) (r + (size_t)(4 * (p) + (q)) * len)
+    const double *const x[8] = {ROW_(0, XR), ROW_(0, XI), ROW_(1, XR), ROW_(1, XI),
+                                ROW_(2, XR), ROW_(2, XI), ROW_(3, XR), ROW_(3, XI)};
+    const double *const y[8] = {ROW_(0, YR), ROW_(0, YI), ROW_(1, YR), ROW_(1, YI),
+                                ROW_(2, YR), ROW_(2, YI), ROW_(3, YR), ROW_(3, YI)};
+#undef ROW_
     mcs_ps_outer4(acc->n_y / 2u + 1u, stride_of(acc->n_x), acc->re, acc->im, x, y);
 }
 
@@ -156,8 +320,8 @@ static void update_statistics(mcs_spectrum2d *acc)
 {
     const size_t n1 = acc->n_x, stride = stride_of(n1);
     const double scale = 1.0 / sqrt((double)n1 * (double)acc->n_y);
-    acc->count++;
-    const double c = (double)acc->count;
+    const uint64_t count = ++((mcs_ps_head *)(void *)acc->state)->count;
+    const double c = (double)count;
     for (size_t k2 = 0; k2 <= acc->n_y / 2u; ++k2)
         for (size_t k1 = 0; k1 < n1; ++k1) {
             size_t i = k2 * stride + k1;
@@ -166,21 +330,30 @@ static void update_statistics(mcs_spectrum2d *acc)
             acc->mean_re[i] += dr / c;
             acc->mean_im[i] += di / c;
             acc->m2_s[i] += dr * (sr - acc->mean_re[i]) + di * (si - acc->mean_im[i]);
-            mcs_ps_welford(&acc->mean_pow[i], &acc->m2_pow[i], sr * sr + si * si, acc->count);
+            mcs_ps_welford(&acc->mean_pow[i], &acc->m2_pow[i], sr * sr + si * si, count);
         }
 }
 
-/* The checks of a trial: K >= 1, points[2 k] in [0,1), weights[k] (if any)
- * finite and >= 0, in that order, then their sum at most
- * MCS_SPECTRUM_MAX_SUM: |S_k| <= 2^100 then, so no square or fourth power
- * of the statistics can overflow (as for the 1D accumulator, spectrum.h). */
-static mcs_status check_trial(size_t k, mcs_points_ points, const double *weights)
+/* The checks of a trial: K >= 1, points and weights outside the object,
+ * points[2 k] in [0,1) (or [0, 1] with wrap), weights[k] (if any) finite
+ * and >= 0, in that order, then their sum at most MCS_SPECTRUM_MAX_SUM:
+ * |S_k| <= 2^100 then, so no square or fourth power of the statistics can
+ * overflow (as for the 1D accumulator, spectrum.h). */
+static mcs_status check_trial(const mcs_spectrum2d *acc, size_t k, const mcs_ps_points *pts,
+                              const double *weights)
 {
     if (k == 0u)
         return MCS_ERR_K_RANGE;
     if (k > SIZE_MAX / 2u)
         return MCS_ERR_POINT_RANGE;
-    mcs_status st = mcs_check_points_(2u * k, points, NULL);
+    const size_t wbytes = weights != NULL ? mcs_bytes_(k, sizeof *weights) : 0u;
+    if (mcs_ps_points_overlap(pts, k, acc, sizeof *acc) ||
+        mcs_ps_points_overlap(pts, k, acc->mem, acc->bytes) ||
+        mcs_overlap_(weights, wbytes, acc, sizeof *acc) ||
+        mcs_overlap_(weights, wbytes, acc->mem, acc->bytes))
+        return MCS_ERR_ALIAS;
+    int ones = 0;
+    mcs_status st = mcs_ps_check_points(pts, k, acc->wrap, &ones);
     double sum = 0.0;
     for (size_t j = 0; st == MCS_OK && weights != NULL && j < k; ++j) {
         st = mcs_check_weight_(weights[j]);
@@ -189,24 +362,22 @@ static mcs_status check_trial(size_t k, mcs_points_ points, const double *weight
     return st == MCS_OK && !(sum <= MCS_SPECTRUM_MAX_SUM) ? MCS_ERR_MAGNITUDE : st;
 }
 
-/* The body of mcs_spectrum2d_add_points and its _f twin, over double or
- * float points (internal.h): the same bits from the widened points. Not
- * inlined: a point costs O(N1 + N2) here, far more than the test of its
- * kind, and the inlined copies would realign their frames. */
-static mcs_status add_points(mcs_spectrum2d *acc, size_t k, mcs_points_ points,
+/* The body of every add (interleaved or planar, double or float: the same
+ * bits from the same values). */
+static mcs_status add_points(mcs_spectrum2d *acc, size_t k, const mcs_ps_points *pts,
                              const double *weights)
 {
-    mcs_status st = mcs_points_addr_(points) == NULL ? MCS_ERR_NULL : check_body(acc);
-    if (st == MCS_OK && acc->count >= MCS_SPECTRUM_MAX_COUNT)
+    mcs_status st = mcs_ps_points_null(pts) ? MCS_ERR_NULL : check_body(acc);
+    if (st == MCS_OK && count_of(acc) >= MCS_SPECTRUM_MAX_COUNT)
         st = MCS_ERR_COUNT;
     if (st == MCS_OK)
-        st = check_trial(k, points, weights);
+        st = check_trial(acc, k, pts, weights);
     if (st != MCS_OK)
         return st;
     mcs_ps_clear(cells_of(acc), acc->re, acc->im);
     for (size_t j = 0; j < k; j += 4u) {
         for (int p = 0; p < 4; ++p)
-            twiddle_rows(acc, p, k, points, weights, j + (size_t)p);
+            twiddle_rows(acc, p, k, pts, weights, j + (size_t)p);
         accumulate_four(acc);
     }
     update_statistics(acc);
@@ -216,24 +387,41 @@ static mcs_status add_points(mcs_spectrum2d *acc, size_t k, mcs_points_ points,
 mcs_status mcs_spectrum2d_add_points(mcs_spectrum2d *acc, size_t k, const double *points,
                                      const double *weights)
 {
-    return add_points(acc, k, mcs_points_d_(points), weights);
+    const mcs_ps_points pts = mcs_ps_points_d(points, NULL, 2);
+    return add_points(acc, k, &pts, weights);
 }
 
 mcs_status mcs_spectrum2d_add_points_f(mcs_spectrum2d *acc, size_t k, const float *points,
                                        const double *weights)
 {
-    return add_points(acc, k, mcs_points_f_(points), weights);
+    const mcs_ps_points pts = mcs_ps_points_f(points, NULL, 2);
+    return add_points(acc, k, &pts, weights);
+}
+
+mcs_status mcs_spectrum2d_add_points_planar(mcs_spectrum2d *acc, size_t k, const double *x,
+                                            const double *y, const double *weights)
+{
+    const mcs_ps_points pts = mcs_ps_points_d(x, y, 2);
+    return y == NULL ? MCS_ERR_NULL : add_points(acc, k, &pts, weights);
+}
+
+mcs_status mcs_spectrum2d_add_points_planar_f(mcs_spectrum2d *acc, size_t k, const float *x,
+                                              const float *y, const double *weights)
+{
+    const mcs_ps_points pts = mcs_ps_points_f(x, y, 2);
+    return y == NULL ? MCS_ERR_NULL : add_points(acc, k, &pts, weights);
 }
 
 mcs_status mcs_spectrum2d_merge(mcs_spectrum2d *dst, const mcs_spectrum2d *src)
 {
     mcs_status st = mcs_check_pair_(check_body(dst), check_body(src));
     if (st == MCS_OK)
-        st = mcs_check_merge_(dst, src, sizeof *dst, dst->n_x == src->n_x && dst->n_y == src->n_y,
-                              dst->count, src->count);
-    if (st != MCS_OK || src->count == 0u)
+        st = mcs_ps_check_merge(dst, src, sizeof *dst, dst->mem, dst->bytes, src->mem, src->bytes,
+                                dst->n_x == src->n_x && dst->n_y == src->n_y, count_of(dst),
+                                count_of(src));
+    if (st != MCS_OK || count_of(src) == 0u)
         return st;
-    const uint64_t na = dst->count, nb = src->count;
+    const uint64_t na = count_of(dst), nb = count_of(src);
     const double n = (double)na + (double)nb, fb = (double)nb / n;
     const double cross = (double)na * (double)nb / n;
     const size_t cells = cells_of(dst);
@@ -245,14 +433,14 @@ mcs_status mcs_spectrum2d_merge(mcs_spectrum2d *dst, const mcs_spectrum2d *src)
         dst->m2_s[i] += src->m2_s[i] + (dr * dr + di * di) * cross;
     }
     mcs_ps_chan_cells(cells, dst->mean_pow, dst->m2_pow, na, src->mean_pow, src->m2_pow, nb);
-    dst->count = na + nb;
+    ((mcs_ps_head *)(void *)dst->state)->count = na + nb;
     return MCS_OK;
 }
 
 mcs_status mcs_spectrum2d_count(const mcs_spectrum2d *acc, uint64_t *count)
 {
     mcs_status st = count == NULL ? MCS_ERR_NULL : check_acc(acc);
-    return mcs_ps_count_out(st, st == MCS_OK ? acc->count : 0u, count);
+    return mcs_ps_count_out(st, st == MCS_OK ? count_of(acc) : 0u, count);
 }
 
 /* The checks of a read-out at k = (k1, k2) with output out, and the stored
@@ -284,7 +472,7 @@ mcs_status mcs_spectrum2d_mean(const mcs_spectrum2d *acc, size_t freq_k, size_t 
     if (st == MCS_OK && re == im)
         st = MCS_ERR_ALIAS; /* one place cannot hold both parts */
     if (st == MCS_OK)
-        st = mcs_ps_read(acc->mean_re[i], 0.0, acc->count, 0, re);
+        st = mcs_ps_read(acc->mean_re[i], 0.0, count_of(acc), 0, re);
     if (st == MCS_OK)
         *im = conj ? -acc->mean_im[i] : acc->mean_im[i];
     return st;
@@ -300,8 +488,8 @@ static mcs_status read_stat(const mcs_spectrum2d *acc, size_t k1, size_t k2, int
     if (st != MCS_OK)
         return st;
     if (what == 2)
-        return mcs_ps_read(0.0, acc->m2_s[i], acc->count, 1, out);
-    return mcs_ps_read(acc->mean_pow[i], acc->m2_pow[i], acc->count, what, out);
+        return mcs_ps_read(0.0, acc->m2_s[i], count_of(acc), 1, out);
+    return mcs_ps_read(acc->mean_pow[i], acc->m2_pow[i], count_of(acc), what, out);
 }
 
 mcs_status mcs_spectrum2d_power(const mcs_spectrum2d *acc, size_t freq_k, size_t freq_l,
@@ -378,7 +566,7 @@ mcs_status mcs_spectrum2d_variance14(const mcs_spectrum2d *acc, size_t k, const 
     mcs_status st = f_re == NULL || f_im == NULL || out == NULL ? MCS_ERR_NULL : check_body(acc);
     if (st == MCS_OK && k == 0u)
         st = MCS_ERR_K_RANGE;
-    if (st == MCS_OK && acc->count == 0u)
+    if (st == MCS_OK && count_of(acc) == 0u)
         st = MCS_ERR_EMPTY;
     if (st != MCS_OK)
         return st;

@@ -53,26 +53,26 @@ mcs_status mcs_pointset2d_exact_power(const mcs_pattern2d *pat, long freq_x, lon
 
 /* The exact power over annulus r, the whole plane counted. Every term is
  * even in fx and in fy, so the quadrant ax, ay >= 0 is enumerated with sign
- * multiplicities. */
+ * multiplicities, row by row over the annulus's columns only. */
 static void exact_ring(const mcs_pattern2d *pat, size_t r, mcs_ps_ring *g)
 {
     for (int pass = 0; pass < 2; ++pass)
-        for (size_t ay = 0; ay <= r; ++ay)
-            for (size_t ax = 0; ax <= r; ++ax) {
-                double w = mcs_ps_ring_weight(ax, ay, r);
-                if (w == 0.0)
-                    continue;
+        for (size_t ay = 0; ay <= r; ++ay) {
+            size_t lo, hi;
+            mcs_ps_ring_span(r, ay, &lo, &hi);
+            for (size_t ax = lo; ax <= hi; ++ax) {
                 double p = ax == 0u && ay == 0u ? (double)pat->k : exact_nonzero(pat, ax, ay);
-                mcs_ps_ring_add(g, pass, w, p);
+                mcs_ps_ring_add(g, pass, mcs_ps_ring_mult(ax, ay), p);
             }
+        }
 }
 
 /* The checks of an annulus read-out: annuli exist up to the largest cutoff
- * (the quadrant loops are O(radius^2), so no larger radius is looped over). */
+ * an accumulator takes (O(radius) rows each). */
 static mcs_status check_ring(const mcs_pattern2d *pat, size_t radius, const double *out)
 {
     mcs_status st = check(pat, out);
-    return st == MCS_OK && radius > (size_t)MCS_MAX_FREQ ? MCS_ERR_FREQ_RANGE : st;
+    return st == MCS_OK && radius > (size_t)MCS_POINTSET2D_MAX_FREQ ? MCS_ERR_FREQ_RANGE : st;
 }
 
 mcs_status mcs_pointset2d_exact_radial(const mcs_pattern2d *pat, size_t radius, double *out)

@@ -25,7 +25,8 @@ static mcs_status check(const mcs_pattern2d *pat, size_t n_x, size_t n_y)
         return MCS_ERR_NULL;
     if (!mcs_pattern2d_is_valid_(pat))
         return MCS_ERR_UNINIT;
-    if (n_x == 0u || n_x > (size_t)MCS_MAX_SIDE || n_y == 0u || n_y > (size_t)MCS_MAX_SIDE)
+    if (n_x == 0u || n_x > (size_t)MCS_SPECTRUM2D_MAX_SIDE || n_y == 0u ||
+        n_y > (size_t)MCS_SPECTRUM2D_MAX_SIDE)
         return MCS_ERR_N_RANGE;
     if (pat->kind == MCS_PATTERN2D_RANDOM)
         return MCS_OK;

@@ -147,21 +147,29 @@ static void shape_case(size_t kind_index, const uint64_t *shape, uint64_t np, mc
 
 static void test_sizes_above_this_builds_capacities_are_refused(void)
 {
-    const uint64_t n = MCS_MAX_N, c = MCS_MAX_COV_N, f1 = MCS_MAX_FREQ_1D, f2 = MCS_MAX_FREQ;
-    const uint64_t s = MCS_MAX_SIDE, zero = 0u;
+    const uint64_t n = MCS_MAX_N, c = MCS_MAX_COV_N, zero = 0u;
     dirty_destinations();
     for (uint64_t d = 0; d < 2u; ++d) { /* d = 0: the largest that fits; 1: one more */
         const mcs_status range = d == 0u ? MCS_OK : MCS_ERR_N_RANGE;
-        const mcs_status freq = d == 0u ? MCS_OK : MCS_ERR_FREQ_RANGE;
-        const uint64_t sn = n + d, cn = c + d, p1 = f1 + d, p2 = f2 + d;
-        const uint64_t side_x[2] = {s + d, 2u}, side_y[2] = {3u, s + d};
+        const uint64_t sn = n + d, cn = c + d;
         shape_case(0u, &sn, IO_SPECTRUM_VALUES(sn), range);
         shape_case(1u, &cn, IO_MOMENT_VALUES(cn), range);
         shape_case(2u, &sn, 2u * sn + 2u * (sn / 2u + 1u) + 2u, range);
-        shape_case(4u, &p1, 2u * (p1 + 1u), freq);
-        shape_case(5u, &p2, 2u * (2u * p2 + 1u) * (p2 + 1u) + 2u * (p2 + 1u), freq);
-        shape_case(6u, side_x, 5u * side_x[0] * 2u, range);
-        shape_case(6u, side_y, 5u * 3u * (side_y[1] / 2u + 1u), range);
+    }
+    /* The objects over caller memory take shapes up to their caps, which a
+     * record of every value would take gigabytes to reach: at the cap the
+     * shape passes and the short payload is what is wrong (FORMAT), one past
+     * it the shape is (the shape is read first). */
+    for (uint64_t d = 0; d < 2u; ++d) {
+        const mcs_status freq = d == 0u ? MCS_ERR_FORMAT : MCS_ERR_FREQ_RANGE;
+        const mcs_status range = d == 0u ? MCS_ERR_FORMAT : MCS_ERR_N_RANGE;
+        const uint64_t p1 = MCS_POINTSET_MAX_FREQ + d, p2 = MCS_POINTSET2D_MAX_FREQ + d;
+        const uint64_t side_x[2] = {MCS_SPECTRUM2D_MAX_SIDE + d, 2u};
+        const uint64_t side_y[2] = {3u, MCS_SPECTRUM2D_MAX_SIDE + d};
+        shape_case(4u, &p1, 5u, freq);
+        shape_case(5u, &p2, 5u, freq);
+        shape_case(6u, side_x, 5u, range);
+        shape_case(6u, side_y, 5u, range);
     }
     const uint64_t zeros[2] = {0u, 4u};
     for (size_t i = 0; i < IO_NKINDS; ++i)
@@ -182,6 +190,57 @@ static void set_count(uint8_t *p, size_t len, uint64_t count)
 {
     io_put_le(p + 16, count, 8u);
     io_recrc(p, len);
+}
+
+/* A record whose object does not fit the caller's buffer: MCS_ERR_SPACE
+ * after every check of the record itself, nothing written; the size the
+ * load asks for is the object's size query, and exactly that much loads. */
+static void test_a_buffer_too_small_for_the_record_is_refused_after_its_checks(void)
+{
+    io_fill(&set_a, 12u, 5u, 12u);
+    dirty_destinations();
+    static _Alignas(64) unsigned char mem[MCS_POINTSET2D_SIZE(12u)];
+    static unsigned char snap[sizeof mem];
+    mcs_pointset2d *dst = &set_dst.ps2.acc;
+    const mcs_pointset2d before = *dst;
+    size_t len = save_a(&io_kinds[5], rec), need = 0u, direct = 0u, size = 0u;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_io_load_size(len, rec, 0u, &need));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_io_load_size(len, rec, MCS_POINTSET_DIRECT_ONLY, &direct));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_size(12u, 0u, &size));
+    TEST_ASSERT_EQUAL_UINT64((uint64_t)size, (uint64_t)need);
+    TEST_ASSERT_TRUE(direct < need && need <= sizeof mem);
+    memset(mem, 0x5a, sizeof mem);
+    memcpy(snap, mem, sizeof mem);
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_SPACE, mcs_io_load_pointset2d(dst, 0u, mem, need - 1u, len, rec));
+    TEST_ASSERT_EQUAL_MEMORY(&before, dst, sizeof before);
+    TEST_ASSERT_EQUAL_MEMORY(snap, mem, sizeof mem);
+    /* A record that is wrong says so first, whatever the memory. */
+    memcpy(rec2, rec, len);
+    set_value(rec2, len, 1u, 0u, -1.0);
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_INVARIANT, mcs_io_load_pointset2d(dst, 0u, mem, 1u, len, rec2));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_DOMAIN, mcs_io_load_pointset2d(dst, 2u, mem, need, len, rec));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_io_load_pointset2d(dst, 0u, rec, need, len, rec));
+    TEST_ASSERT_EQUAL_MEMORY(&before, dst, sizeof before);
+    TEST_ASSERT_EQUAL_MEMORY(snap, mem, sizeof mem);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_io_load_pointset2d(dst, 0u, mem, need, len, rec));
+    size_t len2 = 0u;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_io_save_pointset2d(dst, sizeof rec2, rec2, &len2));
+    TEST_ASSERT_EQUAL_UINT64((uint64_t)len, (uint64_t)len2);
+    TEST_ASSERT_EQUAL_HEX8_ARRAY(rec, rec2, len);
+    /* The kinds whose objects hold their own arrays need none. */
+    len = save_a(&io_kinds[0], rec);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_io_load_size(len, rec, 0u, &need));
+    TEST_ASSERT_EQUAL_UINT64(0u, (uint64_t)need);
+    len = save_a(&io_kinds[6], rec);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_io_load_size(len, rec, 0u, &need));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_size(set_a.sp2.acc.n_x, set_a.sp2.acc.n_y, &size));
+    TEST_ASSERT_EQUAL_UINT64((uint64_t)size, (uint64_t)need);
+    const uint64_t big = MCS_POINTSET_MAX_FREQ + 1u;
+    len = io_build(rec, 1u, MCS_IO_KIND_POINTSET, 1u, &big, 0u, 5u, NULL);
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_FREQ_RANGE, mcs_io_load_size(len, rec, 0u, &need));
+    rec[len - 1u] ^= 1u;
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_CHECKSUM, mcs_io_load_size(len, rec, 0u, &need));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_io_load_size(len, NULL, 0u, &need));
 }
 
 static void test_non_finite_values_are_refused(void)
@@ -224,7 +283,7 @@ static void expect_value(size_t kind_index, size_t len, size_t i, double v, mcs_
 static void test_broken_invariants_are_refused(void)
 {
     const double big = MCS_IO_MAX_MAGNITUDE;
-    const size_t h1 = 8u, f2 = 14u < MCS_MAX_FREQ ? 14u : MCS_MAX_FREQ;
+    const size_t h1 = 8u, f2 = 14u;
     const size_t cells2 = (2u * f2 + 1u) * (f2 + 1u);
     io_fill(&set_a, 14u, 40u, 8u); /* closed units and an open batch (AUTO picks PAIR) */
     dirty_destinations();
@@ -273,7 +332,7 @@ static void test_broken_invariants_are_refused(void)
     expect_value(5u, len, cells2 - 1u, -1.0, MCS_ERR_INVARIANT);       /* mean P */
     expect_value(5u, len, 2u * cells2 + f2, -1.0, MCS_ERR_INVARIANT);  /* a ring's mean */
     len = save_a(&io_kinds[6], rec);
-    const size_t cells = set_a.sp2.n_x * (set_a.sp2.n_y / 2u + 1u);
+    const size_t cells = set_a.sp2.acc.n_x * (set_a.sp2.acc.n_y / 2u + 1u);
     expect_value(6u, len, 2u * cells, -1.0, MCS_ERR_INVARIANT);  /* m2_s */
     expect_value(6u, len, cells, -3.0, MCS_OK);                  /* mean_im */
 }
@@ -364,6 +423,7 @@ int main(void)
     RUN_TEST(test_every_changed_byte_is_refused);
     RUN_TEST(test_wrong_version_kind_and_shape_are_refused);
     RUN_TEST(test_sizes_above_this_builds_capacities_are_refused);
+    RUN_TEST(test_a_buffer_too_small_for_the_record_is_refused_after_its_checks);
     RUN_TEST(test_non_finite_values_are_refused);
     RUN_TEST(test_broken_invariants_are_refused);
     RUN_TEST(test_spectrum_units_and_open_batch_that_do_not_fit_are_refused);

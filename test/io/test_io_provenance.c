@@ -128,8 +128,7 @@ static void test_every_kind_takes_a_provenance_and_loads_as_before(void)
         TEST_ASSERT_EQUAL_INT(MCS_OK, o->load(io_obj(&set_before, o), len, buf));
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_io_set_provenance(&prov, sizeof buf, buf, &len));
         TEST_ASSERT_EQUAL_INT_MESSAGE(MCS_OK, o->load(io_obj(&set_dst, o), len, buf), o->name);
-        TEST_ASSERT_EQUAL_MEMORY_MESSAGE(io_obj(&set_before, o), io_obj(&set_dst, o),
-                                         o->obj_size, o->name);
+        io_assert_same(o, io_obj(&set_before, o), io_obj(&set_dst, o), o->name);
     }
 }
 

@@ -30,6 +30,8 @@ void tearDown(void) {}
 static mcs_spectrum spec;
 static mcs_theory th_jitter, th_strat;
 static mcs_pointset ps;
+/* Its buffer, for the largest cutoff measured (3 K, K <= 64). */
+static unsigned char ps_mem[MCS_POINTSET_SIZE(192u)];
 static double pts[1024];
 
 static void theory_for(mcs_theory *th, mcs_pattern_kind kind, size_t k)
@@ -47,7 +49,7 @@ static void measure(mcs_sampler_kind kind, size_t k, uint64_t seed)
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_sampler_init(&s, kind, 1u, k));
     mcs_rng_seed(&rng, seed, 15u);
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_init(&spec, N_BINS));
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset_init(&ps, 3u * k));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset_init(&ps, 3u * k, 0u, ps_mem, sizeof ps_mem));
     for (int t = 0; t < TRIALS; ++t) {
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_sampler_draw(&s, &rng, k, pts));
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_points(&spec, k, pts, NULL));

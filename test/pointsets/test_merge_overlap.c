@@ -1,7 +1,8 @@
 /* Tests for the merges of the point-set and binned 2D accumulators on
- * objects that overlap in memory without being the same object: refused
- * with MCS_ERR_ALIAS, both unchanged, as the spectrum, moment and autocorr
- * merges refuse them; a merge into itself (src == dst) still doubles. */
+ * objects that overlap in memory without being the same object (their
+ * headers or their buffers): refused with MCS_ERR_ALIAS, both unchanged, as
+ * the spectrum, moment and autocorr merges refuse them; a merge into itself
+ * (src == dst) still doubles. */
 #include "mcspec.h"
 #include "points_ref.h"
 #include "unity.h"
@@ -14,21 +15,16 @@ void tearDown(void) {}
 
 static double pts[2 * 8];
 
-/* Two set-up accumulators of one type in an arena, src starting at dst's
- * scratch (its last scratch arrays for spectrum2d, whose twiddles follow
- * its first), so each is a valid object: dst gets its trials first
- * (its add writes the scratch src then takes), then src is set up and gets
- * its own. */
-#define OVERLAP_ARENA(type)                                                                  \
-    static union {                                                                           \
-        type align;                                                                          \
-        unsigned char bytes[2u * sizeof(type)];                                              \
-    } arena_##type;                                                                          \
-    static unsigned char copy_##type[2u * sizeof(type)]
-
-OVERLAP_ARENA(mcs_pointset);
-OVERLAP_ARENA(mcs_pointset2d);
-OVERLAP_ARENA(mcs_spectrum2d);
+/* The cases of overlap, each with two valid objects: (a) src's buffer
+ * starts in dst's scratch (dst gets its trials first, its add writing the
+ * scratch src then takes over); (b) src's header sits in dst's scratch, over
+ * a buffer of its own; (c) two headers over one buffer (a byte copy of a
+ * header: the same object twice, not a copy). Each merge is refused with
+ * MCS_ERR_ALIAS, both objects byte for byte unchanged; a merge into itself
+ * still doubles the count. */
+#define ARENA 400000u
+static _Alignas(64) unsigned char arena[ARENA], spare[ARENA], copy_arena[ARENA],
+    copy_spare[ARENA];
 
 static void add_trials(int (*add)(void *, const double *), void *acc, uint64_t seed)
 {
@@ -47,75 +43,75 @@ static int add_spectrum2d(void *acc, const double *p)
     return mcs_spectrum2d_add_points(acc, 8u, p, NULL);
 }
 
-static void test_a_pointset_merge_of_overlapping_objects_is_refused(void)
+static void snapshot(void)
 {
-    mcs_pointset *dst = &arena_mcs_pointset.align;
-    mcs_pointset *src = (mcs_pointset *)(void *)(arena_mcs_pointset.bytes + offsetof(mcs_pointset, re));
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset_init(dst, 6u));
-    add_trials(add_pointset, dst, 1u);
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset_init(src, 6u));
-    add_trials(add_pointset, src, 2u);
-    memcpy(copy_mcs_pointset, arena_mcs_pointset.bytes, sizeof copy_mcs_pointset);
-    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_pointset_merge(dst, src));
-    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_pointset_merge(src, dst));
-    TEST_ASSERT_EQUAL_MEMORY(copy_mcs_pointset, arena_mcs_pointset.bytes, sizeof copy_mcs_pointset);
-    double before = 0.0, after = 0.0;
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset_power(dst, 3, &before));
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset_merge(dst, dst)); /* itself: doubles */
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset_power(dst, 3, &after));
-    TEST_ASSERT_EQUAL_UINT64(10u, dst->count);
-    TEST_ASSERT_EQUAL_DOUBLE(before, after);
+    memcpy(copy_arena, arena, ARENA);
+    memcpy(copy_spare, spare, ARENA);
 }
 
-static void test_a_pointset2d_merge_of_overlapping_objects_is_refused(void)
+static void assert_unchanged(void)
 {
-    mcs_pointset2d *dst = &arena_mcs_pointset2d.align;
-    mcs_pointset2d *src =
-        (mcs_pointset2d *)(void *)(arena_mcs_pointset2d.bytes + offsetof(mcs_pointset2d, re));
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_init(dst, 3u));
-    add_trials(add_pointset2d, dst, 1u);
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_init(src, 3u));
-    add_trials(add_pointset2d, src, 2u);
-    memcpy(copy_mcs_pointset2d, arena_mcs_pointset2d.bytes, sizeof copy_mcs_pointset2d);
-    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_pointset2d_merge(dst, src));
-    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_pointset2d_merge(src, dst));
-    TEST_ASSERT_EQUAL_MEMORY(copy_mcs_pointset2d, arena_mcs_pointset2d.bytes,
-                             sizeof copy_mcs_pointset2d);
-    double before = 0.0, after = 0.0;
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_power(dst, 1, 2, &before));
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_merge(dst, dst));
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_power(dst, 1, 2, &after));
-    TEST_ASSERT_EQUAL_UINT64(10u, dst->count);
-    TEST_ASSERT_EQUAL_DOUBLE(before, after);
+    TEST_ASSERT_EQUAL_MEMORY(copy_arena, arena, ARENA);
+    TEST_ASSERT_EQUAL_MEMORY(copy_spare, spare, ARENA);
 }
 
-static void test_a_spectrum2d_merge_of_overlapping_objects_is_refused(void)
-{
-    mcs_spectrum2d *dst = &arena_mcs_spectrum2d.align;
-    mcs_spectrum2d *src =
-        (mcs_spectrum2d *)(void *)(arena_mcs_spectrum2d.bytes + offsetof(mcs_spectrum2d, rows));
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_init(dst, 4u, 3u));
-    add_trials(add_spectrum2d, dst, 1u);
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_init(src, 4u, 3u));
-    add_trials(add_spectrum2d, src, 2u);
-    memcpy(copy_mcs_spectrum2d, arena_mcs_spectrum2d.bytes, sizeof copy_mcs_spectrum2d);
-    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_spectrum2d_merge(dst, src));
-    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_spectrum2d_merge(src, dst));
-    TEST_ASSERT_EQUAL_MEMORY(copy_mcs_spectrum2d, arena_mcs_spectrum2d.bytes,
-                             sizeof copy_mcs_spectrum2d);
-    double before = 0.0, after = 0.0;
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_power(dst, 1u, 2u, &before));
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_merge(dst, dst));
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_power(dst, 1u, 2u, &after));
-    TEST_ASSERT_EQUAL_UINT64(10u, dst->count);
-    TEST_ASSERT_EQUAL_DOUBLE(before, after);
-}
+/* One type: its init over (mem, bytes), a read-out at a fixed frequency and
+ * its add; src goes into dst's scratch S_k, re. */
+#define OVERLAP_TEST(name, type, init_call, read_call, add_fn)                         \
+    static void test_a_##name##_merge_of_overlapping_objects_is_refused(void)                   \
+    {                                                                                          \
+        type *dst = (type *)(void *)arena, *src = NULL, hdr_copy;                               \
+        unsigned char *mem = arena + 512u;                                                      \
+        const size_t bytes = ARENA - 512u;                                                      \
+        for (int c = 0; c < 3; ++c) {                                                           \
+            memset(arena, 0, ARENA);                                                            \
+            memset(spare, 0, ARENA);                                                            \
+            TEST_ASSERT_EQUAL_INT(MCS_OK, init_call(dst, mem, bytes));                          \
+            add_trials(add_fn, dst, 1u);                                                        \
+            unsigned char *in_scratch = (unsigned char *)(void *)dst->re;                  \
+            const size_t room = (size_t)(arena + ARENA - in_scratch);                           \
+            if (c == 0) {                                                                       \
+                src = (type *)(void *)spare;                                                    \
+                TEST_ASSERT_EQUAL_INT(MCS_OK, init_call(src, in_scratch, room));                \
+            } else if (c == 1) {                                                                \
+                src = (type *)(void *)(in_scratch + 64u);                                       \
+                TEST_ASSERT_EQUAL_INT(MCS_OK, init_call(src, spare, ARENA));                    \
+            } else {                                                                            \
+                memcpy(&hdr_copy, dst, sizeof hdr_copy);                                        \
+                src = &hdr_copy;                                                                \
+            }                                                                                   \
+            if (c < 2)                                                                          \
+                add_trials(add_fn, src, 2u);                                                    \
+            snapshot();                                                                         \
+            TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, name##_merge(dst, src));                       \
+            TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, name##_merge(src, dst));                       \
+            assert_unchanged();                                                                 \
+        }                                                                                       \
+        double before = 0.0, after = 0.0;                                                       \
+        uint64_t count = 0u;                                                                    \
+        TEST_ASSERT_EQUAL_INT(MCS_OK, read_call(dst, &before));                                 \
+        TEST_ASSERT_EQUAL_INT(MCS_OK, name##_merge(dst, dst)); /* itself: doubles */            \
+        TEST_ASSERT_EQUAL_INT(MCS_OK, read_call(dst, &after));                                  \
+        TEST_ASSERT_EQUAL_INT(MCS_OK, name##_count(dst, &count));                               \
+        TEST_ASSERT_EQUAL_UINT64(10u, count);                                                   \
+        TEST_ASSERT_EQUAL_DOUBLE(before, after);                                                \
+    }
+
+static mcs_status ps_init(mcs_pointset *a, void *m, size_t b) { return mcs_pointset_init(a, 6u, 0u, m, b); }
+static mcs_status ps2_init(mcs_pointset2d *a, void *m, size_t b) { return mcs_pointset2d_init(a, 3u, 0u, m, b); }
+static mcs_status s2_init(mcs_spectrum2d *a, void *m, size_t b) { return mcs_spectrum2d_init(a, 4u, 3u, m, b); }
+static mcs_status ps_read(const mcs_pointset *a, double *v) { return mcs_pointset_power(a, 3, v); }
+static mcs_status ps2_read(const mcs_pointset2d *a, double *v) { return mcs_pointset2d_power(a, 1, 2, v); }
+static mcs_status s2_read(const mcs_spectrum2d *a, double *v) { return mcs_spectrum2d_power(a, 1u, 2u, v); }
+OVERLAP_TEST(mcs_pointset, mcs_pointset, ps_init, ps_read, add_pointset)
+OVERLAP_TEST(mcs_pointset2d, mcs_pointset2d, ps2_init, ps2_read, add_pointset2d)
+OVERLAP_TEST(mcs_spectrum2d, mcs_spectrum2d, s2_init, s2_read, add_spectrum2d)
 
 int main(void)
 {
     UNITY_BEGIN();
-    RUN_TEST(test_a_pointset_merge_of_overlapping_objects_is_refused);
-    RUN_TEST(test_a_pointset2d_merge_of_overlapping_objects_is_refused);
-    RUN_TEST(test_a_spectrum2d_merge_of_overlapping_objects_is_refused);
+    RUN_TEST(test_a_mcs_pointset_merge_of_overlapping_objects_is_refused);
+    RUN_TEST(test_a_mcs_pointset2d_merge_of_overlapping_objects_is_refused);
+    RUN_TEST(test_a_mcs_spectrum2d_merge_of_overlapping_objects_is_refused);
     return UNITY_END();
 }

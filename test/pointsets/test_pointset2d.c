@@ -12,17 +12,32 @@ void tearDown(void) {}
 
 #define MAXK 256
 
-static mcs_pointset2d acc, acc2, acc3, snapshot;
+/* An accumulator and its buffer (F up to 40): the whole is what "changes
+ * nothing" compares. */
+typedef struct {
+    mcs_pointset2d h;
+    _Alignas(64) unsigned char mem[MCS_POINTSET2D_SIZE(40u)];
+} obj;
+static obj o_acc, o_acc2, o_acc3, o_snap;
+#define acc (o_acc.h)
+#define acc2 (o_acc2.h)
+#define acc3 (o_acc3.h)
 static double pts[2 * MAXK];
+
+static mcs_status init(mcs_pointset2d *a, size_t f)
+{
+    obj *o = (obj *)(void *)a;
+    return mcs_pointset2d_init(&o->h, f, 0u, o->mem, sizeof o->mem);
+}
 
 static void test_one_trial_matches_the_direct_sum_at_every_wave_vector(void)
 {
     mcs_rng rng;
     mcs_rng_seed(&rng, 1u, 9u);
     const size_t ks[3] = {1u, 13u, 100u};
-    const size_t fmax = MCS_MAX_FREQ < 40 ? MCS_MAX_FREQ : 40; /* past one re-anchoring */
+    const size_t fmax = 40; /* past one re-anchoring */
     for (int c = 0; c < 3; ++c) {
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_init(&acc, fmax));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, init(&acc, fmax));
         points_uniform(&rng, 2 * ks[c], pts);
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_add(&acc, ks[c], pts));
         for (long fy = -(long)fmax; fy <= (long)fmax; ++fy)
@@ -39,7 +54,7 @@ static void test_radial_average_of_one_trial_is_the_whole_plane_annulus_mean(voi
     mcs_rng rng;
     mcs_rng_seed(&rng, 2u, 9u);
     const long fmax = 12;
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_init(&acc, (size_t)fmax));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, init(&acc, (size_t)fmax));
     points_uniform(&rng, 2 * 20u, pts);
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_add(&acc, 20u, pts));
     size_t total = 0u;
@@ -75,14 +90,14 @@ static void test_radial_average_of_one_trial_is_the_whole_plane_annulus_mean(voi
     TEST_ASSERT_EQUAL_UINT(8u, s1);
 }
 
-/* Annuli exist up to the largest cutoff, MCS_MAX_FREQ: ring sizes are exact
- * there (against a count over the square) and every annulus read-out of a
- * larger radius is refused, whatever its size, with *out untouched
- * (finding N2: radius SIZE_MAX looped for ever, ring_size(SIZE_MAX) gave 0). */
+/* Annuli exist up to the largest cutoff, MCS_POINTSET2D_MAX_FREQ: ring
+ * sizes are exact (against a count over the square, to 64), the annulus
+ * read-outs of the largest take O(radius) steps, and every one of a larger
+ * radius is refused, whatever its size, with *out untouched (finding N2:
+ * radius SIZE_MAX looped for ever, ring_size(SIZE_MAX) gave 0). */
 static void test_annulus_read_outs_stop_at_the_largest_cutoff(void)
 {
-    const long fmax = MCS_MAX_FREQ;
-    for (long r = 0; r <= fmax; ++r) {
+    for (long r = 0; r <= 64; ++r) {
         size_t want = 0u, size = 0u;
         for (long fy = -r - 1; fy <= r + 1; ++fy)
             for (long fx = -r - 1; fx <= r + 1; ++fx)
@@ -90,13 +105,17 @@ static void test_annulus_read_outs_stop_at_the_largest_cutoff(void)
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_ring_size((size_t)r, &size));
         TEST_ASSERT_EQUAL_UINT(want, size);
     }
+    const size_t fmax = MCS_POINTSET2D_MAX_FREQ;
+    size_t size = 0u;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_ring_size(fmax, &size));
+    TEST_ASSERT_TRUE(size > 6u * fmax && size < 7u * fmax); /* about 2 pi r */
     mcs_pattern2d p = points_pattern2d(MCS_PATTERN2D_JITTERED, 6u, 3u, 2u);
     double v = 0.0;
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_exact_radial(&p, (size_t)fmax, &v));
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_exact_anisotropy(&p, (size_t)fmax, &v));
-    const size_t past[3] = {(size_t)fmax + 1u, (size_t)1 << 31, SIZE_MAX};
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_exact_radial(&p, fmax, &v));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_exact_anisotropy(&p, fmax, &v));
+    const size_t past[3] = {fmax + 1u, (size_t)1 << 31, SIZE_MAX};
     for (int c = 0; c < 3; ++c) {
-        size_t size = 7u;
+        size = 7u;
         v = -1.0;
         TEST_ASSERT_EQUAL_INT(MCS_ERR_FREQ_RANGE, mcs_pointset2d_ring_size(past[c], &size));
         TEST_ASSERT_EQUAL_INT(MCS_ERR_FREQ_RANGE, mcs_pointset2d_exact_radial(&p, past[c], &v));
@@ -114,7 +133,7 @@ static void check_kind_against_exact(const mcs_pattern2d *pat, int trials, size_
 {
     mcs_rng rng;
     mcs_rng_seed(&rng, seed, 77u);
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_init(&acc, fmax));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, init(&acc, fmax));
     for (int t = 0; t < trials; ++t) {
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pattern2d_draw(pat, &rng, pat->k, pts));
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_add(&acc, pat->k, pts));
@@ -201,7 +220,7 @@ static void test_anisotropy_is_psa_variance_over_squared_mean_in_decibels(void)
 {
     mcs_rng rng;
     mcs_rng_seed(&rng, 3u, 3u);
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_init(&acc, 7u));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, init(&acc, 7u));
     for (int t = 0; t < 30; ++t) {
         points_uniform(&rng, 2 * 10u, pts);
         mcs_pointset2d_add(&acc, 10u, pts);
@@ -229,9 +248,9 @@ static void test_merge_of_halves_equals_one_pass(void)
 {
     mcs_rng rng;
     mcs_rng_seed(&rng, 4u, 1u);
-    mcs_pointset2d_init(&acc, 6u);
-    mcs_pointset2d_init(&acc2, 6u);
-    mcs_pointset2d_init(&acc3, 6u);
+    init(&acc, 6u);
+    init(&acc2, 6u);
+    init(&acc3, 6u);
     for (int t = 0; t < 200; ++t) {
         size_t k = 1u + (size_t)t % 7u;
         points_uniform(&rng, 2 * k, pts);
@@ -265,14 +284,16 @@ static void test_bad_input_returns_an_error_and_changes_nothing(void)
 {
     double out = -1.0;
     uint64_t n = 0u;
-    memset(&acc2, 0, sizeof acc2);
-    snapshot = acc2;
-    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_pointset2d_init(NULL, 4u));
-    TEST_ASSERT_EQUAL_INT(MCS_ERR_FREQ_RANGE, mcs_pointset2d_init(&acc2, 0u));
-    TEST_ASSERT_EQUAL_INT(MCS_ERR_FREQ_RANGE, mcs_pointset2d_init(&acc2, MCS_MAX_FREQ + 1u));
-    TEST_ASSERT_EQUAL_MEMORY(&snapshot, &acc2, sizeof acc2);
+    memset(&o_acc2, 0, sizeof o_acc2);
+    o_snap = o_acc2;
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_pointset2d_init(NULL, 4u, 0u, o_acc2.mem, sizeof o_acc2.mem));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_FREQ_RANGE, init(&acc2, 0u));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_FREQ_RANGE, mcs_pointset2d_init(&acc2, MCS_POINTSET2D_MAX_FREQ + 1u,
+                                                                  0u, o_acc2.mem, SIZE_MAX));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_SPACE, init(&acc2, 200u));
+    TEST_ASSERT_EQUAL_MEMORY(&o_snap, &o_acc2, sizeof o_acc2);
 
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_init(&acc, 5u));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, init(&acc, 5u));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_EMPTY, mcs_pointset2d_power(&acc, 1, 0, &out));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_EMPTY, mcs_pointset2d_radial(&acc, 1u, &out));
     pts[0] = 0.1;
@@ -282,7 +303,7 @@ static void test_bad_input_returns_an_error_and_changes_nothing(void)
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_add(&acc, 2u, pts));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_EMPTY, mcs_pointset2d_power_stderr(&acc, 1, 0, &out));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_EMPTY, mcs_pointset2d_radial_stderr(&acc, 1u, &out));
-    snapshot = acc;
+    o_snap = o_acc;
     const double bad[4] = {1.0, -1e-300, NAN, -INFINITY};
     for (int b = 0; b < 4; ++b) {
         pts[3] = bad[b];
@@ -295,10 +316,14 @@ static void test_bad_input_returns_an_error_and_changes_nothing(void)
     TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_pointset2d_add(&acc, 2u, NULL));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_UNINIT, mcs_pointset2d_add(&acc2, 2u, pts));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_UNINIT, mcs_pointset2d_merge(&acc, &acc2));
-    mcs_pointset2d_init(&acc3, 4u);
+    init(&acc3, 4u);
     TEST_ASSERT_EQUAL_INT(MCS_ERR_MISMATCH, mcs_pointset2d_merge(&acc, &acc3));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_pointset2d_merge(NULL, &acc3));
-    TEST_ASSERT_EQUAL_MEMORY(&snapshot, &acc, sizeof acc);
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_pointset2d_add_planar(&acc, 2u, pts, NULL));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_pointset2d_add_planar(&acc, 2u, NULL, pts));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_pointset2d_add(&acc, 2u, acc.re));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_pointset2d_add_planar(&acc, 2u, pts, acc.mean));
+    TEST_ASSERT_EQUAL_MEMORY(&o_snap, &o_acc, sizeof o_acc);
 
     out = -1.0;
     TEST_ASSERT_EQUAL_INT(MCS_ERR_FREQ_RANGE, mcs_pointset2d_power(&acc, 6, 0, &out));
@@ -320,18 +345,267 @@ static void test_bad_input_returns_an_error_and_changes_nothing(void)
     TEST_ASSERT_EQUAL_DOUBLE(-1.0, out);
 }
 
-static uint64_t *count_of(void *a) { return &((mcs_pointset2d *)a)->count; }
+static uint64_t *count_of(void *a) { return &((mcs_pointset2d *)a)->state->count; }
 static int add_one(void *a) { return mcs_pointset2d_add(a, 2u, pts); }
 static int merge(void *dst, const void *src) { return mcs_pointset2d_merge(dst, src); }
 
 static void test_the_trial_count_stops_at_mcs_max_count_and_never_wraps(void)
 {
-    const points_counted kind = {sizeof acc, count_of, add_one, merge};
+    const points_counted kind = {sizeof o_acc, count_of, add_one, merge};
     for (int j = 0; j < 4; ++j)
         pts[j] = 0.125 + 0.25 * j; /* two points in 1D or 2D */
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_init(&acc, 3u));
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_init(&acc2, 3u));
-    points_assert_count_bound(&kind, &acc, &acc2, &acc3, &snapshot);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, init(&acc, 3u));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, init(&acc2, 3u));
+    points_assert_count_bound(&kind, &o_acc, &o_acc2, &o_acc3, &o_snap);
+}
+
+
+/* ---- run-time sizes, paths, layouts and wrap ---- */
+
+static void test_the_size_macro_bounds_the_size_query_and_the_caps_fit(void)
+{
+    static char fits_a_static_buffer[MCS_POINTSET2D_SIZE(16u)];
+    (void)fits_a_static_buffer;
+    size_t prev = 0u, bytes = 0u, direct = 0u;
+    for (size_t f = 1u; f <= 2100u; f += f < 100u ? 1u : 53u) {
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_size(f, 0u, &bytes));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_size(f, MCS_POINTSET_DIRECT_ONLY, &direct));
+        TEST_ASSERT_TRUE(bytes <= MCS_POINTSET2D_SIZE(f));
+        TEST_ASSERT_EQUAL_UINT64((uint64_t)MCS_POINTSET2D_SIZE_DIRECT(f), (uint64_t)direct);
+        TEST_ASSERT_TRUE(direct < bytes && bytes >= prev);
+        prev = bytes;
+    }
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_size(2048u, 0u, &bytes));
+    TEST_ASSERT_TRUE(bytes < (size_t)1600 << 20); /* fits a 32-bit size_t, as its cap there */
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_size(MCS_POINTSET2D_MAX_FREQ, 0u, &bytes));
+    TEST_ASSERT_TRUE(bytes <= MCS_POINTSET2D_SIZE(MCS_POINTSET2D_MAX_FREQ));
+    bytes = 7u;
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_FREQ_RANGE, mcs_pointset2d_size(MCS_POINTSET2D_MAX_FREQ + 1u, 0u, &bytes));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_FREQ_RANGE, mcs_pointset2d_size(SIZE_MAX, 0u, &bytes));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_DOMAIN, mcs_pointset2d_size(4u, 4u, &bytes));
+    TEST_ASSERT_EQUAL_UINT64(7u, bytes);
+}
+
+/* Planar arrays give the bits of interleaved points, as double or float,
+ * on the direct path and the NUFFT's (with several transforms a set: F = 4
+ * takes 4096 points a transform), wrapped or not. */
+static void test_planar_points_equal_interleaved_ones_bit_for_bit(void)
+{
+    enum { K = 10000 };
+    static double xy[2 * K], xs[K], ys[K];
+    static float xyf[2 * K], xsf[K], ysf[K];
+    static obj planar, planar_f, inter_f;
+    mcs_rng rng;
+    mcs_rng_seed(&rng, 11u, 11u);
+    for (size_t j = 0; j < K; ++j) {
+        float a = 0.0f, b = 0.0f;
+        double u = 0.0, v = 0.0;
+        mcs_rng_double(&rng, &u);
+        mcs_rng_double(&rng, &v);
+        a = (float)u < 1.0f ? (float)u : 0.5f;
+        b = j >= 5000u && j % 1000u == 7u ? 1.0f : ((float)v < 1.0f ? (float)v : 0.5f);
+        xyf[2u * j] = xsf[j] = a;
+        xyf[2u * j + 1u] = ysf[j] = b;
+        xy[2u * j] = xs[j] = (double)a;
+        xy[2u * j + 1u] = ys[j] = (double)b;
+    }
+    for (int path = MCS_POINTSET_PATH_DIRECT; path <= MCS_POINTSET_PATH_NUFFT; ++path) {
+        obj *const all[4] = {&o_acc, &planar, &planar_f, &inter_f};
+        for (int i = 0; i < 4; ++i) {
+            TEST_ASSERT_EQUAL_INT(MCS_OK, init(&all[i]->h, 4u));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_set_path(&all[i]->h, (mcs_pointset_path)path));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_set_wrap(&all[i]->h, 1));
+        }
+        /* 5000 points without a 1.0 (two transforms of the caller's points
+         * where they are), then all, with 1.0s to wrap (staged) */
+        for (size_t n = 5000u; n <= K; n += K - 5000u) {
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_add(&acc, n, xy));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_add_planar(&planar.h, n, xs, ys));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_add_planar_f(&planar_f.h, n, xsf, ysf));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_add_f(&inter_f.h, n, xyf));
+        }
+        const size_t cells = 10u * 5u;
+        for (int i = 1; i < 4; ++i) {
+            TEST_ASSERT_EQUAL_MEMORY(acc.mean, all[i]->h.mean, cells * sizeof(double));
+            TEST_ASSERT_EQUAL_MEMORY(acc.m2, all[i]->h.m2, cells * sizeof(double));
+            TEST_ASSERT_EQUAL_MEMORY(acc.ring_mean, all[i]->h.ring_mean, 5u * sizeof(double));
+            TEST_ASSERT_EQUAL_MEMORY(acc.ring_m2, all[i]->h.ring_m2, 5u * sizeof(double));
+        }
+    }
+}
+
+/* The 2D wrap: a coordinate of 1.0 is 0.0 exactly (x or y); 1.5, -0.1 and
+ * NaN stay refused; without wrap 1.0 is refused. */
+static void test_wrap_takes_one_as_zero_and_still_refuses_the_rest(void)
+{
+    static double zero[2 * MAXK];
+    mcs_rng rng;
+    mcs_rng_seed(&rng, 12u, 12u);
+    points_uniform(&rng, 2u * MAXK, pts);
+    for (size_t j = 0; j < 2u * MAXK; ++j) {
+        pts[j] = j % 9u == 4u ? 1.0 : pts[j];
+        zero[j] = pts[j] == 1.0 ? 0.0 : pts[j];
+    }
+    for (int path = MCS_POINTSET_PATH_DIRECT; path <= MCS_POINTSET_PATH_NUFFT; ++path) {
+        TEST_ASSERT_EQUAL_INT(MCS_OK, init(&acc, 20u));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, init(&acc2, 20u));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_set_path(&acc, (mcs_pointset_path)path));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_set_path(&acc2, (mcs_pointset_path)path));
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_POINT_RANGE, mcs_pointset2d_add(&acc, MAXK, pts));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_set_wrap(&acc, 1));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_add(&acc, MAXK, pts));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_add(&acc2, MAXK, zero));
+        const size_t cells = 42u * 21u;
+        TEST_ASSERT_EQUAL_MEMORY(acc2.mean, acc.mean, cells * sizeof(double));
+        TEST_ASSERT_EQUAL_MEMORY(acc2.ring_mean, acc.ring_mean, 21u * sizeof(double));
+        o_snap = o_acc;
+        const double bad[3] = {1.5, -0.1, NAN};
+        for (int i = 0; i < 3; ++i) {
+            const double keep = pts[7];
+            pts[7] = bad[i];
+            TEST_ASSERT_EQUAL_INT(MCS_ERR_POINT_RANGE, mcs_pointset2d_add(&acc, MAXK, pts));
+            TEST_ASSERT_EQUAL_INT(MCS_ERR_POINT_RANGE, mcs_pointset2d_add_planar(&acc, 7u, pts + 1, pts));
+            pts[7] = keep;
+        }
+        TEST_ASSERT_EQUAL_MEMORY(&o_snap, &o_acc, sizeof o_acc);
+    }
+}
+
+/* Random, jittered (a sqrt(K) x sqrt(K) grid of strata) and clustered (half
+ * the points within 1e-3 of (0.3, 0.7)) sets of k points. */
+static void draw_set(int kind, mcs_rng *rng, size_t k, double *p)
+{
+    const size_t m = (size_t)sqrt((double)k);
+    for (size_t j = 0; j < k; ++j) {
+        double u = 0.0, v = 0.0;
+        mcs_rng_double(rng, &u);
+        mcs_rng_double(rng, &v);
+        if (kind == 1) {
+            u = ((double)(j % m) + u) / (double)m;
+            v = ((double)(j / m) + v) / (double)m;
+        } else if (kind == 2 && j % 2u) {
+            u = 0.3 + 1e-3 * u;
+            v = 0.7 + 1e-3 * v;
+        }
+        p[2u * j] = u;
+        p[2u * j + 1u] = v;
+    }
+}
+
+/* The largest |a - b| / max(P_b, 1) over every stored wave vector and
+ * annulus, of the means (want 0) or the standard errors (1), each scaled by
+ * b's mean there (as in 1D: the criterion is relative to the periodogram). */
+static double worst_gap(const mcs_pointset2d *a, const mcs_pointset2d *b, int want_stderr)
+{
+    const long f = (long)a->freq_max;
+    double worst = 0.0;
+    for (long fy = 0; fy <= f; ++fy)
+        for (long fx = -f; fx <= f; ++fx) {
+            double pa = 0.0, pb = 0.0, scale = 0.0;
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_power(b, fx, fy, &scale));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, (want_stderr ? mcs_pointset2d_power_stderr
+                                                       : mcs_pointset2d_power)(a, fx, fy, &pa));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, (want_stderr ? mcs_pointset2d_power_stderr
+                                                       : mcs_pointset2d_power)(b, fx, fy, &pb));
+            const double gap = fabs(pa - pb) / fmax(scale, 1.0);
+            worst = gap > worst ? gap : worst;
+        }
+    for (size_t r = 0; r <= (size_t)f; ++r) {
+        double pa = 0.0, pb = 0.0, scale = 0.0;
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_radial(b, r, &scale));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, (want_stderr ? mcs_pointset2d_radial_stderr
+                                                   : mcs_pointset2d_radial)(a, r, &pa));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, (want_stderr ? mcs_pointset2d_radial_stderr
+                                                   : mcs_pointset2d_radial)(b, r, &pb));
+        const double gap = fabs(pa - pb) / fmax(scale, 1.0);
+        worst = gap > worst ? gap : worst;
+    }
+    return worst;
+}
+
+/* K = 4096 points at F = 160 (half utk's 5 sqrt(K), which keeps the direct
+ * sum near 0.1 s a set), two trials per kind:
+ * the NUFFT path agrees with the direct sum to 1e-9 max(P, 1) at every wave
+ * vector and annulus, for the means and the standard errors. */
+static void test_the_nufft_path_agrees_with_the_direct_sum(void)
+{
+    enum { K = 4096, F = 160, T = 2 };
+    static double set[2 * K];
+    static _Alignas(64) unsigned char mem_d[MCS_POINTSET2D_SIZE(F)], mem_n[MCS_POINTSET2D_SIZE(F)];
+    static mcs_pointset2d d, n;
+    mcs_rng rng;
+    mcs_rng_seed(&rng, 13u, 13u);
+    for (int kind = 0; kind < 3; ++kind) {
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_init(&d, F, 0u, mem_d, sizeof mem_d));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_init(&n, F, 0u, mem_n, sizeof mem_n));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_set_path(&d, MCS_POINTSET_PATH_DIRECT));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_set_path(&n, MCS_POINTSET_PATH_NUFFT));
+        for (int t = 0; t < T; ++t) {
+            draw_set(kind, &rng, K, set);
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_add(&d, K, set));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_add(&n, K, set));
+        }
+        TEST_ASSERT_TRUE(worst_gap(&n, &d, 0) <= 1e-9);
+        TEST_ASSERT_TRUE(worst_gap(&n, &d, 1) <= 1e-9);
+    }
+}
+
+/* AUTO: the direct sum at a small K F^2, the NUFFT at a large one. */
+static void test_auto_picks_the_nufft_for_large_k_f_and_the_direct_sum_for_small(void)
+{
+    mcs_pointset_path p = MCS_POINTSET_PATH_AUTO;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, init(&acc, 40u));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_path_for(&acc, 16384u, &p));
+    TEST_ASSERT_EQUAL_INT(MCS_POINTSET_PATH_NUFFT, p);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_path_for(&acc, 8u, &p));
+    TEST_ASSERT_EQUAL_INT(MCS_POINTSET_PATH_DIRECT, p);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, init(&acc, 4u));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_path_for(&acc, 1000000u, &p));
+    TEST_ASSERT_EQUAL_INT(MCS_POINTSET_PATH_DIRECT, p); /* 50 wave vectors: no transform pays */
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_path_for(&acc, MCS_POINTSET_NUFFT_MAX_K + 1u, &p));
+    TEST_ASSERT_EQUAL_INT(MCS_POINTSET_PATH_DIRECT, p);
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_K_RANGE, mcs_pointset2d_path_for(&acc, 0u, &p));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_set_path(&acc, MCS_POINTSET_PATH_NUFFT));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_K_RANGE,
+                          mcs_pointset2d_add(&acc, MCS_POINTSET_NUFFT_MAX_K + 1u, pts));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_init(&acc, 4u, MCS_POINTSET_DIRECT_ONLY, o_acc.mem,
+                                                      sizeof o_acc.mem));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_DOMAIN, mcs_pointset2d_set_path(&acc, MCS_POINTSET_PATH_NUFFT));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_path_for(&acc, 8u, &p));
+    TEST_ASSERT_EQUAL_INT(MCS_POINTSET_PATH_DIRECT, p);
+}
+
+/* A copy is its own object over its own buffer; the original's and its
+ * read-outs agree, and its trials stay its own. */
+static void test_a_copy_is_independent_of_the_original(void)
+{
+    mcs_rng rng;
+    mcs_rng_seed(&rng, 14u, 14u);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, init(&acc, 9u));
+    for (int t = 0; t < 4; ++t) {
+        points_uniform(&rng, 2u * 30u, pts);
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_add(&acc, 30u, pts));
+    }
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_pointset2d_copy(&acc2, o_acc.mem, sizeof o_acc.mem, &acc));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_copy(&acc2, o_acc2.mem, sizeof o_acc2.mem, &acc));
+    for (size_t r = 0; r <= 9u; ++r) {
+        double a = 0.0, b = 0.0;
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_radial_stderr(&acc, r, &a));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_radial_stderr(&acc2, r, &b));
+        TEST_ASSERT_EQUAL_DOUBLE(a, b);
+    }
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_add(&acc2, 30u, pts));
+    uint64_t na = 0u, nb = 0u;
+    mcs_pointset2d_count(&acc, &na);
+    mcs_pointset2d_count(&acc2, &nb);
+    TEST_ASSERT_EQUAL_UINT64(4u, na);
+    TEST_ASSERT_EQUAL_UINT64(5u, nb);
+    mcs_pointset2d shared = acc2;
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_pointset2d_merge(&acc2, &shared));
+    /* and it can move: the object over a new buffer */
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_copy(&acc2, o_acc3.mem, sizeof o_acc3.mem, &acc2));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_count(&acc2, &nb));
+    TEST_ASSERT_EQUAL_UINT64(5u, nb);
 }
 
 int main(void)
@@ -348,5 +622,11 @@ int main(void)
     RUN_TEST(test_merge_of_halves_equals_one_pass);
     RUN_TEST(test_bad_input_returns_an_error_and_changes_nothing);
     RUN_TEST(test_the_trial_count_stops_at_mcs_max_count_and_never_wraps);
+    RUN_TEST(test_the_size_macro_bounds_the_size_query_and_the_caps_fit);
+    RUN_TEST(test_planar_points_equal_interleaved_ones_bit_for_bit);
+    RUN_TEST(test_wrap_takes_one_as_zero_and_still_refuses_the_rest);
+    RUN_TEST(test_the_nufft_path_agrees_with_the_direct_sum);
+    RUN_TEST(test_auto_picks_the_nufft_for_large_k_f_and_the_direct_sum_for_small);
+    RUN_TEST(test_a_copy_is_independent_of_the_original);
     return UNITY_END();
 }

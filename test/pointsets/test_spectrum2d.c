@@ -13,7 +13,22 @@ void tearDown(void) {}
 #define MAXN 64
 #define MAXK 64
 
-static mcs_spectrum2d acc, acc2, acc3, snapshot;
+/* An accumulator and its buffer (N1 N2 <= 64 here): the whole is what
+ * "changes nothing" compares. */
+typedef struct {
+    mcs_spectrum2d h;
+    _Alignas(64) unsigned char mem[MCS_SPECTRUM2D_SIZE(64u, 64u)];
+} obj;
+static obj o_acc, o_acc2, o_acc3, o_snap;
+#define acc (o_acc.h)
+#define acc2 (o_acc2.h)
+#define acc3 (o_acc3.h)
+
+static mcs_status init(mcs_spectrum2d *a, size_t n1, size_t n2)
+{
+    obj *o = (obj *)(void *)a;
+    return mcs_spectrum2d_init(&o->h, n1, n2, o->mem, sizeof o->mem);
+}
 static double pts[2 * MAXK], w[MAXK];
 static double s[MAXN], fr[MAXN], fi[MAXN], gr[MAXN], gi[MAXN], f[MAXN];
 
@@ -66,7 +81,7 @@ static void test_transform_is_the_2d_eq_7(void)
             st = st * 6364136223846793005u + 1u;
             s[i] = (i % 3u == 1u) ? 0.0 : (double)(st >> 40) / 16777216.0 - 0.3;
         }
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_init(&acc, n1, n2));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, init(&acc, n1, n2));
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_transform(&acc, s, fr, fi));
         naive_dft(n1, n2, s, gr, gi);
         for (size_t i = 0; i < n1 * n2; ++i) {
@@ -87,7 +102,7 @@ static void test_one_trial_gives_the_transform_of_its_weighted_bin_counts(void)
             points_uniform(&rng, 2 * k, pts);
             for (size_t j = 0; j < k; ++j)
                 w[j] = 0.25 + (double)j;
-            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_init(&acc, n1, n2));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, init(&acc, n1, n2));
             TEST_ASSERT_EQUAL_INT(MCS_OK,
                                   mcs_spectrum2d_add_points(&acc, k, pts, weighted ? w : NULL));
             bin_trial(n1, n2, k, pts, weighted ? w : NULL, s);
@@ -138,7 +153,7 @@ static void run_trials(const mcs_pattern2d *pat, size_t n1, size_t n2, int trial
 {
     mcs_rng rng;
     mcs_rng_seed(&rng, seed, 42u);
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_init(&acc, n1, n2));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, init(&acc, n1, n2));
     double mu = 0.0;
     for (size_t i = 0; i < n1 * n2; ++i)
         mu += f[i] / (double)(n1 * n2);
@@ -305,7 +320,7 @@ static void test_exact_variance_equals_enumeration_on_tiny_grids(void)
         const size_t n1 = 4u, n2 = 2u;
         mcs_pattern2d p = points_pattern2d(kinds[c], 2u, 2u, 1u);
         lumpy(n1, n2, f);
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_init(&acc, n1, n2));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, init(&acc, n1, n2));
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_transform(&acc, f, fr, fi));
         double v = 0.0, e = enumerate_variance(&p, n1, n2);
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_exact_variance(&p, n1, n2, fr, fi, &v));
@@ -317,9 +332,9 @@ static void test_merge_of_halves_equals_one_pass(void)
 {
     mcs_rng rng;
     mcs_rng_seed(&rng, 8u, 8u);
-    mcs_spectrum2d_init(&acc, 5u, 4u);
-    mcs_spectrum2d_init(&acc2, 5u, 4u);
-    mcs_spectrum2d_init(&acc3, 5u, 4u);
+    init(&acc, 5u, 4u);
+    init(&acc2, 5u, 4u);
+    init(&acc3, 5u, 4u);
     for (int t = 0; t < 100; ++t) {
         points_uniform(&rng, 10u, pts);
         mcs_spectrum2d_add_points(&acc, 5u, pts, NULL);
@@ -349,14 +364,28 @@ static void test_merge_of_halves_equals_one_pass(void)
 static void test_bad_input_returns_an_error_and_changes_nothing(void)
 {
     double re = -1.0, im = -1.0;
-    memset(&acc2, 0, sizeof acc2);
-    snapshot = acc2;
-    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_spectrum2d_init(NULL, 4u, 4u));
-    TEST_ASSERT_EQUAL_INT(MCS_ERR_N_RANGE, mcs_spectrum2d_init(&acc2, 0u, 4u));
-    TEST_ASSERT_EQUAL_INT(MCS_ERR_N_RANGE, mcs_spectrum2d_init(&acc2, 4u, MCS_MAX_SIDE + 1u));
-    TEST_ASSERT_EQUAL_MEMORY(&snapshot, &acc2, sizeof acc2);
+    memset(&o_acc2, 0, sizeof o_acc2);
+    o_snap = o_acc2;
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_spectrum2d_init(NULL, 4u, 4u, o_acc2.mem, sizeof o_acc2.mem));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_spectrum2d_init(&acc2, 4u, 4u, NULL, sizeof o_acc2.mem));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_N_RANGE, init(&acc2, 0u, 4u));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_N_RANGE, mcs_spectrum2d_init(&acc2, 4u, MCS_SPECTRUM2D_MAX_SIDE + 1u,
+                                                               o_acc2.mem, SIZE_MAX));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_SPACE, init(&acc2, 128u, 64u));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_spectrum2d_init((mcs_spectrum2d *)(void *)o_acc2.mem, 4u, 4u,
+                                                             o_acc2.mem, sizeof o_acc2.mem));
+    TEST_ASSERT_EQUAL_MEMORY(&o_snap, &o_acc2, sizeof o_acc2);
+    size_t bytes = 0u;
+    for (size_t n1 = 1u; n1 <= 70u; n1 += 3u)
+        for (size_t n2 = 1u; n2 <= 70u; n2 += 5u) {
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_size(n1, n2, &bytes));
+            TEST_ASSERT_EQUAL_UINT64((uint64_t)MCS_SPECTRUM2D_SIZE(n1, n2), (uint64_t)bytes);
+        }
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_size(MCS_SPECTRUM2D_MAX_SIDE, MCS_SPECTRUM2D_MAX_SIDE, &bytes));
+    TEST_ASSERT_EQUAL_UINT64((uint64_t)MCS_SPECTRUM2D_SIZE(MCS_SPECTRUM2D_MAX_SIDE, MCS_SPECTRUM2D_MAX_SIDE), (uint64_t)bytes);
+    TEST_ASSERT_TRUE(bytes < (size_t)512 << 20); /* fits a 32-bit size_t */
 
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_init(&acc, 4u, 3u));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, init(&acc, 4u, 3u));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_EMPTY, mcs_spectrum2d_power(&acc, 1u, 1u, &re));
     pts[0] = 0.1;
     pts[1] = 0.2;
@@ -366,7 +395,7 @@ static void test_bad_input_returns_an_error_and_changes_nothing(void)
     w[1] = 2.0;
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_add_points(&acc, 2u, pts, w));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_EMPTY, mcs_spectrum2d_power_stderr(&acc, 1u, 1u, &re));
-    snapshot = acc;
+    o_snap = o_acc;
     w[1] = -1.0;
     TEST_ASSERT_EQUAL_INT(MCS_ERR_NEGATIVE, mcs_spectrum2d_add_points(&acc, 2u, pts, w));
     w[1] = NAN;
@@ -376,14 +405,17 @@ static void test_bad_input_returns_an_error_and_changes_nothing(void)
     TEST_ASSERT_EQUAL_INT(MCS_ERR_K_RANGE, mcs_spectrum2d_add_points(&acc, 0u, pts, NULL));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_spectrum2d_add_points(&acc, 2u, NULL, NULL));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_UNINIT, mcs_spectrum2d_add_points(&acc2, 2u, pts, NULL));
-    mcs_spectrum2d_init(&acc3, 3u, 4u);
+    init(&acc3, 3u, 4u);
     TEST_ASSERT_EQUAL_INT(MCS_ERR_MISMATCH, mcs_spectrum2d_merge(&acc, &acc3));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_UNINIT, mcs_spectrum2d_merge(&acc, &acc2));
     s[0] = INFINITY;
     fr[0] = -1.0;
     TEST_ASSERT_EQUAL_INT(MCS_ERR_NOT_FINITE, mcs_spectrum2d_transform(&acc, s, fr, fi));
     TEST_ASSERT_EQUAL_DOUBLE(-1.0, fr[0]);
-    TEST_ASSERT_EQUAL_MEMORY(&snapshot, &acc, sizeof acc);
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_spectrum2d_add_points(&acc, 2u, acc.re, NULL));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_spectrum2d_add_points(&acc, 2u, pts, acc.im));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_spectrum2d_add_points_planar(&acc, 2u, pts, NULL, NULL));
+    TEST_ASSERT_EQUAL_MEMORY(&o_snap, &o_acc, sizeof o_acc);
 
     re = im = -1.0;
     TEST_ASSERT_EQUAL_INT(MCS_ERR_FREQ_RANGE, mcs_spectrum2d_mean(&acc, 4u, 0u, &re, &im));
@@ -405,6 +437,71 @@ static void test_bad_input_returns_an_error_and_changes_nothing(void)
     TEST_ASSERT_EQUAL_DOUBLE(-1.0, im);
 }
 
+
+/* Planar points give the bits of interleaved ones (double and float); the
+ * wrapped 1.0 falls in bin 0 and 1.5, -0.1, NaN stay refused; a copy reads
+ * out like the original over its own buffer. */
+static void test_planar_wrapped_and_copied_2d_spectra(void)
+{
+    enum { K = 40 };
+    static double xy[2 * K], xs[K], ys[K], zero[2 * K];
+    static float xyf[2 * K], xsf[K], ysf[K];
+    static obj b, c, d;
+    mcs_rng rng;
+    mcs_rng_seed(&rng, 21u, 21u);
+    for (size_t j = 0; j < K; ++j) {
+        double u = 0.0, v = 0.0;
+        mcs_rng_double(&rng, &u);
+        mcs_rng_double(&rng, &v);
+        xsf[j] = xyf[2u * j] = j % 5u == 1u ? 1.0f : (float)u < 1.0f ? (float)u : 0.25f;
+        ysf[j] = xyf[2u * j + 1u] = (float)v < 1.0f ? (float)v : 0.25f;
+        xs[j] = xy[2u * j] = (double)xsf[j];
+        ys[j] = xy[2u * j + 1u] = (double)ysf[j];
+        zero[2u * j] = xs[j] == 1.0 ? 0.0 : xs[j];
+        zero[2u * j + 1u] = ys[j];
+        w[j] = 0.5 + 0.01 * (double)j;
+    }
+    obj *const all[4] = {&o_acc, &b, &c, &d};
+    for (int i = 0; i < 4; ++i) {
+        TEST_ASSERT_EQUAL_INT(MCS_OK, init(&all[i]->h, 7u, 6u));
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_POINT_RANGE, mcs_spectrum2d_add_points(&all[i]->h, K, xy, w));
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_DOMAIN, mcs_spectrum2d_set_wrap(&all[i]->h, -1));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_set_wrap(&all[i]->h, i < 3 ? 1 : 0));
+    }
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_add_points(&acc, K, xy, w));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_add_points_planar(&b.h, K, xs, ys, w));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_add_points_planar_f(&c.h, K, xsf, ysf, w));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_add_points(&d.h, K, zero, w));
+    const size_t cells = 8u * 4u;
+    for (int i = 1; i < 4; ++i) {
+        TEST_ASSERT_EQUAL_MEMORY(acc.mean_re, all[i]->h.mean_re, cells * sizeof(double));
+        TEST_ASSERT_EQUAL_MEMORY(acc.mean_im, all[i]->h.mean_im, cells * sizeof(double));
+        TEST_ASSERT_EQUAL_MEMORY(acc.mean_pow, all[i]->h.mean_pow, cells * sizeof(double));
+    }
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_add_points_f(&c.h, K, xyf, NULL));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_add_points_planar(&b.h, K, xs, ys, NULL));
+    TEST_ASSERT_EQUAL_MEMORY(b.h.m2_pow, c.h.m2_pow, cells * sizeof(double));
+    o_snap = o_acc;
+    const double bad[3] = {1.5, -0.1, NAN};
+    for (int i = 0; i < 3; ++i) {
+        xy[3] = bad[i];
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_POINT_RANGE, mcs_spectrum2d_add_points(&acc, K, xy, w));
+    }
+    TEST_ASSERT_EQUAL_MEMORY(&o_snap, &o_acc, sizeof o_acc);
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_spectrum2d_copy(&acc2, o_acc.mem, sizeof o_acc.mem, &acc));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_copy(&acc2, o_acc2.mem, sizeof o_acc2.mem, &acc));
+    for (size_t k2 = 0; k2 < 6u; ++k2)
+        for (size_t k1 = 0; k1 < 7u; ++k1) {
+            double x1 = 0.0, x2 = 0.0;
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_power(&acc, k1, k2, &x1));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_power(&acc2, k1, k2, &x2));
+            TEST_ASSERT_EQUAL_DOUBLE(x1, x2);
+        }
+    mcs_spectrum2d shared = acc2;
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_spectrum2d_merge(&acc2, &shared));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_merge(&acc2, &acc));
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -416,5 +513,6 @@ int main(void)
     RUN_TEST(test_exact_variance_equals_enumeration_on_tiny_grids);
     RUN_TEST(test_merge_of_halves_equals_one_pass);
     RUN_TEST(test_bad_input_returns_an_error_and_changes_nothing);
+    RUN_TEST(test_planar_wrapped_and_copied_2d_spectra);
     return UNITY_END();
 }

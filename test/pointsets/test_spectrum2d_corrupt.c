@@ -19,7 +19,14 @@ void tearDown(void) {}
 #define NY 6u
 #define NPLANE (NX * NY)
 
-static mcs_spectrum2d acc, other, acc_copy, other_copy;
+/* The accumulators with their buffers: what "unchanged" compares. */
+typedef struct {
+    mcs_spectrum2d h;
+    _Alignas(64) unsigned char mem[MCS_SPECTRUM2D_SIZE(NX, NY)];
+} obj;
+static obj o_acc, o_other, acc_copy, other_copy;
+#define acc (o_acc.h)
+#define other (o_other.h)
 static double pts[2 * 16], s_in[NPLANE], f_re[NPLANE], f_im[NPLANE];
 static struct {
     double scalar[2];
@@ -40,8 +47,8 @@ static void prepare(void)
     mcs_rng rng;
     mcs_rng_seed(&rng, 31u, 7u);
     const double w[7] = {1.0, 0.5, 2.0, 1.5, 0.25, 3.0, 1.0};
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_init(&acc, NX, NY));
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_init(&other, NX, NY));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_init(&acc, NX, NY, o_acc.mem, sizeof o_acc.mem));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_init(&other, NX, NY, o_other.mem, sizeof o_other.mem));
     for (int t = 0; t < 24; ++t) {
         points_uniform(&rng, 14u, pts);
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_add_points(t % 2 ? &acc : &other, 7u, pts, w));
@@ -58,8 +65,8 @@ static void prepare(void)
  * merge both ways and into itself, variance14). */
 static void assert_refused(int what, size_t k1, size_t k2, const char *msg)
 {
-    memcpy(&acc_copy, &acc, sizeof acc);
-    memcpy(&other_copy, &other, sizeof other);
+    memcpy(&acc_copy, &o_acc, sizeof o_acc);
+    memcpy(&other_copy, &o_other, sizeof o_other);
     mcs_status st[6];
     int calls = 0;
     fill_outputs();
@@ -83,8 +90,8 @@ static void assert_refused(int what, size_t k1, size_t k2, const char *msg)
     for (int c = 0; c < calls; ++c)
         TEST_ASSERT_EQUAL_INT_MESSAGE(MCS_ERR_INVARIANT, st[c], msg);
     TEST_ASSERT_EQUAL_MEMORY_MESSAGE(&out_sentinel, &out, sizeof out, msg);
-    TEST_ASSERT_EQUAL_MEMORY_MESSAGE(&acc_copy, &acc, sizeof acc, msg);
-    TEST_ASSERT_EQUAL_MEMORY_MESSAGE(&other_copy, &other, sizeof other, msg);
+    TEST_ASSERT_EQUAL_MEMORY_MESSAGE(&acc_copy, &o_acc, sizeof o_acc, msg);
+    TEST_ASSERT_EQUAL_MEMORY_MESSAGE(&other_copy, &o_other, sizeof o_other, msg);
 }
 
 static void test_a_twiddle_outside_its_range_is_refused_by_transform_add_and_merge(void)
@@ -134,24 +141,24 @@ static void test_a_corrupted_statistic_is_refused_where_it_is_read(void)
 static void test_counts_and_cells_no_calls_produce_are_refused(void)
 {
     prepare();
-    acc.count = (uint64_t)MCS_MAX_COUNT + 1u;
+    acc.state->count = (uint64_t)MCS_MAX_COUNT + 1u;
     uint64_t c = 5u;
-    memcpy(&acc_copy, &acc, sizeof acc);
+    memcpy(&acc_copy, &o_acc, sizeof o_acc);
     TEST_ASSERT_EQUAL_INT(MCS_ERR_INVARIANT, mcs_spectrum2d_count(&acc, &c));
     TEST_ASSERT_EQUAL_UINT64(5u, c);
     assert_refused(1, 1u, 1u, "count");
     assert_refused(2, 0u, 0u, "count");
 
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_init(&acc, NX, NY));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_init(&acc, NX, NY, o_acc.mem, sizeof o_acc.mem));
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_add_points(&acc, 7u, pts, NULL));
     acc.m2_pow[NX + 2u] = 1.0;
     assert_refused(1, 1u, 1u, "spread with one trial");
     assert_refused(2, 0u, 0u, "spread with one trial");
 
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_init(&acc, NX, NY));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_init(&acc, NX, NY, o_acc.mem, sizeof o_acc.mem));
     acc.mean_pow[1] = 1.0;
     assert_refused(2, 0u, 0u, "mean with no trial");
-    memcpy(&acc_copy, &acc, sizeof acc);
+    memcpy(&acc_copy, &o_acc, sizeof o_acc);
     double p = SENTINEL;
     TEST_ASSERT_EQUAL_INT(MCS_ERR_INVARIANT, mcs_spectrum2d_power(&acc, 1u, 0u, &p));
     TEST_ASSERT_EQUAL_DOUBLE(SENTINEL, p);
@@ -159,6 +166,13 @@ static void test_counts_and_cells_no_calls_produce_are_refused(void)
     prepare();
     acc.mean_pow[NX] = 0.5; /* row 0, the pad column k1 = N1 */
     assert_refused(2, 0u, 0u, "pad");
+
+    /* a buffer whose head no longer says N1, N2 (overwritten, or another
+     * object's) */
+    prepare();
+    acc.state->shape[1] = NY + 2u;
+    assert_refused(1, 1u, 1u, "shape");
+    assert_refused(2, 0u, 0u, "shape");
 }
 
 int main(void)

@@ -204,8 +204,36 @@ int nufft_edited_plan_headers_are_refused_unchanged(const adv_val *a);
 int nufft_size_accepts_the_edges_of_tol_and_freq_and_no_more(const adv_val *a);
 int io_provenances_breaking_a_rule_are_refused_unchanged(const adv_val *a);
 
+/* The objects that keep their arrays in caller memory (pointset.h,
+ * pointset2d.h, spectrum2d.h) live in the table as their header followed by
+ * a buffer for the largest shape the table builds (OV_BIG); the calls get
+ * the header, which points into the buffer. Their bytes depend on where
+ * they are, so copies and comparisons go through adv_copy_object and
+ * adv_canonical. */
+#define ADV_PS_BIG 256u
+#define ADV_PS2_BIG 32u
+#define ADV_S2_BIG 64u
+typedef struct {
+    mcs_pointset acc;
+    _Alignas(64) unsigned char mem[MCS_POINTSET_SIZE(ADV_PS_BIG)];
+} adv_pointset;
+typedef struct {
+    mcs_pointset2d acc;
+    _Alignas(64) unsigned char mem[MCS_POINTSET2D_SIZE(ADV_PS2_BIG)];
+} adv_pointset2d;
+typedef struct {
+    mcs_spectrum2d acc;
+    _Alignas(64) unsigned char mem[MCS_SPECTRUM2D_SIZE(ADV_S2_BIG, ADV_S2_BIG)];
+} adv_spectrum2d;
+
 /* Objects (adv_objects.c). */
 size_t adv_type_size(int type);
+/* A copy of src (type) into dst that is a whole object where it is: memcpy,
+ * or the object's copy call for the types above. */
+void adv_copy_object(int type, void *dst, const void *src);
+/* What obj holds, in bytes that do not depend on where it is (for every
+ * type but those above, its bytes), into out[cap]; returns the length. */
+size_t adv_canonical(int type, const void *obj, unsigned char *out, size_t cap);
 const char *adv_type_name(int type);
 /* Builds object type in state ov for baseline variant v into obj (all of
  * adv_type_size bytes written); deps are allocated with adv_dep_alloc.

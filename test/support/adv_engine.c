@@ -161,7 +161,7 @@ static void share_content(const adv_row *r, adv_call *c, int src, void *dst, siz
 {
     const adv_slot *s = &r->fn->slot[src];
     if (s->kind <= K_OBJ_OUT)
-        memcpy(dst, c->a[src].p, adv_type_size(s->type));
+        adv_copy_object(s->type, dst, c->a[src].p);
     else if (s->kind == K_ARR_IN)
         adv_fill_array(r, src, dst, elems, c->n_bins);
     else
@@ -369,7 +369,7 @@ static int expect_bad(const adv_row *r, int st)
 
 /* ---- rows ---- */
 
-static _Alignas(64) unsigned char ref_out[2][1u << 20];
+static _Alignas(64) unsigned char ref_out[2][1u << 20], got_out[1u << 20];
 static size_t ref_bytes[2];
 
 /* The aliased call against the same call on separate buffers: every output
@@ -382,8 +382,13 @@ static int alias_bad(const adv_row *r, adv_call *c, int st)
         return fail("world too large");
     int ref_st = call_once(r, &ref, ncalls);
     for (int q = 0; q < 2; ++q) {
-        ref_bytes[q] = slot_bytes(r, &ref, pair[q]);
-        memcpy(ref_out[q], ref.a[pair[q]].p, ref_bytes[q]);
+        const adv_slot *s = &r->fn->slot[pair[q]];
+        if (s->kind <= K_OBJ_OUT) { /* what it holds, wherever it is */
+            ref_bytes[q] = adv_canonical(s->type, ref.a[pair[q]].p, ref_out[q], sizeof ref_out[q]);
+        } else {
+            ref_bytes[q] = slot_bytes(r, &ref, pair[q]);
+            memcpy(ref_out[q], ref.a[pair[q]].p, ref_bytes[q]);
+        }
     }
     if (!build(r, c, BUILD_ALIAS))
         return fail("world too large");
@@ -399,7 +404,14 @@ static int alias_bad(const adv_row *r, adv_call *c, int st)
         const int kind = r->fn->slot[pair[q]].kind;
         if (kind == K_ARR_IN || kind == K_OBJ_IN)
             continue;
-        if (memcmp(c->a[pair[q]].p, ref_out[q], ref_bytes[q]) != 0)
+        const adv_slot *s = &r->fn->slot[pair[q]];
+        const unsigned char *got = c->a[pair[q]].p;
+        size_t got_bytes = ref_bytes[q];
+        if (s->kind <= K_OBJ_OUT) {
+            got_bytes = adv_canonical(s->type, got, got_out, sizeof got_out);
+            got = got_out;
+        }
+        if (got_bytes != ref_bytes[q] || memcmp(got, ref_out[q], ref_bytes[q]) != 0)
             return fail("aliased call gave MCS_OK with %s unlike separate buffers",
                         r->fn->slot[pair[q]].name);
     }

@@ -270,8 +270,8 @@ static size_t meas_state_nn(int type, int ov, int v)
 static const size_t type_sizes[T_COUNT] = {
     0, sizeof(mcs_rng), sizeof(mcs_importance), sizeof(mcs_pattern), sizeof(mcs_sampler),
     sizeof(mcs_pattern2d), sizeof(mcs_welford), sizeof(mcs_dft), sizeof(mcs_spectrum),
-    sizeof(mcs_moment), sizeof(mcs_autocorr), sizeof(mcs_pointset), sizeof(mcs_pointset2d),
-    sizeof(mcs_spectrum2d), sizeof(mcs_theory), sizeof(mcs_theory_spectrum)};
+    sizeof(mcs_moment), sizeof(mcs_autocorr), sizeof(adv_pointset), sizeof(adv_pointset2d),
+    sizeof(adv_spectrum2d), sizeof(mcs_theory), sizeof(mcs_theory_spectrum)};
 
 static const char *const type_names[T_COUNT] = {
     "-", "rng", "importance", "pattern", "sampler", "pattern2d", "welford", "dft",
@@ -378,8 +378,8 @@ static size_t size_of_state(int type, int ov)
     static const size_t base[T_COUNT] = {0, 0, 12, 12, 8, 6, 0, 12, 12, 12, 12, 8, 4, 6, 12, 12};
     static const size_t small[T_COUNT] = {0, 0, 7, 7, 4, 4, 0, 7, 7, 7, 7, 3, 2, 3, 7, 7};
     static const size_t big[T_COUNT] = {0, 0, MCS_MAX_N, MCS_MAX_N, 64, 64, 0, MCS_MAX_N,
-                                        MCS_MAX_N, MCS_MAX_COV_N, MCS_MAX_N, MCS_MAX_FREQ_1D,
-                                        MCS_MAX_FREQ, MCS_MAX_SIDE, MCS_MAX_COV_N, MCS_MAX_N};
+                                        MCS_MAX_N, MCS_MAX_COV_N, MCS_MAX_N, ADV_PS_BIG,
+                                        ADV_PS2_BIG, ADV_S2_BIG, MCS_MAX_COV_N, MCS_MAX_N};
     return ov == OV_SMALL ? small[type] : ov == OV_BIG ? big[type] : base[type];
 }
 
@@ -415,9 +415,9 @@ static void set_count(int type, void *obj, uint64_t c)
     case T_SPECTRUM: ((mcs_spectrum *)obj)->count = c; break;
     case T_MOMENT: ((mcs_moment *)obj)->count = c; break;
     case T_AUTOCORR: ((mcs_autocorr *)obj)->count = c; break;
-    case T_POINTSET: ((mcs_pointset *)obj)->count = c; break;
-    case T_POINTSET2D: ((mcs_pointset2d *)obj)->count = c; break;
-    case T_SPECTRUM2D: ((mcs_spectrum2d *)obj)->count = c; break;
+    case T_POINTSET: ((adv_pointset *)obj)->acc.state->count = c; break;
+    case T_POINTSET2D: ((adv_pointset2d *)obj)->acc.state->count = c; break;
+    case T_SPECTRUM2D: ((adv_spectrum2d *)obj)->acc.state->count = c; break;
     default: break;
     }
 }
@@ -443,9 +443,22 @@ static void init_sized(int type, int v, size_t n, void *obj)
         break;
     case T_MOMENT: (void)mcs_moment_init(obj, n); break;
     case T_AUTOCORR: (void)mcs_autocorr_init(obj, n); break;
-    case T_POINTSET: (void)mcs_pointset_init(obj, n); break;
-    case T_POINTSET2D: (void)mcs_pointset2d_init(obj, n); break;
-    case T_SPECTRUM2D: (void)mcs_spectrum2d_init(obj, n, n == 6u ? 4u : n == 3u ? 5u : n); break;
+    case T_POINTSET: {
+        adv_pointset *o = obj;
+        (void)mcs_pointset_init(&o->acc, n, 0u, o->mem, sizeof o->mem);
+        break;
+    }
+    case T_POINTSET2D: {
+        adv_pointset2d *o = obj;
+        (void)mcs_pointset2d_init(&o->acc, n, 0u, o->mem, sizeof o->mem);
+        break;
+    }
+    case T_SPECTRUM2D: {
+        adv_spectrum2d *o = obj;
+        (void)mcs_spectrum2d_init(&o->acc, n, n == 6u ? 4u : n == 3u ? 5u : n, o->mem,
+                                  sizeof o->mem);
+        break;
+    }
     case T_THEORY:
     case T_TSPEC: {
         mcs_pattern *pat = adv_dep_alloc(sizeof *pat);
@@ -552,13 +565,80 @@ uint64_t adv_count(int type, const void *obj)
     case T_SPECTRUM: return ((const mcs_spectrum *)obj)->count;
     case T_MOMENT: return ((const mcs_moment *)obj)->count;
     case T_AUTOCORR: return ((const mcs_autocorr *)obj)->count;
-    case T_POINTSET: return ((const mcs_pointset *)obj)->count;
-    case T_POINTSET2D: return ((const mcs_pointset2d *)obj)->count;
-    case T_SPECTRUM2D: return ((const mcs_spectrum2d *)obj)->count;
     case T_DISC: return ((const mcs_discrepancy *)obj)->inv_k.count;
     case T_SPACING: return ((const mcs_spacing *)obj)->stat[0].count;
-    default: return 0;
+    default: break;
     }
+    /* Their count is in their buffer, read only through a header that
+     * passes its own check (a zeroed one points nowhere). */
+    uint64_t c = 0u;
+    const mcs_status st = type == T_POINTSET     ? mcs_pointset_count(obj, &c)
+                          : type == T_POINTSET2D ? mcs_pointset2d_count(obj, &c)
+                          : type == T_SPECTRUM2D ? mcs_spectrum2d_count(obj, &c)
+                                                 : MCS_ERR_KIND;
+    return st == MCS_OK ? c : 0u;
+}
+
+void adv_copy_object(int type, void *dst, const void *src)
+{
+    switch (type) {
+    case T_POINTSET: {
+        adv_pointset *d = dst;
+        memcpy(d, src, sizeof *d);
+        (void)mcs_pointset_copy(&d->acc, d->mem, sizeof d->mem, src);
+        break;
+    }
+    case T_POINTSET2D: {
+        adv_pointset2d *d = dst;
+        memcpy(d, src, sizeof *d);
+        (void)mcs_pointset2d_copy(&d->acc, d->mem, sizeof d->mem, src);
+        break;
+    }
+    case T_SPECTRUM2D: {
+        adv_spectrum2d *d = dst;
+        memcpy(d, src, sizeof *d);
+        (void)mcs_spectrum2d_copy(&d->acc, d->mem, sizeof d->mem, src);
+        break;
+    }
+    default: memcpy(dst, src, type_sizes[type]); break;
+    }
+}
+
+/* The record of an object over caller memory (its statistics and count,
+ * wherever they are), then its settings; the raw bytes if it has none. */
+size_t adv_canonical(int type, const void *obj, unsigned char *out, size_t cap)
+{
+    size_t len = 0u;
+    mcs_status st = MCS_ERR_KIND;
+    int settings[4] = {0, 0, 0, 0};
+    switch (type) {
+    case T_POINTSET: {
+        const mcs_pointset *a = obj;
+        st = mcs_io_save_pointset(a, cap - sizeof settings, out, &len);
+        settings[0] = (int)a->flags, settings[1] = (int)a->path, settings[2] = a->wrap;
+        break;
+    }
+    case T_POINTSET2D: {
+        const mcs_pointset2d *a = obj;
+        st = mcs_io_save_pointset2d(a, cap - sizeof settings, out, &len);
+        settings[0] = (int)a->flags, settings[1] = (int)a->path, settings[2] = a->wrap;
+        break;
+    }
+    case T_SPECTRUM2D: {
+        const mcs_spectrum2d *a = obj;
+        st = mcs_io_save_spectrum2d(a, cap - sizeof settings, out, &len);
+        settings[2] = a->wrap;
+        break;
+    }
+    default: break;
+    }
+    if (st != MCS_OK) {
+        len = type_sizes[type] < cap ? type_sizes[type] : cap;
+        memcpy(out, obj, len);
+        return len;
+    }
+    memcpy(out + len, settings, sizeof settings);
+    return len + sizeof settings;
 }
 
 /* ---- records (io.h) ---- */
@@ -580,7 +660,10 @@ static mcs_status save(int type, const void *o, size_t cap, void *buf, size_t *l
  * accumulators, which have no dependencies in the arena). */
 static const void *record_source(int type)
 {
-    static _Alignas(64) unsigned char obj[sizeof(mcs_spectrum)];
+#define MAX2_(a, b) ((a) > (b) ? (a) : (b))
+    static _Alignas(64) unsigned char obj[MAX2_(MAX2_(sizeof(mcs_spectrum), sizeof(adv_pointset)),
+                                                MAX2_(sizeof(adv_pointset2d), sizeof(adv_spectrum2d)))];
+#undef MAX2_
     (void)adv_build(type, OV_BASE, 0, obj);
     return obj;
 }

@@ -58,6 +58,15 @@
 #define BK 6u
 #define BT 5u
 
+/* The caller's buffer of an init, copy or load of the objects over caller
+ * memory: bytes for the baseline shape (F = 8 in 1D, 4 in 2D, 6 x 4 bins),
+ * the array as long as the bytes slot (at) says; their flags. */
+#define PS_MEM MCS_POINTSET_SIZE(8u)
+#define P2_MEM MCS_POINTSET2D_SIZE(4u)
+#define S2_MEM MCS_SPECTRUM2D_SIZE(6u, 4u)
+#define MEM(at) AOUT("mem", E_U8, O_RAW, LEN(L_SLOT, at), 0)
+#define FLAGS U32("flags", 0, 0, MCS_POINTSET_DIRECT_ONLY, F_OKIN)
+
 /* The _f calls' rows reuse the double rows' arrays: adv_floats_begin
  * narrows points[len] to floats in place (adv_table_core.c says how), and
  * adv_floats_end puts the doubles back after the call. */

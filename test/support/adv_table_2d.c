@@ -2,6 +2,7 @@
 #include "adv_table.h"
 
 #include <limits.h>
+#include <math.h>
 #include <string.h>
 
 static int t_sampler_kind_str(const adv_val *a)
@@ -61,7 +62,36 @@ static int t_pattern2d_permute(const adv_val *a)
     }
     return MCS_OK;
 }
-static int t_pointset_init(const adv_val *a) { return mcs_pointset_init(a[0].p, a[1].z); }
+/* The planar float calls get float copies of both arrays (adv_floats_begin
+ * narrows one array at a time), narrowed as it does: a double below 1
+ * stays below 1.0f. */
+static const float *planar_floats(const double *x, size_t len, float *out)
+{
+    if (x == NULL || len > 4096u)
+        return NULL;
+    for (size_t j = 0; j < len; ++j) {
+        float f = (float)x[j];
+        out[j] = x[j] < 1.0 && f >= 1.0f ? nextafterf(1.0f, 0.0f) : f;
+    }
+    return out;
+}
+static float planar_x[4096], planar_y[4096];
+
+static int t_pointset_size(const adv_val *a) { return mcs_pointset_size(a[0].z, a[1].u32, a[2].p); }
+static int t_pointset_init(const adv_val *a) { return mcs_pointset_init(a[0].p, a[1].z, a[2].u32, a[3].p, a[4].z); }
+static int t_pointset_copy(const adv_val *a) { return mcs_pointset_copy(a[0].p, a[1].p, a[2].z, a[3].p); }
+static int t_pointset_set_path(const adv_val *a) { return mcs_pointset_set_path(a[0].p, (mcs_pointset_path)a[1].e); }
+static int t_pointset_path_for(const adv_val *a)
+{
+    mcs_pointset_path p = MCS_POINTSET_PATH_AUTO;
+    int st = mcs_pointset_path_for(a[0].p, a[1].z, a[2].p != NULL ? &p : NULL);
+    if (st == MCS_OK && p != MCS_POINTSET_PATH_DIRECT && p != MCS_POINTSET_PATH_NUFFT)
+        return ADV_BROKEN;
+    if (st == MCS_OK)
+        memcpy(a[2].p, &p, sizeof p);
+    return st;
+}
+static int t_pointset_set_wrap(const adv_val *a) { return mcs_pointset_set_wrap(a[0].p, a[1].e); }
 static int t_pointset_add(const adv_val *a) { return mcs_pointset_add(a[0].p, a[1].z, a[2].p); }
 static int t_pointset_add_f(const adv_val *a)
 {
@@ -75,7 +105,27 @@ static int t_pointset_count(const adv_val *a) { return mcs_pointset_count(a[0].p
 static int t_pointset_power(const adv_val *a) { return mcs_pointset_power(a[0].p, a[1].l, a[2].p); }
 static int t_pointset_power_stderr(const adv_val *a) { return mcs_pointset_power_stderr(a[0].p, a[1].l, a[2].p); }
 static int t_pointset_exact_power(const adv_val *a) { return mcs_pointset_exact_power((mcs_pattern_kind)a[0].e, a[1].z, a[2].l, a[3].p); }
-static int t_pointset2d_init(const adv_val *a) { return mcs_pointset2d_init(a[0].p, a[1].z); }
+static int t_pointset2d_size(const adv_val *a) { return mcs_pointset2d_size(a[0].z, a[1].u32, a[2].p); }
+static int t_pointset2d_init(const adv_val *a) { return mcs_pointset2d_init(a[0].p, a[1].z, a[2].u32, a[3].p, a[4].z); }
+static int t_pointset2d_copy(const adv_val *a) { return mcs_pointset2d_copy(a[0].p, a[1].p, a[2].z, a[3].p); }
+static int t_pointset2d_set_path(const adv_val *a) { return mcs_pointset2d_set_path(a[0].p, (mcs_pointset_path)a[1].e); }
+static int t_pointset2d_path_for(const adv_val *a)
+{
+    mcs_pointset_path p = MCS_POINTSET_PATH_AUTO;
+    int st = mcs_pointset2d_path_for(a[0].p, a[1].z, a[2].p != NULL ? &p : NULL);
+    if (st == MCS_OK && p != MCS_POINTSET_PATH_DIRECT && p != MCS_POINTSET_PATH_NUFFT)
+        return ADV_BROKEN;
+    if (st == MCS_OK)
+        memcpy(a[2].p, &p, sizeof p);
+    return st;
+}
+static int t_pointset2d_set_wrap(const adv_val *a) { return mcs_pointset2d_set_wrap(a[0].p, a[1].e); }
+static int t_pointset2d_add_planar(const adv_val *a) { return mcs_pointset2d_add_planar(a[0].p, a[1].z, a[2].p, a[3].p); }
+static int t_pointset2d_add_planar_f(const adv_val *a)
+{
+    return mcs_pointset2d_add_planar_f(a[0].p, a[1].z, planar_floats(a[2].p, a[1].z, planar_x),
+                                       planar_floats(a[3].p, a[1].z, planar_y));
+}
 static int t_pointset2d_add(const adv_val *a) { return mcs_pointset2d_add(a[0].p, a[1].z, a[2].p); }
 static int t_pointset2d_add_f(const adv_val *a)
 {
@@ -96,7 +146,19 @@ static int t_pointset2d_ring_size(const adv_val *a) { return mcs_pointset2d_ring
 static int t_pointset2d_exact_power(const adv_val *a) { return mcs_pointset2d_exact_power(a[0].p, a[1].l, a[2].l, a[3].p); }
 static int t_pointset2d_exact_radial(const adv_val *a) { return mcs_pointset2d_exact_radial(a[0].p, a[1].z, a[2].p); }
 static int t_pointset2d_exact_anisotropy(const adv_val *a) { return mcs_pointset2d_exact_anisotropy(a[0].p, a[1].z, a[2].p); }
-static int t_spectrum2d_init(const adv_val *a) { return mcs_spectrum2d_init(a[0].p, a[1].z, a[2].z); }
+static int t_spectrum2d_size(const adv_val *a) { return mcs_spectrum2d_size(a[0].z, a[1].z, a[2].p); }
+static int t_spectrum2d_init(const adv_val *a) { return mcs_spectrum2d_init(a[0].p, a[1].z, a[2].z, a[3].p, a[4].z); }
+static int t_spectrum2d_copy(const adv_val *a) { return mcs_spectrum2d_copy(a[0].p, a[1].p, a[2].z, a[3].p); }
+static int t_spectrum2d_set_wrap(const adv_val *a) { return mcs_spectrum2d_set_wrap(a[0].p, a[1].e); }
+static int t_spectrum2d_add_points_planar(const adv_val *a)
+{
+    return mcs_spectrum2d_add_points_planar(a[0].p, a[1].z, a[2].p, a[3].p, a[4].p);
+}
+static int t_spectrum2d_add_points_planar_f(const adv_val *a)
+{
+    return mcs_spectrum2d_add_points_planar_f(a[0].p, a[1].z, planar_floats(a[2].p, a[1].z, planar_x),
+                                              planar_floats(a[3].p, a[1].z, planar_y), a[4].p);
+}
 static int t_spectrum2d_add_points(const adv_val *a) { return mcs_spectrum2d_add_points(a[0].p, a[1].z, a[2].p, a[3].p); }
 static int t_spectrum2d_add_points_f(const adv_val *a)
 {
@@ -140,7 +202,9 @@ static const uint8_t p2d_binned_vars[3] = {0, 1, 3};       /* random, jittered, 
 #define F2(nm, b) LNG(nm, b, -4, 4, F_OKIN)
 #define S2_FREQ SZ_INDEX("freq_k", 1, 0, 5, F_OKIN), SZ_INDEX("freq_l", 1, 0, 3, F_OKIN)
 #define S2_PLANE(nm, role_) AIN(nm, E_D, role_, LEN(L_OBJNN, 0), 0)
-#define SIDES SZ_DEF("n_x", 6, 1, MCS_MAX_SIDE, 0), SZ_DEF("n_y", 4, 1, MCS_MAX_SIDE, 0)
+#define SIDES SZ_DEF("n_x", 6, 1, MCS_SPECTRUM2D_MAX_SIDE, 0), \
+              SZ_DEF("n_y", 4, 1, MCS_SPECTRUM2D_MAX_SIDE, 0)
+#define PATH_OUT OUT("path", E_U32, O_RAW, 0)
 #define BIN_FREQ SZ_INDEX("freq_k", 1, 0, 5, 0), SZ_INDEX("freq_l", 1, 0, 3, 0)
 #define EXACT_PLANE(nm) AIN(nm, E_D, R_F, LEN2(L_PROD, 1, 2), 0)
 
@@ -163,8 +227,15 @@ const adv_fn adv_fns_2d[] = {
         SZ_MATCH("k", 6, MCS_PATTERN2D_MAX_K), AOUT("points", E_D, O_U01, LEN(L_2SLOT, 2), 0)),
     FN(pattern2d_permute, EF_NONE, 1, 0, U32("i", 3, 0, UINT32_MAX, F_FREE),
        U32("l", 10, 0, UINT32_MAX, F_FREE), U32("p", 7, 0, UINT32_MAX, F_FREE)),
+    FN(pointset_size, EF_NONE, 1, 0, SZ_DEF("freq_max", 8, 1, MCS_POINTSET_MAX_FREQ, F_OKIN),
+       FLAGS, OUT("bytes", E_Z, O_RAW, 0)),
     FN(pointset_init, EF_INIT, 1, 1, OBJ_OUT("acc", T_POINTSET),
-       SZ_DEF("freq_max", 8, 1, MCS_MAX_FREQ_1D, F_OKIN)),
+       SZ_DEF("freq_max", 8, 1, MCS_POINTSET_MAX_FREQ, 0), FLAGS, MEM(4), SZ_LEN("bytes", PS_MEM)),
+    FN(pointset_copy, EF_NONE, 1, 0, OBJ_OUT("dst", T_POINTSET), MEM(2), SZ_LEN("bytes", PS_MEM),
+       OBJ_IN("src", T_POINTSET, 0)),
+    FN(pointset_set_path, EF_NONE, 1, 0, OBJ_IO("acc", T_POINTSET, 0), ENM("path", 2, 0, 2, F_OKIN)),
+    FN(pointset_path_for, EF_NONE, 1, 0, PS_IN, SZ_NOMAX("k", 6), PATH_OUT),
+    FN(pointset_set_wrap, EF_NONE, 1, 0, OBJ_IO("acc", T_POINTSET, 0), ENM("wrap", 1, 0, 1, F_OKIN)),
     FN(pointset_add, EF_ADD, 1, 1, OBJ_IO("acc", T_POINTSET, 0), SZ_LEN("k", 6),
        AIN("points", E_D, R_POINT, LEN(L_SLOT, 1), 0)),
     FN(pointset_add_f, EF_ADD, 1, 1, OBJ_IO("acc", T_POINTSET, 0), SZ_LEN("k", 6),
@@ -175,8 +246,21 @@ const adv_fn adv_fns_2d[] = {
     FN(pointset_power_stderr, EF_NONE, 1, 0, PS_IN, F1("freq"), OUT_NN("out")),
     FN(pointset_exact_power, EF_NONE, 1, 1, ENM("kind", 1, 0, 4, 0), SZ_NOMAX("k", 6),
        LNG("freq", 1, LONG_MIN, LONG_MAX, F_FREE), OUT_NN("out")),
+    FN(pointset2d_size, EF_NONE, 1, 0, SZ_DEF("freq_max", 4, 1, MCS_POINTSET2D_MAX_FREQ, F_OKIN),
+       FLAGS, OUT("bytes", E_Z, O_RAW, 0)),
     FN(pointset2d_init, EF_INIT, 1, 1, OBJ_OUT("acc", T_POINTSET2D),
-       SZ_DEF("freq_max", 4, 1, MCS_MAX_FREQ, F_OKIN)),
+       SZ_DEF("freq_max", 4, 1, MCS_POINTSET2D_MAX_FREQ, 0), FLAGS, MEM(4), SZ_LEN("bytes", P2_MEM)),
+    FN(pointset2d_copy, EF_NONE, 1, 0, OBJ_OUT("dst", T_POINTSET2D), MEM(2),
+       SZ_LEN("bytes", P2_MEM), OBJ_IN("src", T_POINTSET2D, 0)),
+    FN(pointset2d_set_path, EF_NONE, 1, 0, OBJ_IO("acc", T_POINTSET2D, 0),
+       ENM("path", 2, 0, 2, F_OKIN)),
+    FN(pointset2d_path_for, EF_NONE, 1, 0, P2_IN, SZ_NOMAX("k", 6), PATH_OUT),
+    FN(pointset2d_set_wrap, EF_NONE, 1, 0, OBJ_IO("acc", T_POINTSET2D, 0),
+       ENM("wrap", 1, 0, 1, F_OKIN)),
+    FN(pointset2d_add_planar, EF_ADD, 1, 1, OBJ_IO("acc", T_POINTSET2D, 0), SZ_LEN("k", 6),
+       AIN("x", E_D, R_POINT, LEN(L_SLOT, 1), 0), AIN("y", E_D, R_POINT, LEN(L_SLOT, 1), 0)),
+    FN(pointset2d_add_planar_f, EF_ADD, 1, 1, OBJ_IO("acc", T_POINTSET2D, 0), SZ_LEN("k", 6),
+       AIN("x", E_D, R_POINT, LEN(L_SLOT, 1), 0), AIN("y", E_D, R_POINT, LEN(L_SLOT, 1), 0)),
     FN(pointset2d_add, EF_ADD, 1, 1, OBJ_IO("acc", T_POINTSET2D, 0), SZ_LEN("k", 6),
        AIN("points", E_D, R_POINT, LEN(L_2SLOT, 1), 0)),
     FN(pointset2d_add_f, EF_ADD, 1, 1, OBJ_IO("acc", T_POINTSET2D, 0), SZ_LEN("k", 6),
@@ -197,8 +281,21 @@ const adv_fn adv_fns_2d[] = {
     FNV(pointset2d_exact_radial, EF_NONE, p2d_exact_vars, 0, PAT2, SZ_FREE("radius", 2), OUT_NN("out")),
     FNV(pointset2d_exact_anisotropy, EF_NONE, p2d_aniso_vars, 0, PAT2, SZ_FREE("radius", 2),
         OUT_VAL("out")),
+    FN(spectrum2d_size, EF_NONE, 1, 0, SZ_DEF("n_x", 6, 1, MCS_SPECTRUM2D_MAX_SIDE, F_OKIN),
+       SZ_DEF("n_y", 4, 1, MCS_SPECTRUM2D_MAX_SIDE, F_OKIN), OUT("bytes", E_Z, O_RAW, 0)),
     FN(spectrum2d_init, EF_INIT, 1, 1, OBJ_OUT("acc", T_SPECTRUM2D),
-       SZ_DEF("n_x", 6, 1, MCS_MAX_SIDE, F_OKIN), SZ_DEF("n_y", 4, 1, MCS_MAX_SIDE, F_OKIN)),
+       SZ_DEF("n_x", 6, 1, MCS_SPECTRUM2D_MAX_SIDE, 0), SZ_DEF("n_y", 4, 1, MCS_SPECTRUM2D_MAX_SIDE, 0),
+       MEM(4), SZ_LEN("bytes", S2_MEM)),
+    FN(spectrum2d_copy, EF_NONE, 1, 0, OBJ_OUT("dst", T_SPECTRUM2D), MEM(2),
+       SZ_LEN("bytes", S2_MEM), OBJ_IN("src", T_SPECTRUM2D, 0)),
+    FN(spectrum2d_set_wrap, EF_NONE, 1, 0, OBJ_IO("acc", T_SPECTRUM2D, 0),
+       ENM("wrap", 1, 0, 1, F_OKIN)),
+    FN(spectrum2d_add_points_planar, EF_ADD, 1, 1, OBJ_IO("acc", T_SPECTRUM2D, 0), SZ_LEN("k", 6),
+       AIN("x", E_D, R_POINT, LEN(L_SLOT, 1), 0), AIN("y", E_D, R_POINT, LEN(L_SLOT, 1), 0),
+       AIN("weights", E_D, R_WEIGHT, LEN(L_SLOT, 1), F_NULLOK)),
+    FN(spectrum2d_add_points_planar_f, EF_ADD, 1, 1, OBJ_IO("acc", T_SPECTRUM2D, 0), SZ_LEN("k", 6),
+       AIN("x", E_D, R_POINT, LEN(L_SLOT, 1), 0), AIN("y", E_D, R_POINT, LEN(L_SLOT, 1), 0),
+       AIN("weights", E_D, R_WEIGHT, LEN(L_SLOT, 1), F_NULLOK)),
     FN(spectrum2d_add_points, EF_ADD, 1, 1, OBJ_IO("acc", T_SPECTRUM2D, 0), SZ_LEN("k", 6),
        AIN("points", E_D, R_POINT, LEN(L_2SLOT, 1), 0),
        AIN("weights", E_D, R_WEIGHT, LEN(L_SLOT, 1), F_NULLOK)),

@@ -10,6 +10,9 @@
 static int loads_back(int st, int type, const void *buf, const size_t *len)
 {
     static _Alignas(64) unsigned char scratch[sizeof(mcs_spectrum)];
+    static adv_pointset ps;
+    static adv_pointset2d ps2;
+    static adv_spectrum2d s2;
     if (st != MCS_OK || buf == NULL)
         return st;
     int back;
@@ -18,9 +21,13 @@ static int loads_back(int st, int type, const void *buf, const size_t *len)
     case T_SPECTRUM: back = mcs_io_load_spectrum((void *)scratch, *len, buf); break;
     case T_MOMENT: back = mcs_io_load_moment((void *)scratch, *len, buf); break;
     case T_AUTOCORR: back = mcs_io_load_autocorr((void *)scratch, *len, buf); break;
-    case T_POINTSET: back = mcs_io_load_pointset((void *)scratch, *len, buf); break;
-    case T_POINTSET2D: back = mcs_io_load_pointset2d((void *)scratch, *len, buf); break;
-    default: back = mcs_io_load_spectrum2d((void *)scratch, *len, buf); break;
+    case T_POINTSET:
+        back = mcs_io_load_pointset(&ps.acc, 0u, ps.mem, sizeof ps.mem, *len, buf);
+        break;
+    case T_POINTSET2D:
+        back = mcs_io_load_pointset2d(&ps2.acc, 0u, ps2.mem, sizeof ps2.mem, *len, buf);
+        break;
+    default: back = mcs_io_load_spectrum2d(&s2.acc, s2.mem, sizeof s2.mem, *len, buf); break;
     }
     if (back == MCS_OK)
         return MCS_OK;
@@ -40,7 +47,19 @@ SAVE_THUNK(spectrum, T_SPECTRUM) SAVE_THUNK(moment, T_MOMENT) SAVE_THUNK(autocor
 SAVE_THUNK(welford, T_WELFORD) SAVE_THUNK(pointset, T_POINTSET)
 SAVE_THUNK(pointset2d, T_POINTSET2D) SAVE_THUNK(spectrum2d, T_SPECTRUM2D)
 LOAD_THUNK(spectrum) LOAD_THUNK(moment) LOAD_THUNK(autocorr) LOAD_THUNK(welford)
-LOAD_THUNK(pointset) LOAD_THUNK(pointset2d) LOAD_THUNK(spectrum2d)
+static int t_io_load_pointset(const adv_val *a)
+{
+    return mcs_io_load_pointset(a[0].p, a[1].u32, a[2].p, a[3].z, a[4].z, a[5].p);
+}
+static int t_io_load_pointset2d(const adv_val *a)
+{
+    return mcs_io_load_pointset2d(a[0].p, a[1].u32, a[2].p, a[3].z, a[4].z, a[5].p);
+}
+static int t_io_load_spectrum2d(const adv_val *a)
+{
+    return mcs_io_load_spectrum2d(a[0].p, a[1].p, a[2].z, a[3].z, a[4].p);
+}
+static int t_io_load_size(const adv_val *a) { return mcs_io_load_size(a[0].z, a[1].p, a[2].u32, a[3].p); }
 
 static int t_io_peek(const adv_val *a) { return mcs_io_peek(a[0].z, a[1].p, a[2].p); }
 static int t_io_crc32(const adv_val *a) { return mcs_io_crc32(a[0].z, a[1].p, a[2].p); }
@@ -132,6 +151,12 @@ static const uint8_t record_vars[4] = {0, 1, 2, 3};
     FN(io_load_##sfx, EF_NONE, 1, 0, OBJ_OUT("acc", T),                                     \
        {.name = "len", .kind = K_SIZE, .role = Z_REC, .type = T},                           \
        AIN("buf", E_U8, R_RECORD, LEN(L_REC, T), 0))
+/* The loads of the objects over caller memory: the caller's buffer too. */
+#define REC_LEN(T) {.name = "len", .kind = K_SIZE, .role = Z_REC, .type = T}
+#define REC_BUF(T) AIN("buf", E_U8, R_RECORD, LEN(L_REC, T), 0)
+#define LOAD_MEM(sfx, T, bytes)                                                            \
+    FN(io_load_##sfx, EF_NONE, 1, 0, OBJ_OUT("acc", T), FLAGS, MEM(3), SZ_LEN("bytes", bytes), \
+       REC_LEN(T), REC_BUF(T))
 #define TS_IN OBJ_IN("ts", T_TSPEC, 0)
 #define TS_SIZED OBJ_IN("ts", T_TSPEC, F_SIZED)
 #define FREQ(nm, b) SZ_INDEX(nm, b, 0, BN - 1u, F_OKIN)
@@ -146,8 +171,12 @@ const adv_fn adv_fns_io[] = {
     SAVE(welford, T_WELFORD), SAVE(pointset, T_POINTSET), SAVE(pointset2d, T_POINTSET2D),
     SAVE(spectrum2d, T_SPECTRUM2D),
     LOAD(spectrum, T_SPECTRUM), LOAD(moment, T_MOMENT), LOAD(autocorr, T_AUTOCORR),
-    LOAD(welford, T_WELFORD), LOAD(pointset, T_POINTSET), LOAD(pointset2d, T_POINTSET2D),
-    LOAD(spectrum2d, T_SPECTRUM2D),
+    LOAD(welford, T_WELFORD), LOAD_MEM(pointset, T_POINTSET, PS_MEM),
+    LOAD_MEM(pointset2d, T_POINTSET2D, P2_MEM),
+    FN(io_load_spectrum2d, EF_NONE, 1, 0, OBJ_OUT("acc", T_SPECTRUM2D), MEM(2),
+       SZ_LEN("bytes", S2_MEM), REC_LEN(T_SPECTRUM2D), REC_BUF(T_SPECTRUM2D)),
+    FN(io_load_size, EF_NONE, 1, 0, REC_LEN(T_POINTSET2D), REC_BUF(T_POINTSET2D), FLAGS,
+       OUT("bytes", E_Z, O_RAW, 0)),
     FN(io_peek, EF_NONE, 1, 0, {.name = "len", .kind = K_SIZE, .role = Z_REC, .type = T_SPECTRUM},
        AIN("buf", E_U8, R_RECORD, LEN(L_REC, T_SPECTRUM), 0),
        AOUT("info", E_U8, O_RAW, INFO_LEN, 0)),

@@ -16,13 +16,43 @@
     static mcs_status mg_##name(void *d, const void *s) { return mcs_##name##_merge((type *)d, (const type *)s); }
 #define KIND(name, type) LD(name, type) SV(name, type) MG(name, type)
 
+/* The objects over caller memory: the same calls on the slot's header (its
+ * first member: a NULL slot is a NULL header). */
+#define SLOT_SV(name, slot) \
+    static mcs_status sv_##name(const void *s, size_t c, void *b, size_t *l) \
+    { return mcs_io_save_##name((const mcs_##name *)s, c, b, l); }
+#define SLOT_MG(name, slot) \
+    static mcs_status mg_##name(void *d, const void *s) \
+    { return mcs_##name##_merge((mcs_##name *)d, (const mcs_##name *)s); }
+
 KIND(spectrum, mcs_spectrum)
 KIND(moment, mcs_moment)
 KIND(autocorr, mcs_autocorr)
 KIND(welford, mcs_welford)
-KIND(pointset, mcs_pointset)
-KIND(pointset2d, mcs_pointset2d)
-KIND(spectrum2d, mcs_spectrum2d)
+SLOT_SV(pointset, io_pointset)
+SLOT_MG(pointset, io_pointset)
+SLOT_SV(pointset2d, io_pointset2d)
+SLOT_MG(pointset2d, io_pointset2d)
+SLOT_SV(spectrum2d, io_spectrum2d)
+SLOT_MG(spectrum2d, io_spectrum2d)
+
+static mcs_status ld_pointset(void *d, size_t l, const void *b)
+{
+    io_pointset *s = d;
+    return mcs_io_load_pointset(d, 0u, s ? s->mem : NULL, sizeof s->mem, l, b);
+}
+
+static mcs_status ld_pointset2d(void *d, size_t l, const void *b)
+{
+    io_pointset2d *s = d;
+    return mcs_io_load_pointset2d(d, IO_FIX_FLAGS_2D, s ? s->mem : NULL, sizeof s->mem, l, b);
+}
+
+static mcs_status ld_spectrum2d(void *d, size_t l, const void *b)
+{
+    io_spectrum2d *s = d;
+    return mcs_io_load_spectrum2d(d, s ? s->mem : NULL, sizeof s->mem, l, b);
+}
 
 #define OPS(name, member, kind, shape_len) \
     {#name, kind, offsetof(io_set, member), sizeof(((io_set *)0)->member), shape_len, \
@@ -54,10 +84,14 @@ static void init_all(io_set *s, size_t n)
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_init(&s->mom, at_most(n, MCS_MAX_COV_N)));
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_autocorr_init(&s->ac, n));
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_welford_init(&s->wf));
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset_init(&s->ps, at_most(n, MCS_MAX_FREQ_1D)));
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_init(&s->ps2, at_most(n, MCS_MAX_FREQ)));
-    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_init(&s->sp2, at_most(n, MCS_MAX_SIDE),
-                                                      at_most(n / 2u + 1u, MCS_MAX_SIDE)));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset_init(&s->ps.acc, at_most(n, IO_FIX_FREQ_1D), 0u,
+                                                    s->ps.mem, sizeof s->ps.mem));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_init(&s->ps2.acc, at_most(n, IO_FIX_FREQ_2D),
+                                                      IO_FIX_FLAGS_2D, s->ps2.mem,
+                                                      sizeof s->ps2.mem));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_init(&s->sp2.acc, at_most(n, IO_FIX_SIDE),
+                                                      at_most(n / 2u + 1u, IO_FIX_SIDE),
+                                                      s->sp2.mem, sizeof s->sp2.mem));
 }
 
 void io_fill(io_set *s, size_t n, size_t trials, uint64_t seed)
@@ -75,14 +109,33 @@ void io_fill(io_set *s, size_t n, size_t trials, uint64_t seed)
             xy[j] = spectra_uniform(&state, 0.0, 1.0);
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum_add_bins(&s->spec, K, bins, weights));
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_autocorr_add_bins(&s->ac, K, bins, weights));
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset_add(&s->ps, K, points));
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_add(&s->ps2, K, xy));
-        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_add_points(&s->sp2, K, xy, weights));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset_add(&s->ps.acc, K, points));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pointset2d_add(&s->ps2.acc, K, xy));
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spectrum2d_add_points(&s->sp2.acc, K, xy, weights));
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_welford_add(&s->wf, (double)bins[0] + 0.25 * weights[1]));
         for (size_t j = 0; j < K; ++j)
             bins[j] %= s->mom.n;
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_add_bins(&s->mom, K, bins, weights));
     }
+}
+
+void io_assert_same(const io_kind_ops *o, const void *a, const void *b, const char *what)
+{
+    static uint8_t ra[IO_REC_MAX], rb[IO_REC_MAX];
+    if (o->kind != MCS_IO_KIND_POINTSET && o->kind != MCS_IO_KIND_POINTSET2D &&
+        o->kind != MCS_IO_KIND_SPECTRUM2D) {
+        TEST_ASSERT_EQUAL_MEMORY_MESSAGE(a, b, o->obj_size, what);
+        return;
+    }
+    size_t la = 0u, lb = 0u;
+    TEST_ASSERT_EQUAL_INT_MESSAGE(MCS_OK, o->save(a, sizeof ra, ra, &la), what);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(MCS_OK, o->save(b, sizeof rb, rb, &lb), what);
+    TEST_ASSERT_EQUAL_UINT64_MESSAGE((uint64_t)la, (uint64_t)lb, what);
+    TEST_ASSERT_EQUAL_MEMORY_MESSAGE(ra, rb, la, what);
+    /* the settings: the headers' fields before their pointers */
+    const size_t settings = o->kind == MCS_IO_KIND_SPECTRUM2D ? offsetof(mcs_spectrum2d, mem)
+                                                              : offsetof(mcs_pointset, mem);
+    TEST_ASSERT_EQUAL_MEMORY_MESSAGE(a, b, settings, what);
 }
 
 size_t io_save(const io_kind_ops *o, const void *src, uint8_t *buf)

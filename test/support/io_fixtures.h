@@ -25,14 +25,38 @@
 #define IO_POINTSET2D_BYTES(f) (44u + 32u * ((f) + 1u) * ((f) + 1u))
 #define IO_SPECTRUM2D_BYTES(n1, n2) (52u + 40u * (n1) * ((n2) / 2u + 1u))
 
+/* The largest shapes of the fixtures' objects over caller memory (their
+ * caps are far larger: the fixtures' buffers are static). The 2D point set
+ * is made without the NUFFT (MCS_POINTSET_DIRECT_ONLY), the 1D one with. */
+#define IO_FIX_FREQ_1D 1024u
+#define IO_FIX_FREQ_2D 64u
+#define IO_FIX_SIDE 64u
+#define IO_FIX_FLAGS_2D MCS_POINTSET_DIRECT_ONLY
+
 #define IO_MAX2(a, b) ((a) > (b) ? (a) : (b))
-/* Room for a record of every kind one size past this build's capacities. */
+/* Room for a record of every kind one size past this build's capacities
+ * (the fixtures' shapes for the objects over caller memory). */
 #define IO_REC_MAX                                                                     \
     IO_MAX2(IO_MAX2(IO_MAX2(IO_SPECTRUM_BYTES(MCS_MAX_N + 2u), IO_AUTOCORR_BYTES(MCS_MAX_N + 2u)), \
                     IO_MOMENT_BYTES(MCS_MAX_COV_N + 1u)),                              \
-            IO_MAX2(IO_POINTSET2D_BYTES(MCS_MAX_FREQ + 1u),                          \
-                    IO_MAX2(IO_SPECTRUM2D_BYTES(MCS_MAX_SIDE + 1u, MCS_MAX_SIDE + 1u), \
-                            IO_POINTSET_BYTES(MCS_MAX_FREQ_1D + 1u))))
+            IO_MAX2(IO_POINTSET2D_BYTES(IO_FIX_FREQ_2D + 1u),                        \
+                    IO_MAX2(IO_SPECTRUM2D_BYTES(IO_FIX_SIDE + 1u, IO_FIX_SIDE + 1u),   \
+                            IO_POINTSET_BYTES(IO_FIX_FREQ_1D + 1u))))
+
+/* The objects over caller memory, each with its buffer (the whole is what
+ * a byte comparison of "the object" compares). */
+typedef struct {
+    mcs_pointset acc;
+    _Alignas(64) unsigned char mem[MCS_POINTSET_SIZE(IO_FIX_FREQ_1D)];
+} io_pointset;
+typedef struct {
+    mcs_pointset2d acc;
+    _Alignas(64) unsigned char mem[MCS_POINTSET2D_SIZE_DIRECT(IO_FIX_FREQ_2D)];
+} io_pointset2d;
+typedef struct {
+    mcs_spectrum2d acc;
+    _Alignas(64) unsigned char mem[MCS_SPECTRUM2D_SIZE(IO_FIX_SIDE, IO_FIX_SIDE)];
+} io_spectrum2d;
 
 /* One accumulator of each kind. */
 typedef struct {
@@ -40,10 +64,11 @@ typedef struct {
     mcs_moment mom;
     mcs_autocorr ac;
     mcs_welford wf;
-    mcs_pointset ps;
-    mcs_pointset2d ps2;
-    mcs_spectrum2d sp2;
+    io_pointset ps;
+    io_pointset2d ps2;
+    io_spectrum2d sp2;
 } io_set;
+
 
 typedef struct {
     const char *name;
@@ -62,9 +87,14 @@ void *io_obj(io_set *s, const io_kind_ops *o);
 
 /* Fills every member of s from `trials` seeded trials: the binned kinds over
  * n bins (moment at min(n, MCS_MAX_COV_N)), the point sets with cutoffs
- * min(n, capacity), the 2D spectrum over min(n, MCS_MAX_SIDE) x
- * min(n/2 + 1, MCS_MAX_SIDE) bins. Fails the test on any library error. */
+ * min(n, IO_FIX_FREQ_1D or _2D), the 2D spectrum over min(n, IO_FIX_SIDE) x
+ * min(n/2 + 1, IO_FIX_SIDE) bins. Fails the test on any library error. */
 void io_fill(io_set *s, size_t n, size_t trials, uint64_t seed);
+
+/* Fails the test unless a and b, objects of kind o, hold the same: their
+ * bytes, or for the objects over caller memory (whose headers point into
+ * their own buffers) their records and settings. */
+void io_assert_same(const io_kind_ops *o, const void *a, const void *b, const char *what);
 
 /* Saves src of kind o into buf (IO_REC_MAX bytes) after checking that the
  * size query agrees; returns the size. */
