@@ -296,9 +296,26 @@ static mcs_status init_welford(void *obj, const uint64_t *shape)
     return mcs_welford_init((mcs_welford *)obj);
 }
 
+/* The accumulator's own state check (welford.c: moments within what values
+ * up to MCS_WELFORD_MAX_ABS give), through a read-out of the values as an
+ * object: a record the read-outs would refuse is refused on load. */
+static int welford_ok(const io_values *values, uint64_t count)
+{
+    mcs_welford w;
+    double v = 0.0;
+    if (count == 0u || mcs_welford_init(&w) != MCS_OK)
+        return 1;
+    w.count = count;
+    w.mean = mcs_io_value(values, 0u);
+    w.m2 = mcs_io_value(values, 1u);
+    w.m3 = mcs_io_value(values, 2u);
+    w.m4 = mcs_io_value(values, 3u);
+    return mcs_welford_mean(&w, &v) != MCS_ERR_INVARIANT;
+}
+
 static const io_kind kind_welford = {
     MCS_IO_KIND_WELFORD, 0u, sizes_welford, {0u},
-    count_welford, init_welford, offsetof(mcs_welford, count), NULL, 4u,
+    count_welford, init_welford, offsetof(mcs_welford, count), welford_ok, 4u,
     {IO_ARRAY(mcs_welford, mean, IO_ONE, 0u),
      IO_ARRAY(mcs_welford, m2, IO_ONE, IO_RULE_M2),
      IO_ARRAY(mcs_welford, m3, IO_ONE, IO_RULE_SPREAD),

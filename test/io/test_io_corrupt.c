@@ -563,9 +563,28 @@ static void test_counts_that_do_not_fit_the_data_are_refused(void)
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_io_load_welford(&set_a.wf, len, rec));
 }
 
+/* fuzz_load: a welford record of 20 values with m3 = -1.3e118 (above what
+ * values up to MCS_WELFORD_MAX_ABS give, (count - 1) 2^336) loaded, and then
+ * every read-out refused it. The loader now applies welford's own check. */
+static void test_a_welford_record_its_read_outs_would_refuse_is_refused(void)
+{
+    size_t len = save_a(&io_kinds[3], rec);
+    set_count(rec, len, 20u);
+    set_value(rec, len, 0u, 0u, 0.25);
+    set_value(rec, len, 0u, 1u, 2.0);
+    set_value(rec, len, 0u, 3u, 8.0);
+    set_value(rec, len, 0u, 2u, -1.3e118);
+    refused(&io_kinds[3], MCS_ERR_INVARIANT, len, rec, "m3 beyond its bound", 2u);
+    set_value(rec, len, 0u, 2u, -1.0);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_io_load_welford(&set_a.wf, len, rec));
+    double v = 0.0;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_welford_mean(&set_a.wf, &v));
+}
+
 int main(void)
 {
     UNITY_BEGIN();
+    RUN_TEST(test_a_welford_record_its_read_outs_would_refuse_is_refused);
     RUN_TEST(test_every_truncation_and_an_extra_byte_are_refused);
     RUN_TEST(test_every_changed_byte_is_refused);
     RUN_TEST(test_wrong_version_kind_and_shape_are_refused);
