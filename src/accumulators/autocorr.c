@@ -20,19 +20,6 @@ static mcs_status autocorr_check(const mcs_autocorr *acc)
     return st == MCS_OK && acc->count > (uint64_t)MCS_MAX_COUNT ? MCS_ERR_INVARIANT : st;
 }
 
-int mcs_autocorr_stored_valid(const mcs_autocorr *acc)
-{
-    const mcs_autocorr_sums_ s = {acc->n,
-                                  acc->count,
-                                  mcs_memory_values_(acc->sum_s),
-                                  mcs_memory_values_(acc->lo_s),
-                                  mcs_memory_values_(acc->sum_lag),
-                                  mcs_memory_values_(acc->lo_lag),
-                                  acc->sum_dc,
-                                  acc->lo_dc};
-    return mcs_autocorr_sums_ok_(&s);
-}
-
 /* Folded lag of an ordered pair of bins: e = min(d, N - d), d = c - b mod N. */
 static size_t folded_lag(size_t b, size_t c, size_t n)
 {
@@ -120,9 +107,6 @@ mcs_status mcs_autocorr_merge(mcs_autocorr *dst, const mcs_autocorr *src)
     mcs_status st = mcs_check_pair_(autocorr_check(dst), autocorr_check(src));
     if (st == MCS_OK)
         st = mcs_check_merge_(dst, src, sizeof *dst, dst->n == src->n, dst->count, src->count);
-    /* sums no trials give would pass into dst: refused (O(N), as the merge) */
-    if (st == MCS_OK && (!mcs_autocorr_stored_valid(dst) || !mcs_autocorr_stored_valid(src)))
-        st = MCS_ERR_INVARIANT;
     if (st != MCS_OK)
         return st;
     const size_t n = dst->n;
@@ -142,9 +126,10 @@ mcs_status mcs_autocorr_count(const mcs_autocorr *acc, uint64_t *count)
 }
 
 /* The checks of a read-out writing the n-entry arrays out and out2 (out2
- * NULL for one array), in this order: NULL, UNINIT (acc), MISMATCH, the
- * plan (UNINIT or MISMATCH), EMPTY, INVARIANT (sums no trials give:
- * mcs_autocorr_stored_valid), ALIAS (outputs overlapping each other, the accumulator or the plan:
+ * NULL for one array), in this order: NULL, UNINIT (acc), INVARIANT (a
+ * stored value beyond anything trials produce), MISMATCH, the plan (UNINIT
+ * or MISMATCH),
+ * EMPTY, ALIAS (outputs overlapping each other, the accumulator or the plan:
  * the plan's scratch holds the data mid-transform). */
 static mcs_status autocorr_readout(const mcs_autocorr *acc, const mcs_dft *plan, size_t n,
                                    const double *out, const double *out2)
@@ -156,7 +141,9 @@ static mcs_status autocorr_readout(const mcs_autocorr *acc, const mcs_dft *plan,
         st = mcs_dft_check(plan, n); /* UNINIT or MISMATCH */
     if (st == MCS_OK && acc->count == 0u)
         st = MCS_ERR_EMPTY;
-    if (st == MCS_OK && !mcs_autocorr_stored_valid(acc))
+    if (st == MCS_OK &&
+        (!mcs_all_stored_(n, acc->sum_s) || !mcs_all_stored_(n / 2u + 1u, acc->sum_lag) ||
+         !(acc->sum_dc >= 0.0) || !(acc->sum_dc <= MCS_STORED_LIMIT_)))
         st = MCS_ERR_INVARIANT;
     const size_t bytes = n * sizeof(double);
     const size_t out2_bytes = out2 != NULL ? bytes : 0u;
@@ -194,36 +181,6 @@ mcs_status mcs_autocorr_mean(const mcs_autocorr *acc, mcs_dft *plan, size_t n, d
     return transformed(mcs_dft_real(plan, n, re, re, im), n, re, im); /* eq. 15 */
 }
 
-/* The rounding bound of every power (autocorr.h), mcs_autocorr_power_gamma_
- * (acc_internal.h) times <A(0)> = 2 sum_lag[0] / T, the largest |<A(d)>|:
- * each stored lag sum is within (N + 8 + T N^2 eps) eps of T <A(0)> of its
- * exact value (a trial's lag is a sum of at most N products, or its pair
- * products one at a time, and Kahan's sum of n terms errs by 2u + n u^2 of
- * their magnitudes, n <= T N^2 products), and a transform of N lags of at
- * most <A(0)> each errs by (N + 2) u <A(0)> on the direct path (a sum of N
- * terms) or (8 log2 N + 16) u <A(0)> on the FFT paths (normwise, Higham,
- * Accuracy and Stability, thm 24.2, per stage 8u with twiddles to an ulp,
- * and the real transform's last step); the bound takes these and twice the
- * rounding of the loader's direct sums, so that what it loads reads out. */
-static double power_rounding(const mcs_autocorr *acc)
-{
-    return mcs_autocorr_power_gamma_(acc->n, acc->count, 0) *
-           (2.0 * acc->sum_lag[0] / (double)acc->count);
-}
-
-int mcs_autocorr_powers_valid(const mcs_autocorr *acc)
-{
-    const mcs_autocorr_sums_ s = {acc->n,
-                                  acc->count,
-                                  mcs_memory_values_(acc->sum_s),
-                                  mcs_memory_values_(acc->lo_s),
-                                  mcs_memory_values_(acc->sum_lag),
-                                  mcs_memory_values_(acc->lo_lag),
-                                  acc->sum_dc,
-                                  acc->lo_dc};
-    return mcs_autocorr_powers_ok_(&s);
-}
-
 mcs_status mcs_autocorr_power(const mcs_autocorr *acc, mcs_dft *plan, size_t n, double *power)
 {
     mcs_status st = autocorr_readout(acc, plan, n, power, NULL);
@@ -249,14 +206,5 @@ mcs_status mcs_autocorr_power(const mcs_autocorr *acc, mcs_dft *plan, size_t n, 
     for (size_t k = 0; k < n; ++k)
         power[k] *= scale;
     power[0] += acc->sum_dc * inv;
-    /* A power is a mean of |S_k|^2: one below 0 within the rounding bound
-     * is rounding (at the weight limit, -2.7e39 beside 2.5e57 at k = 0) and
-     * reads 0; one below that is no spectrum of any trials. */
-    const double bound = power_rounding(acc);
-    for (size_t k = 0; k < n && st == MCS_OK; ++k)
-        if (power[k] < 0.0)
-            st = power[k] >= -bound ? MCS_OK : MCS_ERR_INVARIANT;
-    for (size_t k = 0; k < n && st == MCS_OK; ++k)
-        power[k] = power[k] < 0.0 ? 0.0 : power[k];
-    return st;
+    return MCS_OK;
 }

@@ -50,27 +50,37 @@ static void first_dft(const mcs_readout *view, size_t freq, double *re, double *
     *im = i * scale;
 }
 
-/* sum_m |g_m| sqrt(<D_m>) (g NULL: 1), <D_m> the average of the diagonal of
- * second (a sum of squares, read as 0 if rounding left it below). */
-static double root_weight(const mcs_readout *view, const double *g)
+/* A bound on the rounding an open batch adds to every sum of |second| the
+ * bounds below take, in units of eps: each batch_w entry sums at most
+ * batch_terms products, whose magnitudes sum to at most sqrt(D_m D_n)
+ * (Cauchy-Schwarz, D_m = 2 batch_w[m][m] the sum of the squares), and the
+ * batch's d sums are formed with a few more roundings of |bs_m c_n|
+ * + |c_m bs_n| + B |c_m c_n|. Returned: that bound for the sum over every
+ * (m, n) of g_m h_n times the error of entry (m, n), g and h given as their
+ * O(N) sums sum g_m sqrt(D_m), sum g_m |bs_m|, sum g_m |c_m| (and h's). */
+typedef struct {
+    double root, bs, c;
+} batch_weights;
+
+static batch_weights batch_sums(const mcs_readout *view, const double *g)
 {
-    double r = 0.0;
+    batch_weights r = {0.0, 0.0, 0.0};
     for (size_t m = 0; m < view->n; ++m) {
-        const double dm = mcs_readout_second(view, m, m) * view->scale;
-        r += (g != NULL ? fabs(g[m]) : 1.0) * sqrt(dm > 0.0 ? dm : 0.0);
+        const double gm = g != NULL ? fabs(g[m]) : 1.0;
+        r.root += gm * sqrt(2.0 * fabs(view->batch_w[m * view->n + m]));
+        r.bs += gm * fabs(view->batch_s[m]);
+        r.c += gm * fabs(view->shift[m]);
     }
     return r;
 }
 
-/* Entry (m, n) of second errs by at most accum sqrt(D_m D_n) (Cauchy-Schwarz
- * on sum_t |d_m d_n|), entry m of first by accum sqrt(T D_m); in a form the
- * second moments' errors sum to accum (sum |g| sqrt(<D>)) (sum |h| sqrt(<D>))
- * and those of the products of first averages to twice that. */
-double mcs_readout_accumulated(const mcs_readout *view, const double *g, const double *h)
+double mcs_readout_batch_rounding(const mcs_readout *view, const double *g, const double *h)
 {
-    if (view->accum == 0.0 || view->shift == NULL) /* exact moments (no shift either) */
+    if (!mcs_readout_has_batch(view))
         return 0.0;
-    return 3.0 * view->accum * root_weight(view, g) * root_weight(view, h);
+    const batch_weights a = batch_sums(view, g), b = batch_sums(view, h);
+    return (2.0 * view->batch_terms + 8.0) * DBL_EPSILON *
+           (a.root * b.root + a.bs * b.c + a.c * b.bs + view->batch_sparse * a.c * b.c);
 }
 
 /* The transform of first * scale: <S_k> without a shift, <D_k> (d = s - c)
@@ -173,8 +183,7 @@ static void covariance_at(const mcs_readout *view, size_t freq_k, size_t freq_l,
 /* The rounding bound of a variance Cov(S_k, S_k) read as above: the O(N^2)
  * transform of second errs by at most (2N + 2) u sum |second| scale / N, the
  * square of the O(N) transform of first by N u (sum |first| scale)^2 / N
- * (u = eps / 2): twice their sum; and the rounding the stored sums carry
- * (mcs_readout_accumulated, |e^{..}| = 1 / N in eq. 16). */
+ * (u = eps / 2), and the accumulation of second by less. Twice their sum. */
 static double variance_rounding(const mcs_readout *view)
 {
     const size_t n = view->n;
@@ -186,9 +195,21 @@ static double variance_rounding(const mcs_readout *view)
         b += fabs(mcs_readout_first(view, j));
     a *= view->scale;
     b *= view->scale;
-    return (4.0 * ((double)n + 2.0) * DBL_EPSILON * (a + b * b) +
-            mcs_readout_accumulated(view, NULL, NULL)) /
-           (double)n;
+    return 4.0 * ((double)n + 2.0) * DBL_EPSILON * (a + b * b) / (double)n +
+           mcs_readout_batch_rounding(view, NULL, NULL) * view->scale / (double)n;
+}
+
+/* A variance is >= 0: a value below 0 within the rounding bound tol is
+ * rounding and reads 0; one below -tol is no variance any data give, so the
+ * object holds values no calls produce. */
+static mcs_status clamp_variance(double tol, double *v)
+{
+    if (*v >= 0.0)
+        return MCS_OK;
+    if (!(*v >= -tol)) /* beyond rounding (or NaN) */
+        return MCS_ERR_INVARIANT;
+    *v = 0.0;
+    return MCS_OK;
 }
 
 double mcs_readout_nonnegative(const mcs_readout *view, double value, double bound)
@@ -197,49 +218,16 @@ double mcs_readout_nonnegative(const mcs_readout *view, double value, double bou
     return value < 0.0 && -value <= bound ? 0.0 : value;
 }
 
-mcs_status mcs_readout_clamp(double bound, double *value)
-{
-    if (*value >= 0.0)
-        return MCS_OK;
-    if (!(*value >= -bound)) /* beyond rounding (or NaN) */
-        return MCS_ERR_INVARIANT;
-    *value = 0.0;
-    return MCS_OK;
-}
-
-/* sum_m |x_m| of an array of the view's N. */
-static double abs_sum(size_t n, const double *x)
-{
-    double sum = 0.0;
-    for (size_t m = 0; m < n; ++m)
-        sum += fabs(x[m]);
-    return sum;
-}
-
-/* The bound of <|S_k|^2> = (1/N) sum e^{..} <s_m s_n>: |e^{..}| = 1, (2N + 16)
- * eps times the sum of |<s_m s_n>| for exact moments. Measured ones (a
- * shift) add the squares of the transforms of <d> and of <s> = c + <d>, and
- * take 8 R + A (acc_internal.h, mcs_moment_power_rounding_: R the rounding
- * of a power read from the sums, A what the sums carry), so that whatever
- * the loader accepts at -(4 R + A) reads out. */
+/* The bound of <|S_k|^2> = (1/N) sum e^{..} <s_m s_n>: |e^{..}| = 1. */
 static double power_bound(const mcs_readout *view)
 {
-    const size_t n = view->n;
-    const double nd = (double)n;
     double sum = 0.0;
-    for (size_t m = 0; m < n; ++m)
-        for (size_t c = 0; c < n; ++c)
+    for (size_t m = 0; m < view->n; ++m)
+        for (size_t c = 0; c < view->n; ++c)
             sum += fabs(mcs_readout_second(view, m, c) * view->scale);
-    if (view->shift == NULL)
-        return (2.0 * nd + 16.0) * DBL_EPSILON * sum / nd;
-    double d = 0.0;
-    for (size_t m = 0; m < n; ++m)
-        d += fabs(mcs_readout_first(view, m) * view->scale);
-    const double s = d + abs_sum(n, view->shift);
-    const double r = ((2.0 * nd + 64.0) * DBL_EPSILON * sum +
-                      4.0 * (nd + 32.0) * DBL_EPSILON * (d * d + s * s)) /
-                     nd;
-    return 8.0 * r + mcs_readout_accumulated(view, NULL, NULL) / nd;
+    return ((2.0 * (double)view->n + 16.0) * DBL_EPSILON * sum +
+            mcs_readout_batch_rounding(view, NULL, NULL) * view->scale) /
+           (double)view->n;
 }
 
 /* ---- checked read-outs ---------------------------------------------------- */
@@ -272,26 +260,14 @@ mcs_status mcs_readout_bin_second(const mcs_readout_source *src, size_t bin_m,
     if (st != MCS_OK)
         return st;
     double x = mcs_readout_second(&v, bin_m, bin_n) * v.scale;
-    double bound = 4.0 * DBL_EPSILON * fabs(x) + mcs_readout_accumulated(&v, NULL, NULL);
-    if (v.shift != NULL) { /* <s_m s_n> = Cov(d)_mn + <s_m><s_n> */
-        const double sm = mcs_readout_mean_entry(&v, bin_m), sn = mcs_readout_mean_entry(&v, bin_n);
-        const double dm = mcs_readout_first(&v, bin_m) * v.scale;
-        const double dn = mcs_readout_first(&v, bin_n) * v.scale;
-        x += sm * sn - dm * dn;
-        bound += 8.0 * DBL_EPSILON * (fabs(sm * sn) + fabs(dm * dn));
-    }
-    /* <s_m^2> is never negative: as mcs_readout_power (bound: the sums' and
-     * this sum's rounding) */
-    if (bin_m == bin_n && x < 0.0) {
-        st = mcs_readout_clamp(bound, &x);
-        if (st != MCS_OK)
-            return st;
-    }
+    if (v.shift != NULL) /* <s_m s_n> = Cov(d)_mn + <s_m><s_n> */
+        x += mcs_readout_mean_entry(&v, bin_m) * mcs_readout_mean_entry(&v, bin_n) -
+             (mcs_readout_first(&v, bin_m) * v.scale) * (mcs_readout_first(&v, bin_n) * v.scale);
     return mcs_set_(out, x);
 }
 
 /* A complex read-out at frequencies freq_k, freq_l: the value into re, im,
- * and a status (only a variance or a power can fail, see mcs_readout_clamp). */
+ * and a status (only a variance can fail, see clamp_variance). */
 typedef mcs_status (*complex_at)(const mcs_readout *view, size_t freq_k, size_t freq_l,
                                  double *re, double *im);
 
@@ -336,15 +312,21 @@ static mcs_status cross_value(const mcs_readout *view, size_t freq_k, size_t fre
 }
 
 /* <|S_k|^2> as a complex_at (k = l): real, and a second moment, never
- * negative but for rounding. A value below minus the rounding bound is no
- * moment of any data, measured or exact: the object holds values no call
- * produced (MCS_ERR_INVARIANT, as the cross matrix's diagonal reads it). */
+ * negative but for rounding (see mcs_readout_nonnegative). Exact moments
+ * below minus the rounding bound are no moments any pattern has: the object
+ * holds values no call produced (as the cross matrix's diagonal reads it). */
 static mcs_status power_value(const mcs_readout *view, size_t freq_k, size_t freq_l,
                               double *re, double *im)
 {
     mcs_readout_cross_at(view, freq_k, freq_l, re, im);
     *im = 0.0; /* <s s^T> is symmetric: the imaginary part is rounding */
-    return *re < 0.0 ? mcs_readout_clamp(power_bound(view), re) : MCS_OK;
+    if (*re < 0.0) {
+        const double bound = power_bound(view);
+        if (view->k != 0u && !(*re >= -bound))
+            return MCS_ERR_INVARIANT;
+        *re = mcs_readout_nonnegative(view, *re, bound);
+    }
+    return MCS_OK;
 }
 
 /* Cov(S_k, S_l) as a complex_at: a variance (k = l) is never negative. */
@@ -352,7 +334,7 @@ static mcs_status covariance_value(const mcs_readout *view, size_t freq_k, size_
                                    double *re, double *im)
 {
     covariance_at(view, freq_k, freq_l, re, im);
-    return freq_k == freq_l ? mcs_readout_clamp(variance_rounding(view), re) : MCS_OK;
+    return freq_k == freq_l ? clamp_variance(variance_rounding(view), re) : MCS_OK;
 }
 
 mcs_status mcs_readout_mean(const mcs_readout_source *src, size_t freq, double *re,
@@ -507,24 +489,16 @@ mcs_status mcs_readout_cross_matrix(const mcs_readout_source *src, size_t n,
     mcs_status st = open_matrix(src, n, re, im, &v);
     if (st != MCS_OK)
         return st;
-    /* The diagonal is checked before anything is written (power_value). */
-    const double tol = power_bound(&v);
-    for (size_t k = 0; k < n && st == MCS_OK; ++k) {
-        double pr, pi;
-        mcs_readout_cross_at(&v, k, k, &pr, &pi);
-        st = mcs_readout_clamp(tol, &pr);
-    }
-    if (st != MCS_OK)
-        return st;
     second_matrix_at(&v, re, im);
     if (v.shift != NULL) { /* as mcs_readout_cross_at */
         add_mean_products(&v, first_mean_at, first_mean_at, -1.0, re, im);
         add_mean_products(&v, mean_at, mean_at, 1.0, re, im);
     }
     /* The diagonal is <|S_k|^2>, clamped as mcs_readout_power: two sums of N
-     * terms, within power_bound (checked before anything was written). */
+     * terms, within power_bound. */
+    const double tol = power_bound(&v);
     for (size_t k = 0; k < n; ++k)
-        (void)mcs_readout_clamp(tol, &re[k * n + k]);
+        re[k * n + k] = mcs_readout_nonnegative(&v, re[k * n + k], tol);
     return MCS_OK;
 }
 
@@ -535,18 +509,18 @@ mcs_status mcs_readout_covariance_matrix(const mcs_readout_source *src, size_t n
     mcs_status st = open_matrix(src, n, re, im, &v);
     if (st != MCS_OK)
         return st;
-    /* The diagonal is checked before anything is written (covariance_value). */
+    /* The diagonal is checked before anything is written (see clamp_variance). */
     const double tol = variance_rounding(&v);
     for (size_t k = 0; k < n && st == MCS_OK; ++k) {
         double vr, vi;
         covariance_at(&v, k, k, &vr, &vi);
-        st = mcs_readout_clamp(tol, &vr);
+        st = clamp_variance(tol, &vr);
     }
     if (st != MCS_OK)
         return st;
     second_matrix_at(&v, re, im);
     add_mean_products(&v, first_mean_at, first_mean_at, -1.0, re, im);
     for (size_t k = 0; k < n; ++k)
-        (void)mcs_readout_clamp(tol, &re[k * n + k]);
+        (void)clamp_variance(tol, &re[k * n + k]);
     return MCS_OK;
 }

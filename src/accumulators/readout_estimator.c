@@ -26,10 +26,9 @@ double mcs_readout_form(const mcs_readout *view, size_t k, const double *f, cons
 
 /* Rounding bound of a form over the moments: (2N + 16) DBL_EPSILON times the
  * sum of the magnitudes of its terms, (1/K^2) sum |f_m| |g_n| (|<s_m s_n>| +
- * |<s_m>| |<s_n>|) (of d = s - c with a shift). Each term carries the few
- * roundings of the moments and of its product, and a sum of N terms at most
- * N more (twice: rows, then the sum of rows). Measured moments add the
- * rounding their sums carry (mcs_readout_accumulated). */
+ * |<s_m>| |<s_n>|). Each term carries the few roundings of the moments and of
+ * its product, and a sum of N terms at most N more (twice: rows, then the
+ * sum of rows). */
 double mcs_readout_form_bound(const mcs_readout *view, size_t k, const double *f,
                               const double *g)
 {
@@ -45,7 +44,7 @@ double mcs_readout_form_bound(const mcs_readout *view, size_t k, const double *f
         sum += fabs(f[m]) * acc;
     }
     const double kd = (double)k;
-    return ((2.0 * (double)n + 16.0) * DBL_EPSILON * sum + mcs_readout_accumulated(view, f, g)) /
+    return ((2.0 * (double)n + 16.0) * DBL_EPSILON * sum + mcs_readout_batch_rounding(view, f, g) * sc) /
            (kd * kd);
 }
 
@@ -118,11 +117,8 @@ mcs_status mcs_readout_variance(const mcs_readout_source *src, size_t n, size_t 
     if (st != MCS_OK)
         return st;
     double var = mcs_readout_form(&v, k, f, f);
-    if (var < 0.0) { /* f^T Cov f: never negative but for rounding */
-        st = mcs_readout_clamp(mcs_readout_form_bound(&v, k, f, f), &var);
-        if (st != MCS_OK)
-            return st;
-    }
+    if (var < 0.0) /* f^T Cov f: never negative but for rounding */
+        var = mcs_readout_nonnegative(&v, var, mcs_readout_form_bound(&v, k, f, f));
     return finite_result(var, out);
 }
 
