@@ -18,10 +18,10 @@
 #define CMD "mcspec discrepancy"
 #define CSV_HEADER "measure,value,stderr,exact_random,root"
 
-/* Most coordinates a point line may have: cli/input.c's readers take one
- * or two (cli_pointset_format); the library takes up to
- * MCS_DISCREPANCY_MAX_DIM. */
-#define MAX_DIM 2
+/* Most coordinates a point line may have: the reader's cap, which is the
+ * library's MCS_DISCREPANCY_MAX_DIM. */
+#define MAX_DIM CLI_MAX_DIM
+_Static_assert(CLI_MAX_DIM <= MCS_DISCREPANCY_MAX_DIM, "the reader takes what the library takes");
 
 static const char help[] =
     "usage: mcspec discrepancy [--dim D] [--wrap] [--csv] [FILE|-]\n"
@@ -53,7 +53,8 @@ static const char help[] =
     "and what was wrong, exit 2.\n"
     "\n"
     "Options:\n"
-    "  --dim D   coordinates per point, 1 or 2 (default 2)\n"
+    "  --dim D   coordinates per point, 1 to " CLI_STR(CLI_MAX_DIM) " (default: as many as the\n"
+    "            first point line has; every line must then have as many)\n"
     "  --wrap    take coordinates modulo 1 (default: outside [0,1) is an error)\n"
     "  --csv     print CSV only: the header, exactly\n"
     "            " CSV_HEADER "\n"
@@ -69,9 +70,10 @@ typedef struct {
 } disc_opts;
 
 typedef struct {
-    mcs_discrepancy acc;
-    void *work; /* the star's scratch (2D), or NULL */
+    mcs_discrepancy acc; /* initialised at the first set, when the dimension is known */
+    void *work;          /* the star's scratch (2D), or NULL */
     size_t work_bytes;
+    const cli_pointset_stats *stats; /* the reader's: the file's dimension */
 } disc_ctx;
 
 static int parse(int argc, char **argv, disc_opts *o)
@@ -93,6 +95,16 @@ static int add_set(void *ctx, size_t k, const double *coords, const double *weig
 {
     (void)weights;
     disc_ctx *c = ctx;
+    if (c->acc.dim == 0u) {
+        if (mcs_discrepancy_init(&c->acc, c->stats->dim) != MCS_OK)
+            return cli_internal(CMD, "mcs_discrepancy_init failed");
+        if (c->stats->dim == 2u) {
+            c->work_bytes = MCS_DISCREPANCY_STAR_WORK_SIZE(MCS_DISCREPANCY_STAR_MAX_K);
+            c->work = cli_alloc(CMD, 1, c->work_bytes);
+            if (c->work == NULL)
+                return CLI_EXIT_FAIL;
+        }
+    }
     mcs_status st = mcs_discrepancy_add(&c->acc, k, coords, c->work, c->work_bytes);
     if (st != MCS_OK)
         return cli_internal(CMD, "adding a point set failed: %s", mcs_status_str(st));
@@ -132,16 +144,16 @@ static void report(const disc_opts *o, const mcs_discrepancy *acc,
 {
     uint64_t star = 0;
     mcs_discrepancy_count(acc, MCS_DISCREPANCY_STAR, &star);
-    const int with_star = o->dim == 2u && star == stats->sets;
+    const int with_star = stats->dim == 2u && star == stats->sets;
     if (o->csv) {
         puts(CSV_HEADER);
     } else {
         printf("%s: %s, %llu point sets in %zuD, K = %zu to %zu points per set (%lu lines read)\n",
-               CMD, cli_input_name(o->path), (unsigned long long)stats->sets, o->dim,
+               CMD, cli_input_name(o->path), (unsigned long long)stats->sets, stats->dim,
                stats->k_min, stats->k_max, stats->lines);
         printf("value: mean over the sets of D^2; root = sqrt(value); exact_random: E[D^2] of "
                "independent uniform points; z = (value - exact_random) / stderr\n");
-        if (o->dim == 2u && !with_star)
+        if (stats->dim == 2u && !with_star)
             printf("star: not computed (a set has more than %d points)\n",
                    MCS_DISCREPANCY_STAR_MAX_K);
         printf("\n%-15s %13s %13s %13s %13s %8s\n", "measure", "value", "stderr", "exact_random",
@@ -161,29 +173,19 @@ static void report(const disc_opts *o, const mcs_discrepancy *acc,
 
 int cli_cmd_discrepancy(int argc, char **argv)
 {
-    disc_opts o = {2, 0, 0, NULL};
+    disc_opts o = {0, 0, 0, NULL};
     int rc = parse(argc, argv, &o);
     if (rc != 0)
         return rc < 0 ? CLI_EXIT_OK : rc;
     disc_ctx *ctx = cli_alloc(CMD, 1, sizeof *ctx);
     if (ctx == NULL)
         return CLI_EXIT_FAIL;
+    cli_pointset_stats stats;
+    ctx->acc.dim = 0;
     ctx->work = NULL;
     ctx->work_bytes = 0;
-    if (mcs_discrepancy_init(&ctx->acc, o.dim) != MCS_OK) {
-        free(ctx);
-        return cli_internal(CMD, "mcs_discrepancy_init failed");
-    }
-    if (o.dim == 2u) {
-        ctx->work_bytes = MCS_DISCREPANCY_STAR_WORK_SIZE(MCS_DISCREPANCY_STAR_MAX_K);
-        ctx->work = cli_alloc(CMD, 1, ctx->work_bytes);
-        if (ctx->work == NULL) {
-            free(ctx);
-            return CLI_EXIT_FAIL;
-        }
-    }
+    ctx->stats = &stats;
     cli_pointset_format fmt = {.dim = o.dim, .weights = 0, .wrap = o.wrap};
-    cli_pointset_stats stats;
     cli_progress progress;
     cli_progress_init(&progress, !o.csv, CMD, "sets read", 0);
     rc = cli_read_pointsets(CMD, o.path, &fmt, add_set, ctx, &stats, &progress);

@@ -17,9 +17,9 @@
 #define CMD "mcspec stats"
 #define CSV_HEADER "statistic,value,stderr"
 
-/* Most coordinates a point line may have: cli/input.c's readers take one
- * or two (cli_pointset_format); the library takes up to MCS_SPACING_MAX_DIM. */
-#define MAX_DIM 2
+/* Most coordinates a point line may have: the library's cap (the densest
+ * lattice packings are known to d = 8). */
+#define MAX_DIM MCS_SPACING_MAX_DIM
 
 static const char help[] =
     "usage: mcspec stats [--dim D] [--wrap] [--csv] [FILE|-]\n"
@@ -44,7 +44,8 @@ static const char help[] =
     "with the file, the line number and what was wrong, exit 2.\n"
     "\n"
     "Options:\n"
-    "  --dim D   coordinates per point, 1 or 2 (default 2)\n"
+    "  --dim D   coordinates per point, 1 to " CLI_STR(MCS_SPACING_MAX_DIM) " (default: as many as the\n"
+    "            first point line has; every line must then have as many)\n"
     "  --wrap    take coordinates modulo 1 (default: outside [0,1) is an error)\n"
     "  --csv     print CSV only: the header, exactly\n"
     "            " CSV_HEADER "\n"
@@ -65,6 +66,7 @@ typedef struct {
     uint64_t sets;    /* sets seen, for messages */
     void *work;       /* scratch, grown to the largest set's need */
     size_t work_bytes;
+    const cli_pointset_stats *stats; /* the reader's: the file's dimension */
 } stats_ctx;
 
 static int parse(int argc, char **argv, stats_opts *o)
@@ -86,6 +88,14 @@ static int add_set(void *ctx, size_t k, const double *coords, const double *weig
 {
     (void)weights;
     stats_ctx *c = ctx;
+    if (c->acc.dim == 0u) {
+        if (c->stats->dim > MCS_SPACING_MAX_DIM)
+            return cli_fail(CMD, "%s: the points have %zu coordinates; the spacing statistics "
+                            "take 1 to %d (the densest packings are known to d = %d)", c->name,
+                            c->stats->dim, MCS_SPACING_MAX_DIM, MCS_SPACING_MAX_DIM);
+        if (mcs_spacing_init(&c->acc, c->stats->dim) != MCS_OK)
+            return cli_internal(CMD, "mcs_spacing_init failed");
+    }
     ++c->sets;
     if (k < 2u)
         return cli_fail(CMD, "%s: point set %llu has a single point (a nearest other point "
@@ -112,10 +122,13 @@ static void report(const stats_opts *o, const mcs_spacing *acc, const cli_points
         puts(CSV_HEADER);
     } else {
         printf("%s: %s, %llu point sets in %zuD, K = %zu to %zu points per set (%lu lines read)\n",
-               CMD, cli_input_name(o->path), (unsigned long long)stats->sets, o->dim,
+               CMD, cli_input_name(o->path), (unsigned long long)stats->sets, stats->dim,
                stats->k_min, stats->k_max, stats->lines);
         printf("toroidal distances as fractions of the maximal packing distance d_max = %s; "
-               "value: mean over the sets\n", o->dim == 1u ? "1/K" : "sqrt(2 / (sqrt(3) K))");
+               "value: mean over the sets\n", stats->dim == 1u   ? "1/K"
+                                              : stats->dim == 2u ? "sqrt(2 / (sqrt(3) K))"
+                                                                 : "that of the densest lattice "
+                                                                   "packing (docs/measures.md)");
         printf("\n%-17s %13s %13s\n", "statistic", "value", "stderr");
     }
     for (int i = 0; i < MCS_SPACING_STATISTICS; ++i) {
@@ -132,15 +145,15 @@ static void report(const stats_opts *o, const mcs_spacing *acc, const cli_points
 
 int cli_cmd_stats(int argc, char **argv)
 {
-    stats_opts o = {2, 0, 0, NULL};
+    stats_opts o = {0, 0, 0, NULL};
     int rc = parse(argc, argv, &o);
     if (rc != 0)
         return rc < 0 ? CLI_EXIT_OK : rc;
-    stats_ctx ctx = {.name = cli_input_name(o.path), .sets = 0, .work = NULL, .work_bytes = 0};
-    if (mcs_spacing_init(&ctx.acc, o.dim) != MCS_OK)
-        return cli_internal(CMD, "mcs_spacing_init failed");
-    cli_pointset_format fmt = {.dim = o.dim, .weights = 0, .wrap = o.wrap};
     cli_pointset_stats stats;
+    stats_ctx ctx = {.name = cli_input_name(o.path), .sets = 0, .work = NULL, .work_bytes = 0,
+                     .stats = &stats};
+    ctx.acc.dim = 0; /* initialised at the first set, when the dimension is known */
+    cli_pointset_format fmt = {.dim = o.dim, .weights = 0, .wrap = o.wrap};
     cli_progress progress;
     cli_progress_init(&progress, !o.csv, CMD, "sets read", 0);
     rc = cli_read_pointsets(CMD, o.path, &fmt, add_set, &ctx, &stats, &progress);

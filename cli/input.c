@@ -9,8 +9,9 @@
 #include <string.h>
 #include <sys/stat.h>
 
-/* Most columns a line can have: 2 coordinates and a weight. */
-#define MAX_COLUMNS 3
+/* Most columns a line can have: CLI_MAX_DIM coordinates and a weight; one
+ * more token is split off so that a longer line is reported, not cut. */
+#define MAX_COLUMNS (CLI_MAX_DIM + 2u)
 
 typedef struct {
     const char *cmd;
@@ -182,19 +183,22 @@ static int check_weight_sum(const reader *r, const cli_pointset_format *fmt, con
 
 /* One point line, tokens already split: coordinates (checked or wrapped),
  * then the weight. */
-static int parse_point(const reader *r, const cli_pointset_format *fmt, char **tok, size_t ntok,
-                       double *coord, double *weight)
+static int parse_point(const reader *r, const cli_pointset_format *fmt, size_t dim, char **tok,
+                       size_t ntok, double *coord, double *weight)
 {
-    size_t want = fmt->dim + (fmt->weights ? 1u : 0u);
+    size_t want = dim + (fmt->weights ? 1u : 0u);
     if (ntok != want) {
-        const char *hint = fmt->weights ? (fmt->dim == 1u ? "a point, then its weight"
-                                                          : "the coordinates, then the weight")
-                                        : (ntok == fmt->dim + 1u ? "a weight column needs --weights"
-                                                                 : "one point per line");
+        const char *hint = fmt->weights ? (dim == 1u ? "a point, then its weight"
+                                                     : "the coordinates, then the weight")
+                                        : (ntok == dim + 1u && fmt->dim != 0u
+                                               ? "a weight column needs --weights"
+                                               : fmt->dim == 0u ? "every point has as many "
+                                                                  "coordinates as the first"
+                                                                : "one point per line");
         return cli_fail(r->cmd, "%s: line %lu: expected %zu column%s, found %zu (%s)", r->name,
                         r->line, want, want == 1u ? "" : "s", ntok, hint);
     }
-    for (size_t d = 0; d < fmt->dim; ++d) {
+    for (size_t d = 0; d < dim; ++d) {
         int rc = parse_number(r, tok[d], "coordinate", &coord[d]);
         if (rc != 0)
             return rc;
@@ -209,12 +213,12 @@ static int parse_point(const reader *r, const cli_pointset_format *fmt, char **t
     }
     *weight = 1.0;
     if (fmt->weights) {
-        int rc = parse_number(r, tok[fmt->dim], "weight", weight);
+        int rc = parse_number(r, tok[dim], "weight", weight);
         if (rc != 0)
             return rc;
         if (*weight < 0.0)
             return cli_fail(r->cmd, "%s: line %lu: weight %s is negative", r->name, r->line,
-                            tok[fmt->dim]);
+                            tok[dim]);
     }
     return 0;
 }
@@ -263,9 +267,18 @@ static int read_sets(reader *r, const cli_pointset_format *fmt, point_buf *b, cl
             continue;
         }
         char *tok[MAX_COLUMNS];
-        double coord[MAX_COLUMNS] = {0.0, 0.0, 0.0}, weight = 1.0;
+        double coord[MAX_COLUMNS] = {0.0}, weight = 1.0;
         size_t ntok = split(s, tok, MAX_COLUMNS);
-        int rc = parse_point(r, fmt, tok, ntok, coord, &weight);
+        if (b->dim == 0u) { /* the first point line fixes the dimension */
+            size_t cols = ntok - (fmt->weights ? 1u : 0u);
+            if (ntok == 0u || cols == 0u || cols > CLI_MAX_DIM)
+                return cli_fail(r->cmd, "%s: line %lu: %zu column%s: a point has 1 to %u "
+                                "coordinates%s", r->name, r->line, ntok, ntok == 1u ? "" : "s",
+                                CLI_MAX_DIM, fmt->weights ? ", then its weight" : "");
+            b->dim = cols;
+            stats->dim = cols;
+        }
+        int rc = parse_point(r, fmt, b->dim, tok, ntok, coord, &weight);
         if (rc == 0)
             rc = buf_push(r->cmd, b, coord, weight);
         if (rc == 0)
@@ -285,6 +298,7 @@ int cli_read_pointsets(const char *cmd, const char *path, const cli_pointset_for
                        cli_progress *progress)
 {
     stats->sets = 0;
+    stats->dim = fmt->dim;
     stats->k_min = (size_t)-1;
     stats->k_max = 0;
     stats->lines = 0;

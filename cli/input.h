@@ -21,8 +21,15 @@
  * set and is an error; a final '#' line is allowed. Coordinates must be
  * finite and in [0,1) (with `wrap`, any finite value is taken modulo 1);
  * weights finite and >= 0. */
+/* Most coordinates a point line may have (utk's files of any dimension;
+ * the discrepancies' cap, MCS_DISCREPANCY_MAX_DIM, is the same 64). */
+#define CLI_MAX_DIM 64u
+
 typedef struct {
-    size_t dim;  /* coordinates per point, 1 or 2 */
+    /* coordinates per point, 1 to CLI_MAX_DIM; 0: the first point line
+     * fixes it (its columns, less the weight column with `weights`), and
+     * every later line must have as many (cli_pointset_stats.dim says it) */
+    size_t dim;
     int weights; /* a weight column follows the coordinates */
     int wrap;    /* take coordinates modulo 1 instead of rejecting them */
     /* With weights: the most one set's weights may sum to (0: no limit), and
@@ -35,6 +42,7 @@ typedef struct {
 
 typedef struct {
     uint64_t sets;       /* complete sets passed to the callback */
+    size_t dim;          /* coordinates per point (fmt's, or the file's with dim 0) */
     size_t k_min, k_max; /* fewest and most points in a set */
     unsigned long lines; /* lines read (during a callback: up to the set's end) */
 } cli_pointset_stats;

@@ -93,8 +93,10 @@ if "$MCSPEC" stats --help | grep -q 'statistic,value,stderr'; then ok
 else bad "stats --help does not give the CSV header"; fi
 
 # ------------------------------------------------------------- bad usage
+usage_error "discrepancy --dim 65" '--dim expects a whole number from 1 to 64' \
+    "$MCSPEC" discrepancy --dim 65 -
+usage_error "stats --dim 9" '--dim expects a whole number from 1 to 8' "$MCSPEC" stats --dim 9 -
 for c in discrepancy stats; do
-    usage_error "$c --dim 3" '--dim expects a whole number from 1 to 2' "$MCSPEC" "$c" --dim 3 -
     usage_error "$c --dim 0" '--dim expects' "$MCSPEC" "$c" --dim 0 -
     usage_error "$c --bogus" "unknown option '--bogus'" "$MCSPEC" "$c" --bogus -
     usage_error "$c two files" "unexpected argument" "$MCSPEC" "$c" a b
@@ -129,6 +131,27 @@ star 5 0.75
 EOF
 )"
 fi
+
+# ------------------------------- hand-made: one point, 3D, dimension read
+# No --dim: the first line's three columns fix it. D^2 = 3^-3 - 2 (3/8)^3 +
+# (1/2)^3 = 391/6912; exact random for K = 1: (1/2)^3 - 3^-3 = 19/216.
+printf '0.5 0.5 0.5\n' >"$tmp/centre3"
+if succeeds "discrepancy of one 3D point" "$MCSPEC" discrepancy --csv "$tmp/centre3"; then
+    csv_shape "discrepancy 3D --csv" "$tmp/out" 'measure,value,stderr,exact_random,root' 6 5
+    expect "one point at the centre of the cube" "$tmp/out" "$(printf '%s\n' \
+        'l2_star 2 0.056568287037037037' 'l2_star 4 0.087962962962962963')"
+fi
+if succeeds "discrepancy table in 3D" "$MCSPEC" discrepancy "$tmp/centre3"; then
+    if grep -q '1 point sets in 3D' "$tmp/out"; then ok; else bad "3D table: no '1 point sets in 3D'"; fi
+fi
+printf '0.5 0.5 0.5\n0.25 0.25\n' >"$tmp/ragged"
+for c in discrepancy stats; do
+    usage_error "$c ragged columns" 'line 2: expected 3 columns, found 2' "$MCSPEC" "$c" "$tmp/ragged"
+done
+awk 'BEGIN { for (i = 0; i < 4; ++i) { for (d = 0; d < 9; ++d) printf "%s0.%d", d ? " " : "", i + 1; print "" } }' >"$tmp/nine"
+usage_error "stats of 9D points" 'have 9 coordinates; the spacing statistics take 1 to 8' \
+    "$MCSPEC" stats "$tmp/nine"
+succeeds "discrepancy of 9D points" "$MCSPEC" discrepancy --csv "$tmp/nine"
 
 # ---------------------------------------------- hand-made: two sets in 1D
 # {1/2}: D^2 = 1/12; {1/4, 3/4}: 1/48 (piece by piece); mean 5/96, standard
