@@ -16,13 +16,31 @@
  * drifting. Trials go first into an open batch of plain sums, folded into the
  * compensated ones every MCS_MOMENT_BATCH trials, so the error grows neither
  * with K nor with the trial count, and a trial costs what a plain loop does:
- *   - a trial of few samples (K (K + 1) / 2 pair products at most
- *     N^2 / 32 + 7 N, where the two kernels cost the same) adds w_i w_j for
- *     every pair of its samples and s: O(K^2), N not involved;
- *   - a larger one adds d d^T densely, one vectorised row per bin where d is
+ *   - a trial of few samples (at most 32, K (K + 1) / 2 pair products at
+ *     most N^2 / 32 + 7 N, where the two kernels cost the same) adds the
+ *     products of its s over its bins, O(K^2), N not involved: as s s^T if
+ *     it has no bin where c is not 0 (there d = s, and d = -c on the
+ *     shift's bins for every such trial: the fold adds those terms, none of
+ *     them cancelling), as d d^T over its bins and the shift's if it has
+ *     one (there s - c can be far below s and c, and products of s would
+ *     cancel: issue 22);
+ *   - a larger one adds d d^T densely (s s^T if it shares no bin with c and
+ *     has fewer bins that are not 0), one vectorised row per bin where it is
  *     not 0: O(N^2) at most, none where s equals c.
- * Read-outs, merges and records include the open batch: nothing needs
- * flushing, and a saved and loaded object is the same to the bit.
+ * A trial's s_n is the sum of its weights in bin n, in sample order, as a
+ * double (what mcs_moment_add_dense takes); every batch entry then gets at
+ * most one product a trial, so each sum of d_m d_n, closed and open batch
+ * together, is within (MCS_MOMENT_BATCH + 16) eps sum_t |d_m d_n| <=
+ * (MCS_MOMENT_BATCH + 16) eps sqrt(D_m D_n) of the exact sum over the
+ * trials (D_m the sum of d_m^2; eps = DBL_EPSILON, about 3.6e-12 in all),
+ * whatever the weights, for an object built by adds and by merges of
+ * objects with the same shift. A merge moves src's sums to dst's shift
+ * (e = c_src - c_dst), which adds up to 4 eps (sqrt(D^src_m) + sqrt(T_src)
+ * |e_m|) (sqrt(D^src_n) + sqrt(T_src) |e_n|) to entry (m, n) beyond that,
+ * unseen by the read-outs: a few eps sqrt(D_m D_n) while |e| is within the
+ * spread of the data (each shift is values of trials), more only if a trial
+ * that set a shift lies far from all the others. Read-outs, merges and records include the open batch: nothing
+ * needs flushing, and a saved and loaded object is the same to the bit.
  *
  * The read-out calls are the same, with the same arguments, as those of the
  * exact moments in theory.h (mcs_theory_*), and run the same code: measured
@@ -54,6 +72,7 @@ extern "C" {
  * fold costs O(N^2), a few nanoseconds a trial at N = 64 over this many. */
 #define MCS_MOMENT_BATCH 16384u
 
+
 typedef struct {
     size_t n;                                      /* N, 1..MCS_MAX_COV_N; 0 before init */
     uint64_t count;                                /* trials added, at most MCS_MAX_COUNT */
@@ -67,8 +86,9 @@ typedef struct {
                                                       (both triangles, exactly symmetric) */
     double lo_d[MCS_MAX_COV_N];                    /* Kahan compensation of sum_d */
     double lo_dd[MCS_MAX_COV_N * MCS_MAX_COV_N];   /* Kahan compensation of sum_dd */
-    double batch_s[MCS_MAX_COV_N];                 /* open batch: sum of s over its sparse trials */
-    double batch_d[MCS_MAX_COV_N];                 /* sum of d over its dense trials */
+    double batch_s[MCS_MAX_COV_N];                 /* open batch: sum of s over its trials added
+                                                      as s (none on a bin where c is not 0) */
+    double batch_d[MCS_MAX_COV_N];                 /* sum of d over its other trials */
     double batch_w[MCS_MAX_COV_N * MCS_MAX_COV_N]; /* half products: batch_w + batch_w^T is the
                                                       sum of s s^T (sparse) and d d^T (dense) */
     double cos_table[MCS_MAX_COV_N];               /* cos(2 pi j / N) */
@@ -125,7 +145,11 @@ mcs_status mcs_moment_bin_second(const mcs_moment *acc, size_t bin_m, size_t bin
 /* <S_freq> (eq. 15) from <s>. O(N). MCS_ERR_FREQ_RANGE (freq >= N). */
 mcs_status mcs_moment_mean(const mcs_moment *acc, size_t freq, double *re, double *im);
 
-/* <|S_freq|^2>, the real diagonal of eq. 16. O(N^2). MCS_ERR_FREQ_RANGE. */
+/* <|S_freq|^2>, the real diagonal of eq. 16. O(N^2). MCS_ERR_FREQ_RANGE.
+ * A value below 0 within its rounding bound, (2N + 16) eps (1/N) sum
+ * |<d_m d_n>| + 4 (N + 2) eps ((sum |<d_n>|)^2 + (sum |c_n| + sum
+ * |<d_n>|)^2) / N and the sums' 3 (MCS_MOMENT_BATCH + 16) eps (sum_m
+ * sqrt(<d_m^2>))^2 / N, reads 0. */
 mcs_status mcs_moment_power(const mcs_moment *acc, size_t freq, double *out);
 
 /* <S_k S_l*> (eq. 16) for k = freq_k, l = freq_l (at k = l the power, as
@@ -135,16 +159,12 @@ mcs_status mcs_moment_cross(const mcs_moment *acc, size_t freq_k, size_t freq_l,
 
 /* Cov(S_k, S_l) = <S_k S_l*> - <S_k><S_l>*. O(N^2). MCS_ERR_FREQ_RANGE.
  * On the diagonal (k = l, a variance) it is never negative: a value below 0
- * by no more than the read-out's rounding bound, 4 (N + 2) eps times
- * ((1/N) sum |<d_m d_n>| + (sum |<d_n>|)^2 / N), is returned as 0; one below
- * that is not rounding, and the object is refused (MCS_ERR_INVARIANT): its
- * sums are those of no data (overwritten, or a crafted record). An open
- * batch of B trials, B_s of them sparse, adds the bound of its plain sums,
- * (2 B T + 8) eps / (N T_all) times ((sum_m sqrt(D_m))^2 + 2 (sum |bs_m|)
- * (sum |c_m|) + B_s (sum |c_m|)^2): T the most pair products a sparse trial
- * has (N^2 / 32 + 7 N), T_all the trials added, D_m the batch's sum of
- * squares at bin m (Cauchy-Schwarz bounds every product sum by them), bs its
- * sum of s. */
+ * by no more than its rounding bound, 4 (N + 2) eps ((1/N) sum |<d_m d_n>|
+ * + (sum |<d_n>|)^2 / N) for the read-out and 3 (MCS_MOMENT_BATCH + 16) eps
+ * (sum_m sqrt(<d_m^2>))^2 / N for the sums (see above; <.> the average over
+ * the trials), is returned as 0; one below that is not rounding, and the
+ * object is refused (MCS_ERR_INVARIANT): its sums are those of no data
+ * (overwritten, or a crafted record). */
 mcs_status mcs_moment_covariance(const mcs_moment *acc, size_t freq_k, size_t freq_l,
                                  double *re, double *im);
 
@@ -171,7 +191,11 @@ mcs_status mcs_moment_estimator_mean(const mcs_moment *acc, size_t n, size_t k, 
 /* Var[I] = (1/K^2) f^T Cov(s) f with Cov(s) = <s s^T> - <s><s>^T over the
  * trials added (the population covariance: the factor (T - 1)/T of a sample
  * variance is not applied), read from the shifted sums without that
- * cancellation. Arguments and statuses as mcs_moment_estimator_mean. */
+ * cancellation. Within (2N + 16) eps (1/K^2) sum_{m,n} |f_m| |f_n|
+ * (|<d_m d_n>| + |<d_m>| |<d_n>|) + 3 (MCS_MOMENT_BATCH + 16) eps (1/K^2)
+ * (sum_m |f_m| sqrt(<d_m^2>))^2 of the exact value (the read-out, then the
+ * sums: see above); a value below 0 within that reads 0. Arguments and
+ * statuses as mcs_moment_estimator_mean. */
 mcs_status mcs_moment_variance(const mcs_moment *acc, size_t n, size_t k, const double *f,
                                double *out);
 

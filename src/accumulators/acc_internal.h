@@ -7,6 +7,8 @@
 
 #include "core/internal.h"
 
+#include <float.h>
+
 /* Read-outs refuse a stored value above 2^500 in magnitude, the bound of the
  * record format too (io.h): trials never get there (the sums stay below
  * 2^496, see each header's trial limit), and below it every read-out,
@@ -37,6 +39,15 @@ static inline int mcs_all_stored_(size_t len, const double *x)
  * MCS_STORED_LIMIT_, so every read-out stays finite as for the other sums. */
 #define MCS_MOMENT_LIMIT_S_ 1.7668470647783843e+72  /* 2^240: shift, batch_s, batch_d */
 #define MCS_MOMENT_LIMIT_W_ 2.977131414714806e+138  /* 2^460: batch_w */
+
+/* The rounding the moment accumulator's sums carry, relative (moment.h):
+ * every entry of the sums of d d^T, closed and open batch together, is
+ * within (MCS_MOMENT_BATCH + 16) eps sqrt(D_m D_n) of the exact sum over the
+ * trials, D the sums of d_m^2. A batch entry is a plain sum of one product
+ * a trial (below MCS_MOMENT_BATCH of them: gamma_B), each product and the
+ * fold's terms a few roundings, the compensated sums 2u + F u^2 <= 3u over
+ * F <= 2^53 folds and merges. */
+#define MCS_MOMENT_ROUNDING_ ((double)(MCS_MOMENT_BATCH + 16u) * DBL_EPSILON)
 
 /* The checks every add shares once the object and the trial are valid: the
  * trial's total weight at most max_total (MAGNITUDE), the count (COUNT), and

@@ -50,37 +50,27 @@ static void first_dft(const mcs_readout *view, size_t freq, double *re, double *
     *im = i * scale;
 }
 
-/* A bound on the rounding an open batch adds to every sum of |second| the
- * bounds below take, in units of eps: each batch_w entry sums at most
- * batch_terms products, whose magnitudes sum to at most sqrt(D_m D_n)
- * (Cauchy-Schwarz, D_m = 2 batch_w[m][m] the sum of the squares), and the
- * batch's d sums are formed with a few more roundings of |bs_m c_n|
- * + |c_m bs_n| + B |c_m c_n|. Returned: that bound for the sum over every
- * (m, n) of g_m h_n times the error of entry (m, n), g and h given as their
- * O(N) sums sum g_m sqrt(D_m), sum g_m |bs_m|, sum g_m |c_m| (and h's). */
-typedef struct {
-    double root, bs, c;
-} batch_weights;
-
-static batch_weights batch_sums(const mcs_readout *view, const double *g)
+/* sum_m |g_m| sqrt(<D_m>) (g NULL: 1), <D_m> the average of the diagonal of
+ * second (a sum of squares, read as 0 if rounding left it below). */
+static double root_weight(const mcs_readout *view, const double *g)
 {
-    batch_weights r = {0.0, 0.0, 0.0};
+    double r = 0.0;
     for (size_t m = 0; m < view->n; ++m) {
-        const double gm = g != NULL ? fabs(g[m]) : 1.0;
-        r.root += gm * sqrt(2.0 * fabs(view->batch_w[m * view->n + m]));
-        r.bs += gm * fabs(view->batch_s[m]);
-        r.c += gm * fabs(view->shift[m]);
+        const double dm = mcs_readout_second(view, m, m) * view->scale;
+        r += (g != NULL ? fabs(g[m]) : 1.0) * sqrt(dm > 0.0 ? dm : 0.0);
     }
     return r;
 }
 
-double mcs_readout_batch_rounding(const mcs_readout *view, const double *g, const double *h)
+/* Entry (m, n) of second errs by at most accum sqrt(D_m D_n) (Cauchy-Schwarz
+ * on sum_t |d_m d_n|), entry m of first by accum sqrt(T D_m); in a form the
+ * second moments' errors sum to accum (sum |g| sqrt(<D>)) (sum |h| sqrt(<D>))
+ * and those of the products of first averages to twice that. */
+double mcs_readout_accumulated(const mcs_readout *view, const double *g, const double *h)
 {
-    if (!mcs_readout_has_batch(view))
+    if (view->accum == 0.0 || view->shift == NULL) /* exact moments (no shift either) */
         return 0.0;
-    const batch_weights a = batch_sums(view, g), b = batch_sums(view, h);
-    return (2.0 * view->batch_terms + 8.0) * DBL_EPSILON *
-           (a.root * b.root + a.bs * b.c + a.c * b.bs + view->batch_sparse * a.c * b.c);
+    return 3.0 * view->accum * root_weight(view, g) * root_weight(view, h);
 }
 
 /* The transform of first * scale: <S_k> without a shift, <D_k> (d = s - c)
@@ -183,7 +173,8 @@ static void covariance_at(const mcs_readout *view, size_t freq_k, size_t freq_l,
 /* The rounding bound of a variance Cov(S_k, S_k) read as above: the O(N^2)
  * transform of second errs by at most (2N + 2) u sum |second| scale / N, the
  * square of the O(N) transform of first by N u (sum |first| scale)^2 / N
- * (u = eps / 2), and the accumulation of second by less. Twice their sum. */
+ * (u = eps / 2): twice their sum; and the rounding the stored sums carry
+ * (mcs_readout_accumulated, |e^{..}| = 1 / N in eq. 16). */
 static double variance_rounding(const mcs_readout *view)
 {
     const size_t n = view->n;
@@ -195,21 +186,9 @@ static double variance_rounding(const mcs_readout *view)
         b += fabs(mcs_readout_first(view, j));
     a *= view->scale;
     b *= view->scale;
-    return 4.0 * ((double)n + 2.0) * DBL_EPSILON * (a + b * b) / (double)n +
-           mcs_readout_batch_rounding(view, NULL, NULL) * view->scale / (double)n;
-}
-
-/* A variance is >= 0: a value below 0 within the rounding bound tol is
- * rounding and reads 0; one below -tol is no variance any data give, so the
- * object holds values no calls produce. */
-static mcs_status clamp_variance(double tol, double *v)
-{
-    if (*v >= 0.0)
-        return MCS_OK;
-    if (!(*v >= -tol)) /* beyond rounding (or NaN) */
-        return MCS_ERR_INVARIANT;
-    *v = 0.0;
-    return MCS_OK;
+    return (4.0 * ((double)n + 2.0) * DBL_EPSILON * (a + b * b) +
+            mcs_readout_accumulated(view, NULL, NULL)) /
+           (double)n;
 }
 
 double mcs_readout_nonnegative(const mcs_readout *view, double value, double bound)
@@ -218,16 +197,46 @@ double mcs_readout_nonnegative(const mcs_readout *view, double value, double bou
     return value < 0.0 && -value <= bound ? 0.0 : value;
 }
 
-/* The bound of <|S_k|^2> = (1/N) sum e^{..} <s_m s_n>: |e^{..}| = 1. */
-static double power_bound(const mcs_readout *view)
+mcs_status mcs_readout_clamp(double bound, double *value)
+{
+    if (*value >= 0.0)
+        return MCS_OK;
+    if (!(*value >= -bound)) /* beyond rounding (or NaN) */
+        return MCS_ERR_INVARIANT;
+    *value = 0.0;
+    return MCS_OK;
+}
+
+/* sum_m |x_m| of an array of the view's N. */
+static double abs_sum(size_t n, const double *x)
 {
     double sum = 0.0;
-    for (size_t m = 0; m < view->n; ++m)
-        for (size_t c = 0; c < view->n; ++c)
+    for (size_t m = 0; m < n; ++m)
+        sum += fabs(x[m]);
+    return sum;
+}
+
+/* The bound of <|S_k|^2> = (1/N) sum e^{..} <s_m s_n>: |e^{..}| = 1, (2N + 16)
+ * eps times the sum of |<s_m s_n>| (of <d_m d_n> with a shift, which adds
+ * the squares of the transforms of <d> and of <s> = c + <d>, rounded as in
+ * variance_rounding), and the rounding the stored sums carry. */
+static double power_bound(const mcs_readout *view)
+{
+    const size_t n = view->n;
+    double sum = 0.0, means = 0.0;
+    for (size_t m = 0; m < n; ++m)
+        for (size_t c = 0; c < n; ++c)
             sum += fabs(mcs_readout_second(view, m, c) * view->scale);
-    return ((2.0 * (double)view->n + 16.0) * DBL_EPSILON * sum +
-            mcs_readout_batch_rounding(view, NULL, NULL) * view->scale) /
-           (double)view->n;
+    if (view->shift != NULL) {
+        double d = 0.0;
+        for (size_t m = 0; m < n; ++m)
+            d += fabs(mcs_readout_first(view, m) * view->scale);
+        const double s = d + abs_sum(n, view->shift);
+        means = 4.0 * ((double)n + 2.0) * DBL_EPSILON * (d * d + s * s);
+    }
+    return ((2.0 * (double)n + 16.0) * DBL_EPSILON * sum + means +
+            mcs_readout_accumulated(view, NULL, NULL)) /
+           (double)n;
 }
 
 /* ---- checked read-outs ---------------------------------------------------- */
@@ -267,7 +276,7 @@ mcs_status mcs_readout_bin_second(const mcs_readout_source *src, size_t bin_m,
 }
 
 /* A complex read-out at frequencies freq_k, freq_l: the value into re, im,
- * and a status (only a variance can fail, see clamp_variance). */
+ * and a status (only a variance or a power can fail, see mcs_readout_clamp). */
 typedef mcs_status (*complex_at)(const mcs_readout *view, size_t freq_k, size_t freq_l,
                                  double *re, double *im);
 
@@ -334,7 +343,7 @@ static mcs_status covariance_value(const mcs_readout *view, size_t freq_k, size_
                                    double *re, double *im)
 {
     covariance_at(view, freq_k, freq_l, re, im);
-    return freq_k == freq_l ? clamp_variance(variance_rounding(view), re) : MCS_OK;
+    return freq_k == freq_l ? mcs_readout_clamp(variance_rounding(view), re) : MCS_OK;
 }
 
 mcs_status mcs_readout_mean(const mcs_readout_source *src, size_t freq, double *re,
@@ -509,18 +518,18 @@ mcs_status mcs_readout_covariance_matrix(const mcs_readout_source *src, size_t n
     mcs_status st = open_matrix(src, n, re, im, &v);
     if (st != MCS_OK)
         return st;
-    /* The diagonal is checked before anything is written (see clamp_variance). */
+    /* The diagonal is checked before anything is written (covariance_value). */
     const double tol = variance_rounding(&v);
     for (size_t k = 0; k < n && st == MCS_OK; ++k) {
         double vr, vi;
         covariance_at(&v, k, k, &vr, &vi);
-        st = clamp_variance(tol, &vr);
+        st = mcs_readout_clamp(tol, &vr);
     }
     if (st != MCS_OK)
         return st;
     second_matrix_at(&v, re, im);
     add_mean_products(&v, first_mean_at, first_mean_at, -1.0, re, im);
     for (size_t k = 0; k < n; ++k)
-        (void)clamp_variance(tol, &re[k * n + k]);
+        (void)mcs_readout_clamp(tol, &re[k * n + k]);
     return MCS_OK;
 }

@@ -29,9 +29,13 @@ typedef struct {
      * read-out (mcs_batch_first_, mcs_batch_second_); batch_w NULL: none. */
     const double *batch_w; /* [n * n] half products */
     const double *batch_s; /* [n] sum of s over the batch's sparse trials */
-    const double *batch_d; /* [n] sum of d over its dense trials */
+    const double *batch_d; /* [n] sum of d over its other trials */
     double batch_sparse;   /* its sparse trials */
-    double batch_terms;    /* most terms any batch_w entry can have summed */
+    /* The rounding the stored sums carry, relative (moment.h): every entry
+     * of second (closed and open batch) is within accum sqrt(D_m D_n) of
+     * the exact sum over the trials, D the diagonal of second. 0 for exact
+     * moments. */
+    double accum;
 } mcs_readout;
 
 /* What an open batch adds to the sums of d (moment.h): its dense trials
@@ -81,10 +85,12 @@ static inline double mcs_readout_second(const mcs_readout *view, size_t bin_m, s
 /* <s_bin>. */
 double mcs_readout_mean_entry(const mcs_readout *view, size_t bin);
 
-/* What an open batch adds to the rounding of a form: for the sum over every
- * (m, n) of |g_m| |h_n| times entry (m, n)'s error (g, h NULL: 1), in the
- * units of second (readout.c). 0 without a batch. */
-double mcs_readout_batch_rounding(const mcs_readout *view, const double *g, const double *h);
+/* The rounding the stored sums carry (view->accum) in a form over the
+ * averages, sum_{m,n} |g_m| |h_n| |error of <d_m d_n>| and the matching
+ * products of first averages (g, h NULL: 1): 3 accum (sum_m |g_m|
+ * sqrt(<D_m>)) (sum_n |h_n| sqrt(<D_n>)), by Cauchy-Schwarz (readout.c).
+ * 0 for exact moments. */
+double mcs_readout_accumulated(const mcs_readout *view, const double *g, const double *h);
 
 /* Checks obj and fills *view: MCS_ERR_UNINIT, MCS_ERR_EMPTY (no trials yet). */
 typedef mcs_status (*mcs_readout_open)(const void *obj, mcs_readout *view);
@@ -162,11 +168,15 @@ double mcs_readout_form_bound(const mcs_readout *view, size_t k, const double *f
                               const double *g);
 
 /* A value that cannot be negative (a variance, a power): in [-bound, 0) it
- * is rounding and reads 0, from exact and measured moments alike (the plain
- * sums of a moment accumulator's open batch give a deterministic pattern's
- * zero variances as +-1e-16); below -bound it is returned as it is, for the
- * caller to refuse (exact moments) or pass on. */
+ * is rounding and reads 0, from exact and measured moments alike (a
+ * deterministic pattern's zero variances come out as +-1e-16); below -bound
+ * it is returned as it is, for the caller to refuse (mcs_readout_clamp). */
 double mcs_readout_nonnegative(const mcs_readout *view, double value, double bound);
+
+/* The same as a status: *value in [-bound, 0) reads 0 and MCS_OK; below
+ * -bound (or NaN) it is no value any data give, MCS_ERR_INVARIANT with
+ * *value unchanged. */
+mcs_status mcs_readout_clamp(double bound, double *value);
 
 /* Eq. 7 at one frequency, freq < N, of any x[N] from the view's twiddle table. */
 void mcs_readout_dft(const mcs_readout *view, const double *x, size_t freq, double *re,

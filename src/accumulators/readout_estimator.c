@@ -26,9 +26,10 @@ double mcs_readout_form(const mcs_readout *view, size_t k, const double *f, cons
 
 /* Rounding bound of a form over the moments: (2N + 16) DBL_EPSILON times the
  * sum of the magnitudes of its terms, (1/K^2) sum |f_m| |g_n| (|<s_m s_n>| +
- * |<s_m>| |<s_n>|). Each term carries the few roundings of the moments and of
- * its product, and a sum of N terms at most N more (twice: rows, then the
- * sum of rows). */
+ * |<s_m>| |<s_n>|) (of d = s - c with a shift). Each term carries the few
+ * roundings of the moments and of its product, and a sum of N terms at most
+ * N more (twice: rows, then the sum of rows). Measured moments add the
+ * rounding their sums carry (mcs_readout_accumulated). */
 double mcs_readout_form_bound(const mcs_readout *view, size_t k, const double *f,
                               const double *g)
 {
@@ -44,7 +45,7 @@ double mcs_readout_form_bound(const mcs_readout *view, size_t k, const double *f
         sum += fabs(f[m]) * acc;
     }
     const double kd = (double)k;
-    return ((2.0 * (double)n + 16.0) * DBL_EPSILON * sum + mcs_readout_batch_rounding(view, f, g) * sc) /
+    return ((2.0 * (double)n + 16.0) * DBL_EPSILON * sum + mcs_readout_accumulated(view, f, g)) /
            (kd * kd);
 }
 

@@ -4,6 +4,7 @@
  * records must see the batch whether it is open or folded, every kernel
  * (pairs of samples, dense rows of s, dense rows of d) must give the same
  * sums, and a corrupted batch must be refused. */
+#include <float.h>
 #include <math.h>
 #include <stddef.h>
 #include <string.h>
@@ -37,8 +38,8 @@ typedef struct {
 static void make_trial(mcs_rng *rng, size_t t, trial *out)
 {
     static const size_t ks[4] = {3u, N, N, 0u};
-    out->k = ks[t % 4u];
-    out->per_bin = t % 4u >= 2u;
+    out->k = ks[(t + 3u) % 4u]; /* trial 1, the shift, has 3 samples */
+    out->per_bin = (t + 3u) % 4u >= 2u;
     memset(out->s, 0, sizeof out->s);
     const size_t samples = out->k != 0u ? out->k : N;
     for (size_t j = 0; j < samples; ++j) {
@@ -70,13 +71,21 @@ static void add_reference(const trial *tr)
 }
 
 /* Every <s_m> and <s_m s_q> of acc within 1e-13 of the reference over
- * `trials` trials (relative to the largest second moment), and exactly
- * symmetric. */
+ * `trials` trials (relative to the largest second moment) and the rounding
+ * the accumulator's sums may carry (moment.h: gamma = (MCS_MOMENT_BATCH +
+ * 16) eps times sqrt(<d_m^2>) sqrt(<d_q^2>), d = s - c, and as much again
+ * for each product with a mean), and exactly symmetric. */
 static void expect_reference(const mcs_moment *acc, size_t trials)
 {
-    double scale = 0.0;
-    for (size_t m = 0; m < N; ++m)
-        scale = fmax(scale, (double)(ref_ss[m][m] / trials));
+    const long double t = (long double)trials;
+    const double gamma = (MCS_MOMENT_BATCH + 16.0) * DBL_EPSILON;
+    double scale = 0.0, root[N];
+    for (size_t m = 0; m < N; ++m) {
+        const long double c = acc->shift[m];
+        const long double dd = ref_ss[m][m] / t - 2.0L * c * ref_s[m] / t + c * c;
+        root[m] = (double)(sqrtl(dd > 0.0L ? dd : 0.0L) + fabsl(ref_s[m] / t));
+        scale = fmax(scale, (double)(ref_ss[m][m] / t));
+    }
     for (size_t m = 0; m < N; ++m) {
         double v = 0.0, w = 0.0;
         TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_bin_mean(acc, m, &v));
@@ -84,7 +93,8 @@ static void expect_reference(const mcs_moment *acc, size_t trials)
         for (size_t q = 0; q < N; ++q) {
             TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_bin_second(acc, m, q, &v));
             TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_bin_second(acc, q, m, &w));
-            TEST_ASSERT_DOUBLE_WITHIN(1e-13 * scale, (double)(ref_ss[m][q] / trials), v);
+            TEST_ASSERT_DOUBLE_WITHIN(1e-13 * scale + 4.0 * gamma * root[m] * root[q],
+                                      (double)(ref_ss[m][q] / trials), v);
             TEST_ASSERT_EQUAL_MEMORY(&v, &w, sizeof v);
         }
     }
@@ -97,7 +107,7 @@ static void test_read_outs_see_the_open_batch_before_and_after_it_is_folded(void
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_init(&mom, N));
     memset(ref_s, 0, sizeof ref_s);
     memset(ref_ss, 0, sizeof ref_ss);
-    int saw_s = 0, saw_d = 0;
+    int saw_s = 0, saw_d = 0, full = 0, folded = 0;
     for (size_t t = 1; t <= TRIALS; ++t) {
         trial tr;
         make_trial(&rng, t, &tr);
@@ -110,16 +120,16 @@ static void test_read_outs_see_the_open_batch_before_and_after_it_is_folded(void
         }
         if (t == 1u) {
             TEST_ASSERT_EQUAL_UINT64(0u, mom.batch_count); /* the first trial is the shift */
-        } else if (t == MCS_MOMENT_BATCH) { /* every trial but the first in the open batch */
-            TEST_ASSERT_EQUAL_UINT64(MCS_MOMENT_BATCH - 1u, mom.batch_count);
+        } else if (mom.batch_count == MCS_MOMENT_BATCH - 1u) { /* a full open batch */
             expect_reference(&mom, t);
-        } else if (t == MCS_MOMENT_BATCH + 1u) { /* just folded */
-            TEST_ASSERT_EQUAL_UINT64(0u, mom.batch_count);
+            full = 1;
+        } else if (full && !folded && mom.batch_count == 0u) { /* just folded */
             expect_reference(&mom, t);
+            folded = 1;
         }
     }
-    TEST_ASSERT_TRUE(saw_s && saw_d);
-    TEST_ASSERT_EQUAL_UINT64(TRIALS - MCS_MOMENT_BATCH - 1u, mom.batch_count);
+    TEST_ASSERT_TRUE(saw_s && saw_d && full && folded);
+    TEST_ASSERT_TRUE(mom.batch_count > 0u && mom.batch_count < 100u);
     expect_reference(&mom, TRIALS); /* the closed sums and a new open batch */
 }
 
@@ -179,13 +189,14 @@ static void test_both_copies_of_the_row_kernel_give_the_same_bits(void)
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_init(&mom, N));
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_init(&mom2, N));
     mom2.simd = 0;
-    for (size_t t = 0; t < 200u; ++t) {
+    for (size_t t = 1; t <= 200u; ++t) {
         trial tr;
         make_trial(&rng, t, &tr);
         add_trial(&mom, &tr);
         add_trial(&mom2, &tr);
     }
-    TEST_ASSERT_TRUE(mom.batch_count == 199u && mom.batch_sparse > 0u);
+    TEST_ASSERT_TRUE(mom.batch_count > 190u && mom.batch_sparse > 0u &&
+                     mom.batch_sparse < mom.batch_count);
     TEST_ASSERT_EQUAL_MEMORY(mom.batch_w, mom2.batch_w, sizeof mom.batch_w);
     TEST_ASSERT_EQUAL_MEMORY(mom.batch_s, mom2.batch_s, sizeof mom.batch_s);
     TEST_ASSERT_EQUAL_MEMORY(mom.batch_d, mom2.batch_d, sizeof mom.batch_d);

@@ -303,7 +303,8 @@ static void test_broken_invariants_are_refused(void)
     /* moment: batch_count, batch_sparse, shift, sum_d, lo_d, two triangles, the batch */
     const size_t mo_batch = 2u + 3u * 14u + 14u * 15u, mo_w = mo_batch + 2u * 14u;
     const double open = (double)set_a.mom.batch_count, sparse = (double)set_a.mom.batch_sparse;
-    TEST_ASSERT_TRUE(open == 39.0 && sparse == open); /* every trial but the first, as s */
+    /* trials as s (sparse, on no bin of the shift) and as d = s - c */
+    TEST_ASSERT_TRUE(open >= 30.0 && sparse > 0.0 && sparse < open);
     expect_value(1u, len, 2u + 2u, -1.0, MCS_ERR_INVARIANT);  /* shift: a trial's s */
     expect_value(1u, len, 2u + 14u + 3u, -2.0, MCS_OK);       /* sum_d: deviations, either sign */
     expect_value(1u, len, 0u, 40.0, MCS_ERR_INVARIANT);       /* the first trial is no batch's */
@@ -311,7 +312,7 @@ static void test_broken_invariants_are_refused(void)
     expect_value(1u, len, 1u, open + 1.0, MCS_ERR_INVARIANT); /* more sparse trials than trials */
     expect_value(1u, len, 1u, 0.0, MCS_ERR_INVARIANT);        /* sums of s without s trials */
     expect_value(1u, len, mo_batch + 3u, -1.0, MCS_ERR_INVARIANT); /* batch_s: sums of s */
-    expect_value(1u, len, mo_batch + 14u + 3u, -1.0, MCS_ERR_INVARIANT); /* batch_d: no d trial */
+    expect_value(1u, len, 1u, open, MCS_ERR_INVARIANT); /* batch_d without d trials */
     expect_value(1u, len, mo_w + 14u * 14u - 2u, -1.0, MCS_OK);    /* batch_w: so are d d^T */
     expect_value(1u, len, mo_w + 5u, 0x1p461, MCS_ERR_INVARIANT);   /* beyond 2^14 trials' */
     expect_value(1u, len, mo_batch + 1u, 0x1p241, MCS_ERR_INVARIANT);
