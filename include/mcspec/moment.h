@@ -7,8 +7,13 @@
  * what a non-stationary pattern (stratified, importance sampled) needs. For
  * the power spectrum alone at any N, see autocorr.h.
  *
- * Accuracy and speed: the closed sums are of d = s - c, c the s of the first
- * trial added (a fixed shift), with Kahan compensation. Covariances are
+ * Accuracy and speed: the closed sums are of d = s - c, c a fixed shift,
+ * with Kahan compensation. c is the s of the first trial on the bins each of
+ * the first MCS_MOMENT_SETTLE trials fills, and 0 elsewhere: where trials
+ * keep filling a bin with like weights (a stratified or importance-sampled
+ * bin: s_n ~ 1e8 whose trials differ by 1) s - c keeps the digits, and
+ * where s is mostly 0 shifting by 0 costs nothing (and a sparse trial
+ * seldom meets a bin of the shift, the slower case below). Covariances are
  * shift-free, so they are read from the small d sums instead of as
  * <s_m s_n> - <s_m><s_n>, which cancelled: at N = 3, K = 1000 (jitter with
  * importance, s_n ~ 333, power at k = 1 ~ 0.8) plain sums of s s^T drifted
@@ -30,9 +35,9 @@
  * A trial's s_n is the sum of its weights in bin n, in sample order, as a
  * double (what mcs_moment_add_dense takes); every batch entry then gets at
  * most one product a trial, so each sum of d_m d_n, closed and open batch
- * together, is within (MCS_MOMENT_BATCH + 16) eps sum_t |d_m d_n| <=
- * (MCS_MOMENT_BATCH + 16) eps sqrt(D_m D_n) of the exact sum over the
- * trials (D_m the sum of d_m^2; eps = DBL_EPSILON, about 3.6e-12 in all),
+ * together, is within (MCS_MOMENT_BATCH + 64) eps sum_t |d_m d_n| <=
+ * (MCS_MOMENT_BATCH + 64) eps sqrt(D_m D_n) of the exact sum over the
+ * trials (D_m the sum of d_m^2; eps = DBL_EPSILON, about 3.7e-12 in all),
  * whatever the weights, for an object built by adds and by merges of
  * objects with the same shift. A merge moves src's sums to dst's shift
  * (e = c_src - c_dst), which adds up to 4 eps (sqrt(D^src_m) + sqrt(T_src)
@@ -72,6 +77,10 @@ extern "C" {
  * fold costs O(N^2), a few nanoseconds a trial at N = 64 over this many. */
 #define MCS_MOMENT_BATCH 16384u
 
+/* Trials the shift c settles over: the first one's s, kept on the bins each
+ * of the first MCS_MOMENT_SETTLE trials fills, 0 on the others. */
+#define MCS_MOMENT_SETTLE 4u
+
 
 typedef struct {
     size_t n;                                      /* N, 1..MCS_MAX_COV_N; 0 before init */
@@ -80,7 +89,8 @@ typedef struct {
                                                       MCS_MOMENT_BATCH (and below count) */
     uint64_t batch_sparse;                         /* of those, added as products of s */
     int simd;                                      /* kernels: 0 baseline, 1 AVX2 (set at init) */
-    double shift[MCS_MAX_COV_N];                   /* c: s of the first trial (0 before it) */
+    double shift[MCS_MAX_COV_N];                   /* c: s of the first trial where the first
+                                                      MCS_MOMENT_SETTLE fill the bin, else 0 */
     double sum_d[MCS_MAX_COV_N];                   /* sum over closed trials of d_n = s_n - c_n */
     double sum_dd[MCS_MAX_COV_N * MCS_MAX_COV_N];  /* sum of d_m d_n at [bin_m * N + bin_n]
                                                       (both triangles, exactly symmetric) */
@@ -148,7 +158,7 @@ mcs_status mcs_moment_mean(const mcs_moment *acc, size_t freq, double *re, doubl
 /* <|S_freq|^2>, the real diagonal of eq. 16. O(N^2). MCS_ERR_FREQ_RANGE.
  * A value below 0 within its rounding bound, (2N + 16) eps (1/N) sum
  * |<d_m d_n>| + 4 (N + 2) eps ((sum |<d_n>|)^2 + (sum |c_n| + sum
- * |<d_n>|)^2) / N and the sums' 3 (MCS_MOMENT_BATCH + 16) eps (sum_m
+ * |<d_n>|)^2) / N and the sums' 3 (MCS_MOMENT_BATCH + 64) eps (sum_m
  * sqrt(<d_m^2>))^2 / N, reads 0. */
 mcs_status mcs_moment_power(const mcs_moment *acc, size_t freq, double *out);
 
@@ -160,7 +170,7 @@ mcs_status mcs_moment_cross(const mcs_moment *acc, size_t freq_k, size_t freq_l,
 /* Cov(S_k, S_l) = <S_k S_l*> - <S_k><S_l>*. O(N^2). MCS_ERR_FREQ_RANGE.
  * On the diagonal (k = l, a variance) it is never negative: a value below 0
  * by no more than its rounding bound, 4 (N + 2) eps ((1/N) sum |<d_m d_n>|
- * + (sum |<d_n>|)^2 / N) for the read-out and 3 (MCS_MOMENT_BATCH + 16) eps
+ * + (sum |<d_n>|)^2 / N) for the read-out and 3 (MCS_MOMENT_BATCH + 64) eps
  * (sum_m sqrt(<d_m^2>))^2 / N for the sums (see above; <.> the average over
  * the trials), is returned as 0; one below that is not rounding, and the
  * object is refused (MCS_ERR_INVARIANT): its sums are those of no data
@@ -192,7 +202,7 @@ mcs_status mcs_moment_estimator_mean(const mcs_moment *acc, size_t n, size_t k, 
  * trials added (the population covariance: the factor (T - 1)/T of a sample
  * variance is not applied), read from the shifted sums without that
  * cancellation. Within (2N + 16) eps (1/K^2) sum_{m,n} |f_m| |f_n|
- * (|<d_m d_n>| + |<d_m>| |<d_n>|) + 3 (MCS_MOMENT_BATCH + 16) eps (1/K^2)
+ * (|<d_m d_n>| + |<d_m>| |<d_n>|) + 3 (MCS_MOMENT_BATCH + 64) eps (1/K^2)
  * (sum_m |f_m| sqrt(<d_m^2>))^2 of the exact value (the read-out, then the
  * sums: see above); a value below 0 within that reads 0. Arguments and
  * statuses as mcs_moment_estimator_mean. */

@@ -42,12 +42,13 @@ static inline int mcs_all_stored_(size_t len, const double *x)
 
 /* The rounding the moment accumulator's sums carry, relative (moment.h):
  * every entry of the sums of d d^T, closed and open batch together, is
- * within (MCS_MOMENT_BATCH + 16) eps sqrt(D_m D_n) of the exact sum over the
+ * within (MCS_MOMENT_BATCH + 64) eps sqrt(D_m D_n) of the exact sum over the
  * trials, D the sums of d_m^2. A batch entry is a plain sum of one product
  * a trial (below MCS_MOMENT_BATCH of them: gamma_B), each product and the
  * fold's terms a few roundings, the compensated sums 2u + F u^2 <= 3u over
- * F <= 2^53 folds and merges. */
-#define MCS_MOMENT_ROUNDING_ ((double)(MCS_MOMENT_BATCH + 16u) * DBL_EPSILON)
+ * F <= 2^53 folds and merges, and the moves of the shift as it settles
+ * (moment.c, settle_shift) under 32 eps each. */
+#define MCS_MOMENT_ROUNDING_ ((double)(MCS_MOMENT_BATCH + 64u) * DBL_EPSILON)
 
 /* The checks every add shares once the object and the trial are valid: the
  * trial's total weight at most max_total (MAGNITUDE), the count (COUNT), and

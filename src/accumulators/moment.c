@@ -96,6 +96,55 @@ static void add_rows(mcs_moment *acc, const double *x)
     moment_rows_generic(acc->n, x, acc->batch_w);
 }
 
+/* The shift settles over the first MCS_MOMENT_SETTLE trials: c keeps the
+ * first trial's s only on the bins every one of them fills, and is 0
+ * elsewhere. A bin that trial after trial fills is one the next ones fill
+ * again, with weights like the first's (s - c small: the shift keeps the
+ * digits that a cancelling <s^2> - <s>^2 would lose); on the others s is
+ * mostly 0, so shifting by 0 costs nothing, and a sparse trial seldom meets
+ * a bin of the shift (add_sparse_d: about K^4 / N^3 bins at K samples a
+ * trial). Trial x (not yet added) drops the bins where it has no weight:
+ * e = c there, c' = c - e, and the sums of d = s - c move to d + e (as a
+ * merge moves them): sum d + T e and sum d d^T + (sum d) e^T + e (sum d)^T
+ * + T e e^T, with T <= MCS_MOMENT_SETTLE trials, each of which has
+ * d + e = s, so no entry grows past a few times its new size. */
+static double dropped(const double *x, const double *c, size_t m)
+{
+    return x[m] == 0.0 ? c[m] : 0.0;
+}
+
+static void settle_shift(mcs_moment *acc, const double *x)
+{
+    const size_t n = acc->n;
+    const double *c = acc->shift;
+    size_t drops = 0u;
+    for (size_t m = 0; m < n; ++m)
+        drops += dropped(x, c, m) != 0.0;
+    if (drops == 0u)
+        return;
+    if (acc->batch_count != 0u)
+        fold_batch(acc); /* the sums to move are the closed ones */
+    const double t = (double)acc->count;
+    for (size_t m = 0; m < n; ++m) {
+        const double em = dropped(x, c, m);
+        for (size_t q = 0; q < n; ++q) {
+            const double eq = dropped(x, c, q);
+            if (em == 0.0 && eq == 0.0)
+                continue;
+            const size_t i = m * n + q;
+            mcs_kahan_add_(&acc->sum_dd[i], &acc->lo_dd[i],
+                           (em * acc->sum_d[q] + acc->sum_d[m] * eq) + t * (em * eq));
+        }
+    }
+    for (size_t m = 0; m < n; ++m) {
+        const double em = dropped(x, c, m);
+        if (em != 0.0) {
+            mcs_kahan_add_(&acc->sum_d[m], &acc->lo_d[m], t * em);
+            acc->shift[m] = 0.0;
+        }
+    }
+}
+
 /* 1 when s (x) has weight on a bin of the shift. */
 static int shares_shift(const mcs_moment *acc, const double *x)
 {
@@ -106,7 +155,7 @@ static int shares_shift(const mcs_moment *acc, const double *x)
 }
 
 /* work holds the trial's s. The first trial becomes the shift c (its d is
- * 0: no sums change). A later one
+ * 0: no sums change), the next ones settle it (settle_shift). A later one
  * goes into the batch as s s^T or as d d^T (d = s - c), whichever has fewer
  * rows that are not 0 (a stratified trial: d has none; a random one: s has
  * fewer), but as s only if it has no bin where c is not 0: on such a bin
@@ -121,6 +170,8 @@ static void add_dense_work(mcs_moment *acc)
         acc->count = 1u;
         return;
     }
+    if (acc->count < (uint64_t)MCS_MOMENT_SETTLE)
+        settle_shift(acc, x);
     size_t rows_s = 0u, rows_d = 0u;
     for (size_t m = 0; m < n; ++m) {
         rows_s += x[m] != 0.0;
@@ -349,7 +400,7 @@ mcs_status mcs_moment_add_bins(mcs_moment *acc, size_t k, const size_t *bins,
         return st;
     /* a trial of few samples goes in by its list (the scan also finds its
      * distinct bins and those of the shift); others densely */
-    const int sparse = acc->count != 0u && k <= LIST_LEN &&
+    const int sparse = acc->count >= (uint64_t)MCS_MOMENT_SETTLE && k <= LIST_LEN &&
                        k <= acc->n && k * (k + 1u) / 2u <= sparse_terms_max(acc->n);
     trial_scan sc = {0.0, 0u, 0};
     st = sparse ? check_trial(acc, k, bins, weights, &sc)

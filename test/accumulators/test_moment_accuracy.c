@@ -94,7 +94,7 @@ static void reference_sums(const mcs_moment *acc, size_t n)
  * the trials of d = s - c (reference_sums):
  *   (2N + 16) eps (1/K^2) sum_{m,n} |f_m| |f_n| (|<d_m d_n>| + |<d_m>| |<d_n>|)
  *   + 3 gamma (1/K^2) (sum_m |f_m| sqrt(<d_m^2>))^2,
- * gamma = (MCS_MOMENT_BATCH + 16) eps. */
+ * gamma = (MCS_MOMENT_BATCH + 64) eps. */
 static long double stated_bound(size_t n, size_t k, const double *f)
 {
     const long double tt = (long double)trials, kk = (long double)k, eps = DBL_EPSILON;
@@ -105,7 +105,7 @@ static long double stated_bound(size_t n, size_t k, const double *f)
             form += fabsl((long double)f[m] * f[q]) *
                     (fabsl(ref_dd[m][q] / tt) + fabsl(ref_d[m] / tt) * fabsl(ref_d[q] / tt));
     }
-    const long double gamma = ((long double)MCS_MOMENT_BATCH + 16.0L) * eps;
+    const long double gamma = ((long double)MCS_MOMENT_BATCH + 64.0L) * eps;
     return ((2.0L * (long double)n + 16.0L) * eps * form + 3.0L * gamma * root * root) /
            (kk * kk);
 }
@@ -258,11 +258,54 @@ static void test_many_trials_around_a_large_weight_keep_their_variance(void)
     many_trials(1e12, 7u, MCS_MOMENT_BATCH + 600u, 0); /* past a fold */
 }
 
+/* The shift settles over the first MCS_MOMENT_SETTLE trials (moment.h):
+ * the first trial's s on the bins every one of them fills, 0 elsewhere,
+ * and the sums move with it, so every read-out is that of the trials
+ * added (the moves within the stated bound). Bins 0 and 1 are filled by
+ * every trial (bin 0 around 1e12), bin b = 2..5 by trials 1 .. b - 1 (and
+ * from trial 11 on), so bins 2, 3, 4 drop out at trials 2, 3, 4 and bin 5
+ * stays, bin 6 by trials 1 and 5 and a few more. */
+static void test_the_shift_keeps_only_the_bins_the_first_trials_all_fill(void)
+{
+    const size_t n = 8u;
+    const double big = 1e12, f[8] = {1, -2, 3, 0.5, 1, 1, 2, -1};
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_init(&mom, n));
+    trials = 0u;
+    case_w = big;
+    for (size_t t = 0; t < 40u; ++t) {
+        size_t bins[8];
+        double w[8];
+        size_t k = 0u;
+        bins[k] = 0u, w[k++] = big + (double)(t % 3u);
+        bins[k] = 1u, w[k++] = 2.0 + 0.25 * (double)(t % 5u);
+        for (size_t b = 2u; b < 6u; ++b)
+            if (t + 1u < b || t >= 10u)
+                bins[k] = b, w[k++] = 1.0 + 0.125 * (double)((t + b) % 7u);
+        if (t == 0u || t == 4u || t % 9u == 3u)
+            bins[k] = 6u, w[k++] = 3.0;
+        add_trial(&mom, n, k, bins, w);
+    }
+    for (size_t b = 0; b < n; ++b) /* kept where all of the first four fill it */
+        TEST_ASSERT_EQUAL_DOUBLE(b < 2u || b == 5u ? trial_s[0][b] : 0.0, mom.shift[b]);
+    reference_sums(&mom, n);
+    expect_variance(&mom, n, 2u, f, exact_variance(n, 2u, f), "settled");
+    for (size_t b = 0; b < n; ++b) {
+        long double mean = 0.0L;
+        for (size_t t = 0; t < trials; ++t)
+            mean += (long double)trial_s[t][b] - trial_s[0][b];
+        mean = trial_s[0][b] + mean / (long double)trials;
+        double v = 0.0;
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_bin_mean(&mom, b, &v));
+        TEST_ASSERT_TRUE(fabsl((long double)v - mean) <= 1e-15L * fabsl(mean) + 1e-15L);
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_the_variance_of_two_trials_does_not_depend_on_their_common_weight);
     RUN_TEST(test_the_variance_is_exact_to_its_bound_at_every_scale_up_to_the_limit);
     RUN_TEST(test_many_trials_around_a_large_weight_keep_their_variance);
+    RUN_TEST(test_the_shift_keeps_only_the_bins_the_first_trials_all_fill);
     return UNITY_END();
 }

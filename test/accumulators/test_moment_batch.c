@@ -73,12 +73,12 @@ static void add_reference(const trial *tr)
 /* Every <s_m> and <s_m s_q> of acc within 1e-13 of the reference over
  * `trials` trials (relative to the largest second moment) and the rounding
  * the accumulator's sums may carry (moment.h: gamma = (MCS_MOMENT_BATCH +
- * 16) eps times sqrt(<d_m^2>) sqrt(<d_q^2>), d = s - c, and as much again
+ * 64) eps times sqrt(<d_m^2>) sqrt(<d_q^2>), d = s - c, and as much again
  * for each product with a mean), and exactly symmetric. */
 static void expect_reference(const mcs_moment *acc, size_t trials)
 {
     const long double t = (long double)trials;
-    const double gamma = (MCS_MOMENT_BATCH + 16.0) * DBL_EPSILON;
+    const double gamma = (MCS_MOMENT_BATCH + 64.0) * DBL_EPSILON;
     double scale = 0.0, root[N];
     for (size_t m = 0; m < N; ++m) {
         const long double c = acc->shift[m];
