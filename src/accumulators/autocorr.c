@@ -1,6 +1,7 @@
 #include "mcspec/autocorr.h"
 #include "acc_internal.h"
 
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -181,6 +182,27 @@ mcs_status mcs_autocorr_mean(const mcs_autocorr *acc, mcs_dft *plan, size_t n, d
     return transformed(mcs_dft_real(plan, n, re, re, im), n, re, im); /* eq. 15 */
 }
 
+/* The rounding bound of every power (autocorr.h), in units of <A(0)> =
+ * 2 sum_lag[0] / T, the largest |<A(d)>|: each stored lag sum is within
+ * (N + 8 + T N^2 eps) eps of T <A(0)> of its exact value (a trial's lag is
+ * a sum of at most N products, or its pair products one at a time, and
+ * Kahan's sum of n terms errs by 2u + n u^2 of their magnitudes, n <= T N^2
+ * products), the lags scaled by 1/T by 2u more, and a transform of N lags
+ * of at most <A(0)> each by (N + 2) u <A(0)> on the direct path (a sum of N
+ * terms) or 8 u log2 N <A(0)> on the FFT paths (normwise, Higham, Accuracy
+ * and Stability, thm 24.2, per stage 8u with twiddles to an ulp); twice
+ * their sum, and 48 eps for the scalings and the k = 0 constant. */
+static double power_rounding(const mcs_autocorr *acc)
+{
+    const double n = (double)acc->n, t = (double)acc->count;
+    double log2n = 0.0;
+    for (size_t m = 1u; m < acc->n; m *= 2u)
+        log2n += 1.0;
+    const double gamma =
+        (2.0 * n + 16.0 * log2n + 48.0 + t * n * n * DBL_EPSILON) * DBL_EPSILON;
+    return gamma * (2.0 * acc->sum_lag[0] / t);
+}
+
 mcs_status mcs_autocorr_power(const mcs_autocorr *acc, mcs_dft *plan, size_t n, double *power)
 {
     mcs_status st = autocorr_readout(acc, plan, n, power, NULL);
@@ -206,5 +228,14 @@ mcs_status mcs_autocorr_power(const mcs_autocorr *acc, mcs_dft *plan, size_t n, 
     for (size_t k = 0; k < n; ++k)
         power[k] *= scale;
     power[0] += acc->sum_dc * inv;
-    return MCS_OK;
+    /* A power is a mean of |S_k|^2: one below 0 within the rounding bound
+     * is rounding (at the weight limit, -2.7e39 beside 2.5e57 at k = 0) and
+     * reads 0; one below that is no spectrum of any trials. */
+    const double bound = power_rounding(acc);
+    for (size_t k = 0; k < n && st == MCS_OK; ++k)
+        if (power[k] < 0.0)
+            st = power[k] >= -bound ? MCS_OK : MCS_ERR_INVARIANT;
+    for (size_t k = 0; k < n && st == MCS_OK; ++k)
+        power[k] = power[k] < 0.0 ? 0.0 : power[k];
+    return st;
 }
