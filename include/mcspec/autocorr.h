@@ -58,8 +58,12 @@ typedef struct {
 
 /* Every call below returns MCS_ERR_UNINIT for an object not set up by
  * mcs_autocorr_init (n out of range), and MCS_ERR_INVARIANT for one
- * overwritten since (a count above MCS_MAX_COUNT or, at read-out, a stored
- * value NaN, infinite or beyond anything trials produce), changing nothing. */
+ * overwritten since, changing nothing: a count above MCS_MAX_COUNT or, at
+ * read-out and merge, sums that no trials give (a value NaN, infinite or
+ * above 2^500, a sum of weights or the lag-0 sum below 0, a lag sum past
+ * the lag-0 one, a compensation past an ulp of its sum, sums of weights and
+ * of squares no trials share: the invariants of docs/format.md, kind 3).
+ * O(N) per read-out or merge, nothing per trial. */
 
 /* Empties the accumulator for n bins. MCS_ERR_NULL, MCS_ERR_N_RANGE
  * (n = 0 or n > MCS_MAX_N). *acc untouched on error. */
@@ -80,8 +84,9 @@ mcs_status mcs_autocorr_add_bins(mcs_autocorr *acc, size_t k, const size_t *bins
 
 /* dst <- dst union src (sums add). src unchanged; dst == src allowed (other
  * overlap: MCS_ERR_ALIAS). MCS_ERR_NULL, MCS_ERR_UNINIT, MCS_ERR_MISMATCH
- * (different N), MCS_ERR_COUNT (the counts add up past MCS_MAX_COUNT).
- * dst untouched on error. */
+ * (different N), MCS_ERR_COUNT (the counts add up past MCS_MAX_COUNT),
+ * MCS_ERR_INVARIANT (either's sums no trials give, see above). dst
+ * untouched on error. */
 mcs_status mcs_autocorr_merge(mcs_autocorr *dst, const mcs_autocorr *src);
 
 /* Number of trials added. MCS_ERR_NULL, MCS_ERR_UNINIT. */

@@ -108,8 +108,13 @@ typedef struct {
 
 /* Every call below returns MCS_ERR_UNINIT for an object not set up by
  * mcs_moment_init (n out of range), and MCS_ERR_INVARIANT for one
- * overwritten since (a count above MCS_MAX_COUNT or, at read-out, a stored
- * value NaN, infinite or beyond anything trials produce), changing nothing. */
+ * overwritten since, changing nothing: a count above MCS_MAX_COUNT or, at
+ * read-out and merge, sums that no trials give (a value NaN, infinite or
+ * beyond the trials' limits, a sum of squares below 0, a first sum past its
+ * variance, an entry past Cauchy-Schwarz, a compensation past an ulp of its
+ * sum, both triangles unequal, a twiddle table not that of N: the
+ * invariants of docs/format.md, kind 2). Adds check only the counts: O(N^2)
+ * per read-out or merge, nothing per trial. */
 
 /* Empties the accumulator for n bins. MCS_ERR_NULL, MCS_ERR_N_RANGE
  * (n = 0 or n > MCS_MAX_COV_N). *acc untouched on error. */
@@ -134,7 +139,8 @@ mcs_status mcs_moment_add_dense(mcs_moment *acc, size_t n, const double *s);
 /* dst <- dst union src (the sums add, src's moved to dst's shift first).
  * src unchanged; dst == src allowed (other overlap: MCS_ERR_ALIAS).
  * MCS_ERR_NULL, MCS_ERR_UNINIT, MCS_ERR_MISMATCH (different N), MCS_ERR_COUNT
- * (the counts add up past MCS_MAX_COUNT). dst untouched on error. */
+ * (the counts add up past MCS_MAX_COUNT), MCS_ERR_INVARIANT (either's sums
+ * no trials give, see above). dst untouched on error. */
 mcs_status mcs_moment_merge(mcs_moment *dst, const mcs_moment *src);
 
 /* Number of trials added. MCS_ERR_NULL, MCS_ERR_UNINIT. */
@@ -156,10 +162,10 @@ mcs_status mcs_moment_bin_second(const mcs_moment *acc, size_t bin_m, size_t bin
 mcs_status mcs_moment_mean(const mcs_moment *acc, size_t freq, double *re, double *im);
 
 /* <|S_freq|^2>, the real diagonal of eq. 16. O(N^2). MCS_ERR_FREQ_RANGE.
- * A value below 0 within its rounding bound, (2N + 16) eps (1/N) sum
- * |<d_m d_n>| + 4 (N + 2) eps ((sum |<d_n>|)^2 + (sum |c_n| + sum
- * |<d_n>|)^2) / N and the sums' 3 (MCS_MOMENT_BATCH + 64) eps (sum_m
- * sqrt(<d_m^2>))^2 / N, reads 0. */
+ * Never negative: a value below 0 within its rounding bound, (2N + 16) eps
+ * (1/N) sum |<d_m d_n>| + 4 (N + 2) eps ((sum |<d_n>|)^2 + (sum |c_n| +
+ * sum |<d_n>|)^2) / N and the sums' 3 (MCS_MOMENT_BATCH + 64) eps (sum_m
+ * sqrt(<d_m^2>))^2 / N, reads 0; below that MCS_ERR_INVARIANT. */
 mcs_status mcs_moment_power(const mcs_moment *acc, size_t freq, double *out);
 
 /* <S_k S_l*> (eq. 16) for k = freq_k, l = freq_l (at k = l the power, as
@@ -204,8 +210,9 @@ mcs_status mcs_moment_estimator_mean(const mcs_moment *acc, size_t n, size_t k, 
  * cancellation. Within (2N + 16) eps (1/K^2) sum_{m,n} |f_m| |f_n|
  * (|<d_m d_n>| + |<d_m>| |<d_n>|) + 3 (MCS_MOMENT_BATCH + 64) eps (1/K^2)
  * (sum_m |f_m| sqrt(<d_m^2>))^2 of the exact value (the read-out, then the
- * sums: see above); a value below 0 within that reads 0. Arguments and
- * statuses as mcs_moment_estimator_mean. */
+ * sums: see above); never negative: a value below 0 within that reads 0,
+ * one below it is MCS_ERR_INVARIANT. Arguments and statuses as
+ * mcs_moment_estimator_mean. */
 mcs_status mcs_moment_variance(const mcs_moment *acc, size_t n, size_t k, const double *f,
                                double *out);
 

@@ -6,6 +6,8 @@
 #define MCSPEC_ACC_INTERNAL_H
 
 #include "core/internal.h"
+#include "mcspec/autocorr.h"
+#include "mcspec/moment.h"
 
 #include <float.h>
 
@@ -49,6 +51,187 @@ static inline int mcs_all_stored_(size_t len, const double *x)
  * F <= 2^53 folds and merges, and the moves of the shift as it settles
  * (moment.c, settle_shift) under 32 eps each. */
 #define MCS_MOMENT_ROUNDING_ ((double)(MCS_MOMENT_BATCH + 64u) * DBL_EPSILON)
+
+/* ---- Stored sums that no trials produce ----------------------------------
+ *
+ * One check per accumulator of everything its sums obey (the invariants of
+ * docs/format.md), run by its read-outs and merges on the object and by
+ * the loader on a record before anything is written: the two cannot
+ * disagree, so a loaded object is as trustworthy as a built one. The values
+ * are read through mcs_values_, from memory or from a record's payload
+ * (src/io/io_kinds.c); written once here, static inline, so that each use
+ * reads its own values directly. Tolerances are the stated rounding bounds
+ * (moment.h, autocorr.h), and DBL_TRUE_MIN per operation for sums of
+ * products that underflow. */
+
+/* One array of stored values, value i read by at(). */
+typedef struct mcs_values_ {
+    double (*at)(const struct mcs_values_ *v, size_t i);
+    const void *base; /* the doubles, or the record (io_values) */
+    size_t first;     /* record: the payload index of value 0 */
+    size_t upper;     /* record: N of an N x N array kept as its upper triangle, else 0 */
+} mcs_values_;
+
+static inline double mcs_memory_at_(const mcs_values_ *v, size_t i)
+{
+    return ((const double *)v->base)[i];
+}
+
+/* An array of doubles in memory. */
+static inline mcs_values_ mcs_memory_values_(const double *x)
+{
+    const mcs_values_ v = {mcs_memory_at_, x, 0u, 0u};
+    return v;
+}
+
+#define MCS_AT_(v, i) ((v).at(&(v), (i)))
+
+/* A compensation of a Kahan sum (core/internal.h) is its last add's
+ * rounding error, at most an ulp of the sum (not half: the add's own error
+ * is half an ulp, its computation of the error adds up to as much again;
+ * 2^-52 |sum| >= 1 ulp), and 0 when the sum is 0. */
+static inline int mcs_compensation_ok_(double lo, double sum)
+{
+    return fabs(lo) <= DBL_EPSILON * fabs(sum);
+}
+
+/* A moment accumulator's counts and arrays (moment.h), N = n. */
+typedef struct {
+    size_t n;
+    uint64_t count, batch, sparse;
+    mcs_values_ shift, sum_d, lo_d, sum_dd, lo_dd, batch_s, batch_d, batch_w;
+} mcs_moment_sums_;
+
+/* Entry (m, q) of the open batch's sums of d d^T, or value m of its sums of
+ * d (q = SIZE_MAX), as readout.h's mcs_batch_second_ and mcs_batch_first_
+ * form them. */
+static inline double mcs_moment_batch_at_(const mcs_moment_sums_ *s, size_t m, size_t q)
+{
+    const double sparse = (double)s->sparse, cm = MCS_AT_(s->shift, m);
+    const double bm = MCS_AT_(s->batch_s, m);
+    if (q == SIZE_MAX)
+        return MCS_AT_(s->batch_d, m) + (bm - sparse * cm);
+    const size_t n = s->n;
+    const double cq = MCS_AT_(s->shift, q), bq = MCS_AT_(s->batch_s, q);
+    return (MCS_AT_(s->batch_w, m * n + q) + MCS_AT_(s->batch_w, q * n + m)) -
+           (bm * cq + cm * bq) + sparse * (cm * cq);
+}
+
+/* 1 when the sums are those of some trials: the counts (a batch below
+ * MCS_MOMENT_BATCH trials and below the count, its sparse trials among
+ * them); every value finite and within its limit; shift and batch_s >= 0,
+ * no batch_s on a bin of the shift, no batch_s without sparse trials, no
+ * batch_d without others, no sums before two trials or batch sums without
+ * a batch; every compensation within an ulp of its sum; and, the sums of
+ * d d^T being sums of squares and products (gamma = MCS_MOMENT_ROUNDING_,
+ * D_m a diagonal plus T DBL_TRUE_MIN, F_m a first sum, over T trials):
+ * diagonals >= 0 (closed, batch), F_m^2 <= (1 + 4 gamma) T D_m for the
+ * closed sums, the batch and both, |D_mn| <= (1 + 3 gamma) sqrt(D_m D_n) for
+ * both, and T c_m + F_m (the sum of s_m) >= 0 within its rounding. */
+static inline int mcs_moment_sums_ok_(const mcs_moment_sums_ *s)
+{
+    const size_t n = s->n;
+    const double t = (double)s->count, b = (double)s->batch, tc = t - b;
+    const double g = MCS_MOMENT_ROUNDING_ + 8.0 * DBL_EPSILON;
+    const double tiny = t * DBL_TRUE_MIN * 4.0;
+    if (s->count > (uint64_t)MCS_MAX_COUNT || s->batch >= (uint64_t)MCS_MOMENT_BATCH ||
+        s->sparse > s->batch || (s->batch != 0u && s->batch >= s->count))
+        return 0;
+    int ok = 1;
+    for (size_t m = 0; m < n && ok; ++m) {
+        const double c = MCS_AT_(s->shift, m), bs = MCS_AT_(s->batch_s, m);
+        const double bd = MCS_AT_(s->batch_d, m), f = MCS_AT_(s->sum_d, m);
+        const double dd = MCS_AT_(s->sum_dd, m * n + m), w = MCS_AT_(s->batch_w, m * n + m);
+        ok = c >= 0.0 && c <= MCS_MOMENT_LIMIT_S_ && bs >= 0.0 && bs <= MCS_MOMENT_LIMIT_S_ &&
+             fabs(bd) <= MCS_MOMENT_LIMIT_S_ && w >= 0.0 && w <= MCS_MOMENT_LIMIT_W_ &&
+             dd >= 0.0 && dd <= MCS_STORED_LIMIT_ && fabs(f) <= MCS_STORED_LIMIT_ &&
+             mcs_compensation_ok_(MCS_AT_(s->lo_d, m), f) &&
+             (bs == 0.0 || (c == 0.0 && s->sparse != 0u)) && (bd == 0.0 || s->sparse < s->batch) &&
+             (s->count >= 2u || (f == 0.0 && dd == 0.0));
+        if (!ok)
+            break;
+        const double bdiag = mcs_moment_batch_at_(s, m, m), bfirst = mcs_moment_batch_at_(s, m, SIZE_MAX);
+        const double dm = dd + bdiag, fm = f + bfirst;
+        ok = f * f <= (1.0 + 4.0 * g) * tc * (dd + tiny) &&
+             bfirst * bfirst <= (1.0 + 4.0 * g) * b * (bdiag + tiny) &&
+             fm * fm <= (1.0 + 4.0 * g) * t * (dm + tiny) &&
+             t * c + fm >= -(2.0 * g * sqrt(t * (dm + tiny)) + 4.0 * DBL_EPSILON * (t * c + fabs(fm)));
+    }
+    for (size_t m = 0; m < n && ok; ++m) {
+        const double dm = MCS_AT_(s->sum_dd, m * n + m) + mcs_moment_batch_at_(s, m, m) + tiny;
+        for (size_t q = 0; q < n && ok; ++q) {
+            const size_t i = m * n + q;
+            const double v = MCS_AT_(s->sum_dd, i), w = MCS_AT_(s->batch_w, i);
+            const double dq = MCS_AT_(s->sum_dd, q * n + q) + mcs_moment_batch_at_(s, q, q) + tiny;
+            ok = fabs(v) <= MCS_STORED_LIMIT_ && mcs_compensation_ok_(MCS_AT_(s->lo_dd, i), v) &&
+                 fabs(w) <= MCS_MOMENT_LIMIT_W_ && (s->count >= 2u || v == 0.0) &&
+                 (s->batch != 0u || w == 0.0) &&
+                 fabs(v + mcs_moment_batch_at_(s, m, q)) <= (1.0 + 3.0 * g) * sqrt(dm) * sqrt(dq);
+        }
+    }
+    return ok;
+}
+
+/* An autocorrelation accumulator's count and arrays (autocorr.h), N = n. */
+typedef struct {
+    size_t n;
+    uint64_t count;
+    mcs_values_ sum_s, lo_s, sum_lag, lo_lag;
+    double sum_dc, lo_dc;
+} mcs_autocorr_sums_;
+
+/* 1 when the sums are those of some trials: the count; every value finite
+ * and at most 2^500; sum_s, sum_dc and the lag-0 sum >= 0 (sums of weights
+ * and of squares); every compensation within an ulp of its sum; nothing
+ * with no trials; and within the rounding of autocorr.h (gamma = (N + 8 +
+ * T N^2 eps) eps of T <A(0)> = 2 L_0 for a lag sum L_e): |A(d)| <= A(0) for
+ * every trial, so |L_e| <= 2 L_0 for 0 < e < N/2 and |L_{N/2}| <= L_0 (both
+ * halved: autocorr.h); and with S_t a trial's total weight and sum_d A(d) =
+ * S_t^2 (its centred lags sum to 0, its S^2/N goes to sum_dc), T sum_t
+ * S_t^2 >= (sum_t S_t)^2 >= sum_t S_t^2 >= N sum_dc. */
+static inline int mcs_autocorr_sums_ok_(const mcs_autocorr_sums_ *s)
+{
+    const size_t n = s->n, h = n / 2u;
+    const double nd = (double)n, t = (double)s->count;
+    const double gamma = ((nd + 8.0) + t * nd * nd * DBL_EPSILON) * DBL_EPSILON;
+    const double l0 = MCS_AT_(s->sum_lag, 0u);
+    const double tiny = 4.0 * t * nd * nd * DBL_TRUE_MIN;
+    if (s->count > (uint64_t)MCS_MAX_COUNT || !(l0 >= 0.0 && l0 <= MCS_STORED_LIMIT_) ||
+        !(s->sum_dc >= 0.0 && s->sum_dc <= MCS_STORED_LIMIT_) ||
+        !mcs_compensation_ok_(s->lo_dc, s->sum_dc))
+        return 0;
+    int ok = s->count != 0u || s->sum_dc == 0.0;
+    double total = 0.0, lags = 0.0;
+    for (size_t j = 0; j < n && ok; ++j) {
+        const double x = MCS_AT_(s->sum_s, j);
+        ok = x >= 0.0 && x <= MCS_STORED_LIMIT_ && mcs_compensation_ok_(MCS_AT_(s->lo_s, j), x) &&
+             (s->count != 0u || x == 0.0);
+        total += x;
+    }
+    for (size_t e = 0; e <= h && ok; ++e) {
+        const double x = MCS_AT_(s->sum_lag, e);
+        const double most = (e == 0u || 2u * e == n ? 1.0 : 2.0) * l0;
+        ok = fabs(x) <= MCS_STORED_LIMIT_ && mcs_compensation_ok_(MCS_AT_(s->lo_lag, e), x) &&
+             fabs(x) <= most * (1.0 + 4.0 * gamma + 8.0 * DBL_EPSILON) + tiny;
+        lags += 2.0 * x; /* every folded lag stands for two: d and N - d, or a halved one */
+    }
+    if (!ok)
+        return 0;
+    /* sum_t S_t^2 = sum_d <A(d)> T + N sum_dc, to the lags' rounding */
+    const double squares = lags + nd * s->sum_dc;
+    const double slack = (2.0 * nd * gamma + 2.0 * nd * nd * DBL_EPSILON) * l0 +
+                         4.0 * DBL_EPSILON * nd * s->sum_dc + tiny;
+    const double sq_total = total * total, rel = 2.0 * (nd + 4.0) * DBL_EPSILON;
+    return (1.0 - rel) * sq_total <= t * (squares + slack) &&
+           squares <= (1.0 + rel) * sq_total + 2.0 * slack &&
+           nd * s->sum_dc <= (1.0 + rel) * sq_total + slack;
+}
+
+/* The checks above on an object, with those of its own copy of the data
+ * (moment: both triangles of its sums equal, its twiddle table that of its
+ * N): 1 when valid. For the read-outs and the merges. */
+int mcs_moment_stored_valid(const mcs_moment *acc);
+int mcs_autocorr_stored_valid(const mcs_autocorr *acc);
 
 /* The checks every add shares once the object and the trial are valid: the
  * trial's total weight at most max_total (MAGNITUDE), the count (COUNT), and

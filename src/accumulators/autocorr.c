@@ -21,6 +21,19 @@ static mcs_status autocorr_check(const mcs_autocorr *acc)
     return st == MCS_OK && acc->count > (uint64_t)MCS_MAX_COUNT ? MCS_ERR_INVARIANT : st;
 }
 
+int mcs_autocorr_stored_valid(const mcs_autocorr *acc)
+{
+    const mcs_autocorr_sums_ s = {acc->n,
+                                  acc->count,
+                                  mcs_memory_values_(acc->sum_s),
+                                  mcs_memory_values_(acc->lo_s),
+                                  mcs_memory_values_(acc->sum_lag),
+                                  mcs_memory_values_(acc->lo_lag),
+                                  acc->sum_dc,
+                                  acc->lo_dc};
+    return mcs_autocorr_sums_ok_(&s);
+}
+
 /* Folded lag of an ordered pair of bins: e = min(d, N - d), d = c - b mod N. */
 static size_t folded_lag(size_t b, size_t c, size_t n)
 {
@@ -108,6 +121,9 @@ mcs_status mcs_autocorr_merge(mcs_autocorr *dst, const mcs_autocorr *src)
     mcs_status st = mcs_check_pair_(autocorr_check(dst), autocorr_check(src));
     if (st == MCS_OK)
         st = mcs_check_merge_(dst, src, sizeof *dst, dst->n == src->n, dst->count, src->count);
+    /* sums no trials give would pass into dst: refused (O(N), as the merge) */
+    if (st == MCS_OK && (!mcs_autocorr_stored_valid(dst) || !mcs_autocorr_stored_valid(src)))
+        st = MCS_ERR_INVARIANT;
     if (st != MCS_OK)
         return st;
     const size_t n = dst->n;
@@ -127,10 +143,9 @@ mcs_status mcs_autocorr_count(const mcs_autocorr *acc, uint64_t *count)
 }
 
 /* The checks of a read-out writing the n-entry arrays out and out2 (out2
- * NULL for one array), in this order: NULL, UNINIT (acc), INVARIANT (a
- * stored value beyond anything trials produce), MISMATCH, the plan (UNINIT
- * or MISMATCH),
- * EMPTY, ALIAS (outputs overlapping each other, the accumulator or the plan:
+ * NULL for one array), in this order: NULL, UNINIT (acc), MISMATCH, the
+ * plan (UNINIT or MISMATCH), EMPTY, INVARIANT (sums no trials give:
+ * mcs_autocorr_stored_valid), ALIAS (outputs overlapping each other, the accumulator or the plan:
  * the plan's scratch holds the data mid-transform). */
 static mcs_status autocorr_readout(const mcs_autocorr *acc, const mcs_dft *plan, size_t n,
                                    const double *out, const double *out2)
@@ -142,9 +157,7 @@ static mcs_status autocorr_readout(const mcs_autocorr *acc, const mcs_dft *plan,
         st = mcs_dft_check(plan, n); /* UNINIT or MISMATCH */
     if (st == MCS_OK && acc->count == 0u)
         st = MCS_ERR_EMPTY;
-    if (st == MCS_OK &&
-        (!mcs_all_stored_(n, acc->sum_s) || !mcs_all_stored_(n / 2u + 1u, acc->sum_lag) ||
-         !(acc->sum_dc >= 0.0) || !(acc->sum_dc <= MCS_STORED_LIMIT_)))
+    if (st == MCS_OK && !mcs_autocorr_stored_valid(acc))
         st = MCS_ERR_INVARIANT;
     const size_t bytes = n * sizeof(double);
     const size_t out2_bytes = out2 != NULL ? bytes : 0u;

@@ -3,6 +3,7 @@
 #include "readout.h"
 #include "core/simd.h"
 
+#include <math.h>
 #include <string.h>
 
 mcs_status mcs_moment_init(mcs_moment *acc, size_t n)
@@ -28,6 +29,54 @@ static mcs_status moment_check(const mcs_moment *acc)
          (acc->batch_count != 0u && acc->batch_count >= acc->count)))
         st = MCS_ERR_INVARIANT;
     return st;
+}
+
+/* The sums of an object set up by init (its n checked) as the shared check
+ * reads them (acc_internal.h). */
+static mcs_moment_sums_ object_sums(const mcs_moment *acc)
+{
+    const mcs_moment_sums_ s = {acc->n,
+                                acc->count,
+                                acc->batch_count,
+                                acc->batch_sparse,
+                                mcs_memory_values_(acc->shift),
+                                mcs_memory_values_(acc->sum_d),
+                                mcs_memory_values_(acc->lo_d),
+                                mcs_memory_values_(acc->sum_dd),
+                                mcs_memory_values_(acc->lo_dd),
+                                mcs_memory_values_(acc->batch_s),
+                                mcs_memory_values_(acc->batch_d),
+                                mcs_memory_values_(acc->batch_w)};
+    return s;
+}
+
+/* The object's own copy of what its N implies: both triangles of its sums
+ * equal (a record keeps one), its twiddle table that of its N (an N
+ * overwritten since init reads another table: cos(2 pi / N) at index 1, 0
+ * past N) with every entry in [-1, 1]. */
+static int own_copy_ok(const mcs_moment *acc)
+{
+    const size_t n = acc->n;
+    int ok = 1;
+    for (size_t m = 0; m < n; ++m) {
+        ok &= fabs(acc->cos_table[m]) <= 1.0 && fabs(acc->sin_table[m]) <= 1.0;
+        for (size_t q = m + 1u; q < n; ++q)
+            ok &= acc->sum_dd[m * n + q] == acc->sum_dd[q * n + m] &&
+                  acc->lo_dd[m * n + q] == acc->lo_dd[q * n + m];
+    }
+    if (n >= 2u) {
+        const double a = mcs_twiddle_angle_(1u, n);
+        ok &= acc->cos_table[1] == cos(a) && acc->sin_table[1] == sin(a);
+    } else if ((size_t)MCS_MAX_COV_N >= 2u) {
+        ok &= acc->cos_table[1] == 0.0 && acc->sin_table[1] == 0.0;
+    }
+    return ok;
+}
+
+int mcs_moment_stored_valid(const mcs_moment *acc)
+{
+    const mcs_moment_sums_ s = object_sums(acc);
+    return own_copy_ok(acc) && mcs_moment_sums_ok_(&s);
 }
 
 /* Sparse trials of at most this many pair products per trial, K (K + 1) / 2,
@@ -503,6 +552,9 @@ mcs_status mcs_moment_merge(mcs_moment *dst, const mcs_moment *src)
     mcs_status st = mcs_check_pair_(moment_check(dst), moment_check(src));
     if (st == MCS_OK)
         st = mcs_check_merge_(dst, src, sizeof *dst, dst->n == src->n, dst->count, src->count);
+    /* sums no trials give would pass into dst: refused (O(N^2), as the merge) */
+    if (st == MCS_OK && (!mcs_moment_stored_valid(dst) || !mcs_moment_stored_valid(src)))
+        st = MCS_ERR_INVARIANT;
     if (st != MCS_OK || src->count == 0u)
         return st;
     if (dst->count == 0u) {
@@ -535,13 +587,9 @@ mcs_status mcs_readout_open_moment(const void *obj, mcs_readout *view)
         return st;
     if (acc->count == 0u)
         return MCS_ERR_EMPTY;
-    const size_t n = acc->n;
-    if (!mcs_all_below_(n, acc->shift, MCS_MOMENT_LIMIT_S_) || !mcs_all_stored_(n, acc->sum_d) ||
-        !mcs_all_stored_(n * n, acc->sum_dd) ||
-        !mcs_all_below_(n, acc->batch_s, MCS_MOMENT_LIMIT_S_) ||
-        !mcs_all_below_(n, acc->batch_d, MCS_MOMENT_LIMIT_S_) ||
-        !mcs_all_below_(n * n, acc->batch_w, MCS_MOMENT_LIMIT_W_))
+    if (!mcs_moment_stored_valid(acc))
         return MCS_ERR_INVARIANT;
+    const size_t n = acc->n;
     /* k = 0: the accumulator does not know K, the caller names it */
     *view = (mcs_readout){.n = n,
                           .k = 0u,
@@ -550,8 +598,8 @@ mcs_status mcs_readout_open_moment(const void *obj, mcs_readout *view)
                           .second = acc->sum_dd,
                           .cos_table = acc->cos_table,
                           .sin_table = acc->sin_table,
-                          .shift = acc->shift};
-    view->accum = MCS_MOMENT_ROUNDING_;
+                          .shift = acc->shift,
+                          .accum = MCS_MOMENT_ROUNDING_};
     if (acc->batch_count != 0u) {
         view->batch_w = acc->batch_w;
         view->batch_s = acc->batch_s;

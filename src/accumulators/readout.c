@@ -269,9 +269,21 @@ mcs_status mcs_readout_bin_second(const mcs_readout_source *src, size_t bin_m,
     if (st != MCS_OK)
         return st;
     double x = mcs_readout_second(&v, bin_m, bin_n) * v.scale;
-    if (v.shift != NULL) /* <s_m s_n> = Cov(d)_mn + <s_m><s_n> */
-        x += mcs_readout_mean_entry(&v, bin_m) * mcs_readout_mean_entry(&v, bin_n) -
-             (mcs_readout_first(&v, bin_m) * v.scale) * (mcs_readout_first(&v, bin_n) * v.scale);
+    double bound = 4.0 * DBL_EPSILON * fabs(x) + mcs_readout_accumulated(&v, NULL, NULL);
+    if (v.shift != NULL) { /* <s_m s_n> = Cov(d)_mn + <s_m><s_n> */
+        const double sm = mcs_readout_mean_entry(&v, bin_m), sn = mcs_readout_mean_entry(&v, bin_n);
+        const double dm = mcs_readout_first(&v, bin_m) * v.scale;
+        const double dn = mcs_readout_first(&v, bin_n) * v.scale;
+        x += sm * sn - dm * dn;
+        bound += 8.0 * DBL_EPSILON * (fabs(sm * sn) + fabs(dm * dn));
+    }
+    /* <s_m^2> is never negative: as mcs_readout_power (bound: the sums' and
+     * this sum's rounding) */
+    if (bin_m == bin_n && x < 0.0) {
+        st = mcs_readout_clamp(bound, &x);
+        if (st != MCS_OK)
+            return st;
+    }
     return mcs_set_(out, x);
 }
 
@@ -321,21 +333,15 @@ static mcs_status cross_value(const mcs_readout *view, size_t freq_k, size_t fre
 }
 
 /* <|S_k|^2> as a complex_at (k = l): real, and a second moment, never
- * negative but for rounding (see mcs_readout_nonnegative). Exact moments
- * below minus the rounding bound are no moments any pattern has: the object
- * holds values no call produced (as the cross matrix's diagonal reads it). */
+ * negative but for rounding. A value below minus the rounding bound is no
+ * moment of any data, measured or exact: the object holds values no call
+ * produced (MCS_ERR_INVARIANT, as the cross matrix's diagonal reads it). */
 static mcs_status power_value(const mcs_readout *view, size_t freq_k, size_t freq_l,
                               double *re, double *im)
 {
     mcs_readout_cross_at(view, freq_k, freq_l, re, im);
     *im = 0.0; /* <s s^T> is symmetric: the imaginary part is rounding */
-    if (*re < 0.0) {
-        const double bound = power_bound(view);
-        if (view->k != 0u && !(*re >= -bound))
-            return MCS_ERR_INVARIANT;
-        *re = mcs_readout_nonnegative(view, *re, bound);
-    }
-    return MCS_OK;
+    return *re < 0.0 ? mcs_readout_clamp(power_bound(view), re) : MCS_OK;
 }
 
 /* Cov(S_k, S_l) as a complex_at: a variance (k = l) is never negative. */
@@ -498,16 +504,24 @@ mcs_status mcs_readout_cross_matrix(const mcs_readout_source *src, size_t n,
     mcs_status st = open_matrix(src, n, re, im, &v);
     if (st != MCS_OK)
         return st;
+    /* The diagonal is checked before anything is written (power_value). */
+    const double tol = power_bound(&v);
+    for (size_t k = 0; k < n && st == MCS_OK; ++k) {
+        double pr, pi;
+        mcs_readout_cross_at(&v, k, k, &pr, &pi);
+        st = mcs_readout_clamp(tol, &pr);
+    }
+    if (st != MCS_OK)
+        return st;
     second_matrix_at(&v, re, im);
     if (v.shift != NULL) { /* as mcs_readout_cross_at */
         add_mean_products(&v, first_mean_at, first_mean_at, -1.0, re, im);
         add_mean_products(&v, mean_at, mean_at, 1.0, re, im);
     }
     /* The diagonal is <|S_k|^2>, clamped as mcs_readout_power: two sums of N
-     * terms, within power_bound. */
-    const double tol = power_bound(&v);
+     * terms, within power_bound (checked before anything was written). */
     for (size_t k = 0; k < n; ++k)
-        re[k * n + k] = mcs_readout_nonnegative(&v, re[k * n + k], tol);
+        (void)mcs_readout_clamp(tol, &re[k * n + k]);
     return MCS_OK;
 }
 

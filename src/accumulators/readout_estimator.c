@@ -118,8 +118,11 @@ mcs_status mcs_readout_variance(const mcs_readout_source *src, size_t n, size_t 
     if (st != MCS_OK)
         return st;
     double var = mcs_readout_form(&v, k, f, f);
-    if (var < 0.0) /* f^T Cov f: never negative but for rounding */
-        var = mcs_readout_nonnegative(&v, var, mcs_readout_form_bound(&v, k, f, f));
+    if (var < 0.0) { /* f^T Cov f: never negative but for rounding */
+        st = mcs_readout_clamp(mcs_readout_form_bound(&v, k, f, f), &var);
+        if (st != MCS_OK)
+            return st;
+    }
     return finite_result(var, out);
 }
 
