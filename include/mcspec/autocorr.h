@@ -62,8 +62,9 @@ typedef struct {
  * read-out and merge, sums that no trials give (a value NaN, infinite or
  * above 2^500, a sum of weights or the lag-0 sum below 0, a lag sum past
  * the lag-0 one, a compensation past an ulp of its sum, sums of weights and
- * of squares no trials share: the invariants of docs/format.md, kind 3).
- * O(N) per read-out or merge, nothing per trial. */
+ * of squares no trials share: the invariants of docs/format.md, kind 3,
+ * checked by the code the loader runs). O(N) per read-out or merge, nothing
+ * per trial. */
 
 /* Empties the accumulator for n bins. MCS_ERR_NULL, MCS_ERR_N_RANGE
  * (n = 0 or n > MCS_MAX_N). *acc untouched on error. */
@@ -109,18 +110,20 @@ mcs_status mcs_autocorr_mean(const mcs_autocorr *acc, mcs_dft *plan, size_t n, d
 /* <|S_k|^2> for all k = 0..n-1 by Wiener-Khinchin, one DFT of <A> through
  * plan. power[n] written (exactly n entries; it must overlap neither the
  * accumulator nor the plan). Statuses as mcs_autocorr_mean.
- * Rounding: every power is within (2N + 16 ceil(log2 N) + 48 + T N^2 eps)
+ * Rounding: every power is within (2N + 16 ceil(log2 N) + 192 + T N^2 eps)
  * eps <A(0)> of the exact mean of |S_k|^2 over the T trials (eps =
  * DBL_EPSILON; <A(0)> the mean over the trials of sum_n s_n^2, of sum_n
  * (s_n - S/N)^2 for a trial of K >= N samples, whose lags are kept
  * centred: the largest |<A(d)>|, which the transform sums N of): the lag
  * sums carry (N + 8 + T N^2 eps) eps of it, the transform at most (N + 2) u
- * on its direct path and 8 u log2 N on the FFT paths (u = eps / 2). A power
- * is never negative: one below 0 within that bound reads 0 (a trial of
- * weight 2^100 among ordinary ones left -2.7e39 at a k where every trial's
- * |S_k|^2 is about 1, beside 2.5e57 at k = 0); one below it is no spectrum
- * of any trials, MCS_ERR_INVARIANT. That check needs the transform, which
- * runs in power[]: on that one error power[] holds the unclamped powers,
+ * on its direct path and (8 log2 N + 16) u on the FFT paths (u = eps / 2),
+ * and the bound leaves room for twice the rounding of the loader's own
+ * direct sums, so that every record that loads reads out. A power is never
+ * negative: one below 0 within that bound reads 0 (a trial of weight 2^100
+ * among ordinary ones left -2.7e39 at a k where every trial's |S_k|^2 is
+ * about 1, beside 2.5e57 at k = 0); one below it is no spectrum of any
+ * trials, MCS_ERR_INVARIANT. That check needs the transform, which runs in
+ * power[]: on that one error power[] holds the unclamped powers, and
  * every other error leaves it untouched. */
 mcs_status mcs_autocorr_power(const mcs_autocorr *acc, mcs_dft *plan, size_t n, double *power);
 

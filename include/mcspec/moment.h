@@ -113,8 +113,9 @@ typedef struct {
  * beyond the trials' limits, a sum of squares below 0, a first sum past its
  * variance, an entry past Cauchy-Schwarz, a compensation past an ulp of its
  * sum, both triangles unequal, a twiddle table not that of N: the
- * invariants of docs/format.md, kind 2). Adds check only the counts: O(N^2)
- * per read-out or merge, nothing per trial. */
+ * invariants of docs/format.md, kind 2, checked by the code the loader
+ * runs). Adds check only the counts: O(N^2) per read-out or merge, nothing
+ * per trial. */
 
 /* Empties the accumulator for n bins. MCS_ERR_NULL, MCS_ERR_N_RANGE
  * (n = 0 or n > MCS_MAX_COV_N). *acc untouched on error. */

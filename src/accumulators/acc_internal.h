@@ -227,11 +227,167 @@ static inline int mcs_autocorr_sums_ok_(const mcs_autocorr_sums_ *s)
            nd * s->sum_dc <= (1.0 + rel) * sq_total + slack;
 }
 
+/* ---- Spectra the stored sums imply ----------------------------------------
+ *
+ * A power is a mean of |S_k|^2, so >= 0: its read-out refuses one below
+ * minus its rounding bound (readout.c, autocorr.c). The checks above see one
+ * bin or two; sums can pass them and still have a power below that (three
+ * bins that are no covariance, lags that are no autocorrelation). The
+ * loader computes every power once more, directly, and refuses a record
+ * with one below a tighter threshold, so that whatever it loads reads out:
+ * with E the direct sum's rounding and A what the stored sums may carry,
+ * a valid object's direct power is >= -(A + E) (its exact one >= -A), and
+ * a record passing that has exact powers >= -(A + 2E), which a read-out
+ * with its own rounding E' computes >= -(A + 2E + E'), within the bound the
+ * read-out refuses beyond. */
+
+/* cos and sin of 2 pi j / n, j reduced mod n first (core/internal.h). */
+static inline void mcs_twiddle_pair_(size_t j, size_t n, double *c, double *s)
+{
+    const double a = mcs_twiddle_angle_(j % n, n);
+    *c = cos(a);
+    *s = sin(a);
+}
+
+/* Entry (m, q) of the whole sums of d d^T (closed and open batch). */
+static inline double mcs_moment_total_at_(const mcs_moment_sums_ *s, size_t m, size_t q)
+{
+    return MCS_AT_(s->sum_dd, m * s->n + q) + mcs_moment_batch_at_(s, m, q);
+}
+
+/* Entry m of the whole first sums. */
+static inline double mcs_moment_first_at_(const mcs_moment_sums_ *s, size_t m)
+{
+    return MCS_AT_(s->sum_d, m) + mcs_moment_batch_at_(s, m, SIZE_MAX);
+}
+
+/* The rounding of a moment power read from the sums, R, in the units of the
+ * power: (2N + 64) eps (1/N) sum |<D_mn>| for the transform of the second
+ * sums and 4 (N + 32) eps (1/N) ((sum |<d>|)^2 + (sum c + sum |<d>|)^2) for
+ * the squares of the transforms of the first sums and of <s> = c + <d>;
+ * R bounds both the read-out's (readout.c) and the loader's direct sums.
+ * *acc gets A = 3 gamma (sum sqrt(<D_m>))^2 / N, what the sums may carry. */
+static inline double mcs_moment_power_rounding_(const mcs_moment_sums_ *s, double *acc)
+{
+    const size_t n = s->n;
+    const double nd = (double)n, t = (double)s->count;
+    double second = 0.0, first = 0.0, shift = 0.0, root = 0.0;
+    for (size_t m = 0; m < n; ++m) {
+        const double dm = mcs_moment_total_at_(s, m, m) / t;
+        root += sqrt(dm > 0.0 ? dm : 0.0);
+        first += fabs(mcs_moment_first_at_(s, m)) / t;
+        shift += fabs(MCS_AT_(s->shift, m));
+        for (size_t q = 0; q < n; ++q)
+            second += fabs(mcs_moment_total_at_(s, m, q)) / t;
+    }
+    *acc = 3.0 * MCS_MOMENT_ROUNDING_ * root * root / nd;
+    return ((2.0 * nd + 64.0) * DBL_EPSILON * second +
+            4.0 * (nd + 32.0) * DBL_EPSILON * (first * first + (shift + first) * (shift + first))) /
+           nd;
+}
+
+#define MCS_POWER_CHUNK_ 16u
+
+/* 1 when every power <|S_k|^2> of the sums, computed directly, is >= -(A +
+ * 4 R) (mcs_moment_power_rounding_; the read-out refuses below -(A + 8 R)).
+ * O(N^3), the twiddles of a chunk of bins on the stack. */
+static inline int mcs_moment_powers_ok_(const mcs_moment_sums_ *s)
+{
+    const size_t n = s->n;
+    if (s->count == 0u)
+        return 1;
+    const double nd = (double)n, t = (double)s->count;
+    double acc;
+    const double floor = -(4.0 * mcs_moment_power_rounding_(s, &acc) + acc);
+    for (size_t k = 0; k < n; ++k) {
+        double second = 0.0, fr = 0.0, fi = 0.0, mr = 0.0, mi = 0.0;
+        for (size_t q0 = 0; q0 < n; q0 += MCS_POWER_CHUNK_) {
+            const size_t len = n - q0 < MCS_POWER_CHUNK_ ? n - q0 : MCS_POWER_CHUNK_;
+            double uc[MCS_POWER_CHUNK_], us[MCS_POWER_CHUNK_];
+            for (size_t j = 0; j < len; ++j)
+                mcs_twiddle_pair_(k * (q0 + j), n, &uc[j], &us[j]);
+            for (size_t m = 0; m < n; ++m) {
+                double cm, sm, ir = 0.0, ii = 0.0;
+                mcs_twiddle_pair_(k * m, n, &cm, &sm);
+                for (size_t j = 0; j < len; ++j) {
+                    const double x = mcs_moment_total_at_(s, m, q0 + j);
+                    ir += uc[j] * x;
+                    ii += us[j] * x;
+                }
+                second += cm * ir + sm * ii; /* Re e^{-i a m} (ir + i ii) */
+            }
+        }
+        for (size_t m = 0; m < n; ++m) {
+            double cm, sm;
+            mcs_twiddle_pair_(k * m, n, &cm, &sm);
+            const double f = mcs_moment_first_at_(s, m) / t, mean = MCS_AT_(s->shift, m) + f;
+            fr += cm * f;
+            fi -= sm * f;
+            mr += cm * mean;
+            mi -= sm * mean;
+        }
+        const double power = (second / t - (fr * fr + fi * fi) + (mr * mr + mi * mi)) / nd;
+        if (!(power >= floor))
+            return 0;
+    }
+    return 1;
+}
+
+/* The autocorrelation's powers, in units of eps <A(0)> = eps 2 L_0 / T: the
+ * read-out refuses one below -(2N + 16 log2 N + 192 + T N^2 eps) (autocorr.h:
+ * the lags' T N^2 eps + N + 8, twice the direct sum's N/4 + 72, the FFT's
+ * 4 log2 N + 8 or the direct path's N/2 + 1), the loader one whose direct
+ * sum is below -(5N/4 + 80 + T N^2 eps). */
+static inline double mcs_autocorr_power_gamma_(size_t n, uint64_t count, int load)
+{
+    const double nd = (double)n, t = (double)count;
+    double log2n = 0.0;
+    for (size_t m = 1u; m < n; m *= 2u)
+        log2n += 1.0;
+    const double lags = t * nd * nd * DBL_EPSILON;
+    return (load ? 1.25 * nd + 80.0 + lags : 2.0 * nd + 16.0 * log2n + 192.0 + lags) *
+           DBL_EPSILON;
+}
+
+/* 1 when every power of the lag sums, computed directly (k = 0..N/2; the
+ * rest mirror them), is >= -mcs_autocorr_power_gamma_(load) <A(0)>. O(N^2)
+ * and O(1) memory: the twiddles by rotation, set afresh from cos and sin
+ * every 16 lags (each within 64 eps). */
+static inline int mcs_autocorr_powers_ok_(const mcs_autocorr_sums_ *s)
+{
+    const size_t n = s->n, h = n / 2u;
+    if (s->count == 0u)
+        return 1;
+    const double nd = (double)n, t = (double)s->count, l0 = MCS_AT_(s->sum_lag, 0u);
+    const double floor = -mcs_autocorr_power_gamma_(n, s->count, 1) * (2.0 * l0 / t);
+    for (size_t k = 0; k <= h; ++k) {
+        double wc, ws, zc = 1.0, zs = 0.0, sum = 2.0 * l0;
+        mcs_twiddle_pair_(k, n, &wc, &ws);
+        for (size_t e = 1; e <= h; ++e) {
+            if (e % 16u == 0u) {
+                mcs_twiddle_pair_(k * e, n, &zc, &zs);
+            } else {
+                const double c = zc * wc - zs * ws;
+                zs = zc * ws + zs * wc;
+                zc = c;
+            }
+            sum += 2.0 * MCS_AT_(s->sum_lag, e) * zc; /* lags e and N - e, or N/2 halved */
+        }
+        const double power = sum / (nd * t) + (k == 0u ? s->sum_dc / t : 0.0);
+        if (!(power >= floor))
+            return 0;
+    }
+    return 1;
+}
+
 /* The checks above on an object, with those of its own copy of the data
  * (moment: both triangles of its sums equal, its twiddle table that of its
- * N): 1 when valid. For the read-outs and the merges. */
+ * N): 1 when valid. The sums' checks are those of the read-outs and merges,
+ * the powers' those of the record writer (with the sums'). */
 int mcs_moment_stored_valid(const mcs_moment *acc);
+int mcs_moment_powers_valid(const mcs_moment *acc);
 int mcs_autocorr_stored_valid(const mcs_autocorr *acc);
+int mcs_autocorr_powers_valid(const mcs_autocorr *acc);
 
 /* The checks every add shares once the object and the trial are valid: the
  * trial's total weight at most max_total (MAGNITUDE), the count (COUNT), and

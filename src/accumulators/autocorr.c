@@ -1,7 +1,6 @@
 #include "mcspec/autocorr.h"
 #include "acc_internal.h"
 
-#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -195,25 +194,34 @@ mcs_status mcs_autocorr_mean(const mcs_autocorr *acc, mcs_dft *plan, size_t n, d
     return transformed(mcs_dft_real(plan, n, re, re, im), n, re, im); /* eq. 15 */
 }
 
-/* The rounding bound of every power (autocorr.h), in units of <A(0)> =
- * 2 sum_lag[0] / T, the largest |<A(d)>|: each stored lag sum is within
- * (N + 8 + T N^2 eps) eps of T <A(0)> of its exact value (a trial's lag is
- * a sum of at most N products, or its pair products one at a time, and
- * Kahan's sum of n terms errs by 2u + n u^2 of their magnitudes, n <= T N^2
- * products), the lags scaled by 1/T by 2u more, and a transform of N lags
- * of at most <A(0)> each by (N + 2) u <A(0)> on the direct path (a sum of N
- * terms) or 8 u log2 N <A(0)> on the FFT paths (normwise, Higham, Accuracy
- * and Stability, thm 24.2, per stage 8u with twiddles to an ulp); twice
- * their sum, and 48 eps for the scalings and the k = 0 constant. */
+/* The rounding bound of every power (autocorr.h), mcs_autocorr_power_gamma_
+ * (acc_internal.h) times <A(0)> = 2 sum_lag[0] / T, the largest |<A(d)>|:
+ * each stored lag sum is within (N + 8 + T N^2 eps) eps of T <A(0)> of its
+ * exact value (a trial's lag is a sum of at most N products, or its pair
+ * products one at a time, and Kahan's sum of n terms errs by 2u + n u^2 of
+ * their magnitudes, n <= T N^2 products), and a transform of N lags of at
+ * most <A(0)> each errs by (N + 2) u <A(0)> on the direct path (a sum of N
+ * terms) or (8 log2 N + 16) u <A(0)> on the FFT paths (normwise, Higham,
+ * Accuracy and Stability, thm 24.2, per stage 8u with twiddles to an ulp,
+ * and the real transform's last step); the bound takes these and twice the
+ * rounding of the loader's direct sums, so that what it loads reads out. */
 static double power_rounding(const mcs_autocorr *acc)
 {
-    const double n = (double)acc->n, t = (double)acc->count;
-    double log2n = 0.0;
-    for (size_t m = 1u; m < acc->n; m *= 2u)
-        log2n += 1.0;
-    const double gamma =
-        (2.0 * n + 16.0 * log2n + 48.0 + t * n * n * DBL_EPSILON) * DBL_EPSILON;
-    return gamma * (2.0 * acc->sum_lag[0] / t);
+    return mcs_autocorr_power_gamma_(acc->n, acc->count, 0) *
+           (2.0 * acc->sum_lag[0] / (double)acc->count);
+}
+
+int mcs_autocorr_powers_valid(const mcs_autocorr *acc)
+{
+    const mcs_autocorr_sums_ s = {acc->n,
+                                  acc->count,
+                                  mcs_memory_values_(acc->sum_s),
+                                  mcs_memory_values_(acc->lo_s),
+                                  mcs_memory_values_(acc->sum_lag),
+                                  mcs_memory_values_(acc->lo_lag),
+                                  acc->sum_dc,
+                                  acc->lo_dc};
+    return mcs_autocorr_powers_ok_(&s);
 }
 
 mcs_status mcs_autocorr_power(const mcs_autocorr *acc, mcs_dft *plan, size_t n, double *power)

@@ -79,6 +79,12 @@ int mcs_moment_stored_valid(const mcs_moment *acc)
     return own_copy_ok(acc) && mcs_moment_sums_ok_(&s);
 }
 
+int mcs_moment_powers_valid(const mcs_moment *acc)
+{
+    const mcs_moment_sums_ s = object_sums(acc);
+    return mcs_moment_powers_ok_(&s);
+}
+
 /* Sparse trials of at most this many pair products per trial, K (K + 1) / 2,
  * go in as products over their bins; larger ones densely (moment.h). The
  * crossover of the two kernels, timed on this project's machine (AMD EPYC,

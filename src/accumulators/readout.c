@@ -217,26 +217,29 @@ static double abs_sum(size_t n, const double *x)
 }
 
 /* The bound of <|S_k|^2> = (1/N) sum e^{..} <s_m s_n>: |e^{..}| = 1, (2N + 16)
- * eps times the sum of |<s_m s_n>| (of <d_m d_n> with a shift, which adds
- * the squares of the transforms of <d> and of <s> = c + <d>, rounded as in
- * variance_rounding), and the rounding the stored sums carry. */
+ * eps times the sum of |<s_m s_n>| for exact moments. Measured ones (a
+ * shift) add the squares of the transforms of <d> and of <s> = c + <d>, and
+ * take 8 R + A (acc_internal.h, mcs_moment_power_rounding_: R the rounding
+ * of a power read from the sums, A what the sums carry), so that whatever
+ * the loader accepts at -(4 R + A) reads out. */
 static double power_bound(const mcs_readout *view)
 {
     const size_t n = view->n;
-    double sum = 0.0, means = 0.0;
+    const double nd = (double)n;
+    double sum = 0.0;
     for (size_t m = 0; m < n; ++m)
         for (size_t c = 0; c < n; ++c)
             sum += fabs(mcs_readout_second(view, m, c) * view->scale);
-    if (view->shift != NULL) {
-        double d = 0.0;
-        for (size_t m = 0; m < n; ++m)
-            d += fabs(mcs_readout_first(view, m) * view->scale);
-        const double s = d + abs_sum(n, view->shift);
-        means = 4.0 * ((double)n + 2.0) * DBL_EPSILON * (d * d + s * s);
-    }
-    return ((2.0 * (double)n + 16.0) * DBL_EPSILON * sum + means +
-            mcs_readout_accumulated(view, NULL, NULL)) /
-           (double)n;
+    if (view->shift == NULL)
+        return (2.0 * nd + 16.0) * DBL_EPSILON * sum / nd;
+    double d = 0.0;
+    for (size_t m = 0; m < n; ++m)
+        d += fabs(mcs_readout_first(view, m) * view->scale);
+    const double s = d + abs_sum(n, view->shift);
+    const double r = ((2.0 * nd + 64.0) * DBL_EPSILON * sum +
+                      4.0 * (nd + 32.0) * DBL_EPSILON * (d * d + s * s)) /
+                     nd;
+    return 8.0 * r + mcs_readout_accumulated(view, NULL, NULL) / nd;
 }
 
 /* ---- checked read-outs ---------------------------------------------------- */

@@ -121,34 +121,56 @@ mcs_status mcs_io_load_spectrum(mcs_spectrum *acc, size_t len, const void *buf)
 
 enum { MO_BATCH, MO_SPARSE, MO_SHIFT };
 
-/* The moment's own invariants (moment.c, moment_check): a batch below
- * MCS_MOMENT_BATCH trials and below the count (the first trial is the
- * shift), its sparse trials among them, and no sums without their trials:
- * none in an empty batch, no batch_s without sparse trials, no batch_d
- * without dense ones, and the shift and batch within the limits of
- * acc_internal.h. Values are finite here. */
+/* Value i of a record's array (mcs_values_): an upper triangle's (m, q) is
+ * (min, max) of its row by row storage, row m starting at m N - m (m - 1) / 2. */
+static double record_at(const mcs_values_ *v, size_t i)
+{
+    const io_values *values = (const io_values *)v->base;
+    if (v->upper != 0u) {
+        const size_t n = v->upper;
+        size_t m = i / n, q = i % n;
+        if (m > q) {
+            const size_t r = m;
+            m = q;
+            q = r;
+        }
+        i = m * n - m * (m - 1u) / 2u + (q - m);
+    }
+    return mcs_io_value(values, v->first + i);
+}
+
+static mcs_values_ record_values(const io_values *values, size_t first, size_t upper)
+{
+    const mcs_values_ v = {record_at, values, first, upper};
+    return v;
+}
+
+/* The moment's invariants (docs/format.md): those of its read-outs
+ * (acc_internal.h, mcs_moment_sums_ok_: the same check on the same values)
+ * and every power >= 0 within its rounding (mcs_moment_powers_ok_), on the
+ * record's payload when loading, on the object when saving. Values are
+ * finite here. */
 static int moment_ok(const io_values *values, uint64_t count)
 {
-    const size_t n = values->size[SZ_N];
-    const double batch = mcs_io_value(values, MO_BATCH);
-    const double sparse = mcs_io_value(values, MO_SPARSE);
-    const size_t open_at = MO_SHIFT + 3u * n + n * (n + 1u); /* batch_s[0] */
-    if (batch >= (double)MCS_MOMENT_BATCH || sparse > batch ||
-        (batch != 0.0 && batch >= (double)count))
-        return 0;
-    /* the limits the read-outs hold these values to (acc_internal.h) */
-    for (size_t i = 0; i < n; ++i)
-        if (!(fabs(mcs_io_value(values, MO_SHIFT + i)) <= MCS_MOMENT_LIMIT_S_) ||
-            !(fabs(mcs_io_value(values, open_at + i)) <= MCS_MOMENT_LIMIT_S_) ||
-            !(fabs(mcs_io_value(values, open_at + n + i)) <= MCS_MOMENT_LIMIT_S_))
-            return 0;
-    for (size_t i = 0; i < n * n; ++i)
-        if (!(fabs(mcs_io_value(values, open_at + 2u * n + i)) <= MCS_MOMENT_LIMIT_W_))
-            return 0;
-    if (batch == 0.0)
-        return sp_zero(values, open_at, 2u * n + n * n);
-    return (sparse != 0.0 || sp_zero(values, open_at, n)) &&
-           (sparse != batch || sp_zero(values, open_at + n, n));
+    if (values->payload == NULL) {
+        const mcs_moment *acc = (const mcs_moment *)values->obj;
+        return mcs_moment_stored_valid(acc) && mcs_moment_powers_valid(acc);
+    }
+    const size_t n = values->size[SZ_N], tri = n * (n + 1u) / 2u;
+    const size_t at = MO_SHIFT, open = MO_SHIFT + 3u * n + 2u * tri; /* batch_s[0] */
+    const mcs_moment_sums_ s = {n,
+                                count,
+                                (uint64_t)mcs_io_value(values, MO_BATCH),
+                                (uint64_t)mcs_io_value(values, MO_SPARSE),
+                                record_values(values, at, 0u),
+                                record_values(values, at + n, 0u),
+                                record_values(values, at + 2u * n, 0u),
+                                record_values(values, at + 3u * n, n),
+                                record_values(values, at + 3u * n + tri, n),
+                                record_values(values, open, 0u),
+                                record_values(values, open + n, 0u),
+                                record_values(values, open + 2u * n, 0u)};
+    return mcs_moment_sums_ok_(&s) && mcs_moment_powers_ok_(&s);
 }
 
 static mcs_status sizes_moment(const uint64_t *shape, size_t *size)
@@ -195,6 +217,29 @@ mcs_status mcs_io_load_moment(mcs_moment *acc, size_t len, const void *buf)
  * for trials of K >= N, which may be negative; the lo_ are the Kahan
  * compensations, so a loaded object is the saved one) ---- */
 
+/* The autocorrelation's invariants (docs/format.md): those of its read-outs
+ * (acc_internal.h, mcs_autocorr_sums_ok_) and every power >= 0 within its
+ * rounding (mcs_autocorr_powers_ok_), on the payload when loading, on the
+ * object when saving. Payload: sum_s[N], sum_dc, lo_s[N], sum_lag[H],
+ * lo_lag[H], lo_dc. */
+static int autocorr_ok(const io_values *values, uint64_t count)
+{
+    if (values->payload == NULL) {
+        const mcs_autocorr *acc = (const mcs_autocorr *)values->obj;
+        return mcs_autocorr_stored_valid(acc) && mcs_autocorr_powers_valid(acc);
+    }
+    const size_t n = values->size[SZ_N], h1 = values->size[SZ_HALF];
+    const mcs_autocorr_sums_ s = {n,
+                                  count,
+                                  record_values(values, 0u, 0u),
+                                  record_values(values, n + 1u, 0u),
+                                  record_values(values, 2u * n + 1u, 0u),
+                                  record_values(values, 2u * n + 1u + h1, 0u),
+                                  mcs_io_value(values, n),
+                                  mcs_io_value(values, 2u * n + 1u + 2u * h1)};
+    return mcs_autocorr_sums_ok_(&s) && mcs_autocorr_powers_ok_(&s);
+}
+
 static mcs_status sizes_autocorr(const uint64_t *shape, size_t *size)
 {
     return sizes_n(shape[0], MCS_MAX_N, size);
@@ -212,7 +257,7 @@ static mcs_status init_autocorr(void *obj, const uint64_t *shape)
 
 static const io_kind kind_autocorr = {
     MCS_IO_KIND_AUTOCORR, 1u, sizes_autocorr, {offsetof(mcs_autocorr, n)},
-    count_autocorr, init_autocorr, offsetof(mcs_autocorr, count), NULL, 6u,
+    count_autocorr, init_autocorr, offsetof(mcs_autocorr, count), autocorr_ok, 6u,
     {IO_ARRAY(mcs_autocorr, sum_s, SZ_N, IO_RULE_NONNEG),
      IO_ARRAY(mcs_autocorr, sum_dc, IO_ONE, IO_RULE_NONNEG),
      IO_ARRAY(mcs_autocorr, lo_s, SZ_N, 0u),

@@ -58,7 +58,7 @@ static long double power_of(size_t t, size_t k, int heavy)
     return (re * re + im * im) / (long double)N;
 }
 
-/* The bound autocorr.h states: (2N + 16 ceil(log2 N) + 48 + T N^2 eps) eps
+/* The bound autocorr.h states: (2N + 16 ceil(log2 N) + 192 + T N^2 eps) eps
  * <A(0)>, <A(0)> the mean over the trials of sum_n s_n^2 (of sum_n (s_n -
  * S/N)^2 for a trial of K >= N samples, whose lags are kept centred). */
 static long double stated_bound(void)
@@ -74,7 +74,7 @@ static long double stated_bound(void)
         a0 += sq;
     }
     const long double tt = (long double)trials, eps = DBL_EPSILON;
-    const long double gamma = (2.0L * N + 16.0L * 4.0L + 48.0L + tt * N * N * eps) * eps;
+    const long double gamma = (2.0L * N + 16.0L * 4.0L + 192.0L + tt * N * N * eps) * eps;
     return gamma * a0 / tt;
 }
 

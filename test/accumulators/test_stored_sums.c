@@ -82,6 +82,10 @@ static void expect_moment_refused(const char *what)
     TEST_ASSERT_EQUAL_DOUBLE(7.0, im);
     for (size_t j = 0; j < N * N; ++j)
         TEST_ASSERT_EQUAL_DOUBLE(7.0, mat_re[j]);
+    size_t len = 0u;
+    static uint8_t rec[1u << 16];
+    TEST_ASSERT_EQUAL_INT_MESSAGE(MCS_ERR_INVARIANT,
+                                  mcs_io_save_moment(&bad, sizeof rec, rec, &len), what);
 }
 
 static void test_a_moment_whose_sums_no_trials_give_is_refused_everywhere(void)

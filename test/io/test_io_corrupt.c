@@ -3,6 +3,7 @@
  * non-finite values and broken invariants (the last ones with a valid CRC,
  * written by the independent writer of io_fixtures.c): each refused with the
  * status that says which, the destination byte-identical. */
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -275,7 +276,7 @@ static void expect_value(size_t kind_index, size_t len, size_t i, double v, mcs_
     memcpy(rec2, rec, len);
     set_value(rec2, len, o->shape_len, i, v);
     if (want == MCS_OK)
-        TEST_ASSERT_EQUAL_INT(MCS_OK, o->load(io_obj(&set_a, o), len, rec2));
+        TEST_ASSERT_EQUAL_INT_MESSAGE(MCS_OK, o->load(io_obj(&set_a, o), len, rec2), o->name);
     else
         refused(o, want, len, rec2, "edited value", i);
 }
@@ -306,21 +307,20 @@ static void test_broken_invariants_are_refused(void)
     /* trials as s (sparse, on no bin of the shift) and as d = s - c */
     TEST_ASSERT_TRUE(open >= 30.0 && sparse > 0.0 && sparse < open);
     expect_value(1u, len, 2u + 2u, -1.0, MCS_ERR_INVARIANT);  /* shift: a trial's s */
-    expect_value(1u, len, 2u + 14u + 3u, -2.0, MCS_OK);       /* sum_d: deviations, either sign */
     expect_value(1u, len, 0u, 40.0, MCS_ERR_INVARIANT);       /* the first trial is no batch's */
     expect_value(1u, len, 0u, 0.0, MCS_ERR_INVARIANT);        /* an empty batch with sums */
     expect_value(1u, len, 1u, open + 1.0, MCS_ERR_INVARIANT); /* more sparse trials than trials */
     expect_value(1u, len, 1u, 0.0, MCS_ERR_INVARIANT);        /* sums of s without s trials */
     expect_value(1u, len, mo_batch + 3u, -1.0, MCS_ERR_INVARIANT); /* batch_s: sums of s */
     expect_value(1u, len, 1u, open, MCS_ERR_INVARIANT); /* batch_d without d trials */
-    expect_value(1u, len, mo_w + 14u * 14u - 2u, -1.0, MCS_OK);    /* batch_w: so are d d^T */
     expect_value(1u, len, mo_w + 5u, 0x1p461, MCS_ERR_INVARIANT);   /* beyond 2^14 trials' */
     expect_value(1u, len, mo_batch + 1u, 0x1p241, MCS_ERR_INVARIANT);
     expect_value(1u, len, 2u + 5u, 0x1p241, MCS_ERR_INVARIANT);     /* a shift no trial gives */
     len = save_a(&io_kinds[2], rec);
     expect_value(2u, len, 2u, -1.0, MCS_ERR_INVARIANT);               /* sum_s */
     expect_value(2u, len, 14u, -1.0, MCS_ERR_INVARIANT);              /* sum_dc */
-    expect_value(2u, len, 2u * 14u + 1u + 7u, -1.0, MCS_OK);          /* sum_lag[7]: centred */
+    /* sum_lag[7] (N/2, halved) a little larger: a sum of lags is not pinned */
+    expect_value(2u, len, 2u * 14u + 1u + 7u, set_a.ac.sum_lag[7] + 0.5, MCS_OK);
     len = save_a(&io_kinds[3], rec);
     expect_value(3u, len, 1u, -1.0, MCS_ERR_INVARIANT);  /* m2 */
     expect_value(3u, len, 3u, -1.0, MCS_ERR_INVARIANT);  /* m4 */
@@ -336,6 +336,152 @@ static void test_broken_invariants_are_refused(void)
     const size_t cells = set_a.sp2.acc.n_x * (set_a.sp2.acc.n_y / 2u + 1u);
     expect_value(6u, len, 2u * cells, -1.0, MCS_ERR_INVARIANT);  /* m2_s */
     expect_value(6u, len, cells, -3.0, MCS_OK);                  /* mean_im */
+}
+
+/* Value i of the saved record in rec (kind o). */
+static double rec_value(const io_kind_ops *o, size_t i)
+{
+    const uint64_t bits = io_get_le(rec + io_payload_at(o->shape_len, i), 8u);
+    double v;
+    memcpy(&v, &bits, sizeof v);
+    return v;
+}
+
+/* Issue 22 item 3: moment and autocorr records that load and then lie. Each
+ * edit keeps every value finite, each rule of docs/format.md's value list
+ * and the checksum, and breaks one of the invariants the sums of trials
+ * keep (docs/format.md, kinds 2 and 3): each is refused, the destination
+ * byte-identical. The two reported: an open-batch diagonal entry of 0.5 set
+ * to 0 loaded and read Var[I] = -0.00444; a lag-0 sum of -1 loaded and read
+ * powers 1.25, -0.75, -0.75, -0.75; and a compensation of 1e-300 on a zero
+ * sum loaded, merged into a valid object and left one save refused. */
+static void test_moment_and_autocorr_records_no_trials_give_are_refused(void)
+{
+    enum { N = 14 };
+    const io_kind_ops *mo = &io_kinds[1], *ac = &io_kinds[2];
+    const mcs_moment *m = &set_a.mom;
+    const size_t tri = N * (N + 1u) / 2u, at_d = 2u + N, at_lo = 2u + 2u * N;
+    const size_t at_dd = 2u + 3u * N, at_bs = at_dd + 2u * tri, at_w = at_bs + 2u * N;
+    /* a few trials, so that a batch diagonal entry is 0.5 (half of one
+     * trial's d^2 or s^2 = 1), as in the report */
+    size_t half = N, trials = 8u;
+    for (; trials < 40u && half == N; ++trials) {
+        io_fill(&set_a, N, trials, 8u);
+        for (size_t b = 0; b < N && half == N; ++b)
+            if (m->batch_w[b * N + b] == 0.5 && m->sum_dd[b * N + b] > 0.0 &&
+                m->sum_dd[(b + 1u) % N * N + (b + 1u) % N] > 0.0 && b + 1u < N)
+                half = b;
+    }
+    TEST_ASSERT_TRUE(half < N);
+    dirty_destinations();
+    size_t len = save_a(mo, rec);
+    expect_value(1u, len, at_w + half * N + half, 0.0, MCS_ERR_INVARIANT);
+    expect_value(1u, len, at_w + half * N + half, -0.5, MCS_ERR_INVARIANT); /* negative */
+    expect_value(1u, len, at_w + half * N + half, 0.5, MCS_OK);            /* as saved */
+    /* a closed diagonal (a sum of squares) below 0, and an entry beyond
+     * Cauchy-Schwarz: |D_mn| <= sqrt(D_m D_n) */
+    const size_t row = half;
+    const size_t diag = at_dd + row * N - row * (row - 1u) / 2u; /* (row, row) upper */
+    expect_value(1u, len, diag, -1.0, MCS_ERR_INVARIANT);
+    const double dm = m->sum_dd[row * N + row], dn = m->sum_dd[(row + 1u) * N + row + 1u];
+    expect_value(1u, len, diag + 1u, 4.0 * sqrt(dm * dn) + 1.0, MCS_ERR_INVARIANT);
+    expect_value(1u, len, diag + 1u, rec_value(mo, diag + 1u), MCS_OK);
+    /* a first sum past its variance (F^2 <= T D) or making a sum of s < 0 */
+    const double t = (double)m->count;
+    expect_value(1u, len, at_d + row, 10.0 * sqrt(t * (dm + 1.0)) + 10.0, MCS_ERR_INVARIANT);
+    expect_value(1u, len, at_d + row, -10.0 * sqrt(t * (dm + 1.0)) - 10.0, MCS_ERR_INVARIANT);
+    /* compensations: within an ulp of their sum, 0 on a zero sum */
+    const double f = m->sum_d[row];
+    expect_value(1u, len, at_lo + row, 0.5 * DBL_EPSILON * f, MCS_OK);
+    expect_value(1u, len, at_lo + row, 4.0 * DBL_EPSILON * f + 1e-300, MCS_ERR_INVARIANT);
+    size_t zero = tri;
+    for (size_t i = 0; i < tri && zero == tri; ++i)
+        if (rec_value(mo, at_dd + i) == 0.0)
+            zero = i;
+    if (zero < tri)
+        expect_value(1u, len, at_dd + tri + zero, 1e-300, MCS_ERR_INVARIANT);
+    /* batch_s (sums of trials added as s) on a bin of the shift */
+    size_t bin_s = N;
+    for (size_t b = 0; b < N && bin_s == N; ++b)
+        if (m->batch_s[b] > 0.0 && m->shift[b] == 0.0)
+            bin_s = b;
+    TEST_ASSERT_TRUE(bin_s < N);
+    expect_value(1u, len, 2u + bin_s, 1.0, MCS_ERR_INVARIANT);
+
+    io_fill(&set_a, N, 40u, 8u);
+    dirty_destinations();
+    len = save_a(ac, rec);
+    const double l0 = set_a.ac.sum_lag[0];
+    TEST_ASSERT_TRUE(l0 > 0.0 && set_a.ac.sum_dc == 0.0); /* K = 5 < N: pairs, none centred */
+    expect_value(2u, len, 2u * N + 1u, -1.0, MCS_ERR_INVARIANT);          /* lag 0 */
+    expect_value(2u, len, 2u * N + 1u + 3u, 2.0 * l0 * 1.001 + 1.0, MCS_ERR_INVARIANT);
+    expect_value(2u, len, 2u * N + 1u + 7u, l0 * 1.001 + 1.0, MCS_ERR_INVARIANT); /* N/2 */
+    expect_value(2u, len, 2u * N + 1u + 3u, -2.0 * l0 * 1.001 - 1.0, MCS_ERR_INVARIANT);
+    expect_value(2u, len, 2u * N + 2u * (N / 2u + 1u) + 1u, 1e-300, MCS_ERR_INVARIANT); /* lo_dc */
+    expect_value(2u, len, N + 1u, 4.0 * DBL_EPSILON * set_a.ac.sum_s[0], MCS_ERR_INVARIANT);
+    expect_value(2u, len, N + 1u, 0.5 * DBL_EPSILON * set_a.ac.sum_s[0], MCS_OK); /* lo_s[0] */
+    /* every trial weighs 5: T sum S_t^2 = (sum S_t)^2, so more total weight
+     * is a negative variance of S_0, and sum_dc > (sum S_t)^2 / N too */
+    expect_value(2u, len, 0u, set_a.ac.sum_s[0] + 1.0, MCS_ERR_INVARIANT);
+    expect_value(2u, len, N, 200.0 * 200.0 / N * 1.01, MCS_ERR_INVARIANT);
+}
+
+/* Sums that pass every check of one bin or two but whose spectrum is
+ * negative beyond rounding: the loader computes the powers itself and
+ * refuses them, so that every record it loads reads out (a power read-out
+ * refuses what no trials give). Autocorr, N = 4, two trials of s = (1, 0,
+ * 0, 0): lag sums 1, 0, 0, edited to 1, 1.5, -0.75 (<|S_2|^2> = -5/16);
+ * moment, N = 3, five trials of s = 0, its sums of d d^T edited to [[1, -1,
+ * -1], [-1, 1, -1], [-1, -1, 1]] (<|S_0|^2> = -1/5). */
+static void edit_record(const io_kind_ops *o, size_t len, size_t count, const size_t *at,
+                        const double *v)
+{
+    memcpy(rec2, rec, len);
+    for (size_t j = 0; j < count; ++j)
+        io_put_f64(rec2 + io_payload_at(o->shape_len, at[j]), v[j]);
+    io_recrc(rec2, len);
+}
+
+static void test_records_whose_spectrum_is_negative_are_refused(void)
+{
+    static mcs_autocorr ac;
+    static mcs_moment mom;
+    const size_t one[1] = {0u};
+    const double w1[1] = {1.0}, w0[2] = {0.0, 0.0};
+    const size_t two[2] = {0u, 1u};
+    dirty_destinations();
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_autocorr_init(&ac, 4u));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_autocorr_add_bins(&ac, 1u, one, w1));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_autocorr_add_bins(&ac, 1u, one, w1));
+    size_t len = io_save(&io_kinds[2], &ac, rec);
+    const size_t lags[2] = {2u * 4u + 1u + 1u, 2u * 4u + 1u + 2u};
+    const double bad_lags[2] = {1.5, -0.75}, ok_lags[2] = {0.25, -0.25};
+    edit_record(&io_kinds[2], len, 2u, lags, bad_lags);
+    refused(&io_kinds[2], MCS_ERR_INVARIANT, len, rec2, "autocorr spectrum < 0", 0u);
+    edit_record(&io_kinds[2], len, 2u, lags, ok_lags); /* powers 1/4, 5/16, 1/8, 5/16 */
+    TEST_ASSERT_EQUAL_INT(MCS_OK, io_kinds[2].load(io_obj(&set_a, &io_kinds[2]), len, rec2));
+    double power[4];
+    mcs_dft plan;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_dft_init(&plan, 4u));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_autocorr_power(&set_a.ac, &plan, 4u, power));
+
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_init(&mom, 3u));
+    for (int t = 0; t < 5; ++t)
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_add_bins(&mom, 2u, two, w0));
+    len = io_save(&io_kinds[1], &mom, rec);
+    /* sum_dd's upper triangle, row by row: (0,0) (0,1) (0,2) (1,1) (1,2) (2,2) */
+    const size_t dd[6] = {2u + 9u, 2u + 10u, 2u + 11u, 2u + 12u, 2u + 13u, 2u + 14u};
+    const double bad_dd[6] = {1.0, -1.0, -1.0, 1.0, -1.0, 1.0};
+    const double ok_dd[6] = {1.0, -0.5, -0.5, 1.0, -0.5, 1.0}; /* psd: 3 (1 - 1) = 0 */
+    edit_record(&io_kinds[1], len, 6u, dd, bad_dd);
+    refused(&io_kinds[1], MCS_ERR_INVARIANT, len, rec2, "moment spectrum < 0", 0u);
+    edit_record(&io_kinds[1], len, 6u, dd, ok_dd);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, io_kinds[1].load(io_obj(&set_a, &io_kinds[1]), len, rec2));
+    for (size_t k = 0; k < 3u; ++k) {
+        double p = -1.0;
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_power(&set_a.mom, k, &p));
+        TEST_ASSERT_TRUE(p >= 0.0);
+    }
 }
 
 /* The spectrum's counts and open batch (docs/format.md, kind 1). */
@@ -446,6 +592,8 @@ int main(void)
     RUN_TEST(test_a_buffer_too_small_for_the_record_is_refused_after_its_checks);
     RUN_TEST(test_non_finite_values_are_refused);
     RUN_TEST(test_broken_invariants_are_refused);
+    RUN_TEST(test_moment_and_autocorr_records_no_trials_give_are_refused);
+    RUN_TEST(test_records_whose_spectrum_is_negative_are_refused);
     RUN_TEST(test_spectrum_units_and_open_batch_that_do_not_fit_are_refused);
     RUN_TEST(test_counts_that_do_not_fit_the_data_are_refused);
     RUN_TEST(test_a_count_written_as_minus_zero_is_refused);
