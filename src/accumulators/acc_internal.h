@@ -64,27 +64,24 @@ static inline int mcs_all_stored_(size_t len, const double *x)
  * (moment.h, autocorr.h), and DBL_TRUE_MIN per operation for sums of
  * products that underflow. */
 
-/* One array of stored values, value i read by at(). */
+/* One array of stored values: value i is mem[i] in memory, else read by
+ * at() (a record). */
 typedef struct mcs_values_ {
+    const double *mem; /* the doubles in memory, or NULL */
     double (*at)(const struct mcs_values_ *v, size_t i);
-    const void *base; /* the doubles, or the record (io_values) */
+    const void *base; /* the record (io_values) */
     size_t first;     /* record: the payload index of value 0 */
     size_t upper;     /* record: N of an N x N array kept as its upper triangle, else 0 */
 } mcs_values_;
 
-static inline double mcs_memory_at_(const mcs_values_ *v, size_t i)
-{
-    return ((const double *)v->base)[i];
-}
-
 /* An array of doubles in memory. */
 static inline mcs_values_ mcs_memory_values_(const double *x)
 {
-    const mcs_values_ v = {mcs_memory_at_, x, 0u, 0u};
+    const mcs_values_ v = {x, NULL, NULL, 0u, 0u};
     return v;
 }
 
-#define MCS_AT_(v, i) ((v).at(&(v), (i)))
+#define MCS_AT_(v, i) ((v).mem != NULL ? (v).mem[(i)] : (v).at(&(v), (i)))
 
 /* A compensation of a Kahan sum (core/internal.h) is its last add's
  * rounding error, at most an ulp of the sum (not half: the add's own error
@@ -128,10 +125,13 @@ static inline double mcs_moment_batch_at_(const mcs_moment_sums_ *s, size_t m, s
  * diagonals >= 0 (closed, batch), F_m^2 <= (1 + 4 gamma) T D_m for the
  * closed sums, the batch and both, |D_mn| <= (1 + 3 gamma) sqrt(D_m D_n) for
  * both, and T c_m + F_m (the sum of s_m) >= 0 within its rounding. */
+#define MCS_CHECK_CHUNK_ 8u
+
 static inline int mcs_moment_sums_ok_(const mcs_moment_sums_ *s)
 {
     const size_t n = s->n;
     const double t = (double)s->count, b = (double)s->batch, tc = t - b;
+    const double sparse = (double)s->sparse;
     const double g = MCS_MOMENT_ROUNDING_ + 8.0 * DBL_EPSILON;
     const double tiny = t * DBL_TRUE_MIN * 4.0;
     if (s->count > (uint64_t)MCS_MAX_COUNT || s->batch >= (uint64_t)MCS_MOMENT_BATCH ||
@@ -157,18 +157,38 @@ static inline int mcs_moment_sums_ok_(const mcs_moment_sums_ *s)
              fm * fm <= (1.0 + 4.0 * g) * t * (dm + tiny) &&
              t * c + fm >= -(2.0 * g * sqrt(t * (dm + tiny)) + 4.0 * DBL_EPSILON * (t * c + fabs(fm)));
     }
-    for (size_t m = 0; m < n && ok; ++m) {
-        const double dm = MCS_AT_(s->sum_dd, m * n + m) + mcs_moment_batch_at_(s, m, m) + tiny;
-        for (size_t q = 0; q < n && ok; ++q) {
-            const size_t i = m * n + q;
-            const double v = MCS_AT_(s->sum_dd, i), w = MCS_AT_(s->batch_w, i);
-            const double dq = MCS_AT_(s->sum_dd, q * n + q) + mcs_moment_batch_at_(s, q, q) + tiny;
-            ok = fabs(v) <= MCS_STORED_LIMIT_ && mcs_compensation_ok_(MCS_AT_(s->lo_dd, i), v) &&
-                 fabs(w) <= MCS_MOMENT_LIMIT_W_ && (s->count >= 2u || v == 0.0) &&
-                 (s->batch != 0u || w == 0.0) &&
-                 fabs(v + mcs_moment_batch_at_(s, m, q)) <= (1.0 + 3.0 * g) * sqrt(dm) * sqrt(dq);
+    /* Every pair m <= q (the sums are symmetric: a record keeps one
+     * triangle, an object's other one is checked equal to it), by chunks
+     * of columns whose diagonals are formed once. */
+    for (size_t q0 = 0; q0 < n && ok; q0 += MCS_CHECK_CHUNK_) {
+        const size_t len = n - q0 < MCS_CHECK_CHUNK_ ? n - q0 : MCS_CHECK_CHUNK_;
+        double root_q[MCS_CHECK_CHUNK_], c_q[MCS_CHECK_CHUNK_], bs_q[MCS_CHECK_CHUNK_];
+        for (size_t j = 0; j < len; ++j) {
+            const size_t q = q0 + j;
+            root_q[j] = sqrt(MCS_AT_(s->sum_dd, q * n + q) + mcs_moment_batch_at_(s, q, q) + tiny);
+            c_q[j] = MCS_AT_(s->shift, q);
+            bs_q[j] = MCS_AT_(s->batch_s, q);
+        }
+        for (size_t m = 0; m < q0 + len; ++m) {
+            const double cm = MCS_AT_(s->shift, m), bm = MCS_AT_(s->batch_s, m);
+            const double root_m = (1.0 + 3.0 * g) *
+                                  sqrt(MCS_AT_(s->sum_dd, m * n + m) + mcs_moment_batch_at_(s, m, m) + tiny);
+            for (size_t j = m > q0 ? m - q0 : 0u; j < len; ++j) {
+                const size_t q = q0 + j, i = m * n + q;
+                const double v = MCS_AT_(s->sum_dd, i);
+                const double w = MCS_AT_(s->batch_w, i), wt = MCS_AT_(s->batch_w, q * n + m);
+                /* the batch's entry as mcs_moment_batch_at_ forms it */
+                const double batch = (w + wt) - (bm * c_q[j] + cm * bs_q[j]) + sparse * (cm * c_q[j]);
+                ok &= (fabs(w) <= MCS_MOMENT_LIMIT_W_) & (fabs(wt) <= MCS_MOMENT_LIMIT_W_) &
+                      mcs_compensation_ok_(MCS_AT_(s->lo_dd, i), v) &
+                      (fabs(v + batch) <= root_m * root_q[j]); /* NaN fails, and |v| <= 2^500 */
+            }
         }
     }
+    /* nothing in the second sums before two trials, none in an empty batch */
+    for (size_t i = 0; i < n * n && (s->count < 2u || s->batch == 0u); ++i)
+        ok &= (s->count >= 2u || MCS_AT_(s->sum_dd, i) == 0.0) &
+              (s->batch != 0u || MCS_AT_(s->batch_w, i) == 0.0);
     return ok;
 }
 
@@ -201,27 +221,33 @@ static inline int mcs_autocorr_sums_ok_(const mcs_autocorr_sums_ *s)
         !mcs_compensation_ok_(s->lo_dc, s->sum_dc))
         return 0;
     int ok = s->count != 0u || s->sum_dc == 0.0;
-    double total = 0.0, lags = 0.0;
-    for (size_t j = 0; j < n && ok; ++j) {
+    /* no early exit, and four partial sums (any order is within the rounding
+     * allowed below): no chain of adds through the loops */
+    double total[4] = {0.0, 0.0, 0.0, 0.0}, lag_sum[4] = {0.0, 0.0, 0.0, 0.0};
+    for (size_t j = 0; j < n; ++j) {
         const double x = MCS_AT_(s->sum_s, j);
-        ok = x >= 0.0 && x <= MCS_STORED_LIMIT_ && mcs_compensation_ok_(MCS_AT_(s->lo_s, j), x) &&
-             (s->count != 0u || x == 0.0);
-        total += x;
+        ok &= (x >= 0.0) & (x <= MCS_STORED_LIMIT_) &
+              mcs_compensation_ok_(MCS_AT_(s->lo_s, j), x) & (s->count != 0u || x == 0.0);
+        total[j % 4u] += x;
     }
-    for (size_t e = 0; e <= h && ok; ++e) {
+    const double grow = 1.0 + 4.0 * gamma + 8.0 * DBL_EPSILON;
+    for (size_t e = 0; e <= h; ++e) {
         const double x = MCS_AT_(s->sum_lag, e);
         const double most = (e == 0u || 2u * e == n ? 1.0 : 2.0) * l0;
-        ok = fabs(x) <= MCS_STORED_LIMIT_ && mcs_compensation_ok_(MCS_AT_(s->lo_lag, e), x) &&
-             fabs(x) <= most * (1.0 + 4.0 * gamma + 8.0 * DBL_EPSILON) + tiny;
-        lags += 2.0 * x; /* every folded lag stands for two: d and N - d, or a halved one */
+        ok &= (fabs(x) <= MCS_STORED_LIMIT_) & mcs_compensation_ok_(MCS_AT_(s->lo_lag, e), x) &
+              (fabs(x) <= most * grow + tiny);
+        lag_sum[e % 4u] += x;
     }
+    /* every folded lag stands for two: d and N - d, or a halved one */
+    const double sum_s = (total[0] + total[1]) + (total[2] + total[3]);
+    const double lags = 2.0 * ((lag_sum[0] + lag_sum[1]) + (lag_sum[2] + lag_sum[3]));
     if (!ok)
         return 0;
     /* sum_t S_t^2 = sum_d <A(d)> T + N sum_dc, to the lags' rounding */
     const double squares = lags + nd * s->sum_dc;
     const double slack = (2.0 * nd * gamma + 2.0 * nd * nd * DBL_EPSILON) * l0 +
                          4.0 * DBL_EPSILON * nd * s->sum_dc + tiny;
-    const double sq_total = total * total, rel = 2.0 * (nd + 4.0) * DBL_EPSILON;
+    const double sq_total = sum_s * sum_s, rel = 2.0 * (nd + 4.0) * DBL_EPSILON;
     return (1.0 - rel) * sq_total <= t * (squares + slack) &&
            squares <= (1.0 + rel) * sq_total + 2.0 * slack &&
            nd * s->sum_dc <= (1.0 + rel) * sq_total + slack;
@@ -244,7 +270,8 @@ static inline int mcs_autocorr_sums_ok_(const mcs_autocorr_sums_ *s)
 /* cos and sin of 2 pi j / n, j reduced mod n first (core/internal.h). */
 static inline void mcs_twiddle_pair_(size_t j, size_t n, double *c, double *s)
 {
-    const double a = mcs_twiddle_angle_(j % n, n);
+    const size_t nn = n != 0u ? n : 1u; /* no object has N = 0; stated for the analyser */
+    const double a = mcs_twiddle_angle_(j % nn, nn);
     *c = cos(a);
     *s = sin(a);
 }
@@ -286,52 +313,50 @@ static inline double mcs_moment_power_rounding_(const mcs_moment_sums_ *s, doubl
            nd;
 }
 
-#define MCS_POWER_CHUNK_ 16u
+/* Frequencies a power check forms at once: each value of the sums is read
+ * once per this many (a record's values are decoded at every read). */
+#define MCS_POWER_FREQS_ 8u
+
+/* Twiddles by rotation for the frequencies k0 .. k0 + len - 1 of N: z_k =
+ * e^{i 2 pi k j / N} stepped in j, set afresh from cos and sin every 16
+ * steps, so each is within 40 eps (16 rotations of a few roundings). */
+typedef struct {
+    size_t k0, len, n;
+    double wc[MCS_POWER_FREQS_], ws[MCS_POWER_FREQS_];
+    double zc[MCS_POWER_FREQS_], zs[MCS_POWER_FREQS_];
+} mcs_rotations_;
+
+static inline void mcs_rotations_start_(mcs_rotations_ *r, size_t k0, size_t len, size_t n)
+{
+    r->k0 = k0;
+    r->len = len;
+    r->n = n;
+    for (size_t f = 0; f < len; ++f) {
+        mcs_twiddle_pair_(k0 + f, n, &r->wc[f], &r->ws[f]);
+        r->zc[f] = 1.0;
+        r->zs[f] = 0.0;
+    }
+}
+
+/* From z at step j - 1 to step j. */
+static inline void mcs_rotations_step_(mcs_rotations_ *r, size_t j)
+{
+    if (j % 16u == 0u) {
+        for (size_t f = 0; f < r->len; ++f)
+            mcs_twiddle_pair_((r->k0 + f) * j, r->n, &r->zc[f], &r->zs[f]);
+        return;
+    }
+    for (size_t f = 0; f < r->len; ++f) {
+        const double c = r->zc[f] * r->wc[f] - r->zs[f] * r->ws[f];
+        r->zs[f] = r->zc[f] * r->ws[f] + r->zs[f] * r->wc[f];
+        r->zc[f] = c;
+    }
+}
 
 /* 1 when every power <|S_k|^2> of the sums, computed directly, is >= -(A +
  * 4 R) (mcs_moment_power_rounding_; the read-out refuses below -(A + 8 R)).
- * O(N^3), the twiddles of a chunk of bins on the stack. */
-static inline int mcs_moment_powers_ok_(const mcs_moment_sums_ *s)
-{
-    const size_t n = s->n;
-    if (s->count == 0u)
-        return 1;
-    const double nd = (double)n, t = (double)s->count;
-    double acc;
-    const double floor = -(4.0 * mcs_moment_power_rounding_(s, &acc) + acc);
-    for (size_t k = 0; k < n; ++k) {
-        double second = 0.0, fr = 0.0, fi = 0.0, mr = 0.0, mi = 0.0;
-        for (size_t q0 = 0; q0 < n; q0 += MCS_POWER_CHUNK_) {
-            const size_t len = n - q0 < MCS_POWER_CHUNK_ ? n - q0 : MCS_POWER_CHUNK_;
-            double uc[MCS_POWER_CHUNK_], us[MCS_POWER_CHUNK_];
-            for (size_t j = 0; j < len; ++j)
-                mcs_twiddle_pair_(k * (q0 + j), n, &uc[j], &us[j]);
-            for (size_t m = 0; m < n; ++m) {
-                double cm, sm, ir = 0.0, ii = 0.0;
-                mcs_twiddle_pair_(k * m, n, &cm, &sm);
-                for (size_t j = 0; j < len; ++j) {
-                    const double x = mcs_moment_total_at_(s, m, q0 + j);
-                    ir += uc[j] * x;
-                    ii += us[j] * x;
-                }
-                second += cm * ir + sm * ii; /* Re e^{-i a m} (ir + i ii) */
-            }
-        }
-        for (size_t m = 0; m < n; ++m) {
-            double cm, sm;
-            mcs_twiddle_pair_(k * m, n, &cm, &sm);
-            const double f = mcs_moment_first_at_(s, m) / t, mean = MCS_AT_(s->shift, m) + f;
-            fr += cm * f;
-            fi -= sm * f;
-            mr += cm * mean;
-            mi -= sm * mean;
-        }
-        const double power = (second / t - (fr * fr + fi * fi) + (mr * mr + mi * mi)) / nd;
-        if (!(power >= floor))
-            return 0;
-    }
-    return 1;
-}
+ * O(N^3) (moment.c): for the loader and the record writer. */
+int mcs_moment_powers_ok(const mcs_moment_sums_ *s);
 
 /* The autocorrelation's powers, in units of eps <A(0)> = eps 2 L_0 / T: the
  * read-out refuses one below -(2N + 16 log2 N + 192 + T N^2 eps) (autocorr.h:
@@ -351,34 +376,8 @@ static inline double mcs_autocorr_power_gamma_(size_t n, uint64_t count, int loa
 
 /* 1 when every power of the lag sums, computed directly (k = 0..N/2; the
  * rest mirror them), is >= -mcs_autocorr_power_gamma_(load) <A(0)>. O(N^2)
- * and O(1) memory: the twiddles by rotation, set afresh from cos and sin
- * every 16 lags (each within 64 eps). */
-static inline int mcs_autocorr_powers_ok_(const mcs_autocorr_sums_ *s)
-{
-    const size_t n = s->n, h = n / 2u;
-    if (s->count == 0u)
-        return 1;
-    const double nd = (double)n, t = (double)s->count, l0 = MCS_AT_(s->sum_lag, 0u);
-    const double floor = -mcs_autocorr_power_gamma_(n, s->count, 1) * (2.0 * l0 / t);
-    for (size_t k = 0; k <= h; ++k) {
-        double wc, ws, zc = 1.0, zs = 0.0, sum = 2.0 * l0;
-        mcs_twiddle_pair_(k, n, &wc, &ws);
-        for (size_t e = 1; e <= h; ++e) {
-            if (e % 16u == 0u) {
-                mcs_twiddle_pair_(k * e, n, &zc, &zs);
-            } else {
-                const double c = zc * wc - zs * ws;
-                zs = zc * ws + zs * wc;
-                zc = c;
-            }
-            sum += 2.0 * MCS_AT_(s->sum_lag, e) * zc; /* lags e and N - e, or N/2 halved */
-        }
-        const double power = sum / (nd * t) + (k == 0u ? s->sum_dc / t : 0.0);
-        if (!(power >= floor))
-            return 0;
-    }
-    return 1;
-}
+ * and O(1) memory (autocorr.c): for the loader and the record writer. */
+int mcs_autocorr_powers_ok(const mcs_autocorr_sums_ *s);
 
 /* The checks above on an object, with those of its own copy of the data
  * (moment: both triangles of its sums equal, its twiddle table that of its

@@ -211,6 +211,37 @@ static double power_rounding(const mcs_autocorr *acc)
            (2.0 * acc->sum_lag[0] / (double)acc->count);
 }
 
+/* MCS_POWER_FREQS_ frequencies at a time, the twiddles by rotation (within
+ * 40 eps; the gamma allows 64). */
+int mcs_autocorr_powers_ok(const mcs_autocorr_sums_ *s)
+{
+    const size_t n = s->n, h = n / 2u;
+    if (s->count == 0u || n == 0u)
+        return 1;
+    const double nd = (double)n, t = (double)s->count, l0 = MCS_AT_(s->sum_lag, 0u);
+    const double floor = -mcs_autocorr_power_gamma_(n, s->count, 1) * (2.0 * l0 / t);
+    for (size_t k0 = 0; k0 <= h; k0 += MCS_POWER_FREQS_) {
+        const size_t len = h + 1u - k0 < MCS_POWER_FREQS_ ? h + 1u - k0 : MCS_POWER_FREQS_;
+        double sum[MCS_POWER_FREQS_];
+        mcs_rotations_ r;
+        mcs_rotations_start_(&r, k0, len, n);
+        for (size_t f = 0; f < len; ++f)
+            sum[f] = 2.0 * l0;
+        for (size_t e = 1; e <= h; ++e) {
+            mcs_rotations_step_(&r, e);
+            const double x = 2.0 * MCS_AT_(s->sum_lag, e); /* lags e and N - e, or N/2 halved */
+            for (size_t f = 0; f < len; ++f)
+                sum[f] += x * r.zc[f];
+        }
+        for (size_t f = 0; f < len; ++f) {
+            const double power = sum[f] / (nd * t) + (k0 + f == 0u ? s->sum_dc / t : 0.0);
+            if (!(power >= floor))
+                return 0;
+        }
+    }
+    return 1;
+}
+
 int mcs_autocorr_powers_valid(const mcs_autocorr *acc)
 {
     const mcs_autocorr_sums_ s = {acc->n,
@@ -221,7 +252,7 @@ int mcs_autocorr_powers_valid(const mcs_autocorr *acc)
                                   mcs_memory_values_(acc->lo_lag),
                                   acc->sum_dc,
                                   acc->lo_dc};
-    return mcs_autocorr_powers_ok_(&s);
+    return mcs_autocorr_powers_ok(&s);
 }
 
 mcs_status mcs_autocorr_power(const mcs_autocorr *acc, mcs_dft *plan, size_t n, double *power)

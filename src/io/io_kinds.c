@@ -141,13 +141,13 @@ static double record_at(const mcs_values_ *v, size_t i)
 
 static mcs_values_ record_values(const io_values *values, size_t first, size_t upper)
 {
-    const mcs_values_ v = {record_at, values, first, upper};
+    const mcs_values_ v = {NULL, record_at, values, first, upper};
     return v;
 }
 
 /* The moment's invariants (docs/format.md): those of its read-outs
  * (acc_internal.h, mcs_moment_sums_ok_: the same check on the same values)
- * and every power >= 0 within its rounding (mcs_moment_powers_ok_), on the
+ * and every power >= 0 within its rounding (mcs_moment_powers_ok), on the
  * record's payload when loading, on the object when saving. Values are
  * finite here. */
 static int moment_ok(const io_values *values, uint64_t count)
@@ -170,7 +170,7 @@ static int moment_ok(const io_values *values, uint64_t count)
                                 record_values(values, open, 0u),
                                 record_values(values, open + n, 0u),
                                 record_values(values, open + 2u * n, 0u)};
-    return mcs_moment_sums_ok_(&s) && mcs_moment_powers_ok_(&s);
+    return mcs_moment_sums_ok_(&s) && mcs_moment_powers_ok(&s);
 }
 
 static mcs_status sizes_moment(const uint64_t *shape, size_t *size)
@@ -219,7 +219,7 @@ mcs_status mcs_io_load_moment(mcs_moment *acc, size_t len, const void *buf)
 
 /* The autocorrelation's invariants (docs/format.md): those of its read-outs
  * (acc_internal.h, mcs_autocorr_sums_ok_) and every power >= 0 within its
- * rounding (mcs_autocorr_powers_ok_), on the payload when loading, on the
+ * rounding (mcs_autocorr_powers_ok), on the payload when loading, on the
  * object when saving. Payload: sum_s[N], sum_dc, lo_s[N], sum_lag[H],
  * lo_lag[H], lo_dc. */
 static int autocorr_ok(const io_values *values, uint64_t count)
@@ -237,7 +237,7 @@ static int autocorr_ok(const io_values *values, uint64_t count)
                                   record_values(values, 2u * n + 1u + h1, 0u),
                                   mcs_io_value(values, n),
                                   mcs_io_value(values, 2u * n + 1u + 2u * h1)};
-    return mcs_autocorr_sums_ok_(&s) && mcs_autocorr_powers_ok_(&s);
+    return mcs_autocorr_sums_ok_(&s) && mcs_autocorr_powers_ok(&s);
 }
 
 static mcs_status sizes_autocorr(const uint64_t *shape, size_t *size)
