@@ -187,7 +187,7 @@ static double variance_rounding(const mcs_readout *view)
     a *= view->scale;
     b *= view->scale;
     return (4.0 * ((double)n + 2.0) * DBL_EPSILON * (a + b * b) +
-            mcs_readout_accumulated(view, NULL, NULL)) /
+            mcs_readout_accumulated(view, NULL, NULL) + view->exact_rounding) /
            (double)n;
 }
 
@@ -231,7 +231,7 @@ static double power_bound(const mcs_readout *view)
         for (size_t c = 0; c < n; ++c)
             sum += fabs(mcs_readout_second(view, m, c) * view->scale);
     if (view->shift == NULL)
-        return (2.0 * nd + 16.0) * DBL_EPSILON * sum / nd;
+        return ((2.0 * nd + 16.0) * DBL_EPSILON * sum + view->exact_rounding) / nd;
     double d = 0.0;
     for (size_t m = 0; m < n; ++m)
         d += fabs(mcs_readout_first(view, m) * view->scale);

@@ -36,6 +36,10 @@ typedef struct {
      * the exact sum over the trials, D the diagonal of second. 0 for exact
      * moments. */
     double accum;
+    /* The rounding exact moments carry from their computation (theory's
+     * init, mcs_theory_init_rounding_), absolute, on N times a power: the
+     * power and variance bounds add it / N. 0 for measured moments. */
+    double exact_rounding;
 } mcs_readout;
 
 /* What an open batch adds to the sums of d (moment.h): its dense trials

@@ -296,7 +296,8 @@ static void fill_view(const mcs_theory *th, mcs_readout *view)
                           .first = th->mean_s,
                           .second = th->second,
                           .cos_table = th->cos_table,
-                          .sin_table = th->sin_table};
+                          .sin_table = th->sin_table,
+                          .exact_rounding = mcs_theory_init_rounding_(th, NULL, 0.0)};
 }
 
 /* The zeros theory proves for th (theory_internal.h), formed before a
@@ -572,23 +573,6 @@ mcs_status mcs_theory_cross_matrix(const mcs_theory *th, size_t n, double *re, d
     return st;
 }
 
-/* The covariance matrix from the cross matrix, as the shared read-out forms
- * it (add_mean_products, readout.c): a_k a_l* subtracted from every entry. */
-static void subtract_mean_products(const mcs_readout *view, double *re, double *im)
-{
-    const size_t n = view->n;
-    for (size_t k = 0; k < n; ++k) {
-        double ar, ai;
-        mcs_readout_dft(view, view->first, k, &ar, &ai);
-        for (size_t l = 0; l < n; ++l) {
-            double br, bi;
-            mcs_readout_dft(view, view->first, l, &br, &bi);
-            re[k * n + l] += -1.0 * (ar * br + ai * bi);
-            im[k * n + l] += -1.0 * (ai * br - ar * bi);
-        }
-    }
-}
-
 mcs_status mcs_theory_covariance_matrix(const mcs_theory *th, size_t n, double *re,
                                         double *im)
 {
@@ -596,15 +580,7 @@ mcs_status mcs_theory_covariance_matrix(const mcs_theory *th, size_t n, double *
     if (st != MCS_OK)
         return st;
     const mcs_readout_source src = {th, mcs_readout_open_theory};
-    st = mcs_readout_covariance_matrix(&src, n, re, im);
-    if (st == MCS_ERR_INVARIANT) {
-        /* The shared bound (its own rounding only) refused a diagonal that
-         * init's rounding explains: the same matrix by the cross matrix. */
-        st = mcs_readout_cross_matrix(&src, n, re, im);
-        mcs_readout v;
-        if (st == MCS_OK && mcs_readout_open_theory(th, &v) == MCS_OK)
-            subtract_mean_products(&v, re, im);
-    }
+    st = mcs_readout_covariance_matrix(&src, n, re, im); /* its bounds hold init's rounding */
     for (size_t k = 0; st == MCS_OK && k < n; ++k) /* rounding, as variance_at found */
         re[k * n + k] = fmax(re[k * n + k], 0.0);
     mcs_theory_zeros z;
