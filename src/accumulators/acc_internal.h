@@ -187,8 +187,10 @@ static inline int mcs_moment_sums_ok_(const mcs_moment_sums_ *s)
     }
     /* nothing in the second sums before two trials, none in an empty batch */
     for (size_t i = 0; i < n * n && (s->count < 2u || s->batch == 0u); ++i)
-        ok &= (s->count >= 2u || MCS_AT_(s->sum_dd, i) == 0.0) &
-              (s->batch != 0u || MCS_AT_(s->batch_w, i) == 0.0);
+    {
+        ok &= s->count >= 2u || MCS_AT_(s->sum_dd, i) == 0.0;
+        ok &= s->batch != 0u || MCS_AT_(s->batch_w, i) == 0.0;
+    }
     return ok;
 }
 

@@ -57,8 +57,41 @@ static int sp_zero(const io_values *values, size_t first, size_t len)
  * open batch leaving its work and sums 0; the closed statistics 0 with no
  * unit and the M2s 0 with fewer than 2 (a spread needs 2 units, not 2
  * trials). Values are finite and >= 0 here (checked first). */
+/* What the add limit allows (spectrum.h: a trial's weights, so its s_n >= 0,
+ * sum to at most MCS_SPECTRUM_MAX_SUM): |S_k| <= L = MCS_SPECTRUM_MAX_SUM /
+ * sqrt(N) in every trial, so the means are within L and the mean powers
+ * within L^2, the M2s within count (2 L)^2 and count L^4, the open sums
+ * within open_count MCS_SPECTRUM_MAX_SUM and its square for pairs (a slack
+ * of 2^-20 for the transform's rounding). A record beyond them holds sums no
+ * trials give, and merging one could leave what no record holds (fuzz_load:
+ * a mean of 5.2e120 beside an M2 of 0.15 loaded, merged into an M2 of
+ * 3.5e242, and save refused it). */
+static int spectrum_within_limits(const io_values *values, uint64_t count)
+{
+    const size_t n = values->size[SZ_N], h1 = values->size[SZ_HALF];
+    const double slack = 1.0 + 0x1p-20, c = (double)count;
+    const double open = mcs_io_value(values, SP_OPEN);
+    const double l = MCS_SPECTRUM_MAX_SUM / sqrt((double)n) * slack;
+    const double limit[5] = {l, l, c * 4.0 * l * l, l * l, c * l * l * l * l};
+    for (size_t f = 0; f < 5u; ++f)
+        for (size_t i = 0; i < h1; ++i)
+            if (!(fabs(mcs_io_value(values, SP_SCALARS + f * h1 + i)) <= limit[f]))
+                return 0;
+    const double sum_limit = open * MCS_SPECTRUM_MAX_SUM * slack;
+    const size_t pairs_at = SP_SCALARS + 5u * h1 + n;
+    for (size_t i = 0; i < n; ++i)
+        if (!(mcs_io_value(values, SP_SCALARS + 5u * h1 + i) <= sum_limit))
+            return 0;
+    for (size_t i = 0; i < 2u * n - 1u; ++i)
+        if (!(mcs_io_value(values, pairs_at + i) <= sum_limit * MCS_SPECTRUM_MAX_SUM * slack))
+            return 0;
+    return 1;
+}
+
 static int spectrum_ok(const io_values *values, uint64_t count)
 {
+    if (!spectrum_within_limits(values, count))
+        return 0;
     const size_t n = values->size[SZ_N], h1 = values->size[SZ_HALF];
     const double units = mcs_io_value(values, SP_UNITS), open = mcs_io_value(values, SP_OPEN);
     const double work = mcs_io_value(values, SP_WORK);

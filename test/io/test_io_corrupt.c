@@ -296,7 +296,7 @@ static void test_broken_invariants_are_refused(void)
     expect_value(0u, len, h0 + 5u * h1 - 1u, -1e-300, MCS_ERR_INVARIANT);   /* m2_pow */
     expect_value(0u, len, h0 + 2u * h1 + 3u, -0.0, MCS_OK);                 /* -0 is 0 */
     expect_value(0u, len, h0 + h1 + 2u, -7.0, MCS_OK); /* a mean of S_k may be negative */
-    expect_value(0u, len, h0 + 1u, -big, MCS_OK);
+    expect_value(0u, len, h0 + 1u, -MCS_SPECTRUM_MAX_SUM / 4.0, MCS_OK); /* |S_k| <= 2^100 / sqrt(14) */
     expect_value(0u, len, h0 + 1u, -2.0 * big, MCS_ERR_INVARIANT);
     expect_value(0u, len, h0 + 3u * h1 + 1u, 1.0000001 * big, MCS_ERR_INVARIANT);
     expect_value(0u, len, h0 + 5u * h1 + 3u * 14u - 2u, -1.0, MCS_ERR_INVARIANT); /* open_pairs */
@@ -514,6 +514,26 @@ static void test_spectrum_units_and_open_batch_that_do_not_fit_are_refused(void)
     refused(&io_kinds[0], MCS_ERR_INVARIANT, len, rec2, "no open batch, open sums", sums);
 }
 
+/* Beyond what the add limit allows (docs/format.md, kind 1): no trial has
+ * |S_k| above L = MCS_SPECTRUM_MAX_SUM / sqrt(N), no open sum is above
+ * open_count MCS_SPECTRUM_MAX_SUM. fuzz_load: a mean of 5.2e120 beside an M2
+ * of 0.15 loaded, merged into an M2 of 3.5e242 and save refused it. */
+static void test_spectrum_values_past_the_add_limit_are_refused(void)
+{
+    const size_t h1 = 8u, mean_im = 3u + h1, m2_s = 3u + 2u * h1, sums = 3u + 5u * h1;
+    io_fill(&set_a, 14u, 40u, 8u);
+    dirty_destinations();
+    const double l = MCS_SPECTRUM_MAX_SUM / sqrt(14.0), open = (double)set_a.spec.open_count;
+    size_t len = save_a(&io_kinds[0], rec);
+    expect_value(0u, len, mean_im + 3u, 0.5 * l, MCS_OK);
+    expect_value(0u, len, mean_im + 3u, 2.0 * l, MCS_ERR_INVARIANT);
+    expect_value(0u, len, mean_im + 3u, 5.2e120, MCS_ERR_INVARIANT);
+    expect_value(0u, len, m2_s + 3u, 40.0 * l * l, MCS_OK);
+    expect_value(0u, len, m2_s + 3u, 200.0 * l * l, MCS_ERR_INVARIANT);
+    expect_value(0u, len, sums + 2u, 0.5 * open * MCS_SPECTRUM_MAX_SUM, MCS_OK);
+    expect_value(0u, len, sums + 2u, 2.0 * open * MCS_SPECTRUM_MAX_SUM, MCS_ERR_INVARIANT);
+}
+
 /* fuzz_load: an empty spectrum whose units (or open count) read -0.0 loaded
  * as 0 and saved back as +0.0, other bytes. A count is a whole number written
  * as +0.0 or more; -0.0 is refused, as a fraction is. */
@@ -595,6 +615,7 @@ int main(void)
     RUN_TEST(test_moment_and_autocorr_records_no_trials_give_are_refused);
     RUN_TEST(test_records_whose_spectrum_is_negative_are_refused);
     RUN_TEST(test_spectrum_units_and_open_batch_that_do_not_fit_are_refused);
+    RUN_TEST(test_spectrum_values_past_the_add_limit_are_refused);
     RUN_TEST(test_counts_that_do_not_fit_the_data_are_refused);
     RUN_TEST(test_a_count_written_as_minus_zero_is_refused);
     return UNITY_END();
