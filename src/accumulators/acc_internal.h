@@ -295,8 +295,11 @@ static inline double mcs_moment_first_at_(const mcs_moment_sums_ *s, size_t m)
  * sums and 4 (N + 32) eps (1/N) ((sum |<d>|)^2 + (sum c + sum |<d>|)^2) for
  * the squares of the transforms of the first sums and of <s> = c + <d>;
  * R bounds both the read-out's (readout.c) and the loader's direct sums.
- * *acc gets A = 3 gamma (sum sqrt(<D_m>))^2 / N, what the sums may carry. */
-static inline double mcs_moment_power_rounding_(const mcs_moment_sums_ *s, double *acc)
+ * *acc gets A = 3 gamma (sum sqrt(<D_m>))^2 / N, what the sums may carry;
+ * *var (may be NULL) R_v, the same without <s> = c + <d>: the rounding of a
+ * variance Cov(S_k, S_k), which the shift leaves out. */
+static inline double mcs_moment_power_rounding_(const mcs_moment_sums_ *s, double *acc,
+                                                double *var)
 {
     const size_t n = s->n;
     const double nd = (double)n, t = (double)s->count;
@@ -310,6 +313,10 @@ static inline double mcs_moment_power_rounding_(const mcs_moment_sums_ *s, doubl
             second += fabs(mcs_moment_total_at_(s, m, q)) / t;
     }
     *acc = 3.0 * MCS_MOMENT_ROUNDING_ * root * root / nd;
+    if (var != NULL)
+        *var = ((2.0 * nd + 64.0) * DBL_EPSILON * second +
+                4.0 * (nd + 32.0) * DBL_EPSILON * first * first) /
+               nd;
     return ((2.0 * nd + 64.0) * DBL_EPSILON * second +
             4.0 * (nd + 32.0) * DBL_EPSILON * (first * first + (shift + first) * (shift + first))) /
            nd;
@@ -356,8 +363,10 @@ static inline void mcs_rotations_step_(mcs_rotations_ *r, size_t j)
 }
 
 /* 1 when every power <|S_k|^2> of the sums, computed directly, is >= -(A +
- * 4 R) (mcs_moment_power_rounding_; the read-out refuses below -(A + 8 R)).
- * O(N^3) (moment.c): for the loader and the record writer. */
+ * 4 R) and every variance Cov(S_k, S_k) >= -(A + 4 R_v)
+ * (mcs_moment_power_rounding_; the read-outs refuse below -(A + 8 R) and
+ * -(A + 8 R_v)). O(N^3) (moment_check.c): for the loader and the record
+ * writer. */
 int mcs_moment_powers_ok(const mcs_moment_sums_ *s);
 
 /* The autocorrelation's powers, in units of eps <A(0)> = eps 2 L_0 / T: the

@@ -65,8 +65,9 @@ int mcs_moment_powers_ok(const mcs_moment_sums_ *s)
     if (s->count == 0u || n == 0u)
         return 1;
     const double nd = (double)n, t = (double)s->count;
-    double acc;
-    const double floor = -(4.0 * mcs_moment_power_rounding_(s, &acc) + acc);
+    double acc, var_r;
+    const double floor = -(4.0 * mcs_moment_power_rounding_(s, &acc, &var_r) + acc);
+    const double var_floor = -(4.0 * var_r + acc);
     for (size_t k0 = 0; k0 < n; k0 += MCS_POWER_FREQS_) {
         const size_t len = n - k0 < MCS_POWER_FREQS_ ? n - k0 : MCS_POWER_FREQS_;
         double second[MCS_POWER_FREQS_] = {0.0};
@@ -100,8 +101,9 @@ int mcs_moment_powers_ok(const mcs_moment_sums_ *s)
                 mr += cm * mean;
                 mi -= sm * mean;
             }
-            const double power = (second[f] / t - (fr * fr + fi * fi) + (mr * mr + mi * mi)) / nd;
-            if (!(power >= floor))
+            const double var = (second[f] / t - (fr * fr + fi * fi)) / nd;
+            const double power = var + (mr * mr + mi * mi) / nd;
+            if (!(power >= floor) || !(var >= var_floor)) /* a fuzz_load record read var < 0 */
                 return 0;
         }
     }

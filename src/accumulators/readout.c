@@ -174,7 +174,9 @@ static void covariance_at(const mcs_readout *view, size_t freq_k, size_t freq_l,
  * transform of second errs by at most (2N + 2) u sum |second| scale / N, the
  * square of the O(N) transform of first by N u (sum |first| scale)^2 / N
  * (u = eps / 2): twice their sum; and the rounding the stored sums carry
- * (mcs_readout_accumulated, |e^{..}| = 1 / N in eq. 16). */
+ * (mcs_readout_accumulated, |e^{..}| = 1 / N in eq. 16). Measured moments
+ * take 8 R_v + A (acc_internal.h, mcs_moment_power_rounding_), so that a
+ * variance the loader accepts at -(4 R_v + A) reads out. */
 static double variance_rounding(const mcs_readout *view)
 {
     const size_t n = view->n;
@@ -186,6 +188,11 @@ static double variance_rounding(const mcs_readout *view)
         b += fabs(mcs_readout_first(view, j));
     a *= view->scale;
     b *= view->scale;
+    const double nd = (double)n;
+    if (view->shift != NULL) /* measured: 8 R_v + A, whatever the loader accepts at 4 R_v + A */
+        return 8.0 * ((2.0 * nd + 64.0) * DBL_EPSILON * a + 4.0 * (nd + 32.0) * DBL_EPSILON * b * b) /
+                   nd +
+               mcs_readout_accumulated(view, NULL, NULL) / nd;
     return (4.0 * ((double)n + 2.0) * DBL_EPSILON * (a + b * b) +
             mcs_readout_accumulated(view, NULL, NULL) + view->exact_rounding) /
            (double)n;

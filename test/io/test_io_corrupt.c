@@ -484,6 +484,28 @@ static void test_records_whose_spectrum_is_negative_are_refused(void)
     }
 }
 
+/* fuzz_load: sums whose powers are all >= 0 but a variance is not (a large
+ * mean hides it), so the record loaded and its covariance read-out refused
+ * it. N = 3, five trials of s = (2, 2, 0) (the shift), sums of d d^T edited
+ * to the ok matrix above and the sum of d on bin 0 to 1: every bin's
+ * variance is >= 0 (1/5 - 1/25), but Cov(S_0, S_0) = (0 - 1/25) / 3 while
+ * <|S_0|^2> is about 16/3. */
+static void test_a_moment_record_whose_variance_is_negative_is_refused(void)
+{
+    static mcs_moment mom;
+    const size_t two[2] = {0u, 1u};
+    const double w2[2] = {2.0, 2.0};
+    dirty_destinations();
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_init(&mom, 3u));
+    for (int t = 0; t < 5; ++t)
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_add_bins(&mom, 2u, two, w2));
+    const size_t len = io_save(&io_kinds[1], &mom, rec);
+    const size_t at[7] = {2u + 3u, 2u + 9u, 2u + 10u, 2u + 11u, 2u + 12u, 2u + 13u, 2u + 14u};
+    const double v[7] = {1.0, 1.0, -0.5, -0.5, 1.0, -0.5, 1.0};
+    edit_record(&io_kinds[1], len, 7u, at, v);
+    refused(&io_kinds[1], MCS_ERR_INVARIANT, len, rec2, "moment variance < 0", 0u);
+}
+
 /* The spectrum's counts and open batch (docs/format.md, kind 1). */
 static void test_spectrum_units_and_open_batch_that_do_not_fit_are_refused(void)
 {
@@ -614,6 +636,7 @@ int main(void)
     RUN_TEST(test_broken_invariants_are_refused);
     RUN_TEST(test_moment_and_autocorr_records_no_trials_give_are_refused);
     RUN_TEST(test_records_whose_spectrum_is_negative_are_refused);
+    RUN_TEST(test_a_moment_record_whose_variance_is_negative_is_refused);
     RUN_TEST(test_spectrum_units_and_open_batch_that_do_not_fit_are_refused);
     RUN_TEST(test_spectrum_values_past_the_add_limit_are_refused);
     RUN_TEST(test_counts_that_do_not_fit_the_data_are_refused);
