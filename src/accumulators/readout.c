@@ -331,6 +331,8 @@ static mcs_status mean_value(const mcs_readout *view, size_t freq_k, size_t freq
 {
     (void)freq_l;
     mean_at(view, freq_k, re, im);
+    if (freq_k == 0u || 2u * freq_k == view->n) /* s is real: S_0 and S_{N/2} are real */
+        *im = 0.0;
     return MCS_OK;
 }
 

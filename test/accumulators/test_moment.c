@@ -570,6 +570,34 @@ static void test_bad_read_outs_return_an_error_and_change_nothing(void)
     expect_outputs_untouched();
 }
 
+/* s is real, so S_0 and (even N) S_{N/2} are real in every trial: their
+ * mean's imaginary part is exactly +0, not the transform's rounding. */
+static void test_the_means_at_0_and_nyquist_are_exactly_real(void)
+{
+    static mcs_moment m;
+    mcs_rng rng;
+    mcs_rng_seed(&rng, 23u, 5u);
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_init(&m, 6u));
+    for (int t = 0; t < 50; ++t) {
+        size_t at[3];
+        double w[3], u = 0.0, r = 0.0;
+        for (size_t j = 0; j < 3u; ++j) {
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_rng_double(&rng, &u));
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_rng_double(&rng, &r));
+            at[j] = (size_t)(u * 6.0);
+            w[j] = 0.3 + r;
+        }
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_add_bins(&m, 3u, at, w));
+    }
+    const double zero = 0.0;
+    for (size_t k = 0; k < 6u; k += 3u) {
+        double mr = -1.0, mi = -1.0;
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_mean(&m, k, &mr, &mi));
+        TEST_ASSERT_EQUAL_MEMORY(&zero, &mi, sizeof mi);
+        TEST_ASSERT_TRUE(mr > 0.0 || k == 3u);
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -583,5 +611,6 @@ int main(void)
     RUN_TEST(test_stratified_off_diagonal_terms_follow_eq_30);
     RUN_TEST(test_bad_input_to_adding_and_merging_changes_nothing);
     RUN_TEST(test_bad_read_outs_return_an_error_and_change_nothing);
+    RUN_TEST(test_the_means_at_0_and_nyquist_are_exactly_real);
     return UNITY_END();
 }
