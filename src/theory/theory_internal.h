@@ -277,6 +277,16 @@ static inline double mcs_theory_bias_of_(mcs_pattern_kind kind, size_t n, size_t
 
 /* ---- src/theory/theory.c: the rounding exact moments carry ------------------ */
 
+/* The checks of an object mcs_theory_init wrote (theory.c), for its
+ * read-outs (theory_readout.c): 1 when th is set up (N, K, kind); when the
+ * first moments, every second moment, the diagonal <s_b^2> or entry (a, b)
+ * keep the bounds init's bodies keep. */
+int mcs_theory_valid_(const mcs_theory *th);
+int mcs_theory_first_sound_(const mcs_theory *th);
+int mcs_theory_second_sound_(const mcs_theory *th);
+int mcs_theory_diagonal_sound_(const mcs_theory *th, size_t b);
+int mcs_theory_entry_sound_(const mcs_theory *th, size_t a, size_t b);
+
 /* What mcs_theory_init's rounding can add to a form sum_{m,n} x_m x_n
  * <s_m s_n> (or to the same form of <s_m><s_n>), |x_b| <= |x[b]| + c (x
  * NULL: 1 + c): 64 DBL_EPSILON ((sum w_b <s_b>)^2 + K (sum w_b u_b)^2), u_b
