@@ -19,7 +19,9 @@
 #define CMD "mcspec variance"
 #define DEFAULT_TRIALS 10000u
 #define DEFAULT_SEED 1u
-#define CSV_HEADER "kind,n,k,trials,mean,mean_stderr,variance,variance_stderr,exact,z_exact"
+#define CSV_HEADER                                                                          \
+    "kind,n,k,trials,mean,mean_stderr,variance,variance_stderr,exact,z_exact,bias,exact_mean," \
+    "z_mean"
 
 static const char help[] =
     "usage: mcspec variance --k K [--trials T] [--seed S] [--kind KIND]\n"
@@ -31,7 +33,11 @@ static const char help[] =
     "the N bins, and per kind the mean of I with its standard error, the\n"
     "measured Var[I] with its standard error, the exact Var[I] and the z-score\n"
     "z = (variance - exact) / variance_stderr (0 for a deterministic estimate\n"
-    "that agrees to rounding). '#' lines and blank lines in FILE are skipped;\n"
+    "that agrees to rounding); and the estimator's exact bias <I> - (1/N) sum f_n,\n"
+    "the exact mean (1/N) sum f_n + bias and z_mean = (mean - exact_mean) /\n"
+    "mean_stderr. The bias is 0 but for the uniform pattern's fixed counts and the\n"
+    "bins an importance weight of 0 never draws (their f_n is never sampled).\n"
+    "'#' lines and blank lines in FILE are skipped;\n"
     "N is the number of values, 1.." CLI_STR(MCS_MAX_N) ".\n"
     "\n"
     "Exact: (1/K^2) f^T Cov(s) f for every N, kind and importance function, from\n"
@@ -68,7 +74,7 @@ typedef struct {
 } variance_opts;
 
 typedef struct {
-    double mean, mean_se, var, var_se, exact, z;
+    double mean, mean_se, var, var_se, exact, z, bias, exact_mean, z_mean;
     const char *source;
     mcs_welford acc; /* the estimator's statistics, for --save */
 } variance_row;
@@ -139,13 +145,16 @@ static double welford_or_nan(mcs_status (*fn)(const mcs_welford *, double *),
 
 /* One kind: trials on stream `kind`, then the row. */
 static int measure_kind(const variance_opts *o, mcs_pattern_kind kind, size_t n, const double *f,
-                        const mcs_importance *imp, double f2_mean, variance_row *row)
+                        const mcs_importance *imp, double f_mean, double f2_mean,
+                        variance_row *row)
 {
     mcs_pattern pat;
     mcs_status st = mcs_pattern_init(&pat, kind, n, o->k, imp);
     if (st != MCS_OK)
         return cli_fail(CMD, "cannot set up %s: %s", mcs_pattern_kind_str(kind), mcs_status_str(st));
     int rc = cli_predict_variance(CMD, &pat, f, &row->exact, &row->source);
+    if (rc == 0)
+        rc = cli_predict_bias(CMD, &pat, f, &row->bias);
     if (rc != 0)
         return rc;
     mcs_welford w;
@@ -166,16 +175,19 @@ static int measure_kind(const variance_opts *o, mcs_pattern_kind kind, size_t n,
     /* Rounding scale of a variance of values of size sqrt(mean f^2). */
     row->acc = w;
     row->z = cli_z(row->var, row->exact, row->var_se, 1e-12 * fmax(f2_mean, fabs(row->exact)));
+    row->exact_mean = f_mean + row->bias;
+    row->z_mean = cli_z(row->mean, row->exact_mean, row->mean_se, 1e-12 * sqrt(f2_mean));
     return 0;
 }
 
 static void print_row(const variance_opts *o, const char *kind, size_t n, const variance_row *r)
 {
-    double v[6] = {r->mean, r->mean_se, r->var, r->var_se, r->exact, r->z};
+    double v[9] = {r->mean, r->mean_se, r->var,  r->var_se,      r->exact,
+                   r->z,    r->bias,    r->exact_mean, r->z_mean};
     char buf[40];
     if (o->csv) {
         printf("%s,%zu,%zu,%llu", kind, n, o->k, (unsigned long long)o->trials);
-        for (int i = 0; i < 6; ++i) {
+        for (int i = 0; i < 9; ++i) {
             cli_csv_double(buf, sizeof buf, v[i]);
             printf(",%s", buf);
         }
@@ -191,6 +203,12 @@ static void print_row(const variance_opts *o, const char *kind, size_t n, const 
         printf(" %8s", "-");
     else
         printf(" %8.2f", r->z);
+    cli_table_double(buf, sizeof buf, 12, r->bias);
+    printf(" %s", buf);
+    if (isnan(r->z_mean))
+        printf(" %7s", "-");
+    else
+        printf(" %7.2f", r->z_mean);
     printf("  %s\n", r->source[0] != '\0' ? r->source : "none at this N");
 }
 
@@ -211,15 +229,18 @@ static void print_header(const variance_opts *o, size_t n, const double *f,
     if (imp != NULL)
         printf("importance function: %s, harmonic mean H = %.6g\n", cli_input_name(o->importance),
                imp->harmonic_mean);
-    printf("\n%-12s %14s %14s %14s %14s %14s %8s  %s\n", "kind", "mean", "mean_stderr",
-           "variance", "var_stderr", "exact", "z_exact", "exact from");
+    printf("\n%-12s %14s %14s %14s %14s %14s %8s %12s %7s  %s\n", "kind", "mean", "mean_stderr",
+           "variance", "var_stderr", "exact", "z_exact", "bias", "z_mean", "exact from");
 }
 
 static int run_kinds(const variance_opts *o, const double *f, size_t n, const mcs_importance *imp)
 {
-    double f2 = 0.0;
-    for (size_t i = 0; i < n; ++i)
+    double f1 = 0.0, f2 = 0.0;
+    for (size_t i = 0; i < n; ++i) {
+        f1 += f[i];
         f2 += f[i] * f[i] / (double)n;
+    }
+    f1 /= (double)n;
     variance_row rows[MCS_PATTERN_KIND_COUNT];
     int done[MCS_PATTERN_KIND_COUNT] = {0};
     for (int i = 0; i < MCS_PATTERN_KIND_COUNT; ++i) {
@@ -227,7 +248,7 @@ static int run_kinds(const variance_opts *o, const double *f, size_t n, const mc
         if (o->kind != NULL ? cli_pattern_kind(o->kind) != i
                             : (imp != NULL && kind == MCS_PATTERN_HOMOGENIZED))
             continue;
-        int rc = measure_kind(o, kind, n, f, imp, f2, &rows[i]);
+        int rc = measure_kind(o, kind, n, f, imp, f1, f2, &rows[i]);
         if (rc != 0)
             return rc;
         done[i] = 1;

@@ -173,3 +173,20 @@ int cli_predict_variance(const char *cmd, const mcs_pattern *pat, const double *
         return cli_internal(cmd, "exact variance failed: %s", mcs_status_str(st));
     return 0;
 }
+
+int cli_predict_bias(const char *cmd, const mcs_pattern *pat, const double *f, double *out)
+{
+    exact_engine e;
+    mcs_status st = MCS_OK;
+    *out = (double)NAN;
+    int rc = engine_open(cmd, pat, &e, &st);
+    if (rc == 0 && st == MCS_OK)
+        st = e.th != NULL ? mcs_theory_bias(e.th, pat->n, pat->k, f, out)
+                          : mcs_theory_spectrum_bias(e.ts, pat->n, pat->k, f, out);
+    engine_close(&e);
+    if (rc != 0)
+        return rc;
+    if (st != MCS_OK)
+        return cli_internal(cmd, "exact bias failed: %s", mcs_status_str(st));
+    return 0;
+}

@@ -36,4 +36,10 @@ int cli_predict_power(const char *cmd, const mcs_pattern *pat, cli_prediction *p
 int cli_predict_variance(const char *cmd, const mcs_pattern *pat, const double *f, double *out,
                          const char **source);
 
+/* The estimator's exact bias <I> - (1/N) sum_n f_n under pat, f[pat->n]
+ * (mcs_theory_bias: 0 for the unbiased kinds but for the bins an importance
+ * function never draws; the uniform pattern's counts): *out. Returns 0 or
+ * CLI_EXIT_FAIL after a message. */
+int cli_predict_bias(const char *cmd, const mcs_pattern *pat, const double *f, double *out);
+
 #endif /* MCSPEC_CLI_PREDICT_H */

@@ -324,11 +324,11 @@ if succeeds "pattern table" "$MCSPEC" pattern stratified --n 32 --k 4 --trials 1
 fi
 
 # ------------------------------------------------------ variance output
-vheader='kind,n,k,trials,mean,mean_stderr,variance,variance_stderr,exact,z_exact'
+vheader='kind,n,k,trials,mean,mean_stderr,variance,variance_stderr,exact,z_exact,bias,exact_mean,z_mean'
 awk 'BEGIN { for (i = 0; i < 16; ++i) { x = (i + 0.5) / 16; print 0.5 + 0.3 * sin(6.283185307179586 * x) + (x >= 0.3 ? 0.4 : 0) } }' >"$tmp/f16.txt"
 if succeeds "variance --csv" "$MCSPEC" variance --k 4 --trials 2000 --seed 5 --csv "$tmp/f16.txt"; then
     cp "$tmp/out" "$tmp/var1.csv"
-    csv_shape "variance --csv" "$tmp/var1.csv" "$vheader" 5 10
+    csv_shape "variance --csv" "$tmp/var1.csv" "$vheader" 5 13
     kinds=$(tail -n +2 "$tmp/var1.csv" | cut -d, -f1 | tr '\n' ' ')
     if [ "$kinds" = "random stratified homogenized uniform jitter " ]; then ok; else bad "variance kinds: $kinds"; fi
     worst=$(tail -n +2 "$tmp/var1.csv" | awk -F, '{ z = $10 < 0 ? -$10 : $10; if ($10 == "") z = 99; if (z > m) m = z } END { print m + 0 }')
@@ -348,6 +348,17 @@ run "$MCSPEC" variance --k 4 --trials 100 --csv --importance "$tmp/g16.txt" "$tm
 kinds=$(tail -n +2 "$tmp/out" | cut -d, -f1 | tr '\n' ' ')
 if [ "$rc" -eq 0 ] && [ "$kinds" = "random stratified uniform jitter " ]; then ok
 else bad "variance --importance: status $rc, kinds $kinds"; fi
+# A bin of weight 0 is never drawn: every kind but uniform is biased by
+# exactly -f_3 / 16 there, and its mean agrees with the exact mean (z_mean).
+printf '1\n2\n1\n0\n1\n2\n1\n2\n1\n2\n1\n2\n1\n2\n1\n2\n' >"$tmp/g16z.txt"
+if succeeds "variance, a bin of weight 0" "$MCSPEC" variance --k 4 --trials 4000 --seed 3 --csv \
+    --importance "$tmp/g16z.txt" "$tmp/f16.txt"; then
+    want=$(awk 'NR == 4 { printf "%.17g", -$1 / 16 }' "$tmp/f16.txt")
+    problems=$(tail -n +2 "$tmp/out" | awk -F, -v want="$want" '
+        $1 != "uniform" { d = $11 - want; if (d < 0) d = -d; if (d > 1e-15) printf "%s bias %s, want %s; ", $1, $11, want }
+        { z = $13 < 0 ? -$13 : $13; if ($13 == "" || z >= 5) printf "%s z_mean %s; ", $1, $13 }')
+    if [ -z "$problems" ]; then ok; else bad "variance with a zero weight: $problems"; fi
+fi
 # Above MCS_MAX_COV_N, every kind, with and without importance: an exact Var[I].
 awk 'BEGIN { for (i = 0; i < 100; ++i) print sin(i / 10) }' >"$tmp/f100.txt"
 awk 'BEGIN { for (i = 0; i < 100; ++i) print 1 + (i % 7) / 3 }' >"$tmp/g100.txt"
@@ -361,7 +372,7 @@ for imp in "" "--importance $tmp/g100.txt"; do
     fi
 done
 if succeeds "variance table" "$MCSPEC" variance --k 4 --trials 100 "$tmp/f16.txt"; then
-    if grep -Eq '^kind +mean +mean_stderr +variance +var_stderr +exact +z_exact' "$tmp/out" &&
+    if grep -Eq '^kind +mean +mean_stderr +variance +var_stderr +exact +z_exact +bias +z_mean' "$tmp/out" &&
        [ "$(grep -Ec '^(random|stratified|homogenized|uniform|jitter) ' "$tmp/out")" -eq 5 ]; then ok
     else bad "variance table: header or 5 rows missing"; fi
 fi

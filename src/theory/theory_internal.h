@@ -272,7 +272,7 @@ static inline double mcs_theory_bias_of_(mcs_pattern_kind kind, size_t n, size_t
     for (size_t b = 0; b < n; ++b)
         if (mean_s[b] == 0.0)
             sum += f[b];
-    return -sum / nd;
+    return 0.0 - sum / nd; /* +0, not -0, for no such bin */
 }
 
 /* ---- src/theory/theory.c: the rounding exact moments carry ------------------ */
