@@ -118,7 +118,8 @@ mcs_status mcs_autocorr_mean(const mcs_autocorr *acc, mcs_dft *plan, size_t n, d
  * sums carry (N + 8 + T N^2 eps) eps of it, the transform at most (N + 2) u
  * on its direct path and (8 log2 N + 16) u on the FFT paths (u = eps / 2),
  * and the bound leaves room for twice the rounding of the loader's own
- * direct sums, so that every record that loads reads out. A power is never
+ * direct sums, so that every record that loads reads out; plus 64 (N + 8)
+ * DBL_TRUE_MIN for underflow, whatever <A(0)> is. A power is never
  * negative: one below 0 within that bound reads 0 (a trial of weight 2^100
  * among ordinary ones left -2.7e39 at a k where every trial's |S_k|^2 is
  * about 1, beside 2.5e57 at k = 0); one below it is no spectrum of any

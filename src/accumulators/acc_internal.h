@@ -385,8 +385,20 @@ static inline double mcs_autocorr_power_gamma_(size_t n, uint64_t count, int loa
            DBL_EPSILON;
 }
 
+/* What underflow adds to a power whatever its scale: near the smallest
+ * doubles rounding is absolute, at most DBL_TRUE_MIN / 2 an operation, so a
+ * transform of N lags and its scalings err by up to about (N + 8)
+ * DBL_TRUE_MIN however small <A(0)> is (fuzz_load: lag sums of a few
+ * DBL_TRUE_MIN over 4.8e15 trials made <A(0)> 0 and powers of
+ * -4.9e-324); the read-out allows 64 times that, the loader 16 times. */
+static inline double mcs_autocorr_power_underflow_(size_t n, int load)
+{
+    return (load ? 16.0 : 64.0) * ((double)n + 8.0) * DBL_TRUE_MIN;
+}
+
 /* 1 when every power of the lag sums, computed directly (k = 0..N/2; the
- * rest mirror them), is >= -mcs_autocorr_power_gamma_(load) <A(0)>. O(N^2)
+ * rest mirror them), is >= -(mcs_autocorr_power_gamma_(load) <A(0)> +
+ * mcs_autocorr_power_underflow_(load)). O(N^2)
  * and O(1) memory (autocorr.c): for the loader and the record writer. */
 int mcs_autocorr_powers_ok(const mcs_autocorr_sums_ *s);
 

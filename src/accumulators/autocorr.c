@@ -208,7 +208,8 @@ mcs_status mcs_autocorr_mean(const mcs_autocorr *acc, mcs_dft *plan, size_t n, d
 static double power_rounding(const mcs_autocorr *acc)
 {
     return mcs_autocorr_power_gamma_(acc->n, acc->count, 0) *
-           (2.0 * acc->sum_lag[0] / (double)acc->count);
+               (2.0 * acc->sum_lag[0] / (double)acc->count) +
+           mcs_autocorr_power_underflow_(acc->n, 0);
 }
 
 /* MCS_POWER_FREQS_ frequencies at a time, the twiddles by rotation (within
@@ -219,7 +220,8 @@ int mcs_autocorr_powers_ok(const mcs_autocorr_sums_ *s)
     if (s->count == 0u || n == 0u)
         return 1;
     const double nd = (double)n, t = (double)s->count, l0 = MCS_AT_(s->sum_lag, 0u);
-    const double floor = -mcs_autocorr_power_gamma_(n, s->count, 1) * (2.0 * l0 / t);
+    const double floor = -(mcs_autocorr_power_gamma_(n, s->count, 1) * (2.0 * l0 / t) +
+                           mcs_autocorr_power_underflow_(n, 1));
     for (size_t k0 = 0; k0 <= h; k0 += MCS_POWER_FREQS_) {
         const size_t len = h + 1u - k0 < MCS_POWER_FREQS_ ? h + 1u - k0 : MCS_POWER_FREQS_;
         double sum[MCS_POWER_FREQS_];
