@@ -120,9 +120,9 @@ check-layout: $(LIB_OBJ)
 # Every public function is named mcs_<header>_..., every global of the
 # library's objects is prefixed mcs_, and libmcspec.a and libmcspec.so export
 # exactly the functions the public headers declare (tools/check_api.sh).
-check-api: $(LIB) $(BUILD)/libmcspec.so
+check-api: $(LIB) $(BUILD)/libmcspec.so $(BUILD)/test/api/test_adversarial
 	@sh tools/check_api.sh -c '$(CC) $(MCS_CPPFLAGS) $(CPPFLAGS)' -n $(EMB_NM) \
-	    -o '$(LIB_OBJ) $(KISS_OBJ)' $(LIB) $(BUILD)/libmcspec.so
+	    -o '$(LIB_OBJ) $(KISS_OBJ)' -t $(BUILD)/test/api/test_adversarial $(LIB) $(BUILD)/libmcspec.so
 
 $(LINT_BUILD):
 	@mkdir -p $@

@@ -18,18 +18,23 @@
 # 3. Libraries (a .a or a .so). The symbols each one exports are exactly the
 #    public API of step 1: none without a declaration in a public header
 #    (so nothing without the mcs_ prefix either), and none of the API missing.
+# 4. The adversarial table (-t: test/api/test_adversarial's program). Every
+#    function the first library exports (nm type T) has rows in the table
+#    (ADVERSARIAL_LIST=1 prints the functions it covers), so a new public
+#    function cannot land without its adversarial rows.
 # Prints one line per failure and a summary; exit status 1 on any failure.
 set -eu
 # shellcheck source=tools/common.sh
 . "$(dirname "$0")/common.sh"
-USAGE="usage: $0 [-c 'cc flags'] [-d dir] [-n nm] [-p pending] [-o 'objects'] [library...]"
+USAGE="usage: $0 [-c 'cc flags'] [-d dir] [-n nm] [-p pending] [-o 'objects'] [-t table] [library...]"
 
 CPP='cc -Iinclude'
 DIR=include
 NM='nm'
 PENDING=
 OBJECTS=
-opts_parse "c=CPP d=DIR n=NM p=PENDING o=OBJECTS" "$@"
+TABLE=
+opts_parse "c=CPP d=DIR n=NM p=PENDING o=OBJECTS t=TABLE" "$@"
 shift $((OPTIND - 1))
 
 make_tmp
@@ -82,8 +87,24 @@ for lib in "$@"; do
     if ! cmp -s "$tmp/exported" "$tmp/names"; then fail=1; fi
 done
 
+# 4. Every exported function against the adversarial table.
+n_table=
+if [ -n "$TABLE" ] && [ $# -ge 1 ]; then
+    case $1 in
+    *.so | *.so.*) "$NM" -D -P --defined-only "$1" ;;
+    *) "$NM" -P -g --defined-only "$1" ;;
+    esac | awk 'NF >= 2 && $1 !~ /:$/ && $2 == "T" { print $1 }' | sort -u >"$tmp/functions"
+    ADVERSARIAL_LIST=1 "$TABLE" | sort -u >"$tmp/table"
+    comm -23 "$tmp/functions" "$tmp/table" |
+        sed 's|^|table: |; s|$| has no rows in the adversarial table (test/support/adv_table_*.c)|'
+    comm -13 "$tmp/functions" "$tmp/table" |
+        sed 's|^|table: the adversarial table has rows for |; s|$|, which the library does not export|'
+    if ! cmp -s "$tmp/functions" "$tmp/table"; then fail=1; fi
+    n_table=$(wc -l <"$tmp/functions")
+fi
+
 if [ "$fail" -ne 0 ]; then
     echo "check-api FAILED"
     exit 1
 fi
-echo "check-api OK: $n_api public names named after their header ($n_pending pending rename)${OBJECTS:+, every global of the objects prefixed mcs_}${1:+, exported exactly by $*}"
+echo "check-api OK: $n_api public names named after their header ($n_pending pending rename)${OBJECTS:+, every global of the objects prefixed mcs_}${1:+, exported exactly by $*}${n_table:+, each of the $n_table functions with adversarial rows}"

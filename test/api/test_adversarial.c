@@ -534,6 +534,16 @@ int main(void)
     const char *t = getenv("ADVERSARIAL_TIMEOUT_MS");
     if (t != NULL && atoi(t) > 0)
         adv_timeout_ms = atoi(t);
+    if (getenv("ADVERSARIAL_LIST") != NULL) { /* the names the table covers, for check-api */
+        const adv_fn *tables[] = {adv_fns_core, adv_fns_stats, adv_fns_eq,
+                                  adv_fns_2d,   adv_fns_io,    adv_fns_measures};
+        const size_t counts[] = {adv_fns_core_count, adv_fns_stats_count, adv_fns_eq_count,
+                                 adv_fns_2d_count,   adv_fns_io_count,    adv_fns_measures_count};
+        for (size_t g = 0; g < sizeof counts / sizeof counts[0]; ++g)
+            for (size_t i = 0; i < counts[g]; ++i)
+                puts(tables[g][i].name);
+        return 0;
+    }
     UNITY_BEGIN();
     run_table(adv_fns_core, adv_fns_core_count);
     run_table(adv_fns_stats, adv_fns_stats_count);

@@ -228,6 +228,10 @@ static void int_rows(row_sink *k, int i, const adv_slot *s)
         vals[nv++] = 0;
         vals[nv++] = 1;
         vals[nv++] = -1; /* UINT64_MAX */
+        if (s->lhi > 0) { /* a bounded u64: its edge */
+            vals[nv++] = s->lhi;
+            vals[nv++] = s->lhi + 1;
+        }
     } else if (s->kind == K_U32) {
         vals[nv++] = 0;
         vals[nv++] = 1;
@@ -249,7 +253,8 @@ static void int_rows(row_sink *k, int i, const adv_slot *s)
         if (dup)
             continue;
         long x = vals[a];
-        int in = s->kind == K_U64 || (x >= s->llo && x <= s->lhi);
+        int in = s->kind == K_U64 ? s->lhi <= 0 || (uint64_t)x <= (uint64_t)s->lhi
+                                  : x >= s->llo && x <= s->lhi;
         int ex = s->flags & F_FREE ? EX_ANY : !in ? EX_ERR : s->flags & F_OKIN ? EX_OK : EX_ANY;
         char what[32];
         snprintf(what, sizeof what, "%ld", x);

@@ -29,6 +29,8 @@
 #define U32(nm, b, lo_, hi_, fl) \
     {.name = nm, .kind = K_U32, .base = b, .llo = lo_, .lhi = hi_, .flags = fl}
 #define U64(nm, b) {.name = nm, .kind = K_U64, .base = b, .flags = F_OKIN}
+/* A u64 that must be at most hi_ (> 0): rows at hi_ and hi_ + 1 too. */
+#define U64_MAX_(nm, b, hi_) {.name = nm, .kind = K_U64, .base = b, .lhi = (long)(hi_), .flags = F_OKIN}
 #define LNG(nm, b, lo_, hi_, fl) \
     {.name = nm, .kind = K_LONG, .base = (uint64_t)(b), .llo = lo_, .lhi = hi_, .flags = fl}
 #define ENM(nm, b, lo_, hi_, fl) \

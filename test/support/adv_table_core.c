@@ -142,6 +142,15 @@ static int t_spectrum_add_points_f(const adv_val *a)
 }
 static int t_spectrum_merge(const adv_val *a) { return mcs_spectrum_merge(a[0].p, a[1].p); }
 static int t_spectrum_count(const adv_val *a) { return mcs_spectrum_count(a[0].p, a[1].p); }
+static int t_spectrum_units(const adv_val *a) { return mcs_spectrum_units(a[0].p, a[1].p); }
+static int t_spectrum_set_batch(const adv_val *a) { return mcs_spectrum_set_batch(a[0].p, a[1].u64); }
+static int t_spectrum_flush(const adv_val *a) { return mcs_spectrum_flush(a[0].p); }
+static int t_dft_backend(const adv_val *a)
+{
+    (void)a;
+    const char *b = mcs_dft_backend();
+    return b != NULL && (strcmp(b, "kissfft") == 0 || strcmp(b, "fftw3") == 0) ? MCS_OK : ADV_BROKEN;
+}
 static int t_spectrum_mean(const adv_val *a) { return mcs_spectrum_mean(a[0].p, a[1].z, a[2].p, a[3].p); }
 static int t_spectrum_mean_stderr(const adv_val *a) { return mcs_spectrum_mean_stderr(a[0].p, a[1].z, a[2].p); }
 static int t_spectrum_power(const adv_val *a) { return mcs_spectrum_power(a[0].p, a[1].z, a[2].p); }
@@ -237,6 +246,11 @@ const adv_fn adv_fns_core[] = {
         AIN("weights", E_D, R_WEIGHT, LEN(L_SLOT, 1), F_NULLOK)),
     FN(spectrum_merge, EF_MERGE, 1, 0, OBJ_IO("dst", T_SPECTRUM, 0), OBJ_IN("src", T_SPECTRUM, F_SIZED)),
     FN(spectrum_count, EF_NONE, 1, 0, SPEC_IN, OUT("count", E_U64, O_RAW, 0)),
+    FN(spectrum_units, EF_NONE, 1, 0, SPEC_IN, OUT("units", E_U64, O_RAW, 0)),
+    FN(spectrum_set_batch, EF_NONE, 1, 0, OBJ_IO("acc", T_SPECTRUM, 0),
+       U64_MAX_("batch", 16, MCS_SPECTRUM_BATCH_LIMIT)),
+    FN(spectrum_flush, EF_NONE, 1, 0, OBJ_IO("acc", T_SPECTRUM, 0)),
+    {"mcs_dft_backend", t_dft_backend, EF_NONE, 1, 0, 0, {{0}}, NULL},
     FN(spectrum_mean, EF_NONE, 1, 0, SPEC_IN, FREQ, OUT("re", E_D, O_VAL, 0), OUT("im", E_D, O_VAL, 0)),
     FN(spectrum_mean_stderr, EF_NONE, 1, 0, SPEC_IN, FREQ, OUT("stderr", E_D, O_NN, 0)),
     FN(spectrum_power, EF_NONE, 1, 0, SPEC_IN, FREQ, OUT("power", E_D, O_NN, 0)),
