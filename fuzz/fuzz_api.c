@@ -58,7 +58,11 @@ static uint64_t word(int nbytes)
 static const double special[] = {
     0.0, -0.0, 1.0, -1.0, 0.5, 0.3, 2.5, 12.0, 1e9, 1e-10, 1e-300, 4.9406564584124654e-324,
     DBL_MIN, 1e100, 1.5e154, 1e200, 1e300, DBL_MAX, -DBL_MAX, 0x1.fffffffffffffp-1, (double)NAN,
-    (double)INFINITY, -(double)INFINITY, -1e-300};
+    (double)INFINITY, -(double)INFINITY, -1e-300,
+    /* large valid weights (issue 22: an importance weight 1/p_n reaches
+     * 2^32 / N; 1e8 cancelled an open batch; the limits are 2^100 a trial
+     * for spectrum and 2^220 for moment) */
+    1e8, 1e10, 0x1p32, 0x1p99, 0x1p100, 0x1p200, 0x1p218};
 #define NSPECIAL (sizeof special / sizeof special[0])
 
 /* Mostly ordinary values in [0, 2), then the specials, then raw bits. */
