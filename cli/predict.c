@@ -154,15 +154,20 @@ int cli_predict_power(const char *cmd, const mcs_pattern *pat, cli_prediction *p
     return theory_power(cmd, pat, pred);
 }
 
-int cli_predict_variance(const char *cmd, const mcs_pattern *pat, const double *f, double *out,
-                         const char **source)
+/* Var[I] (bias 0) or the bias (bias 1) of f under pat from whichever exact
+ * engine serves pat's N; *source names it. */
+static int exact_of_f(const char *cmd, const mcs_pattern *pat, const double *f, int bias,
+                      double *out, const char **source)
 {
     exact_engine e;
     mcs_status st = MCS_OK;
     *out = (double)NAN;
     *source = "";
     int rc = engine_open(cmd, pat, &e, &st);
-    if (rc == 0 && st == MCS_OK)
+    if (rc == 0 && st == MCS_OK && bias)
+        st = e.th != NULL ? mcs_theory_bias(e.th, pat->n, pat->k, f, out)
+                          : mcs_theory_spectrum_bias(e.ts, pat->n, pat->k, f, out);
+    else if (rc == 0 && st == MCS_OK)
         st = e.th != NULL ? mcs_theory_variance(e.th, pat->n, pat->k, f, out)
                           : mcs_theory_spectrum_variance(e.ts, pat->n, pat->k, f, out);
     engine_close(&e);
@@ -170,23 +175,19 @@ int cli_predict_variance(const char *cmd, const mcs_pattern *pat, const double *
         return rc;
     *source = e.source;
     if (st != MCS_OK)
-        return cli_internal(cmd, "exact variance failed: %s", mcs_status_str(st));
+        return cli_internal(cmd, "exact %s failed: %s", bias ? "bias" : "variance",
+                            mcs_status_str(st));
     return 0;
+}
+
+int cli_predict_variance(const char *cmd, const mcs_pattern *pat, const double *f, double *out,
+                         const char **source)
+{
+    return exact_of_f(cmd, pat, f, 0, out, source);
 }
 
 int cli_predict_bias(const char *cmd, const mcs_pattern *pat, const double *f, double *out)
 {
-    exact_engine e;
-    mcs_status st = MCS_OK;
-    *out = (double)NAN;
-    int rc = engine_open(cmd, pat, &e, &st);
-    if (rc == 0 && st == MCS_OK)
-        st = e.th != NULL ? mcs_theory_bias(e.th, pat->n, pat->k, f, out)
-                          : mcs_theory_spectrum_bias(e.ts, pat->n, pat->k, f, out);
-    engine_close(&e);
-    if (rc != 0)
-        return rc;
-    if (st != MCS_OK)
-        return cli_internal(cmd, "exact bias failed: %s", mcs_status_str(st));
-    return 0;
+    const char *source = NULL;
+    return exact_of_f(cmd, pat, f, 1, out, &source);
 }

@@ -20,7 +20,8 @@ static mcs_status autocorr_check(const mcs_autocorr *acc)
     return st == MCS_OK && acc->count > (uint64_t)MCS_MAX_COUNT ? MCS_ERR_INVARIANT : st;
 }
 
-int mcs_autocorr_stored_valid(const mcs_autocorr *acc)
+/* The object's arrays as the checks read a record's (acc_internal.h). */
+static mcs_autocorr_sums_ object_sums(const mcs_autocorr *acc)
 {
     const mcs_autocorr_sums_ s = {acc->n,
                                   acc->count,
@@ -30,6 +31,12 @@ int mcs_autocorr_stored_valid(const mcs_autocorr *acc)
                                   mcs_memory_values_(acc->lo_lag),
                                   acc->sum_dc,
                                   acc->lo_dc};
+    return s;
+}
+
+int mcs_autocorr_stored_valid(const mcs_autocorr *acc)
+{
+    const mcs_autocorr_sums_ s = object_sums(acc);
     return mcs_autocorr_sums_ok_(&s);
 }
 
@@ -246,14 +253,7 @@ int mcs_autocorr_powers_ok(const mcs_autocorr_sums_ *s)
 
 int mcs_autocorr_powers_valid(const mcs_autocorr *acc)
 {
-    const mcs_autocorr_sums_ s = {acc->n,
-                                  acc->count,
-                                  mcs_memory_values_(acc->sum_s),
-                                  mcs_memory_values_(acc->lo_s),
-                                  mcs_memory_values_(acc->sum_lag),
-                                  mcs_memory_values_(acc->lo_lag),
-                                  acc->sum_dc,
-                                  acc->lo_dc};
+    const mcs_autocorr_sums_ s = object_sums(acc);
     return mcs_autocorr_powers_ok(&s);
 }
 
