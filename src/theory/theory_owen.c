@@ -6,6 +6,7 @@
 #include "core/internal.h"
 #include "mcspec/owen.h"
 
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -253,6 +254,15 @@ static mcs_status check_set(const mcs_owen *ow, const void *out)
     return sum == total ? MCS_OK : MCS_ERR_INVARIANT;
 }
 
+/* E P = 1 + 2 sum / K cannot be negative; the sum's rounding (K^2 / 2 pair
+ * terms of magnitude <= 1, a relative 1e-16 each) can take an exact zero
+ * (a net at low frequencies: P = 1 - sinc^2 ~ 1e-9 and below) a few K eps
+ * under it, which reads 0. */
+static double nonneg(double v, double k)
+{
+    return v < 0.0 && v > -64.0 * k * DBL_EPSILON ? 0.0 : v;
+}
+
 /* phi[l] = phi_b(l, f) for l < L, and phi[L] = 1 (equal coordinates). */
 static void phi_row(unsigned base, unsigned digits, size_t f, double *phi)
 {
@@ -284,7 +294,7 @@ mcs_status mcs_owen_power(const mcs_owen *ow, long freq_x, long freq_y, double *
             row += (double)ow->pairs[a * (ly + 1u) + c] * px[a];
         sum += row * (c == ly ? 1.0 : phi_at(ow->base[1], n, fy));
     }
-    return mcs_set_(out, 1.0 + 2.0 * sum / (double)ow->k);
+    return mcs_set_(out, nonneg(1.0 + 2.0 * sum / (double)ow->k, (double)ow->k));
 }
 
 mcs_status mcs_owen_pair_count(const mcs_owen *ow, size_t level_x, size_t level_y, uint64_t *out)

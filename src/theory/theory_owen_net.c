@@ -4,6 +4,7 @@
 #include "core/internal.h"
 #include "mcspec/owen.h"
 
+#include <float.h>
 #include <math.h>
 
 /* b^e for b^e <= 2^32 (callers check m first). */
@@ -56,6 +57,12 @@ static uint64_t exactly(unsigned base, size_t m, size_t a, size_t c)
            at_least(base, m, a + 1u, c) - at_least(base, m, a, c + 1u);
 }
 
+/* As in theory_owen.c: a rounding negative of an exact zero reads 0. */
+static double nonneg(double v, double k)
+{
+    return v < 0.0 && v > -64.0 * k * DBL_EPSILON ? 0.0 : v;
+}
+
 mcs_status mcs_owen_net_pairs(unsigned base, size_t m, size_t level_x, size_t level_y,
                               uint64_t *out)
 {
@@ -90,7 +97,7 @@ mcs_status mcs_owen_net_power(unsigned base, size_t m, long freq_x, long freq_y,
     for (size_t a = 0; a < m; ++a)
         for (size_t c = 0; a + c < m; ++c)
             sum += (double)exactly(base, m, a, c) * px[a] * py[c];
-    return mcs_set_(out, 1.0 + 2.0 * sum / kd);
+    return mcs_set_(out, nonneg(1.0 + 2.0 * sum / kd, kd));
 }
 
 mcs_status mcs_owen_theory_of(mcs_sampler_kind kind, size_t dim, mcs_owen_theory *out)
