@@ -81,8 +81,8 @@ mcs_status mcs_owen_net_power(unsigned base, size_t m, long freq_x, long freq_y,
         st = MCS_ERR_FREQ_RANGE;
     if (st != MCS_OK)
         return st;
-    double px[MCS_OWEN_MAX_DIGITS], py[MCS_OWEN_MAX_DIGITS];
-    /* m < L of the base (b^m <= 2^32 < 2^44), so every level asked exists. */
+    /* b^m <= 2^32: m <= 32 levels, each below L of the base (b^m < 2^44). */
+    double px[32], py[32];
     for (size_t l = 0; l < m; ++l) {
         st = mcs_owen_phi(base, l, freq_x, &px[l]);
         if (st == MCS_OK)

@@ -108,7 +108,7 @@ static const jk_line jk5 = {3u, 2u, {1u, 1u, 1u, 0u}}, jk6 = {4u, 1u, {1u, 1u, 3
 
 static void directions(const jk_line *jk, uint32_t *v)
 {
-    for (unsigned i = 1; i <= jk->s; ++i)
+    for (unsigned i = 1; i <= jk->s && i <= 4u; ++i)
         v[i - 1u] = (uint32_t)jk->m[i - 1u] << (32u - i);
     for (unsigned i = jk->s + 1u; i <= 32u; ++i) {
         uint32_t x = v[i - jk->s - 1u] ^ (v[i - jk->s - 1u] >> jk->s);
