@@ -14,6 +14,10 @@
 
 static int base_ok(unsigned base) { return base >= 2u && base <= MCS_OWEN_MAX_BASE; }
 
+/* 1 <= k <= MCS_OWEN_MAX_K, written so a 32-bit size_t raises no
+ * always-false comparison. */
+static int k_ok(size_t k) { return k >= 1u && (uint64_t)k - 1u < (uint64_t)MCS_OWEN_MAX_K; }
+
 /* L of a base in range: the largest L with b^L <= 2^44. */
 static unsigned digits_of(unsigned base)
 {
@@ -139,7 +143,7 @@ static mcs_status check_init(const mcs_owen *ow, size_t k, size_t dim, const dou
     mcs_status st = mcs_owen_len(dims, bases, &need);
     if (st != MCS_OK)
         return st;
-    if (k == 0u || (uint64_t)k > (uint64_t)MCS_OWEN_MAX_K)
+    if (!k_ok(k))
         return MCS_ERR_K_RANGE;
     if (dim == 0u || k > SIZE_MAX / dim || (dims == 2u && axes[0] == axes[1]))
         return MCS_ERR_DOMAIN;
@@ -234,8 +238,7 @@ static mcs_status check_set(const mcs_owen *ow, const void *out)
 {
     if (ow == NULL || out == NULL)
         return MCS_ERR_NULL;
-    if ((ow->dims != 1u && ow->dims != 2u) || ow->k == 0u ||
-        (uint64_t)ow->k > (uint64_t)MCS_OWEN_MAX_K || ow->pairs == NULL)
+    if ((ow->dims != 1u && ow->dims != 2u) || !k_ok(ow->k) || ow->pairs == NULL)
         return MCS_ERR_UNINIT;
     for (size_t d = 0; d < 2u; ++d) {
         const int on = d < ow->dims;
