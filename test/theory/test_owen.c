@@ -288,6 +288,10 @@ static void test_bad_calls_change_nothing(void)
     TEST_ASSERT_EQUAL_INT(MCS_ERR_DOMAIN, mcs_owen_init(&ow, 64u, 2u, pts, 2u, far, bases, work, len));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_DOMAIN, mcs_owen_init(&ow, 64u, 2u, pts, 2u, ax01, bad_b, work, len));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_K_RANGE, mcs_owen_init(&ow, 0u, 2u, pts, 2u, ax01, bases, work, len));
+    /* The adversarial table passes axes and bases as scalars: their NULLs here. */
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_owen_init(&ow, 64u, 2u, pts, 2u, NULL, bases, work, len));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_owen_init(&ow, 64u, 2u, pts, 2u, ax01, NULL, work, len));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_owen_len(2u, NULL, &len));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_owen_init(&ow, 64u, 2u, (const double *)(void *)work, 2u,
                                                        ax01, bases, work, len));
     TEST_ASSERT_EQUAL_MEMORY(&before, &ow, sizeof ow);
