@@ -26,6 +26,7 @@
 #include "mcspec/discrepancy.h"
 #include "mcspec/spacing.h"
 #include "mcspec/theory.h"
+#include "mcspec/owen.h"
 #include "mcspec/eq.h"
 #include "mcspec/io.h"
 
