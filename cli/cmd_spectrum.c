@@ -24,7 +24,7 @@ static const char help[] =
     "usage: mcspec spectrum [--n N] [--weights] [--wrap] [--csv]\n"
     "                       [--plot FILE [--log]] [--save FILE] [FILE|-]\n"
     "       mcspec spectrum [--freq F|auto] [--dim 1|2] [--dims I[,J]] [--radial\n"
-    "                       [--bin-width W]] [--format utk|psa] [--wrap] [--csv]\n"
+    "                       [--bin-width W]] [--norm] [--format utk|psa] [--wrap] [--csv]\n"
     "                       [--plot FILE [--log]] [--pfm FILE] [--save FILE] [FILE...|-]\n"
     "\n"
     "The Fourier spectrum of point sets read from FILE (or standard input, given\n"
@@ -68,15 +68,15 @@ static const char help[] =
     CLI_STR(MCS_POINTSET2D_MAX_FREQ) " in 2D, memory allowing (about 540 F^2 B in 2D);\n"
     "               'auto', and the default in 2D: utk's and psa's rule, below\n"
     "  --dim D      coordinates per point, 1 (default) or 2 (point sets)\n"
-    "  --dims, --bin-width, --format, --pfm: see the conventions below\n"
+    "  --dims, --bin-width, --norm, --format, --pfm: see the conventions below\n"
     "  --radial     --dim 2: one row per annulus instead of per wave vector\n"
     "  --weights    each line holds a point and its weight (binned only)\n"
     "  --wrap       take coordinates modulo 1 (default: outside [0,1) is an error)\n"
     "  --csv        print CSV only: the header, exactly\n"
     "               freq,mean_re,mean_im,mean_stderr,power,power_stderr  (binned)\n"
-    "               freq,power,power_stderr,freq_norm           (--freq, 1D)\n"
-    "               kx,ky,power,power_stderr,kx_norm,ky_norm    (2D)\n"
-    "               radius,power,power_stderr,anisotropy_db,radius_norm (--radial)\n"
+    "               freq,power,power_stderr                     (--freq, 1D)\n"
+    "               kx,ky,power,power_stderr                    (2D)\n"
+    "               radius,power,power_stderr,anisotropy_db     (--radial)\n"
     "               and one row per frequency, wave vector or annulus (an empty\n"
     "               field: no value)\n"
     "  --plot FILE  also draw the power spectrum (k >= 1) with its standard-error\n"
@@ -105,9 +105,9 @@ static const char help_more[] =
     "               A set's average over an annulus is the size-weighted average of\n"
     "               its unit annuli, and the standard error that of those per-set\n"
     "               averages over the sets (not an average of standard errors)\n"
-    "  *_norm       the last CSV columns (point sets only): each integer frequency\n"
-    "               over sqrt(K), K the most points in a set (freq_norm;\n"
-    "               kx_norm,ky_norm; radius_norm), after every column above\n"
+    "  --norm       point sets: append the normalised frequency, each integer\n"
+    "               frequency over sqrt(K), K the most points in a set, after\n"
+    "               every column above: freq_norm; kx_norm,ky_norm; radius_norm\n"
     "  --format F   utk (default): as under Input above; psa: one set per file,\n"
     "               the point count alone on the first line, then that many point\n"
     "               lines, no '#' lines; give several files for several sets;\n"
@@ -134,6 +134,7 @@ typedef struct {
     const char *save;
     const char *pfm;
     int log_y;             /* --log */
+    int norm;              /* --norm */
     int freq_auto;         /* F from the rule (no --freq in 2D, or --freq auto) */
     cli_ps_input in;       /* --format, --dims, --wrap, the point sets' dimension */
 } spectrum_opts;
@@ -160,8 +161,8 @@ static int parse_freq(spectrum_opts *o)
     const size_t cap = freq_cap(o->dim);
     uint64_t v = 0;
     if (cli_parse_u64(o->freq_text, 1u, cap, &v) != 0)
-        return cli_fail(CMD, "--freq expects 'auto' or a whole number from 1 to %zu for --dim "
-                        "%zu (%s), not '%s'", cap, o->dim,
+        return cli_fail(CMD, "--freq expects a whole number from 1 to %zu for --dim %zu (%s), "
+                        "not '%s'", cap, o->dim,
                         two ? "MCS_POINTSET2D_MAX_FREQ" : "MCS_POINTSET_MAX_FREQ", o->freq_text);
     o->freq = (size_t)v;
     return 0;
@@ -194,13 +195,13 @@ static int check_mode(spectrum_opts *o, int n_given, int width_given)
         return rc;
     const int points = o->freq != 0u || o->freq_auto;
     if (!points && o->radial)
-        return cli_fail(CMD, "--radial needs --dim 2");
-    if (!points && (o->in.psa || o->pfm != NULL))
+        return cli_fail(CMD, "--radial needs --dim 2 --freq F (or --dim 2 alone: the default F)");
+    if (!points && (o->in.psa || o->pfm != NULL || o->norm))
         return cli_fail(CMD, "%s is for point sets: add --freq F or --dim 2",
-                        o->pfm != NULL ? "--pfm" : "--format psa");
+                        o->pfm != NULL ? "--pfm" : o->norm ? "--norm" : "--format psa");
     if (!points && o->npaths > 1u)
-        return cli_fail(CMD, "the binned spectrum reads one FILE; several files need --freq F "
-                        "or --dim 2");
+        return cli_fail(CMD, "unexpected argument '%s': the binned spectrum reads one FILE "
+                        "(several files need --freq F or --dim 2)", o->paths[1]);
     if (width_given && !o->radial)
         return cli_fail(CMD, "--bin-width needs --radial (the annuli of --dim 2)");
     if (o->pfm != NULL && o->dim != 2u)
@@ -248,6 +249,7 @@ static int parse(int argc, char **argv, spectrum_opts *o)
         {"plot", CLI_OPT_STRING, &o->plot, 0, 0, 0},
         {"pfm", CLI_OPT_STRING, &o->pfm, 0, 0, 0},
         {"log", CLI_OPT_FLAG, &o->log_y, 0, 0, 0},
+        {"norm", CLI_OPT_FLAG, &o->norm, 0, 0, 0},
         {"save", CLI_OPT_STRING, &o->save, 0, 0, 0},
     };
     const size_t max_args = (size_t)argc + 1u;
@@ -389,10 +391,12 @@ static int report_points(const spectrum_opts *o, const cli_ps_sink *sink,
     const double root = sqrt((double)stats->k_max);
     if (o->dim == 1u)
         snprintf(what, sizeof what, "%s: %s, point sets in 1D, no binning: "
-                 "P(k) = |sum_j exp(-2 pi i k x_j)|^2 / K, k = 0..F", CMD, name);
+                 "P(k) = |sum_j exp(-2 pi i k x_j)|^2 / K, k = 0..F, F = %zu", CMD, name,
+                 o->freq);
     else
         snprintf(what, sizeof what, "%s: %s, point sets in 2D, no binning: "
-                 "P(k) = |sum_j exp(-2 pi i k.x_j)|^2 / K, |kx|, |ky| <= F", CMD, name);
+                 "P(k) = |sum_j exp(-2 pi i k.x_j)|^2 / K, |kx|, |ky| <= F = %zu", CMD, name,
+                 o->freq);
     if (o->freq_auto)
         snprintf(fline, sizeof fline, "F = %zu: the default of utk and psa, ceil(5 sqrt(K)) = "
                  "%zu for K = %zu (the most points in a set), capped at %zu", o->freq,
@@ -405,8 +409,8 @@ static int report_points(const spectrum_opts *o, const cli_ps_sink *sink,
     char annuli[96] = "";
     if (o->radial)
         snprintf(annuli, sizeof annuli, "annuli r <= |k| < r + %zu (--bin-width); ", o->width);
-    snprintf(extra, sizeof extra, "%s*_norm columns: frequency / sqrt(K) = frequency / %.6g",
-             annuli, root);
+    snprintf(extra, sizeof extra, "%s%s%.6g", annuli,
+             o->norm ? "*_norm columns: frequency / sqrt(K) = frequency / " : "sqrt(K) = ", root);
     const char *const notes[] = {what, fline, counts, extra, "", NULL};
     k_range(stats, kset, sizeof kset);
     snprintf(title, sizeof title, "%s: point-set spectrum, F = %zu", name, o->freq);
@@ -414,7 +418,7 @@ static int report_points(const spectrum_opts *o, const cli_ps_sink *sink,
              (unsigned long long)stats->sets, kset);
     const cli_ps_report rep = {o->csv, o->radial, o->plot, o->log_y, title, sub, NULL, NULL, notes};
     const cli_ps_bins bins = {o->width, sink->nbins, sink, cli_ps_sink_bin};
-    const cli_ps_extra ex = {root, o->width > 1u ? &bins : NULL, o->pfm};
+    const cli_ps_extra ex = {o->norm ? root : 0.0, o->width > 1u ? &bins : NULL, o->pfm};
     if (o->dim == 1u)
         return cli_report_pointset_with(CMD, &rep, &ex, sink->acc.obj);
     return cli_report_pointset2d_with(CMD, &rep, &ex, sink->acc.obj);
