@@ -1,6 +1,7 @@
 /* Spectrum rows, table and CSV (see output.h). */
 #include "output.h"
 #include "cli.h"
+#include "atomic.h"
 #include "plot.h"
 
 #include <math.h>
@@ -8,6 +9,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 double cli_or_nan(mcs_status st, const double *v)
 {
@@ -320,6 +322,33 @@ static int rows2d(const char *cmd, const cli_ps_report *rep, const cli_ps_extra 
     return rc;
 }
 
+int cli_write_pfm(const char *cmd, const char *path, const cli_ps_row *plane, size_t nplane)
+{
+    /* (2F + 1)^2 rows, ky = -F..F outer, kx = -F..F inner: PFM's order,
+     * whose first scan line is the bottom one. */
+    const size_t side = (size_t)(2 * plane[nplane - 1u].kx + 1);
+    char head[64];
+    const int hlen = snprintf(head, sizeof head, "Pf\n%zu %zu\n-1.0\n", side, side);
+    const size_t len = (size_t)hlen + 4u * nplane;
+    unsigned char *buf = cli_alloc(cmd, 1, len);
+    if (buf == NULL)
+        return CLI_EXIT_FAIL;
+    memcpy(buf, head, (size_t)hlen);
+    for (size_t i = 0; i < nplane; ++i) {
+        const float v = (float)plane[i].power;
+        uint32_t u = 0u;
+        memcpy(&u, &v, sizeof u);
+        unsigned char *o = buf + hlen + 4u * i; /* little-endian, the scale's sign says */
+        o[0] = (unsigned char)(u & 0xFFu);
+        o[1] = (unsigned char)((u >> 8) & 0xFFu);
+        o[2] = (unsigned char)((u >> 16) & 0xFFu);
+        o[3] = (unsigned char)(u >> 24);
+    }
+    const int rc = cli_write_atomic(cmd, path, buf, len);
+    free(buf);
+    return rc;
+}
+
 int cli_report_pointset2d(const char *cmd, const cli_ps_report *rep, const mcs_pointset2d *acc)
 {
     const cli_ps_extra none = {0.0, NULL, NULL};
@@ -332,7 +361,7 @@ int cli_report_pointset2d_with(const char *cmd, const cli_ps_report *rep,
     const size_t f = acc->freq_max;
     /* The plane's (2F + 1)^2 rows only where they are printed or drawn: at
      * F = 2048 they are 1.2 GB, the annuli 2049 rows. */
-    const int need_plane = !rep->radial || rep->plot != NULL;
+    const int need_plane = !rep->radial || rep->plot != NULL || extra->pfm != NULL;
     cli_ps_row *plane =
         need_plane ? cli_alloc(cmd, cli_ps_row_count(CLI_PS_2D, f), sizeof *plane) : NULL;
     cli_ps_row *ring = cli_alloc(cmd, cli_ps_row_count(CLI_PS_RADIAL, f), sizeof *ring);
@@ -345,6 +374,8 @@ int cli_report_pointset2d_with(const char *cmd, const cli_ps_report *rep,
         const cli_plot_info info = {rep->title, rep->subtitle, exact, NULL, NULL, rep->log_y};
         rc = cli_plot_pointset2d(cmd, rep->plot, &info, plane, nplane, ring, nring);
     }
+    if (rc == 0 && extra->pfm != NULL)
+        rc = cli_write_pfm(cmd, extra->pfm, plane, nplane);
     if (rc == 0)
         print_notes(rep);
     if (rc == 0 && rep->radial)

@@ -88,6 +88,13 @@ void cli_print_ps(int csv, cli_ps_layout layout, int with_exact, const cli_ps_ro
 void cli_print_ps_norm(int csv, cli_ps_layout layout, int with_exact, double norm,
                        const cli_ps_row *rows, size_t nrows);
 
+/* The 2D rows plane[nplane] (CLI_PS_2D, (2F + 1)^2 of them) as a PFM image
+ * at path, written atomically: "Pf", side 2F + 1 both ways, scale -1.0
+ * (little-endian), then <P> as float32 per pixel, the first scan line
+ * ky = -F (the bottom of the image, as the format says), kx = -F first in a
+ * line; DC included. Returns 0 or an exit status after a message. */
+int cli_write_pfm(const char *cmd, const char *path, const cli_ps_row *plane, size_t nplane);
+
 /* 1D rows as spectrum rows for cli_plot_spectrum (power, its standard error,
  * exact; the rest NaN). */
 void cli_ps_as_spectrum(const cli_ps_row *rows, size_t nrows, cli_spectrum_row *out);

@@ -234,6 +234,43 @@ usage_error "--dims 0, (no second)" "--dims expects" "$MCSPEC" spectrum --dims 0
 usage_error "--dims against --dim" '--dims 0,2 reads 2 coordinates but --dim is 1' "$MCSPEC" spectrum --dim 1 --dims 0,2 --freq 2 "$tmp/p3.txt"
 usage_error "--dims 1 binned" '--dims 1 \(1D\) needs --freq' "$MCSPEC" spectrum --dims 1 "$tmp/p3.txt"
 
+# ---- --pfm -------------------------------------------------------------------
+if succeeds "--pfm" "$MCSPEC" spectrum --dim 2 --freq 12 --csv --pfm "$tmp/w.pfm" "$tmp/w.txt"; then
+    cp "$tmp/out" "$tmp/plane.csv"
+    [ "$(head -c 14 "$tmp/w.pfm" | od -An -c | tr -d ' \n')" = 'Pf\n2525\n-1.0\n' ] && ok ||
+        bad "--pfm header: $(head -c 14 "$tmp/w.pfm" | od -An -c)"
+    [ "$(wc -c <"$tmp/w.pfm")" -eq $((14 + 4 * 25 * 25)) ] && ok || bad "--pfm: $(wc -c <"$tmp/w.pfm") bytes, not 14 + 4 x 625"
+    if [ "$have_numpy" = 1 ]; then
+        problems=$("$PYTHON" - "$tmp/w.pfm" "$tmp/plane.csv" <<'EOF'
+import sys, numpy as np
+raw = open(sys.argv[1], 'rb').read()
+parts = raw.split(b'\n', 3)
+w, h = map(int, parts[1].split()); scale = float(parts[2])
+img = np.frombuffer(parts[3], dtype='<f4' if scale < 0 else '>f4').reshape(h, w)
+rows = np.loadtxt(sys.argv[2], delimiter=',', skiprows=1)
+F = (w - 1) // 2
+bad = []
+for kx, ky, p in rows[:, :3]:
+    # PFM: the first scan line is the bottom one, ky = -F.
+    v = img[int(ky) + F, int(kx) + F]
+    if v != np.float32(p): bad.append('(%d,%d): %r vs %r' % (kx, ky, v, p))
+if scale != -1.0 or w != h: bad.append('scale %r, %d x %d' % (scale, w, h))
+if len(rows) != w * h: bad.append('%d rows for %d pixels' % (len(rows), w * h))
+print('; '.join(bad[:5]))
+EOF
+)
+        [ -z "$problems" ] && ok || bad "--pfm read back: $problems"
+    else
+        skip "--pfm read back (no numpy at $PYTHON)"
+    fi
+fi
+succeeds "--pfm with --radial" "$MCSPEC" spectrum --dim 2 --freq 12 --radial --csv --pfm "$tmp/w2.pfm" "$tmp/w.txt" &&
+    { cmp -s "$tmp/w.pfm" "$tmp/w2.pfm" && ok || bad "--pfm with --radial differs from without"; }
+usage_error "--pfm in 1D" '--pfm needs --dim 2' "$MCSPEC" spectrum --freq 4 --pfm "$tmp/x.pfm" "$tmp/one.txt"
+usage_error "--pfm binned" '--pfm is for point sets' "$MCSPEC" spectrum --pfm "$tmp/x.pfm" "$tmp/one.txt"
+usage_error "--pfm onto a directory" "directory" "$MCSPEC" spectrum --dim 2 --freq 2 --pfm "$tmp" "$tmp/w.txt"
+usage_error "--pfm without a value" '--pfm needs a value' "$MCSPEC" spectrum --dim 2 --freq 2 --pfm
+
 # ---- bad values ---------------------------------------------------------------
 usage_error "--bin-width 0" '--bin-width expects a whole number' "$MCSPEC" spectrum --dim 2 --radial --bin-width 0 "$tmp/w.txt"
 usage_error "--bin-width x" "--bin-width expects a whole number.*not 'x'" "$MCSPEC" spectrum --dim 2 --radial --bin-width x "$tmp/w.txt"
