@@ -17,7 +17,10 @@
 #include <string.h>
 #include <unistd.h>
 
-#define CMD "mcspec spectrum"
+/* The table's name; messages name the command running (mcspec-mpi's too). */
+#define TITLE "mcspec spectrum"
+static const char *cmd_name = TITLE;
+#define CMD cmd_name
 #define DEFAULT_N 256
 
 static const char help[] =
@@ -136,6 +139,7 @@ typedef struct {
     int log_y;             /* --log */
     int norm;              /* --norm */
     int freq_auto;         /* F from the rule (no --freq in 2D, or --freq auto) */
+    const cli_ps_driver *drv; /* mcspec-mpi's, or NULL */
     cli_ps_input in;       /* --format, --dims, --wrap, the point sets' dimension */
 } spectrum_opts;
 
@@ -280,6 +284,10 @@ static int parse(int argc, char **argv, spectrum_opts *o)
         return cli_fail(CMD, "--save records at most %u input files (MCS_IO_PROV_MAX_INPUTS), "
                         "not %zu: merge the records of smaller runs with mcspec merge",
                         MCS_IO_PROV_MAX_INPUTS, o->npaths);
+    if (o->drv != NULL && (o->freq == 0u && !o->freq_auto))
+        return cli_fail(CMD, "the ranks share point-set spectra only: give --freq F or --dim 2");
+    if (o->drv != NULL && (o->npaths == 0u || strcmp(o->paths[0], "-") == 0))
+        return cli_fail(CMD, "give the point files: the ranks cannot share standard input");
     if (o->npaths == 0u && isatty(STDIN_FILENO))
         return cli_fail(CMD, "no input: give a point file, or '-' to read standard input");
     o->in.dim = o->dim;
@@ -360,7 +368,7 @@ static int report(const spectrum_opts *o, const cli_acc *acc, const cli_pointset
 {
     const char *name = cli_input_name(o->npaths > 0u ? o->paths[0] : NULL);
     char what[256], counts[256];
-    snprintf(what, sizeof what, "%s: %s, N = %zu bins, bin floor(N x)%s", CMD, name, o->n,
+    snprintf(what, sizeof what, "%s: %s, N = %zu bins, bin floor(N x)%s", TITLE, name, o->n,
              o->weights ? ", weights from the second column" : "");
     snprintf(counts, sizeof counts, "trials (point sets) %llu, K per set: min %zu, max %zu "
              "(%lu lines read)", (unsigned long long)stats->sets, stats->k_min, stats->k_max,
@@ -391,11 +399,11 @@ static int report_points(const spectrum_opts *o, const cli_ps_sink *sink,
     const double root = sqrt((double)stats->k_max);
     if (o->dim == 1u)
         snprintf(what, sizeof what, "%s: %s, point sets in 1D, no binning: "
-                 "P(k) = |sum_j exp(-2 pi i k x_j)|^2 / K, k = 0..F, F = %zu", CMD, name,
+                 "P(k) = |sum_j exp(-2 pi i k x_j)|^2 / K, k = 0..F, F = %zu", TITLE, name,
                  o->freq);
     else
         snprintf(what, sizeof what, "%s: %s, point sets in 2D, no binning: "
-                 "P(k) = |sum_j exp(-2 pi i k.x_j)|^2 / K, |kx|, |ky| <= F = %zu", CMD, name,
+                 "P(k) = |sum_j exp(-2 pi i k.x_j)|^2 / K, |kx|, |ky| <= F = %zu", TITLE, name,
                  o->freq);
     if (o->freq_auto)
         snprintf(fline, sizeof fline, "F = %zu: the default of utk and psa, ceil(5 sqrt(K)) = "
@@ -427,6 +435,7 @@ static int report_points(const spectrum_opts *o, const cli_ps_sink *sink,
 /* What the point-set passes need. */
 typedef struct {
     cli_ps_sink *sink;
+    const cli_ps_driver *drv;
 } points_ctx;
 
 static int count_set(void *ctx, uint64_t set, size_t k, const double *pts, const char *name)
@@ -437,8 +446,10 @@ static int count_set(void *ctx, uint64_t set, size_t k, const double *pts, const
 
 static int absorb_set(void *ctx, uint64_t set, size_t k, const double *pts, const char *name)
 {
-    (void)set, (void)name;
+    (void)name;
     points_ctx *c = ctx;
+    if (c->drv != NULL)
+        return c->drv->set(c->drv->ctx, c->sink, set, k, pts);
     int rc = cli_ps_sink_transform(c->sink, k, pts);
     return rc != 0 ? rc : cli_ps_sink_absorb(c->sink, c->sink->one.obj);
 }
@@ -471,11 +482,20 @@ static int run_points(spectrum_opts *o, int from_stdin, uint32_t crc, uint64_t b
     cli_ps_sink sink;
     rc = cli_ps_sink_init(CMD, o->dim, o->freq, o->width, &sink);
     cli_progress progress;
-    cli_progress_init(&progress, !o->csv, CMD, "sets read", 0);
-    points_ctx ctx = {&sink};
+    const int root = o->drv == NULL || o->drv->is_root;
+    cli_progress_init(&progress, !o->csv && root, CMD, "sets read", 0);
+    points_ctx ctx = {&sink, o->drv};
+    if (o->drv != NULL)
+        rc = o->drv->start(o->drv->ctx, rc);
     if (rc == 0)
         rc = cli_ps_read(CMD, &o->in, o->paths, o->npaths, absorb_set, &ctx, &stats, &progress);
     cli_progress_end(&progress);
+    if (o->drv != NULL)
+        rc = o->drv->finish(o->drv->ctx, &sink, rc);
+    if (!root) {
+        cli_ps_sink_free(&sink);
+        return rc;
+    }
     mcs_io_provenance *prov = rc == 0 && o->save != NULL ? cli_alloc(CMD, 1, sizeof *prov) : NULL;
     if (rc == 0 && o->save != NULL)
         rc = prov == NULL ? CLI_EXIT_FAIL : cli_ps_provenance(CMD, o->paths, o->npaths, crc, bytes, prov);
@@ -523,8 +543,15 @@ static int run_binned(spectrum_opts *o, int from_stdin, uint32_t crc, uint64_t b
 
 int cli_cmd_spectrum(int argc, char **argv)
 {
+    return cli_spectrum_run(argc, argv, NULL);
+}
+
+int cli_spectrum_run(int argc, char **argv, const cli_ps_driver *drv)
+{
+    cmd_name = drv != NULL ? drv->cmd : TITLE;
     spectrum_opts o;
     memset(&o, 0, sizeof o);
+    o.drv = drv;
     o.n = DEFAULT_N;
     o.dim = 1u;
     o.width = 1u;

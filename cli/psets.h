@@ -105,4 +105,26 @@ int cli_ps_checksum_path(const char *cmd, const char *path, uint32_t *crc, uint6
 int cli_ps_provenance(const char *cmd, const char *const *paths, size_t npaths,
                       uint32_t stdin_crc, uint64_t stdin_bytes, mcs_io_provenance *prov);
 
+/* How the sets of a point-set run reach the sink: one process (NULL), or
+ * mcspec-mpi's ranks. Every rank runs the whole command on the same
+ * arguments (parsing, reading every file, the default F), so all see the
+ * same sets in the same order; set() gets each set on every rank and does
+ * that rank's part (rank 0: absorb the sets in order, its own transformed
+ * here and the others' received; rank r: transform and send the sets
+ * m = r mod P). Only the root prints, plots and saves. */
+typedef struct {
+    const char *cmd;  /* the messages' prefix ("mcspec-mpi spectrum: rank 0") */
+    int is_root;
+    void *ctx;
+    /* after every rank set up its sink (rc its status): the status all go on with */
+    int (*start)(void *ctx, int rc);
+    int (*set)(void *ctx, cli_ps_sink *sink, uint64_t set, size_t k, const double *pts);
+    /* after the last set: 0, or the status every rank exits with */
+    int (*finish)(void *ctx, cli_ps_sink *sink, int rc);
+} cli_ps_driver;
+
+/* `mcspec spectrum` (argv[0] is "spectrum"), with drv NULL for one process.
+ * Under a driver, point sets only, from files only. Returns the exit status. */
+int cli_spectrum_run(int argc, char **argv, const cli_ps_driver *drv);
+
 #endif /* MCSPEC_CLI_PSETS_H */
