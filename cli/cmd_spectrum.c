@@ -27,8 +27,9 @@ static const char help[] =
     "usage: mcspec spectrum [--n N] [--weights] [--wrap] [--csv]\n"
     "                       [--plot FILE [--log]] [--save FILE] [FILE|-]\n"
     "       mcspec spectrum [--freq F|auto] [--dim 1|2] [--dims I[,J]] [--radial\n"
-    "                       [--bin-width W]] [--norm] [--format utk|psa] [--wrap] [--csv]\n"
-    "                       [--plot FILE [--log]] [--pfm FILE] [--save FILE] [FILE...|-]\n"
+    "                       [--bin-width W]] [--norm] [--path P] [--format utk|psa]\n"
+    "                       [--wrap] [--csv] [--plot FILE [--log]] [--pfm FILE]\n"
+    "                       [--save FILE] [FILE...|-]\n"
     "\n"
     "The Fourier spectrum of point sets read from FILE (or standard input, given\n"
     "as '-' or by giving no FILE): each set is one trial.\n"
@@ -120,6 +121,10 @@ static const char help_more[] =
     "               --dim 2), '--dims 1' the second coordinate as a 1D set\n"
     "  FILE...      several files are read in order, their sets one run (--save\n"
     "               records up to 16 files; standard input only alone)\n"
+    "  --path P     point sets: auto (default: per set the faster of the two by\n"
+    "               the measured cost model), direct (the exact sum, O(K F^d)) or\n"
+    "               nufft (the type-1 NUFFT, within 1e-9 max(P, 1) of it), to check\n"
+    "               one against the other\n"
     "  --pfm FILE   2D: also write the mean periodogram <P(kx, ky)>, |kx|, |ky| <= F,\n"
     "               as a PFM image (\"Pf\", one little-endian float per pixel, rows\n"
     "               from ky = -F at the bottom to ky = F at the top, kx = -F at the\n"
@@ -138,6 +143,7 @@ typedef struct {
     const char *pfm;
     int log_y;             /* --log */
     int norm;              /* --norm */
+    mcs_pointset_path path; /* --path */
     int freq_auto;         /* F from the rule (no --freq in 2D, or --freq auto) */
     const cli_ps_driver *drv; /* mcspec-mpi's, or NULL */
     cli_ps_input in;       /* --format, --dims, --wrap, the point sets' dimension */
@@ -200,9 +206,13 @@ static int check_mode(spectrum_opts *o, int n_given, int width_given)
     const int points = o->freq != 0u || o->freq_auto;
     if (!points && o->radial)
         return cli_fail(CMD, "--radial needs --dim 2 --freq F (or --dim 2 alone: the default F)");
-    if (!points && (o->in.psa || o->pfm != NULL || o->norm))
+    const int forced = o->path != MCS_POINTSET_PATH_AUTO;
+    if (!points && (o->in.psa || o->pfm != NULL || o->norm || forced))
         return cli_fail(CMD, "%s is for point sets: add --freq F or --dim 2",
-                        o->pfm != NULL ? "--pfm" : o->norm ? "--norm" : "--format psa");
+                        o->pfm != NULL ? "--pfm"
+                        : o->norm      ? "--norm"
+                        : forced       ? "--path"
+                                       : "--format psa");
     if (!points && o->npaths > 1u)
         return cli_fail(CMD, "unexpected argument '%s': the binned spectrum reads one FILE "
                         "(several files need --freq F or --dim 2)", o->paths[1]);
@@ -224,21 +234,9 @@ static int check_mode(spectrum_opts *o, int n_given, int width_given)
     return 0;
 }
 
-/* "psa" or "utk" into o->in.psa. */
-static int parse_format(spectrum_opts *o, const char *format)
-{
-    if (format == NULL || strcmp(format, "utk") == 0)
-        return 0;
-    if (strcmp(format, "psa") == 0) {
-        o->in.psa = 1;
-        return 0;
-    }
-    return cli_fail(CMD, "--format expects utk or psa, not '%s'", format);
-}
-
 static int parse(int argc, char **argv, spectrum_opts *o)
 {
-    const char *dims = NULL, *format = NULL;
+    const char *dims = NULL, *format = NULL, *path = NULL;
     cli_opt opts[] = {
         {"n", CLI_OPT_SIZE, &o->n, 1, MCS_MAX_N, 0},
         {"freq", CLI_OPT_STRING, &o->freq_text, 0, 0, 0},
@@ -254,6 +252,7 @@ static int parse(int argc, char **argv, spectrum_opts *o)
         {"pfm", CLI_OPT_STRING, &o->pfm, 0, 0, 0},
         {"log", CLI_OPT_FLAG, &o->log_y, 0, 0, 0},
         {"norm", CLI_OPT_FLAG, &o->norm, 0, 0, 0},
+        {"path", CLI_OPT_STRING, &path, 0, 0, 0},
         {"save", CLI_OPT_STRING, &o->save, 0, 0, 0},
     };
     const size_t max_args = (size_t)argc + 1u;
@@ -265,7 +264,9 @@ static int parse(int argc, char **argv, spectrum_opts *o)
     if (rc != CLI_PARSED)
         return rc;
     o->npaths = p.nargs;
-    rc = parse_format(o, format);
+    rc = cli_ps_parse_format(CMD, format, &o->in);
+    if (rc == 0)
+        rc = cli_ps_parse_path(CMD, path, &o->path);
     if (rc == 0 && o->in.psa && !opts[2].given && dims == NULL)
         o->dim = 2u; /* psa's point sets are 2D */
     if (rc == 0)
@@ -481,6 +482,7 @@ static int run_points(spectrum_opts *o, int from_stdin, uint32_t crc, uint64_t b
     }
     cli_ps_sink sink;
     rc = cli_ps_sink_init(CMD, o->dim, o->freq, o->width, &sink);
+    sink.path = o->path;
     cli_progress progress;
     const int root = o->drv == NULL || o->drv->is_root;
     cli_progress_init(&progress, !o->csv && root, CMD, "sets read", 0);

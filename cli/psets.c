@@ -46,6 +46,30 @@ int cli_ps_parse_dims(const char *cmd, const char *text, cli_ps_input *in)
     return 0;
 }
 
+int cli_ps_parse_format(const char *cmd, const char *format, cli_ps_input *in)
+{
+    if (format == NULL || strcmp(format, "utk") == 0)
+        return 0;
+    if (strcmp(format, "psa") == 0) {
+        in->psa = 1;
+        return 0;
+    }
+    return cli_fail(cmd, "--format expects utk or psa, not '%s'", format);
+}
+
+int cli_ps_parse_path(const char *cmd, const char *text, mcs_pointset_path *path)
+{
+    static const char *const names[] = {"auto", "direct", "nufft"};
+    static const mcs_pointset_path paths[] = {MCS_POINTSET_PATH_AUTO, MCS_POINTSET_PATH_DIRECT,
+                                              MCS_POINTSET_PATH_NUFFT};
+    for (size_t i = 0; text != NULL && i < 3u; ++i)
+        if (strcmp(text, names[i]) == 0) {
+            *path = paths[i];
+            return 0;
+        }
+    return text == NULL ? 0 : cli_fail(cmd, "--path expects auto, direct or nufft, not '%s'", text);
+}
+
 /* What the reader's callback needs to project a set and pass it on. */
 typedef struct {
     const char *cmd;
@@ -171,10 +195,14 @@ int cli_ps_sink_transform(cli_ps_sink *s, size_t k, const double *pts)
         mcs_pointset2d *o = s->one.obj;
         st = mcs_pointset2d_init(o, s->freq, 0u, o->mem, o->bytes);
         if (st == MCS_OK)
+            st = mcs_pointset2d_set_path(o, s->path);
+        if (st == MCS_OK)
             st = mcs_pointset2d_add(o, k, pts);
     } else {
         mcs_pointset *o = s->one.obj;
         st = mcs_pointset_init(o, s->freq, 0u, o->mem, o->bytes);
+        if (st == MCS_OK)
+            st = mcs_pointset_set_path(o, s->path);
         if (st == MCS_OK)
             st = mcs_pointset_add(o, k, pts);
     }

@@ -47,6 +47,11 @@ typedef struct {
  * in->ndims. 0, or an exit status after one line on stderr. */
 int cli_ps_parse_dims(const char *cmd, const char *text, cli_ps_input *in);
 
+/* --format utk|psa (NULL: utk) into in->psa; --path auto|direct|nufft
+ * (NULL: leave *path) into *path. 0 or an exit status after a message. */
+int cli_ps_parse_format(const char *cmd, const char *format, cli_ps_input *in);
+int cli_ps_parse_path(const char *cmd, const char *text, mcs_pointset_path *path);
+
 /* Receives one set of k points of in->dim coordinates (pts[k dim]), the
  * set's number (0-based over all files) and the name of its file. */
 typedef int (*cli_ps_set_fn)(void *ctx, uint64_t set, size_t k, const double *pts,
@@ -63,6 +68,7 @@ int cli_ps_read(const char *cmd, const cli_ps_input *in, const char *const *path
 typedef struct {
     const char *cmd;
     size_t dim, freq, width;
+    mcs_pointset_path path; /* the scratch's path: AUTO, or one forced (--path) */
     cli_acc acc;          /* the run's mcs_pointset or mcs_pointset2d (merges only) */
     cli_acc one;          /* the scratch: one set at a time */
     size_t nbins;         /* annuli of width W: r = 0, W, .., (nbins - 1) W */

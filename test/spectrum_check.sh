@@ -271,6 +271,48 @@ usage_error "--pfm binned" '--pfm is for point sets' "$MCSPEC" spectrum --pfm "$
 usage_error "--pfm onto a directory" "directory" "$MCSPEC" spectrum --dim 2 --freq 2 --pfm "$tmp" "$tmp/w.txt"
 usage_error "--pfm without a value" '--pfm needs a value' "$MCSPEC" spectrum --dim 2 --freq 2 --pfm
 
+# ---- the fast path against the direct sum and the theory (issue 24's "done when", scaled down) ----
+# 16 sets of 256 points at the default F = 80: AUTO (the NUFFT here)
+# against --path direct at every wave vector and annulus, to 1e-9 max(P, 1);
+# random points against <P> = 1 and jittered 16 x 16 against the closed form
+# (mcspec pattern's exact column), within 5 standard errors.
+points 41 16 256 2 >"$tmp/r16.txt"
+awk 'BEGIN { srand(43); for (s = 0; s < 16; ++s) { for (j = 0; j < 16; ++j) for (i = 0; i < 16; ++i)
+        printf "%.17g %.17g\n", (i + rand()) / 16, (j + rand()) / 16; if (s < 15) print "#" } }' >"$tmp/j16.txt"
+# within LABEL A.csv B.csv FIRST: every value column from FIRST on within 1e-9 max(|B|, 1).
+within() {
+    problems=$(awk -F, -v first="$4" 'NR == FNR { a[FNR] = $0; next } FNR > 1 {
+        n = split(a[FNR], x, ",")
+        for (i = first; i <= NF; ++i) { if (x[i] == "" && $i == "") continue
+            d = x[i] - $i; d = d < 0 ? -d : d; s = $i < 0 ? -$i : $i; s = s > 1 ? s : 1
+            if (x[i] == "" || $i == "" || d > 1e-9 * s) { print FNR ": " a[FNR] " vs " $0; exit } } }' "$2" "$3")
+    [ -z "$problems" ] && ok || bad "$1: $problems"
+}
+for kind in r16 j16; do
+    for layout in --radial ""; do
+        t=$kind-plane first=3
+        [ -n "$layout" ] && t=$kind first=2
+        # shellcheck disable=SC2086
+        succeeds "$kind $layout AUTO" "$MCSPEC" spectrum --dim 2 $layout --csv "$tmp/$kind.txt" && cp "$tmp/out" "$tmp/$t-auto.csv"
+        # shellcheck disable=SC2086
+        succeeds "$kind $layout direct" "$MCSPEC" spectrum --dim 2 $layout --path direct --csv "$tmp/$kind.txt" && cp "$tmp/out" "$tmp/$t-direct.csv"
+        [ "$(wc -l <"$tmp/$t-auto.csv")" -eq "$(wc -l <"$tmp/$t-direct.csv")" ] && ok || bad "$kind $layout: row counts differ"
+        within "$kind $layout: AUTO against --path direct" "$tmp/$t-auto.csv" "$tmp/$t-direct.csv" "$first"
+    done
+done
+succeeds "--path nufft" "$MCSPEC" spectrum --dim 2 --radial --path nufft --csv "$tmp/r16.txt" &&
+    within "--path nufft against --path direct" "$tmp/out" "$tmp/r16-direct.csv" 2
+grep -q 'F = 80: the default' "$tmp/j16-auto.csv" && bad "CSV with a note line" || ok
+problems=$(awk -F, 'FNR > 2 { z = ($2 - 1) / $3; if (z < 0) z = -z; if (z > 5) print "r=" $1 " z=" z }' "$tmp/r16-auto.csv")
+[ -z "$problems" ] && ok || bad "random: radial averages against <P> = 1: $problems"
+if succeeds "jittered exact" "$MCSPEC" pattern jittered --dim 2 --k 256 --freq 80 --radial --trials 2 --csv; then
+    problems=$(cut -d, -f5 "$tmp/out" | paste -d, "$tmp/j16-auto.csv" - | awk -F, 'FNR > 2 {
+        z = ($2 - $5) / $3; if (z < 0) z = -z; if ($5 == "" || z > 5) print "r=" $1 " z=" z }')
+    [ -z "$problems" ] && ok || bad "jittered: radial averages against the closed form: $problems"
+fi
+usage_error "--path bogus" "--path expects auto, direct or nufft, not 'bogus'" "$MCSPEC" spectrum --dim 2 --path bogus "$tmp/w.txt"
+usage_error "--path binned" "--path is for point sets" "$MCSPEC" spectrum --path direct "$tmp/one.txt"
+
 # ---- bad values ---------------------------------------------------------------
 usage_error "--bin-width 0" '--bin-width expects a whole number' "$MCSPEC" spectrum --dim 2 --radial --bin-width 0 "$tmp/w.txt"
 usage_error "--bin-width x" "--bin-width expects a whole number.*not 'x'" "$MCSPEC" spectrum --dim 2 --radial --bin-width x "$tmp/w.txt"
