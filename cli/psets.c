@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <stdint.h>
 #include <unistd.h>
 
 size_t cli_default_freq(size_t k_max, size_t cap)
@@ -147,6 +148,34 @@ size_t cli_ps_bin_count(size_t freq, size_t width)
     return (freq + 1u) / width;
 }
 
+/* The run's accumulator: it only merges, so it needs no NUFFT memory
+ * (MCS_POINTSET_DIRECT_ONLY, about a quarter of the scratch's at large F);
+ * header and buffer in one block, as cli_acc_new makes them (cli_acc_free
+ * frees both). */
+static int new_merge_only(const char *cmd, size_t dim, size_t freq, cli_acc *acc)
+{
+    const size_t head = ((dim == 2u ? sizeof(mcs_pointset2d) : sizeof(mcs_pointset)) + 63u) /
+                        64u * 64u;
+    size_t bytes = 0u;
+    mcs_status st = dim == 2u ? mcs_pointset2d_size(freq, MCS_POINTSET_DIRECT_ONLY, &bytes)
+                              : mcs_pointset_size(freq, MCS_POINTSET_DIRECT_ONLY, &bytes);
+    unsigned char *p = st == MCS_OK && bytes <= SIZE_MAX - head ? malloc(head + bytes) : NULL;
+    if (p == NULL)
+        return cli_fail(cmd, "--freq %zu needs %zu more bytes for the run's statistics, more "
+                        "than this machine can allocate", freq, head + bytes);
+    st = dim == 2u ? mcs_pointset2d_init((mcs_pointset2d *)(void *)p, freq,
+                                         MCS_POINTSET_DIRECT_ONLY, p + head, bytes)
+                   : mcs_pointset_init((mcs_pointset *)(void *)p, freq, MCS_POINTSET_DIRECT_ONLY,
+                                       p + head, bytes);
+    if (st != MCS_OK) {
+        free(p);
+        return cli_internal(cmd, "setting up the run's accumulator: %s", mcs_status_str(st));
+    }
+    acc->kind = dim == 2u ? MCS_IO_KIND_POINTSET2D : MCS_IO_KIND_POINTSET;
+    acc->obj = p;
+    return 0;
+}
+
 int cli_ps_sink_init(const char *cmd, size_t dim, size_t freq, size_t width, cli_ps_sink *s)
 {
     memset(s, 0, sizeof *s);
@@ -156,9 +185,9 @@ int cli_ps_sink_init(const char *cmd, size_t dim, size_t freq, size_t width, cli
     s->width = width;
     const mcs_io_kind kind = dim == 2u ? MCS_IO_KIND_POINTSET2D : MCS_IO_KIND_POINTSET;
     const size_t shape[2] = {freq, 0u};
-    int rc = cli_acc_new(cmd, kind, shape, &s->acc);
+    int rc = cli_acc_new(cmd, kind, shape, &s->one);
     if (rc == 0)
-        rc = cli_acc_new(cmd, kind, shape, &s->one);
+        rc = new_merge_only(cmd, dim, freq, &s->acc);
     if (rc != 0 || dim != 2u || width == 1u)
         return rc;
     s->nbins = cli_ps_bin_count(freq, width);
