@@ -395,3 +395,102 @@ int cli_read_values(const char *cmd, const char *path, const char *what, int pos
     }
     return rc;
 }
+
+/* ---- psa's point files -------------------------------------------------------- */
+
+/* The count line of a psa file: a whole number >= 1 alone on its line. */
+static int psa_count(const reader *r, char *line, size_t *count)
+{
+    char *tok[2];
+    const size_t ntok = split(line, tok, 2);
+    uint64_t v = 0;
+    if (ntok != 1u || cli_parse_u64(tok[0], 1u, (uint64_t)SIZE_MAX / 2u, &v) != 0)
+        return cli_fail(r->cmd, "%s: line %lu: a psa file starts with its point count, a whole "
+                        "number >= 1 alone on the line (is this a utk file? drop --format psa)",
+                        r->name, r->line);
+    *count = (size_t)v;
+    return 0;
+}
+
+/* The lines of one psa file: the count, then exactly that many points. */
+static int read_psa_lines(reader *r, const cli_pointset_format *fmt, point_buf *b,
+                          cli_pointset_fn fn, void *ctx, cli_pointset_stats *stats,
+                          cli_progress *progress)
+{
+    size_t want = 0u;
+    unsigned long count_line = 0;
+    char *line = NULL;
+    int got;
+    while ((got = reader_next(r, &line)) > 0) {
+        char *s = line;
+        while (is_blank(*s))
+            ++s;
+        if (*s == '\0')
+            continue;
+        if (*s == '#')
+            return cli_fail(r->cmd, "%s: line %lu: a '#' line: psa's files hold one set, its "
+                            "count on the first line, and no comments (a utk file? drop --format "
+                            "psa)", r->name, r->line);
+        if (count_line == 0u) {
+            int rc = psa_count(r, s, &want);
+            if (rc != 0)
+                return rc;
+            count_line = r->line;
+            continue;
+        }
+        if (b->k == want)
+            return cli_fail(r->cmd, "%s: line %lu: more points than the %zu of line %lu (psa: "
+                            "one set per file, its count first)", r->name, r->line, want,
+                            count_line);
+        char *tok[MAX_COLUMNS];
+        double coord[MAX_COLUMNS] = {0.0}, weight = 1.0;
+        const size_t ntok = split(s, tok, MAX_COLUMNS);
+        if (b->dim == 0u) {
+            if (ntok > CLI_MAX_DIM)
+                return cli_fail(r->cmd, "%s: line %lu: %zu columns: a point has 1 to %u "
+                                "coordinates", r->name, r->line, ntok, CLI_MAX_DIM);
+            b->dim = ntok;
+            stats->dim = ntok;
+        }
+        int rc = parse_point(r, fmt, b->dim, tok, ntok, coord, &weight);
+        if (rc == 0)
+            rc = buf_push(r->cmd, b, coord, weight);
+        if (rc != 0)
+            return rc;
+    }
+    if (got < 0)
+        return CLI_EXIT_USAGE;
+    if (count_line == 0u)
+        return cli_fail(r->cmd, "%s: %s (a psa file starts with its point count)", r->name,
+                        r->line == 0u ? "the input is empty" : "no count line, only blank lines");
+    if (b->k < want)
+        return cli_fail(r->cmd, "%s: line %lu: the file ends after %zu of the %zu points line "
+                        "%lu announces", r->name, r->line, b->k, want, count_line);
+    return emit_set(r, fmt, b, fn, ctx, stats, progress);
+}
+
+int cli_read_psa(const char *cmd, const char *path, const cli_pointset_format *fmt,
+                 cli_pointset_fn fn, void *ctx, cli_pointset_stats *stats,
+                 cli_progress *progress)
+{
+    stats->sets = 0;
+    stats->dim = fmt->dim;
+    stats->k_min = (size_t)-1;
+    stats->k_max = 0;
+    stats->lines = 0;
+    if (fmt->weights)
+        return cli_internal(cmd, "psa's point files carry no weights");
+    reader r;
+    int rc = reader_open(&r, cmd, path);
+    if (rc != 0)
+        return rc;
+    point_buf b = {NULL, NULL, 0, 0, fmt->dim, 0.0};
+    rc = read_psa_lines(&r, fmt, &b, fn, ctx, stats, progress);
+    stats->lines = r.line;
+    if (stats->sets == 0u)
+        stats->k_min = 0;
+    reader_close(&r);
+    free(b.coords);
+    free(b.weights);
+    return rc;
+}

@@ -59,6 +59,15 @@ int cli_read_pointsets(const char *cmd, const char *path, const cli_pointset_for
                        cli_pointset_fn fn, void *ctx, cli_pointset_stats *stats,
                        cli_progress *progress);
 
+/* cli_read_pointsets for one of psa's point files: its first line (blank
+ * lines aside) holds the point count K >= 1 alone, then exactly K point
+ * lines follow, one set per file; no '#' lines and no weights (fmt->weights
+ * must be 0). Coordinates, dim and wrap as fmt says. Returns 0 after one
+ * set, or an exit status after one line on stderr. */
+int cli_read_psa(const char *cmd, const char *path, const cli_pointset_format *fmt,
+                 cli_pointset_fn fn, void *ctx, cli_pointset_stats *stats,
+                 cli_progress *progress);
+
 /* A list of values, one finite number per line ('#' lines and blank lines
  * are skipped), at most max of them; with `nonneg`, each must be >= 0
  * (importance weights: 0 is a bin that is never drawn).

@@ -1,6 +1,7 @@
 /* Spectrum rows, table and CSV (see output.h). */
 #include "output.h"
 #include "cli.h"
+#include "atomic.h"
 #include "plot.h"
 
 #include <math.h>
@@ -8,6 +9,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 double cli_or_nan(mcs_status st, const double *v)
 {
@@ -179,12 +181,16 @@ void cli_print_values(int csv, const double *v, size_t nv)
     putchar('\n');
 }
 
-static void print_ps_header(int csv, cli_ps_layout layout, int with_exact)
+static void print_ps_header(int csv, cli_ps_layout layout, int with_exact, int with_norm)
 {
     static const char *const csv_header[3] = {CLI_POINTSET_CSV_HEADER, CLI_POINTSET2D_CSV_HEADER,
                                               CLI_RADIAL_CSV_HEADER};
+    static const char *const norm_header[3] = {
+        ",freq" CLI_NORM_SUFFIX, ",kx" CLI_NORM_SUFFIX ",ky" CLI_NORM_SUFFIX,
+        ",radius" CLI_NORM_SUFFIX};
     if (csv) {
-        printf("%s%s\n", csv_header[layout], with_exact ? CLI_EXACT_CSV_HEADER : "");
+        printf("%s%s%s\n", csv_header[layout], with_exact ? CLI_EXACT_CSV_HEADER : "",
+               with_norm ? norm_header[layout] : "");
         return;
     }
     if (layout == CLI_PS_1D)
@@ -198,20 +204,31 @@ static void print_ps_header(int csv, cli_ps_layout layout, int with_exact)
         printf(" %13s", "anisotropy_db");
     if (with_exact)
         printf(" %13s %13s", "exact", "z_exact");
+    if (with_norm && layout == CLI_PS_2D)
+        printf(" %13s %13s", "kx" CLI_NORM_SUFFIX, "ky" CLI_NORM_SUFFIX);
+    else if (with_norm)
+        printf(" %13s", layout == CLI_PS_1D ? "freq" CLI_NORM_SUFFIX : "radius" CLI_NORM_SUFFIX);
     putchar('\n');
 }
 
 void cli_print_ps(int csv, cli_ps_layout layout, int with_exact, const cli_ps_row *rows,
                   size_t nrows)
 {
-    print_ps_header(csv, layout, with_exact);
+    cli_print_ps_norm(csv, layout, with_exact, 0.0, rows, nrows);
+}
+
+void cli_print_ps_norm(int csv, cli_ps_layout layout, int with_exact, double norm,
+                       const cli_ps_row *rows, size_t nrows)
+{
+    const int with_norm = norm > 0.0;
+    print_ps_header(csv, layout, with_exact, with_norm);
     for (size_t i = 0; i < nrows; ++i) {
         const cli_ps_row *r = &rows[i];
         if (layout == CLI_PS_2D)
             printf(csv ? "%ld,%ld" : "%5ld %5ld", r->kx, r->ky);
         else
             printf(csv ? "%ld" : (layout == CLI_PS_1D ? "%5ld" : "%6ld"), r->kx);
-        double v[5];
+        double v[7];
         size_t nv = 0u;
         v[nv++] = r->power;
         v[nv++] = r->power_stderr;
@@ -221,6 +238,10 @@ void cli_print_ps(int csv, cli_ps_layout layout, int with_exact, const cli_ps_ro
             v[nv++] = r->exact;
             v[nv++] = r->z_exact;
         }
+        if (with_norm)
+            v[nv++] = (double)r->kx / norm;
+        if (with_norm && layout == CLI_PS_2D)
+            v[nv++] = (double)r->ky / norm;
         cli_print_values(csv, v, nv);
     }
 }
@@ -244,62 +265,136 @@ static void print_notes(const cli_ps_report *rep)
         cli_note(rep->csv, "%s", rep->notes[i]);
 }
 
-/* The exact values and z-scores of rows (layout 2D or radial). */
-static void fill_exact(const cli_exact2d *ex, cli_ps_layout layout, cli_ps_row *rows,
-                       size_t nrows)
+/* The exact average over the annuli r..r + width - 1: the unit annuli's,
+ * weighted by their sizes. */
+static double exact_band(const cli_exact2d *ex, size_t r, size_t width)
+{
+    double sum = 0.0, n = 0.0;
+    for (size_t q = r; q < r + width; ++q) {
+        size_t m = 0u;
+        if (mcs_pointset2d_ring_size(q, &m) != MCS_OK)
+            return (double)NAN;
+        sum += (double)m * ex->radial(ex->ctx, q);
+        n += (double)m;
+    }
+    return sum / n;
+}
+
+/* The exact values and z-scores of rows (layout 2D or radial; annuli of
+ * width `width`). */
+static void fill_exact(const cli_exact2d *ex, cli_ps_layout layout, size_t width,
+                       cli_ps_row *rows, size_t nrows)
 {
     for (size_t i = 0; i < nrows; ++i)
         rows[i].exact = layout == CLI_PS_2D ? ex->at(ex->ctx, rows[i].kx, rows[i].ky)
-                                            : ex->radial(ex->ctx, (size_t)rows[i].kx);
+                        : width == 1u        ? ex->radial(ex->ctx, (size_t)rows[i].kx)
+                                             : exact_band(ex, (size_t)rows[i].kx, width);
     cli_ps_rows_z(rows, nrows, ex->scale);
+}
+
+/* The radial rows of annuli other than the unit ones. */
+static void bin_rows(const cli_ps_bins *bins, cli_ps_row *ring, size_t *nring)
+{
+    for (size_t b = 0; b < bins->count; ++b) {
+        blank_ps_row(&ring[b], (long)(b * bins->width), 0);
+        bins->at(bins->ctx, b, &ring[b].power, &ring[b].power_stderr, &ring[b].anisotropy_db);
+    }
+    *nring = bins->count;
 }
 
 /* Both layouts' rows of acc, exact values filled: plane[] (when not NULL),
  * ring[]. */
-static int rows2d(const char *cmd, const cli_ps_report *rep, const mcs_pointset2d *acc,
-                  cli_ps_row *plane, size_t *nplane, cli_ps_row *ring, size_t *nring)
+static int rows2d(const char *cmd, const cli_ps_report *rep, const cli_ps_extra *extra,
+                  const mcs_pointset2d *acc, cli_ps_row *plane, size_t *nplane, cli_ps_row *ring,
+                  size_t *nring)
 {
     int rc = plane != NULL ? cli_ps_rows(cmd, CLI_PS_2D, acc, plane, nplane) : 0;
-    if (rc == 0)
+    if (rc == 0 && extra->bins != NULL)
+        bin_rows(extra->bins, ring, nring);
+    else if (rc == 0)
         rc = cli_ps_rows(cmd, CLI_PS_RADIAL, acc, ring, nring);
+    const size_t width = extra->bins != NULL ? extra->bins->width : 1u;
     if (rc == 0 && rep->exact != NULL) {
         if (plane != NULL)
-            fill_exact(rep->exact, CLI_PS_2D, plane, *nplane);
-        fill_exact(rep->exact, CLI_PS_RADIAL, ring, *nring);
+            fill_exact(rep->exact, CLI_PS_2D, 1u, plane, *nplane);
+        fill_exact(rep->exact, CLI_PS_RADIAL, width, ring, *nring);
     }
+    return rc;
+}
+
+int cli_write_pfm(const char *cmd, const char *path, const cli_ps_row *plane, size_t nplane)
+{
+    /* (2F + 1)^2 rows, ky = -F..F outer, kx = -F..F inner: PFM's order,
+     * whose first scan line is the bottom one. */
+    const size_t side = (size_t)(2 * plane[nplane - 1u].kx + 1);
+    char head[64];
+    const int hlen = snprintf(head, sizeof head, "Pf\n%zu %zu\n-1.0\n", side, side);
+    const size_t len = (size_t)hlen + 4u * nplane;
+    unsigned char *buf = cli_alloc(cmd, 1, len);
+    if (buf == NULL)
+        return CLI_EXIT_FAIL;
+    memcpy(buf, head, (size_t)hlen);
+    for (size_t i = 0; i < nplane; ++i) {
+        const float v = (float)plane[i].power;
+        uint32_t u = 0u;
+        memcpy(&u, &v, sizeof u);
+        unsigned char *o = buf + hlen + 4u * i; /* little-endian, the scale's sign says */
+        o[0] = (unsigned char)(u & 0xFFu);
+        o[1] = (unsigned char)((u >> 8) & 0xFFu);
+        o[2] = (unsigned char)((u >> 16) & 0xFFu);
+        o[3] = (unsigned char)(u >> 24);
+    }
+    const int rc = cli_write_atomic(cmd, path, buf, len);
+    free(buf);
     return rc;
 }
 
 int cli_report_pointset2d(const char *cmd, const cli_ps_report *rep, const mcs_pointset2d *acc)
 {
+    const cli_ps_extra none = {0.0, NULL, NULL};
+    return cli_report_pointset2d_with(cmd, rep, &none, acc);
+}
+
+int cli_report_pointset2d_with(const char *cmd, const cli_ps_report *rep,
+                               const cli_ps_extra *extra, const mcs_pointset2d *acc)
+{
     const size_t f = acc->freq_max;
     /* The plane's (2F + 1)^2 rows only where they are printed or drawn: at
      * F = 2048 they are 1.2 GB, the annuli 2049 rows. */
-    const int need_plane = !rep->radial || rep->plot != NULL;
+    const int need_plane = !rep->radial || rep->plot != NULL || extra->pfm != NULL;
     cli_ps_row *plane =
         need_plane ? cli_alloc(cmd, cli_ps_row_count(CLI_PS_2D, f), sizeof *plane) : NULL;
     cli_ps_row *ring = cli_alloc(cmd, cli_ps_row_count(CLI_PS_RADIAL, f), sizeof *ring);
     size_t nplane = 0u, nring = 0u;
     int rc = (plane != NULL || !need_plane) && ring != NULL ? 0 : CLI_EXIT_FAIL;
     if (rc == 0)
-        rc = rows2d(cmd, rep, acc, plane, &nplane, ring, &nring);
+        rc = rows2d(cmd, rep, extra, acc, plane, &nplane, ring, &nring);
     if (rc == 0 && rep->plot != NULL) {
         const char *exact = rep->exact != NULL ? rep->exact_label : NULL;
         const cli_plot_info info = {rep->title, rep->subtitle, exact, NULL, NULL, rep->log_y};
         rc = cli_plot_pointset2d(cmd, rep->plot, &info, plane, nplane, ring, nring);
     }
+    if (rc == 0 && extra->pfm != NULL)
+        rc = cli_write_pfm(cmd, extra->pfm, plane, nplane);
     if (rc == 0)
         print_notes(rep);
     if (rc == 0 && rep->radial)
-        cli_print_ps(rep->csv, CLI_PS_RADIAL, rep->exact != NULL, ring, nring);
+        cli_print_ps_norm(rep->csv, CLI_PS_RADIAL, rep->exact != NULL, extra->norm, ring, nring);
     else if (rc == 0)
-        cli_print_ps(rep->csv, CLI_PS_2D, rep->exact != NULL, plane, nplane);
+        cli_print_ps_norm(rep->csv, CLI_PS_2D, rep->exact != NULL, extra->norm, plane, nplane);
     free(plane);
     free(ring);
     return rc;
 }
 
 int cli_report_pointset(const char *cmd, const cli_ps_report *rep, const mcs_pointset *acc)
+{
+    const cli_ps_extra none = {0.0, NULL, NULL};
+    return cli_report_pointset_with(cmd, rep, &none, acc);
+}
+
+int cli_report_pointset_with(const char *cmd, const cli_ps_report *rep, const cli_ps_extra *extra,
+                             const mcs_pointset *acc)
 {
     const size_t nmax = cli_ps_row_count(CLI_PS_1D, acc->freq_max);
     cli_ps_row *rows = cli_alloc(cmd, nmax, sizeof *rows);
@@ -317,7 +412,7 @@ int cli_report_pointset(const char *cmd, const cli_ps_report *rep, const mcs_poi
     }
     if (rc == 0) {
         print_notes(rep);
-        cli_print_ps(rep->csv, CLI_PS_1D, 0, rows, nrows);
+        cli_print_ps_norm(rep->csv, CLI_PS_1D, 0, extra->norm, rows, nrows);
     }
     free(plot_rows);
     free(rows);

@@ -79,6 +79,22 @@ void cli_ps_rows_z(cli_ps_row *rows, size_t nrows, double scale);
 void cli_print_ps(int csv, cli_ps_layout layout, int with_exact, const cli_ps_row *rows,
                   size_t nrows);
 
+/* The normalised frequency columns appended after the others: the integer
+ * frequency over norm (sqrt(K)), named with "_norm" ("freq_norm",
+ * "kx_norm,ky_norm", "radius_norm"). */
+#define CLI_NORM_SUFFIX "_norm"
+
+/* cli_print_ps with those columns when norm > 0 (none when 0). */
+void cli_print_ps_norm(int csv, cli_ps_layout layout, int with_exact, double norm,
+                       const cli_ps_row *rows, size_t nrows);
+
+/* The 2D rows plane[nplane] (CLI_PS_2D, (2F + 1)^2 of them) as a PFM image
+ * at path, written atomically: "Pf", side 2F + 1 both ways, scale -1.0
+ * (little-endian), then <P> as float32 per pixel, the first scan line
+ * ky = -F (the bottom of the image, as the format says), kx = -F first in a
+ * line; DC included. Returns 0 or an exit status after a message. */
+int cli_write_pfm(const char *cmd, const char *path, const cli_ps_row *plane, size_t nplane);
+
 /* 1D rows as spectrum rows for cli_plot_spectrum (power, its standard error,
  * exact; the rest NaN). */
 void cli_ps_as_spectrum(const cli_ps_row *rows, size_t nrows, cli_spectrum_row *out);
@@ -93,6 +109,15 @@ typedef struct {
     double scale;
 } cli_exact2d;
 
+/* Radial annuli of width W other than the library's unit annuli: count
+ * annuli r = b W, b = 0..count-1, their mean, standard error and anisotropy
+ * (NaN: none) from at. */
+typedef struct {
+    size_t width, count;
+    const void *ctx;
+    void (*at)(const void *ctx, size_t b, double *mean, double *se, double *aniso);
+} cli_ps_bins;
+
 /* How to report a point-set spectrum. */
 typedef struct {
     int csv, radial;          /* CSV only; 2D: the annuli instead of every wave vector */
@@ -104,15 +129,26 @@ typedef struct {
     const char *const *notes; /* lines above the table (NULL-terminated; NULL: none) */
 } cli_ps_report;
 
+/* What `mcspec spectrum` adds to a report (cli_report_pointset*_with). */
+typedef struct {
+    double norm;             /* > 0: the normalised columns, frequency / norm; 0: none */
+    const cli_ps_bins *bins; /* the annuli of the radial rows (NULL: width 1, the library's) */
+    const char *pfm;         /* 2D: also write the mean periodogram as a PFM image here */
+} cli_ps_extra;
+
 /* Reports acc (a mcs_pointset2d with a trial): draws the figure first if
  * asked (so a failed plot prints nothing), then the notes and the rows of
  * rep->radial. Returns 0 or an exit status after a message. */
 int cli_report_pointset2d(const char *cmd, const cli_ps_report *rep, const mcs_pointset2d *acc);
+int cli_report_pointset2d_with(const char *cmd, const cli_ps_report *rep,
+                               const cli_ps_extra *extra, const mcs_pointset2d *acc);
 
 /* The same for a 1D point-set spectrum (a mcs_pointset with a trial): the
  * figure is the power spectrum f >= 1 (cli_plot_spectrum); no exact values
  * (rep->exact must be NULL). */
 int cli_report_pointset(const char *cmd, const cli_ps_report *rep, const mcs_pointset *acc);
+int cli_report_pointset_with(const char *cmd, const cli_ps_report *rep, const cli_ps_extra *extra,
+                             const mcs_pointset *acc);
 
 /* The values of one line after its first field: ",v" CSV fields or " v"
  * table columns of width 13 (NaN: empty or "-"), then the newline. */

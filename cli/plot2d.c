@@ -1,5 +1,8 @@
 /* The figure of a 2D point-set spectrum (see plot.h): the image of the mean
- * periodogram and its radial profile, side by side. */
+ * periodogram and its radial profile, side by side. The image is tone-mapped
+ * as papers show blue noise: a log colour scale over the 30 dB below the
+ * largest <P> at k != 0 (lower values drawn at its floor), the DC term
+ * masked (P(0) = K would flatten any scale). */
 #include "plot.h"
 
 #include <math.h>
@@ -10,6 +13,9 @@ typedef struct {
     const cli_ps_row *rows2d, *radial;
     size_t nrows2d, nradial;
 } pointset2d_figure;
+
+/* The colour scale's span below its top: 30 dB. */
+#define IMAGE_SPAN 1e-3
 
 /* Largest <P> drawn in the image, k != 0 (P(0) = K would flatten the colour
  * scale); 1 if nothing is positive. */
@@ -58,13 +64,15 @@ static int write_data(const char *tmp, const pointset2d_figure *fig, const cli_p
     fp = cli_plot_data(tmp, "data2.txt");
     if (fp == NULL)
         return -1;
-    fputs("# kx ky power\n", fp);
+    fputs("# kx ky power (tone-mapped: at least the scale's floor; DC masked)\n", fp);
+    const double floor_ = IMAGE_SPAN * image_top(fig);
     for (size_t i = 0; i < fig->nrows2d; ++i) {
         const cli_ps_row *r = &fig->rows2d[i];
         if (i > 0u && r->ky != fig->rows2d[i - 1u].ky)
             fputc('\n', fp);
         fprintf(fp, "%ld %ld", r->kx, r->ky);
-        cli_plot_value(fp, r->power);
+        const int dc = r->kx == 0 && r->ky == 0;
+        cli_plot_value(fp, dc ? (double)NAN : fmax(r->power, floor_));
         fputc('\n', fp);
     }
     return fclose(fp) == 0 && ok ? 0 : -1;
@@ -73,26 +81,32 @@ static int write_data(const char *tmp, const pointset2d_figure *fig, const cli_p
 static void write_image_panel(FILE *fp, const char *tmp, const pointset2d_figure *fig)
 {
     const long f = fig->rows2d[fig->nrows2d - 1u].kx;
-    fputs("set title \"mean periodogram ⟨P(k)⟩ (P(0) = K: off the scale)\" noenhanced\n"
-          "set xlabel \"k_x\"\nset ylabel \"k_y\"\nset cblabel \"⟨P(k)⟩\" noenhanced\n"
+    fputs("set title \"mean periodogram ⟨P(k)⟩, log scale, k = 0 masked\" noenhanced\n"
+          "set xlabel \"k_x\"\nset ylabel \"k_y\"\n"
+          "set cblabel \"⟨P(k)⟩ (30 dB below the largest k ≠ 0)\" noenhanced\n"
+          "set logscale cb\nset format cb \"%g\"\nset object 1 rectangle from graph 0,0 "
+          "to graph 1,1 behind fillcolor rgb '#808080' fillstyle solid noborder\n"
           "set size ratio -1\nset border lw 1.2\nunset key\n"
           "set palette defined (0 '#000004', 1 '#3b0f70', 2 '#8c2981', 3 '#de4968', "
           "4 '#fe9f6d', 5 '#fcfdbf')\n", fp);
-    fprintf(fp, "set xrange [%.1f:%.1f]\nset yrange [%.1f:%.1f]\nset cbrange [0:%.17g]\n",
+    const double top = image_top(fig);
+    fprintf(fp, "set xrange [%.1f:%.1f]\nset yrange [%.1f:%.1f]\nset cbrange [%.17g:%.17g]\n",
             -(double)f - 0.5, (double)f + 0.5, -(double)f - 0.5, (double)f + 0.5,
-            image_top(fig));
+            IMAGE_SPAN * top, top);
     fputs("plot ", fp);
     cli_plot_data_ref(fp, tmp, "data2.txt");
     fputs(" using 1:2:3 with image notitle\n", fp);
+    fputs("unset object 1\nunset logscale cb\n", fp);
 }
 
 static void write_profile_panel(FILE *fp, const char *tmp, const pointset2d_figure *fig,
                                 const cli_plot_axis *axis)
 {
     const long f = fig->radial[fig->nradial - 1u].kx;
-    fputs("set title \"radial average over the annuli r ≤ |k| < r + 1\" noenhanced\n"
-          "set xlabel \"radius r\"\nset ylabel \"radial average of ⟨P(k)⟩\"\n"
-          "set size noratio\nunset cblabel\nunset colorbox\n", fp);
+    const long w = fig->nradial > 1u ? fig->radial[1].kx : 1;
+    fprintf(fp, "set title \"radial average over the annuli r ≤ |k| < r + %ld\" noenhanced\n", w);
+    fputs("set xlabel \"radius r\"\nset ylabel \"radial average of ⟨P(k)⟩\"\n"
+    "set size noratio\nunset cblabel\nunset colorbox\n", fp);
     cli_plot_style(fp);
     fprintf(fp, "set xrange [0.5:%.17g]\n", (double)f + 0.5);
     cli_plot_axis_write(fp, axis);

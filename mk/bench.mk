@@ -6,12 +6,16 @@
 #                              (tools/bench_deps.sh), build, run the full grid
 #   make bench BENCH_QUICK=1   a subset of the grid with fewer rounds
 #   make bench-run             build and run without the package step
+#   make bench-pointsets       the point-set jobs of issue 24 alone
+#                              (test/bench/pointset_jobs.c: A, B, C, 1D against
+#                              the direct path and a numpy direct sum; a few
+#                              minutes; BENCH_QUICK=1: 3 rounds)
 #
 # The FFTW peer is compiled in only when $(CC) can link fftw3; the answer is
 # kept in $(BENCH_FFTW_STAMP), rewritten only when it changes, so installing
 # FFTW rebuilds the bench and nothing else does.
 
-.PHONY: bench bench-run bench-probe
+.PHONY: bench bench-run bench-probe bench-pointsets
 
 BENCH_PROG       := $(BUILD)/bench/bench
 BENCH_PART_SRC   := $(sort $(wildcard test/bench/src/*.c))
@@ -23,6 +27,11 @@ BENCH_FLAGS_STR  := $(strip $(OPT) $(SANFLAGS))
 bench:
 	@sh tools/bench_deps.sh install '$(CC)'
 	@$(MAKE) --no-print-directory bench-run
+	@$(MAKE) --no-print-directory bench-pointsets
+
+bench-pointsets: $(BUILD)/bench/pointset_jobs
+	@$(BUILD)/bench/pointset_jobs $(if $(filter 1,$(BENCH_QUICK)),--quick) \
+	    --python "$$(sh tools/bench_deps.sh python)" --numpy-peer test/bench/src/pointset_jobs_numpy.py
 
 bench-run: $(BENCH_PROG)
 	@$(BENCH_PROG) $(if $(filter 1,$(BENCH_QUICK)),--quick) \

@@ -1,6 +1,20 @@
-/* mcspec-mpi: one pattern run split over MPI ranks (docs/scaling.md).
+/* mcspec-mpi: one pattern run split over MPI ranks (docs/scaling.md), or
+ * the point-set spectrum of many point files.
  *
  *   mpirun -np P mcspec-mpi pattern KIND --n N --k K --trials T --seed S --save FILE
+ *   mpirun -np P mcspec-mpi spectrum [mcspec spectrum's options] FILE...
+ *
+ * spectrum: every rank runs `mcspec spectrum` on the same arguments
+ * (cli/psets.h), so all parse the same options and read the same sets in the
+ * same order; rank r transforms the sets m with m mod P = r, each alone into
+ * a one-trial object, and sends it as a record to rank 0, which receives
+ * them in the order of the sets and merges each into the run's accumulator
+ * exactly as one process merges its own: the CSV, the table and the --save
+ * record are the bytes of `mcspec spectrum` with the same arguments. Only
+ * rank 0 prints; the other ranks' messages would repeat rank 0's (the same
+ * input), so they go to /dev/null, and a rank whose transform fails says so
+ * to rank 0 in its message head instead (rank 0 then prints and writes
+ * nothing, and every rank exits 1).
  *
  * Rank i runs stream i of the stream rule (cli/streams.h): PCG32 seeded
  * (S, i), floor(T/P) trials and one more for i < T mod P. The spectra are
@@ -20,6 +34,7 @@
 #include "atomic.h"
 #include "cli.h"
 #include "input.h"
+#include "psets.h"
 #include "record.h"
 #include "streams.h"
 #include "trials.h"
@@ -40,6 +55,13 @@
 static const char help[] =
     "usage: mpirun -np P mcspec-mpi pattern KIND --n N --k K --trials T [--seed S]\n"
     "                                [--importance FILE] --save FILE [--timing]\n"
+    "       mpirun -np P mcspec-mpi spectrum [mcspec spectrum's point-set options]\n"
+    "                                FILE...\n"
+    "\n"
+    "spectrum: the point-set spectrum (--freq F, or --dim 2) of the sets of\n"
+    "FILE..., rank r transforming the sets m with m mod P = r and rank 0 merging\n"
+    "them in order: the output and --save record are the bytes of `mcspec\n"
+    "spectrum` with the same arguments (see mcspec spectrum --help).\n"
     "\n"
     "Draws T trials of the pattern KIND (random, stratified, homogenized, uniform,\n"
     "jitter) over P MPI ranks and saves the merged spectrum accumulator to FILE\n"
@@ -101,7 +123,8 @@ static int parse(int argc, char **argv, int nranks, run_params *prm, const char 
     if (rc != CLI_PARSED)
         return rc;
     if (p.nargs < 1u || strcmp(args[0], "pattern") != 0)
-        return cli_fail(CMD, "the only command is pattern: mcspec-mpi pattern KIND ...");
+        return cli_fail(CMD, "the commands are pattern and spectrum: mcspec-mpi pattern KIND "
+                        "..., mcspec-mpi spectrum ... FILE...");
     if (p.nargs < 2u || cli_pattern_kind(args[1]) < 0)
         return cli_fail(CMD, "which pattern? give KIND: random, stratified, homogenized, "
                         "uniform or jitter");
@@ -301,6 +324,136 @@ static int finish(node *me, const char *save, const run_params *prm, double redu
     return 0;
 }
 
+
+/* ---- spectrum ------------------------------------------------------------------ */
+
+/* A rank's state in a spectrum run. */
+typedef struct {
+    int rank, nranks;
+    int failed;           /* this rank's transform failed: it sends failure heads */
+    uint64_t bad_sets;    /* rank 0: sets that failed on some rank */
+    uint64_t first_bad;   /* ... the first of them */
+    int first_bad_rank;
+    int inject;           /* MCSPEC_MPI_FAIL_RANK names this rank */
+} spec_node;
+
+static void spec_mark(spec_node *me, uint64_t set, int rank)
+{
+    if (me->bad_sets == 0u) {
+        me->first_bad = set;
+        me->first_bad_rank = rank;
+    }
+    ++me->bad_sets;
+}
+
+/* Rank 0: the one-trial record of set `set` from rank `owner` into the
+ * scratch, then merged. */
+static void spec_receive(spec_node *me, cli_ps_sink *sink, uint64_t set, int owner)
+{
+    uint64_t head[2];
+    MPI_Recv(head, 2, MPI_UINT64_T, owner, TAG_HEAD, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    if (head[0] != 0u) {
+        spec_mark(me, set, owner);
+        return;
+    }
+    unsigned char *buf = cli_alloc(sink->cmd, 1, (size_t)head[1]);
+    MPI_Recv(buf, buf != NULL ? (int)head[1] : 0, MPI_BYTE, owner, TAG_BYTES, MPI_COMM_WORLD,
+             MPI_STATUS_IGNORE);
+    mcs_status st = MCS_ERR_NULL;
+    if (buf != NULL && sink->dim == 2u) {
+        mcs_pointset2d *o = sink->one.obj;
+        st = mcs_io_load_pointset2d(o, 0u, o->mem, o->bytes, (size_t)head[1], buf);
+    } else if (buf != NULL) {
+        mcs_pointset *o = sink->one.obj;
+        st = mcs_io_load_pointset(o, 0u, o->mem, o->bytes, (size_t)head[1], buf);
+    }
+    free(buf);
+    if (st != MCS_OK) {
+        cli_internal(sink->cmd, "the record of set %llu from rank %d is unusable: %s",
+                     (unsigned long long)set, owner, mcs_status_str(st));
+        spec_mark(me, set, owner);
+    } else if (me->bad_sets == 0u && cli_ps_sink_absorb(sink, sink->one.obj) != 0) {
+        spec_mark(me, set, 0);
+    }
+}
+
+/* Rank r != 0: set `set` transformed and sent to rank 0 (or a failure head). */
+static void spec_send(spec_node *me, cli_ps_sink *sink, size_t k, const double *pts)
+{
+    unsigned char *buf = NULL;
+    size_t len = 0u;
+    if (!me->failed && me->inject)
+        me->failed = cli_internal(sink->cmd, "failing as MCSPEC_MPI_FAIL_RANK asks") != 0;
+    if (!me->failed)
+        me->failed = cli_ps_sink_transform(sink, k, pts) != 0 ||
+                     cli_acc_save(sink->cmd, &sink->one, &buf, &len) != 0;
+    uint64_t head[2] = {(uint64_t)me->failed, me->failed ? 0u : (uint64_t)len};
+    MPI_Send(head, 2, MPI_UINT64_T, 0, TAG_HEAD, MPI_COMM_WORLD);
+    if (!me->failed)
+        MPI_Send(buf, (int)len, MPI_BYTE, 0, TAG_BYTES, MPI_COMM_WORLD);
+    free(buf);
+}
+
+/* cli_ps_driver.set: every rank sees every set; each does its part. Always
+ * 0, so every rank reads on in step; failures travel in the heads. */
+static int spec_set(void *ctx, cli_ps_sink *sink, uint64_t set, size_t k, const double *pts)
+{
+    spec_node *me = ctx;
+    const int owner = (int)(set % (uint64_t)me->nranks);
+    if (me->rank != 0) {
+        if (owner == me->rank)
+            spec_send(me, sink, k, pts);
+        return 0;
+    }
+    if (owner != 0) {
+        spec_receive(me, sink, set, owner);
+        return 0;
+    }
+    if (me->bad_sets == 0u && (cli_ps_sink_transform(sink, k, pts) != 0 ||
+                               cli_ps_sink_absorb(sink, sink->one.obj) != 0))
+        spec_mark(me, set, 0);
+    return 0;
+}
+
+/* cli_ps_driver.start: a rank that could not set up (memory) stops them all. */
+static int spec_start(void *ctx, int rc)
+{
+    (void)ctx;
+    int worst = rc;
+    MPI_Allreduce(&rc, &worst, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    return worst;
+}
+
+/* cli_ps_driver.finish: rank 0's verdict, shared by every rank. rc is the
+ * reading's status, the same on every rank (the same files). */
+static int spec_finish(void *ctx, cli_ps_sink *sink, int rc)
+{
+    spec_node *me = ctx;
+    int status = rc;
+    if (me->rank == 0 && rc == 0 && me->bad_sets != 0u)
+        status = cli_internal(sink->cmd, "%llu set%s failed (first: set %llu, on rank %d); "
+                              "nothing printed or written", (unsigned long long)me->bad_sets,
+                              me->bad_sets == 1u ? "" : "s", (unsigned long long)me->first_bad,
+                              me->first_bad_rank);
+    MPI_Bcast(&status, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    return status;
+}
+
+/* mcspec-mpi spectrum ...: argv[0] is "spectrum". */
+static int spectrum_main(int argc, char **argv, int rank, int nranks)
+{
+    char cmd[64];
+    snprintf(cmd, sizeof cmd, "%s spectrum%s", CMD, nranks > 1 ? ": rank 0" : "");
+    if (rank != 0 && (freopen("/dev/null", "w", stderr) == NULL ||
+                      freopen("/dev/null", "w", stdout) == NULL))
+        return CLI_EXIT_FAIL;
+    const char *inject = getenv("MCSPEC_MPI_FAIL_RANK");
+    spec_node me = {rank, nranks, 0, 0u, 0u, 0, inject != NULL && atoi(inject) == rank};
+    const cli_ps_driver drv = {rank == 0 ? cmd : CMD " spectrum", rank == 0, &me, spec_start,
+                               spec_set, spec_finish};
+    return cli_spectrum_run(argc, argv, &drv);
+}
+
 int main(int argc, char **argv)
 {
     static double weights_buf[MCS_MAX_N];
@@ -311,6 +464,12 @@ int main(int argc, char **argv)
     MPI_Init(&argc, &argv);
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
     MPI_Comm_size(MPI_COMM_WORLD, &nranks);
+    if (argc > 1 && strcmp(argv[1], "spectrum") == 0) {
+        const int status = spectrum_main(argc - 1, argv + 1, rank, nranks);
+        fflush(stdout);
+        MPI_Finalize();
+        return status;
+    }
     run_params prm = {0u, 0u, 0u, DEFAULT_SEED, 0u, 0u, 0u, 0};
     const char *save = NULL;
     if (rank == 0) {

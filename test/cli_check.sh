@@ -397,7 +397,8 @@ cmp -s "$tmp/v1" "$tmp/v3" && bad "variance: the seed has no effect" || ok
     bad "spectrum --help does not give the point-set CSV headers"
 "$MCSPEC" pattern --help | grep -q 'kx,ky,power,power_stderr,exact,z_exact' && ok ||
     bad "pattern --help does not give the 2D CSV columns"
-usage_error "spectrum --dim 2 without --freq" '--dim 2 needs --freq' "$MCSPEC" spectrum --dim 2 -
+# --dim 2 without --freq takes the default F (test/spectrum_check.sh); empty input is still an error.
+usage_error "spectrum --dim 2 without --freq, empty input" 'input is empty' "$MCSPEC" spectrum --dim 2 -
 usage_error "spectrum --dim 3" '--dim expects a whole number from 1 to 2' "$MCSPEC" spectrum --dim 3 --freq 4 -
 usage_error "spectrum --freq with --n" 'exclude each other' "$MCSPEC" spectrum --freq 4 --n 8 -
 usage_error "spectrum --freq with --weights" 'needs binning' "$MCSPEC" spectrum --freq 4 --weights -

@@ -13,6 +13,11 @@
 # (with --importance given again). Then the failure paths: a rank
 # that reports a failure, a rank that dies, and bad usage, each with a
 # non-zero exit, a message and no file (an old file of that name untouched).
+# Then `mcspec-mpi spectrum` over several point files at P = 1, 2, 3, 4
+# against `mcspec spectrum` with the same arguments: the CSV, the table and
+# the --save record byte for byte (2D radial with width-2 annuli and the
+# default F, the 2D plane, 1D through --dims, psa files); its bad usage
+# (exit 2, rank 0's one line), --help once, and a rank that fails.
 # Ends with a Unity-style "N Tests N Failures 0 Ignored" line.
 set -u
 MCSPEC=${MCSPEC:-build/bin/mcspec}
@@ -149,6 +154,74 @@ expect_failure "fewer trials than ranks" "fewer than the 4 ranks" \
 # shellcheck disable=SC2086
 expect_failure "an unknown pattern" "which pattern" \
     mpi 2 "$MCSPEC_MPI" pattern bogus --n 64 --k 8 --trials 100 $save
+
+# ---- mcspec-mpi spectrum: the sets of many files over the ranks ----------------
+# points SEED SETS K: utk sets of K uniform points in the square (awk's generator).
+points() {
+    awk -v seed="$1" -v sets="$2" -v k="$3" 'BEGIN { srand(seed)
+        for (s = 0; s < sets; ++s) { for (j = 0; j < k; ++j) printf "%.17g %.17g\n", rand(), rand()
+            if (s + 1 < sets) print "#" } }'
+}
+points 1 5 300 >"$work/m1.txt"
+points 2 4 200 >"$work/m2.txt"
+points 3 1 500 >"$work/m3.txt"
+for i in 0 1 2; do { echo 64; points $((10 + i)) 1 64; } >"$work/psa$i.txt"; done
+# check_spectrum LABEL ARGS...: mpi at P = 1, 2, 3, 4 against one process,
+# the CSV and the record byte for byte.
+check_spectrum() {
+    label=$1
+    shift
+    if ! "$MCSPEC" spectrum "$@" --csv --save "$work/sp-one.rec" >"$work/sp-one.csv" 2>"$work/sp.err"; then
+        fail "spectrum $label: mcspec spectrum failed: $(head -n 2 "$work/sp.err")"
+        return
+    fi
+    for p in 1 2 3 4; do
+        rm -f "$work/sp-mpi.rec"
+        if ! mpi "$p" "$MCSPEC_MPI" spectrum "$@" --csv --save "$work/sp-mpi.rec" >"$work/sp-mpi.csv" 2>"$work/sp.err"; then
+            fail "spectrum $label P=$p: mcspec-mpi failed: $(head -n 2 "$work/sp.err")"
+            continue
+        fi
+        if cmp -s "$work/sp-one.csv" "$work/sp-mpi.csv"; then pass "spectrum $label P=$p: the CSV's bytes"
+        else fail "spectrum $label P=$p: the CSV differs from one process's"; fi
+        if cmp -s "$work/sp-one.rec" "$work/sp-mpi.rec"; then pass "spectrum $label P=$p: the record's bytes"
+        else fail "spectrum $label P=$p: the record differs from one process's"; fi
+    done
+}
+check_spectrum "2D radial, width 2, default F" --dim 2 --radial --bin-width 2 "$work/m1.txt" "$work/m2.txt" "$work/m3.txt"
+check_spectrum "2D plane, F = 6" --dim 2 --freq 6 "$work/m1.txt" "$work/m2.txt"
+check_spectrum "1D, --dims 1, F = 40" --dims 1 --freq 40 "$work/m1.txt" "$work/m3.txt"
+check_spectrum "psa files" --format psa --radial "$work/psa0.txt" "$work/psa1.txt" "$work/psa2.txt"
+# The table too (its notes name the command spectrum, as one process does).
+"$MCSPEC" spectrum --dim 2 --radial "$work/m1.txt" "$work/m2.txt" >"$work/t-one.txt" 2>/dev/null
+if mpi 3 "$MCSPEC_MPI" spectrum --dim 2 --radial "$work/m1.txt" "$work/m2.txt" >"$work/t-mpi.txt" 2>/dev/null &&
+    cmp -s "$work/t-one.txt" "$work/t-mpi.txt"; then pass "spectrum P=3: the table's bytes"
+else fail "spectrum P=3: the table differs from one process's"; fi
+# spectrum_usage LABEL TEXT ARGS...: exit 2, one line of ours on stderr
+# (rank 0's only; mpirun adds its own) holding TEXT, nothing on stdout.
+spectrum_usage() {
+    label=$1 text=$2
+    shift 2
+    mpi 3 "$MCSPEC_MPI" spectrum "$@" >"$work/u.out" 2>"$work/u.err"
+    st=$?
+    if [ "$st" -ne 2 ]; then fail "spectrum usage, $label: exit status $st"
+    elif [ -s "$work/u.out" ]; then fail "spectrum usage, $label: wrote to stdout"
+    elif [ "$(grep -c '^mcspec' "$work/u.err")" -ne 1 ] || ! grep -q -- "$text" "$work/u.err"; then
+        fail "spectrum usage, $label: stderr '$(head -n 3 "$work/u.err")'"
+    else pass "spectrum usage, $label"; fi
+}
+spectrum_usage "binned" "point-set spectra only" "$work/m1.txt"
+spectrum_usage "standard input" "cannot share standard input" --dim 2 -
+spectrum_usage "no file" "cannot share standard input" --dim 2
+spectrum_usage "--bin-width 0" "--bin-width expects a whole number" --dim 2 --radial --bin-width 0 "$work/m1.txt"
+printf '0.1 0.2\n0.3 1.5\n' >"$work/m4.txt"
+spectrum_usage "a bad line" "m4.txt: line 2: coordinate 1.5 is outside" --dim 2 "$work/m1.txt" "$work/m4.txt"
+mpi 2 "$MCSPEC_MPI" spectrum --help >"$work/h.out" 2>&1
+if [ "$(grep -c '^usage: mcspec spectrum' "$work/h.out")" -eq 1 ]; then pass "spectrum --help printed once"
+else fail "spectrum --help: $(grep -c '^usage' "$work/h.out") usage lines"; fi
+# shellcheck disable=SC2086
+expect_failure "spectrum: a rank reporting a failure" "failed (first: set 1, on rank 1); nothing printed or written" \
+    env MCSPEC_MPI_FAIL_RANK=1 "$MPIRUN" $mpiflags -x MCSPEC_MPI_FAIL_RANK -np 3 \
+    "$MCSPEC_MPI" spectrum --dim 2 --freq 4 $save "$work/m1.txt"
 
 echo "-----------------------"
 echo "$tests Tests $failures Failures 0 Ignored"
