@@ -18,7 +18,10 @@
 #   projections: the CSV header's first columns exactly; random points in 6D
 #   flag nothing; a file whose dimension 6 repeats dimension 0 (c-ray's
 #   sampler) flags (0,6) and nothing else; the heat map (when gnuplot is
-#   there) is a PNG.
+#   there) is a PNG;
+#   examples/sampler_check ($SAMPLER_CHECK): c-ray's repeated dimensions
+#   flag (0,6) and (1,7), the shared seed (2,4) and (3,5) and nothing else,
+#   padded and random nothing.
 # Ends with a Unity-style summary so test/run_tests.sh counts it.
 
 MCSPEC=${MCSPEC:-build/bin/mcspec}
@@ -29,7 +32,20 @@ check_start sample_check
 
 if [ ! -x "$MCSPEC" ]; then
     bad "$MCSPEC is not an executable (make cli)"
-    check_summary
+    SAMPLER_CHECK=${SAMPLER_CHECK:-build/examples/sampler_check}
+if [ ! -x "$SAMPLER_CHECK" ]; then
+    bad "$SAMPLER_CHECK is not an executable (make examples)"
+elif succeeds "sampler_check" "$SAMPLER_CHECK" --k 512 --sets 16 --seed 3; then
+    line() { grep "^$1 " "$tmp/out"; }
+    case $(line c-ray) in *"(0,6)"*"(1,7)"*) ok ;; *) bad "c-ray: $(line c-ray)" ;; esac
+    if line shared-seed | grep -Eq "2 of 28 pairs flagged: \(2,4\) peak [0-9]+ \(3,5\) peak [0-9]+$"; then ok
+    else bad "shared-seed: $(line shared-seed)"; fi
+    for s in padded random; do
+        if line "$s" | grep -q "0 of 28 pairs flagged: none"; then ok; else bad "$s: $(line "$s")"; fi
+    done
+fi
+
+check_summary
     exit 1
 fi
 
@@ -114,6 +130,19 @@ if command -v gnuplot >/dev/null 2>&1; then
     else bad "projections --plot did not write a PNG"; fi
 else
     skip "projections --plot (no gnuplot)"
+fi
+
+SAMPLER_CHECK=${SAMPLER_CHECK:-build/examples/sampler_check}
+if [ ! -x "$SAMPLER_CHECK" ]; then
+    bad "$SAMPLER_CHECK is not an executable (make examples)"
+elif succeeds "sampler_check" "$SAMPLER_CHECK" --k 512 --sets 16 --seed 3; then
+    line() { grep "^$1 " "$tmp/out"; }
+    case $(line c-ray) in *"(0,6)"*"(1,7)"*) ok ;; *) bad "c-ray: $(line c-ray)" ;; esac
+    if line shared-seed | grep -Eq "2 of 28 pairs flagged: \(2,4\) peak [0-9]+ \(3,5\) peak [0-9]+$"; then ok
+    else bad "shared-seed: $(line shared-seed)"; fi
+    for s in padded random; do
+        if line "$s" | grep -q "0 of 28 pairs flagged: none"; then ok; else bad "$s: $(line "$s")"; fi
+    done
 fi
 
 check_summary
