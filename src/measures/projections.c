@@ -376,8 +376,8 @@ mcs_status mcs_projections_pair_stats(const mcs_projections *p, size_t i, size_t
         r.discrepancy_random = e;
     const double np = stats[ST_N_PEAK];
     double v = 0.0; /* variance of the max of np unit exponentials: sum 1/i^2 */
-    for (double q = 1.0; q <= np; q += 1.0)
-        v += 1.0 / (q * q);
+    for (size_t q = 1u; (double)q <= np; ++q)
+        v += 1.0 / ((double)q * (double)q);
     r.peak = stats[ST_PEAK];
     r.peak_stderr = n >= 2.0 ? welford_se(stats, ST_PEAK, n) : sqrt(v);
     r.peak_max = stats[ST_PEAK_MAX];
@@ -400,8 +400,8 @@ mcs_status mcs_projections_flagged(const mcs_projections *p, size_t *count)
     for (size_t i = 0; i < p->dim; ++i)
         for (size_t j = i + 1u; j < p->dim; ++j) {
             mcs_projections_pair r;
-            (void)mcs_projections_pair_stats(p, i, j, &r);
-            c += (size_t)r.flagged;
+            if (mcs_projections_pair_stats(p, i, j, &r) == MCS_OK)
+                c += (size_t)r.flagged;
         }
     *count = c;
     return MCS_OK;

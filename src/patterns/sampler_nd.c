@@ -114,7 +114,7 @@ void mcs_sampler_draw_nd_(const mcs_sampler *s, mcs_rng *rng, double *points)
         else
             seed = mcs_rng_next_(rng);
         fill_axis(s, a, seed, shift, z, points);
-        z = z * s->generator % s->k;
+        z = z * s->generator % (s->k > 0u ? (uint64_t)s->k : 1u); /* k >= 1 (checked) */
     }
 }
 
@@ -133,7 +133,7 @@ void mcs_sampler_base_nd_(const mcs_sampler *s, double *points)
                 x = halton_coordinate((uint32_t)j, primes[a], 0u, DIGITS_PLAIN);
             points[dim * j + a] = x;
         }
-        z = z * s->generator % s->k;
+        z = z * s->generator % (k > 0u ? (uint64_t)k : 1u); /* k >= 1 (checked) */
     }
 }
 
@@ -162,7 +162,7 @@ static double shortest_dual(uint64_t k, uint64_t y)
 {
     int64_t u0 = (int64_t)k, u1 = 0, v0 = -(int64_t)y, v1 = 1;
     for (int it = 0; it < 256; ++it) {
-        double uu = (double)u0 * (double)u0 + (double)u1 * (double)u1;
+        const double uu = (double)u0 * (double)u0 + (double)u1 * (double)u1;
         double vv = (double)v0 * (double)v0 + (double)v1 * (double)v1;
         if (vv > uu) {
             int64_t t0 = u0, t1 = u1;
@@ -170,9 +170,7 @@ static double shortest_dual(uint64_t k, uint64_t y)
             u1 = v1;
             v0 = t0;
             v1 = t1;
-            double t = uu;
-            uu = vv;
-            vv = t;
+            vv = uu;
         }
         /* now |v| <= |u|: reduce u by v */
         double mu = ((double)u0 * (double)v0 + (double)u1 * (double)v1) / vv;
