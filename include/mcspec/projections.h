@@ -22,7 +22,11 @@
  * exactly, P_i the 1D periodogram of dimension i of that set (1 for random
  * points, K/(K-1) for two stratified dimensions). Per set the radial
  * statistic is the mean over the disc of P(f) - ref(f), expectation 0 for
- * independent dimensions; its z = mean / stderr over sets. The peak of P/ref
+ * independent dimensions; its z = mean / stderr over sets, the stderr
+ * floored at the one independent dimensions would give (each P(f) an
+ * exponential of mean ref(f), independent over the disc: sum ref^2 /
+ * n_low^2 a set), since with few sets the spread over sets is itself
+ * uncertain. The peak of P/ref
  * over the n = 2 F^2 off-axis wave vectors of the half box is about the
  * maximum of n unit exponentials (the sum over a random pairing is close to
  * complex normal): P(max > q) ~ n e^-q. A pair is flagged when its radial z
@@ -55,7 +59,7 @@ extern "C" {
 /* Stored wave vectors of one pair: fx = -F..F by fy = 0..F. */
 #define MCS_PROJECTIONS_CELLS_(f) ((2u * (size_t)(f) + 1u) * ((size_t)(f) + 1u))
 /* Doubles of statistics per pair besides its mean periodogram. */
-#define MCS_PROJECTIONS_PAIR_STATS_ 16u
+#define MCS_PROJECTIONS_PAIR_STATS_ 18u
 /* Bytes of buffer for d dimensions, cutoff F and sets of up to k_max points,
  * as a constant expression: exactly what mcs_projections_size reports. */
 #define MCS_PROJECTIONS_SIZE(d, f, k_max)                                                  \
@@ -84,7 +88,7 @@ typedef struct {
     double radial_low;        /* mean P over the low off-axis disc, over sets */
     double radial_low_stderr; /* its standard error */
     double radial_low_ref;    /* the same mean of the independent-dimension reference */
-    double radial_low_z;      /* (radial_low - ref) / the stderr of the difference */
+    double radial_low_z;      /* (radial_low - ref) / the stderr of the difference, floored */
     double anisotropy_db;     /* psa's anisotropy, averaged over annuli 1..F (NaN: none) */
     double discrepancy;       /* squared WD of the projection, mean over the sets computed */
     double discrepancy_stderr; /* its standard error (NaN below 2 sets) */

@@ -32,7 +32,8 @@ enum {
     ST_WITHIN_RADIAL, /* first set: variance over the disc of P, and of P - ref */
     ST_WITHIN_DIFF,
     ST_N_LOW,      /* wave vectors in the disc */
-    ST_N_PEAK      /* wave vectors the peak is taken over */
+    ST_N_PEAK,     /* wave vectors the peak is taken over */
+    ST_MODEL_VAR   /* running mean of the per-set null variance of the disc mean */
 };
 
 static size_t pair_count(size_t d)
@@ -213,6 +214,7 @@ static void add_pair(mcs_projections *p, size_t k, const double *points, size_t 
     const double n = stats[ST_N] + 1.0;
     const long R2 = (long)(p->radius * p->radius);
     double sum_p = 0.0, sum_d = 0.0, sum_pp = 0.0, sum_dd = 0.0, sum_ref = 0.0, peak = 0.0;
+    double sum_rr = 0.0;
     double n_low = 0.0, n_peak = 0.0;
     for (size_t fy = 0; fy <= F; ++fy)
         for (size_t c = 0; c < w; ++c) {
@@ -232,6 +234,7 @@ static void add_pair(mcs_projections *p, size_t k, const double *points, size_t 
                 sum_d += pw - ref;
                 sum_dd += (pw - ref) * (pw - ref);
                 sum_ref += ref;
+                sum_rr += ref * ref;
                 n_low += 1.0;
             }
         }
@@ -246,6 +249,10 @@ static void add_pair(mcs_projections *p, size_t k, const double *points, size_t 
     welford(stats, ST_RADIAL, n, mp);
     welford(stats, ST_DIFF, n, md);
     stats[ST_REF] += (sum_ref / n_low - stats[ST_REF]) / n;
+    /* independent dimensions: each P(f) about an exponential of mean ref(f),
+     * independent across the disc, so the disc mean has variance
+     * sum ref^2 / n_low^2 */
+    stats[ST_MODEL_VAR] += (sum_rr / (n_low * n_low) - stats[ST_MODEL_VAR]) / n;
     welford(stats, ST_PEAK, n, peak);
     stats[ST_PEAK_MAX] = peak > stats[ST_PEAK_MAX] ? peak : stats[ST_PEAK_MAX];
     if (p->sets < (uint64_t)p->disc_sets) {
@@ -365,7 +372,13 @@ mcs_status mcs_projections_pair_stats(const mcs_projections *p, size_t i, size_t
         se_d = sqrt(stats[ST_WITHIN_DIFF] / stats[ST_N_LOW]);
     }
     r.radial_low_stderr = se_r;
-    r.radial_low_z = z_of(stats[ST_DIFF], se_d, 1.0 + fabs(r.radial_low_ref));
+    /* The test's standard error is never below the one independent
+     * dimensions have: with few sets their spread is itself uncertain (3
+     * sets would give a Student t of 2 degrees of freedom, whose tail
+     * beyond 5 is 2 %, not 3e-7). */
+    const double se_null = sqrt(stats[ST_MODEL_VAR] / n);
+    r.radial_low_z = z_of(stats[ST_DIFF], se_d > se_null ? se_d : se_null,
+                          1.0 + fabs(r.radial_low_ref));
     r.anisotropy_db = anisotropy(stats + MCS_PROJECTIONS_PAIR_STATS_, p->freq);
     r.discrepancy = stats[ST_DISC_N] > 0.0 ? stats[ST_DISC] : (double)NAN;
     r.discrepancy_stderr = welford_se(stats, ST_DISC, stats[ST_DISC_N]);

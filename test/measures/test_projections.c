@@ -204,6 +204,21 @@ static void test_clustered_independent_dimensions_are_not_flagged(void)
     TEST_ASSERT_EQUAL_UINT64(0u, flagged_of(&p));
 }
 
+/* Few sets: with 3 sets the spread over sets alone is a Student t of 2
+ * degrees of freedom, beyond 5 with probability 2 %: 32 random dimensions
+ * (496 pairs) would flag about 9. The floor at the independent-dimension
+ * standard error keeps them unflagged. */
+static void test_few_sets_of_many_random_dimensions_flag_nothing(void)
+{
+    mcs_rng r = seeded(23u);
+    mcs_projections p = make(32u, 3u, 64u, 0u);
+    for (int t = 0; t < 3; ++t) {
+        random_set(&r, 32u, 64u, pts);
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_projections_add(&p, 64u, pts));
+    }
+    TEST_ASSERT_EQUAL_UINT64(0u, flagged_of(&p));
+}
+
 static void test_one_set_gives_standard_errors_from_the_disc(void)
 {
     mcs_rng r = seeded(17u);
@@ -264,6 +279,7 @@ int main(void)
     RUN_TEST(test_good_samplers_flag_nothing);
     RUN_TEST(test_a_repeated_dimension_is_flagged_and_only_it);
     RUN_TEST(test_clustered_independent_dimensions_are_not_flagged);
+    RUN_TEST(test_few_sets_of_many_random_dimensions_flag_nothing);
     RUN_TEST(test_one_set_gives_standard_errors_from_the_disc);
     RUN_TEST(test_bad_input_is_refused_and_changes_nothing);
     return UNITY_END();
