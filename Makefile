@@ -243,12 +243,12 @@ export ADVERSARIAL_KNOWN
 
 # Every Unity runner, then the command-line and CSV checks of the section
 # examples (test/examples_check.sh prints a Unity-style summary too).
-test: $(TEST_BIN) $(SECTION_BIN) $(BUILD)/examples/renderer_sampler
-	@ADVERSARIAL_KNOWN=$(ADVERSARIAL_KNOWN) \
+test: $(TEST_BIN) $(SECTION_BIN) $(BUILD)/examples/renderer_sampler $(BUILD)/examples/sampler_check
+	@ADVERSARIAL_KNOWN=$(ADVERSARIAL_KNOWN) SAMPLER_CHECK=$(BUILD)/examples/sampler_check \
 	    EXAMPLES="$(SECTION_BIN) $(BUILD)/examples/renderer_sampler" MCSPEC="$(CLI_BIN)" RENDERER="$(BUILD)/examples/renderer_sampler" \
 	    sh test/run_tests.sh $(TEST_BIN) test/examples_check.sh test/cli_check.sh test/measures_check.sh \
 	    test/record_check.sh test/renderer_check.sh \
-	    test/spectrum_check.sh
+	    test/spectrum_check.sh test/sample_check.sh
 
 clean:
 	rm -rf build

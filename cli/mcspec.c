@@ -21,6 +21,10 @@ static const cli_command commands[] = {
      cli_cmd_discrepancy},
     {"stats", "minimum and average minimum distances of point sets read from a file",
      cli_cmd_stats},
+    {"sample", "point sets of a named pattern or sampler in any dimension, to stdout",
+     cli_cmd_sample},
+    {"projections", "every 2D projection of a d-dimensional sampler or point file, flagged",
+     cli_cmd_projections},
     {"version", "print the library's version (also: mcspec --version)", cli_cmd_version},
 };
 

@@ -31,10 +31,12 @@ int cli_source2d_known(const char *name)
     return pattern_kind(name) >= 0 || sampler_kind(name) >= 0;
 }
 
-/* Sobol points are Owen-scrambled, not rotated: no fixed periodogram. */
+/* Only rotated or shifted samplers have a fixed periodogram (Sobol points
+ * are Owen-scrambled, permuted Halton digits and padded pairs are not
+ * rotations): mcs_sampler_base_is_exact. */
 static int has_base(const cli_source2d *src)
 {
-    return src->is_sampler && src->sampler.kind != MCS_SAMPLER_SOBOL;
+    return src->is_sampler && mcs_sampler_base_is_exact(src->sampler.kind);
 }
 
 /* One trial of the unrandomised set into src->base, over a buffer of its

@@ -1,16 +1,15 @@
 #include "mcspec/sampler.h"
 #include "random/rng_inline.h"
+#include "sampler_internal.h"
 
 #include <stddef.h>
 #include <stdint.h>
 
-/* 2^-32 and 2^-53: a 32-bit binary fraction and a 53-bit one to double. */
-#define TWO_M32 (1.0 / 4294967296.0)
-#define TWO_M53 (1.0 / 9007199254740992.0)
-
 /* Sobol dimension 2 (primitive polynomial x + 1, m_1 = 1): direction number
  * v_b = v_{b-1} xor (v_{b-1} >> 1) from v_0 = 2^31, i.e. the rows of Pascal's
- * triangle mod 2. Dimension 1 has v_b = 2^(31-b): the van der Corput sequence. */
+ * triangle mod 2. Dimension 1 has v_b = 2^(31-b): the van der Corput sequence.
+ * (Row 2 of Joe and Kuo's table, mcs_sampler_sobol_v_, holds the same
+ * numbers: a test checks it.) */
 static const uint32_t sobol_dim2[32] = {
     0x80000000u, 0xc0000000u, 0xa0000000u, 0xf0000000u, 0x88000000u, 0xcc000000u,
     0xaa000000u, 0xff000000u, 0x80800000u, 0xc0c00000u, 0xa0a00000u, 0xf0f00000u,
@@ -19,14 +18,15 @@ static const uint32_t sobol_dim2[32] = {
     0x80808080u, 0xc0c0c0c0u, 0xa0a0a0a0u, 0xf0f0f0f0u, 0x88888888u, 0xccccccccu,
     0xaaaaaaaau, 0xffffffffu};
 
-/* Kronecker steps as 64-bit fixed-point fractions, round(alpha 2^64): j alpha
- * mod 1 is then exact integer arithmetic mod 2^64 for every j (a double
- * product j * alpha would lose log2(j) bits of the fraction).
- * 1D: 1/golden = 0.6180339887...; 2D (R2, Roberts 2018): 1/g and 1/g^2 with g
- * the plastic number, g^3 = g + 1: 0.7548776662..., 0.5698402909... */
-#define KRONECKER_1D UINT64_C(0x9e3779b97f4a7c16)
-#define KRONECKER_R2_X UINT64_C(0xc13fa9a902a6328f)
-#define KRONECKER_R2_Y UINT64_C(0x91e10da5c79e7b1d)
+#define TWO_M32 MCS_SMP_TWO_M32
+#define KRONECKER_1D MCS_SMP_KRONECKER_1D
+#define KRONECKER_R2_X MCS_SMP_KRONECKER_R2_X
+#define KRONECKER_R2_Y MCS_SMP_KRONECKER_R2_Y
+#define reverse_bits mcs_smp_reverse_bits_
+#define owen_to_double mcs_smp_owen_to_double_
+#define radical_inverse3 mcs_smp_radical_inverse3_
+#define fraction64 mcs_smp_fraction64_
+#define rotate mcs_smp_rotate_
 
 const char *mcs_sampler_kind_str(mcs_sampler_kind kind)
 {
@@ -36,6 +36,11 @@ const char *mcs_sampler_kind_str(mcs_sampler_kind kind)
     case MCS_SAMPLER_HAMMERSLEY: return "hammersley";
     case MCS_SAMPLER_SOBOL: return "sobol-owen";
     case MCS_SAMPLER_KRONECKER: return "kronecker";
+    case MCS_SAMPLER_SOBOL_ND: return "sobol-owen-nd";
+    case MCS_SAMPLER_HALTON_PERMUTED: return "halton-permuted";
+    case MCS_SAMPLER_PADDED: return "padded";
+    case MCS_SAMPLER_HALTON_OWEN: return "halton-owen";
+    case MCS_SAMPLER_LATTICE: return "lattice";
     }
     return "unknown";
 }
@@ -48,13 +53,47 @@ int mcs_sampler_has_dim(mcs_sampler_kind kind, size_t dim)
     case MCS_SAMPLER_HAMMERSLEY: return dim == 2u;
     case MCS_SAMPLER_SOBOL:
     case MCS_SAMPLER_KRONECKER: return dim == 1u || dim == 2u;
+    case MCS_SAMPLER_SOBOL_ND:
+    case MCS_SAMPLER_HALTON_PERMUTED:
+    case MCS_SAMPLER_HALTON_OWEN:
+    case MCS_SAMPLER_LATTICE: return dim >= 1u && dim <= MCS_SAMPLER_MAX_DIM;
+    case MCS_SAMPLER_PADDED: return dim >= 2u && dim <= MCS_SAMPLER_MAX_DIM;
     }
     return 0;
 }
 
+int mcs_sampler_base_is_exact(mcs_sampler_kind kind)
+{
+    switch (kind) {
+    case MCS_SAMPLER_VAN_DER_CORPUT:
+    case MCS_SAMPLER_HALTON:
+    case MCS_SAMPLER_HAMMERSLEY:
+    case MCS_SAMPLER_KRONECKER:
+    case MCS_SAMPLER_LATTICE: return 1;
+    default: return 0;
+    }
+}
+
+/* K in 1..2^32; a padded sampler's permutations take K below 2^32. */
+static int k_in_range_for(mcs_sampler_kind kind, size_t k)
+{
+    uint64_t top = kind == MCS_SAMPLER_PADDED ? (uint64_t)UINT32_MAX - 1u : (uint64_t)UINT32_MAX;
+    return k >= 1u && (uint64_t)k - 1u <= top;
+}
+
 static int k_in_range(size_t k)
 {
-    return k >= 1u && (uint64_t)k - 1u <= (uint64_t)UINT32_MAX;
+    return k_in_range_for(MCS_SAMPLER_VAN_DER_CORPUT, k);
+}
+
+static void set(mcs_sampler *s, mcs_sampler_kind kind, uint32_t pad, uint32_t g, size_t dim,
+                size_t k)
+{
+    s->kind = kind;
+    s->pad = pad;
+    s->generator = g;
+    s->dim = dim;
+    s->k = k;
 }
 
 mcs_status mcs_sampler_init(mcs_sampler *s, mcs_sampler_kind kind, size_t dim, size_t k)
@@ -63,12 +102,51 @@ mcs_status mcs_sampler_init(mcs_sampler *s, mcs_sampler_kind kind, size_t dim, s
         return MCS_ERR_NULL;
     if (!mcs_sampler_has_dim(kind, dim))
         return MCS_ERR_KIND;
+    if (!k_in_range_for(kind, k))
+        return MCS_ERR_K_RANGE;
+    uint32_t pad = kind == MCS_SAMPLER_PADDED ? (uint32_t)MCS_SAMPLER_SOBOL : 0u;
+    uint32_t g = kind == MCS_SAMPLER_LATTICE ? mcs_sampler_lattice_generator(k, dim) : 0u;
+    set(s, kind, pad, g, dim, k);
+    return MCS_OK;
+}
+
+mcs_status mcs_sampler_init_padded(mcs_sampler *s, mcs_sampler_kind pad, size_t dim, size_t k)
+{
+    if (s == NULL)
+        return MCS_ERR_NULL;
+    if (!mcs_smp_is_pad_kind_((uint32_t)pad) || !mcs_sampler_has_dim(MCS_SAMPLER_PADDED, dim))
+        return MCS_ERR_KIND;
+    if (!k_in_range_for(MCS_SAMPLER_PADDED, k))
+        return MCS_ERR_K_RANGE;
+    set(s, MCS_SAMPLER_PADDED, (uint32_t)pad, 0u, dim, k);
+    return MCS_OK;
+}
+
+mcs_status mcs_sampler_init_lattice(mcs_sampler *s, size_t dim, size_t k, uint32_t g)
+{
+    if (s == NULL)
+        return MCS_ERR_NULL;
+    if (!mcs_sampler_has_dim(MCS_SAMPLER_LATTICE, dim))
+        return MCS_ERR_KIND;
     if (!k_in_range(k))
         return MCS_ERR_K_RANGE;
-    s->kind = kind;
-    s->dim = dim;
-    s->k = k;
+    if (!mcs_sampler_generator_ok_(k, g))
+        return MCS_ERR_MISMATCH;
+    set(s, MCS_SAMPLER_LATTICE, 0u, g, dim, k);
     return MCS_OK;
+}
+
+/* What init leaves: a kind defined in dim, K in range, the kind's own
+ * fields set (and the others 0). */
+static int is_valid(const mcs_sampler *s)
+{
+    if (!mcs_sampler_has_dim(s->kind, s->dim) || !k_in_range_for(s->kind, s->k))
+        return 0;
+    if (s->kind == MCS_SAMPLER_PADDED)
+        return mcs_smp_is_pad_kind_(s->pad) && s->generator == 0u;
+    if (s->kind == MCS_SAMPLER_LATTICE)
+        return s->pad == 0u && mcs_sampler_generator_ok_(s->k, s->generator);
+    return s->pad == 0u && s->generator == 0u;
 }
 
 /* The checks of a trial of k points into points: NULL, UNINIT (also for a
@@ -78,55 +156,16 @@ static mcs_status check(const mcs_sampler *s, int rng_seeded, size_t k, const do
 {
     if (s == NULL || points == NULL)
         return MCS_ERR_NULL;
-    if (!mcs_sampler_has_dim(s->kind, s->dim) || !k_in_range(s->k) || !rng_seeded)
+    if (!is_valid(s) || !rng_seeded)
         return MCS_ERR_UNINIT;
     if (k != s->k)
         return MCS_ERR_MISMATCH;
     return MCS_OK;
 }
 
-static uint32_t reverse_bits(uint32_t x)
-{
-    x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
-    x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
-    x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
-    x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
-    return (x >> 16) | (x << 16);
-}
-
 uint32_t mcs_sampler_owen_scramble(uint32_t x, uint32_t seed)
 {
-    /* Bit-reversed, the 1/2 digit is bit 0. Each step changes bit b only by
-     * bits below b: x ^= x * even (the product's bit b uses bits < b), adding
-     * a constant and multiplying by an odd number (carries move upwards). So
-     * reversed back, each digit is flipped by a function of the digits above
-     * it: nested scrambling. Constants: Vegdahl's improved Laine-Karras hash. */
-    x = reverse_bits(x);
-    x ^= x * 0x3d20adeau;
-    x += seed;
-    x *= (seed >> 16) | 1u;
-    x ^= x * 0x05526c56u;
-    x ^= x * 0x53a22864u;
-    return reverse_bits(x);
-}
-
-/* A 32-bit integer mixer (Wellons' lowbias32): supplies the digits below
- * 2^-32 of a scrambled coordinate from its 32-bit prefix and the seed. */
-static uint32_t mix32(uint32_t x)
-{
-    x ^= x >> 16;
-    x *= 0x7feb352du;
-    x ^= x >> 15;
-    x *= 0x846ca68bu;
-    x ^= x >> 16;
-    return x;
-}
-
-static double owen_to_double(uint32_t bits, uint32_t seed)
-{
-    uint32_t scrambled = mcs_sampler_owen_scramble(bits, seed);
-    uint32_t low = mix32(scrambled ^ mix32(seed ^ 0x9e3779b9u)) >> 11; /* 21 more digits */
-    return ((double)scrambled * 2097152.0 + (double)low) * TWO_M53;
+    return mcs_smp_owen_scramble_(x, seed);
 }
 
 static uint32_t sobol_bits(uint32_t j, size_t axis)
@@ -138,19 +177,6 @@ static uint32_t sobol_bits(uint32_t j, size_t axis)
         if (j & 1u)
             v ^= sobol_dim2[b];
     return v;
-}
-
-/* phi_3(j) = (digits of j in base 3, reversed) / 3^d: the reversed digits
- * form an integer below 3^21 < 2^53, so one division rounds it correctly. */
-static double radical_inverse3(uint32_t j)
-{
-    uint64_t rev = 0u, scale = 1u;
-    while (j != 0u) {
-        rev = rev * 3u + j % 3u;
-        scale *= 3u;
-        j /= 3u;
-    }
-    return (double)rev / (double)scale;
 }
 
 /* Coordinate `axis` of unrandomised point j of a rotated kind. */
@@ -175,25 +201,19 @@ static uint64_t kronecker_step(size_t dim, size_t axis)
     return axis == 0u ? KRONECKER_R2_X : KRONECKER_R2_Y;
 }
 
-/* Top 53 bits of a 64-bit fraction: a double in [0, 1). */
-static double fraction64(uint64_t x)
-{
-    return (double)(x >> 11) * TWO_M53;
-}
-
-/* u + shift mod 1 for u, shift in [0,1): if u + shift >= 1 the subtraction
- * is exact; if the sum rounds up to exactly 1 it becomes 0. */
-static double rotate(double u, double shift)
-{
-    double x = u + shift;
-    return x >= 1.0 ? x - 1.0 : x;
-}
-
 mcs_status mcs_sampler_base_points(const mcs_sampler *s, size_t k, double *points)
 {
     mcs_status st = check(s, 1, k, points);
     if (st != MCS_OK)
         return st;
+    if (s->kind == MCS_SAMPLER_PADDED) {
+        mcs_sampler_base_padded_(s, points);
+        return MCS_OK;
+    }
+    if (mcs_smp_kind_is_nd_(s->kind)) {
+        mcs_sampler_base_nd_(s, points);
+        return MCS_OK;
+    }
     const size_t dim = s->dim;
     for (size_t j = 0; j < k; ++j)
         for (size_t a = 0; a < dim; ++a)
@@ -209,6 +229,14 @@ mcs_status mcs_sampler_draw(const mcs_sampler *s, mcs_rng *rng, size_t k, double
     mcs_status st = rng == NULL ? MCS_ERR_NULL : check(s, mcs_rng_is_seeded_(rng), k, points);
     if (st != MCS_OK)
         return st;
+    if (s->kind == MCS_SAMPLER_PADDED) {
+        mcs_sampler_draw_padded_(s, rng, points);
+        return MCS_OK;
+    }
+    if (mcs_smp_kind_is_nd_(s->kind)) {
+        mcs_sampler_draw_nd_(s, rng, points);
+        return MCS_OK;
+    }
     const size_t dim = s->dim;
     for (size_t a = 0; a < dim; ++a) {
         if (s->kind == MCS_SAMPLER_SOBOL) {

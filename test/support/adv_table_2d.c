@@ -209,9 +209,9 @@ static const uint8_t p2d_binned_vars[3] = {0, 1, 3};       /* random, jittered, 
 #define EXACT_PLANE(nm) AIN(nm, E_D, R_F, LEN2(L_PROD, 1, 2), 0)
 
 const adv_fn adv_fns_2d[] = {
-    FN(sampler_kind_str, EF_NONE, 1, 0, ENM("kind", 0, 0, 4, F_FREE)),
-    FN(sampler_has_dim, EF_NONE, 1, 0, ENM("kind", 0, 0, 4, F_FREE), SZ_FREE("dim", 1)),
-    FN(sampler_init, EF_NONE, 1, 3, OBJ_OUT("s", T_SAMPLER), ENM("kind", 3, 0, 4, 0),
+    FN(sampler_kind_str, EF_NONE, 1, 0, ENM("kind", 0, 0, 9, F_FREE)),
+    FN(sampler_has_dim, EF_NONE, 1, 0, ENM("kind", 0, 0, 9, F_FREE), SZ_FREE("dim", 1)),
+    FN(sampler_init, EF_NONE, 1, 3, OBJ_OUT("s", T_SAMPLER), ENM("kind", 3, 0, 9, 0),
        SZ_DEF("dim", 2, 1, 2, F_OKIN), SZ_DEF("k", 8, 1, (size_t)1 << 32, F_OKIN)),
     FNV(sampler_draw, EF_NONE, sampler_vars, 0, OBJ_IN("s", T_SAMPLER, F_SIZED),
         OBJ_IO("rng", T_RNG, 0), SZ_MATCH("k", 8, (size_t)1 << 32),
