@@ -12,6 +12,7 @@
 #include "mcspec/importance.h"
 #include "mcspec/pattern.h"
 #include "mcspec/sampler.h"
+#include "mcspec/bluenoise.h"
 #include "mcspec/pattern2d.h"
 #include "mcspec/estimate.h"
 #include "mcspec/welford.h"
