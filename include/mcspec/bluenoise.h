@@ -73,7 +73,7 @@ typedef enum {
 /* Parameters of a draw; a field at 0 takes the kind's default (below).
  * Fields a kind does not read must be 0. */
 typedef struct {
-    double radius;       /* dart-throwing 0.75, poisson-disk 0.65: r / d_max */
+    double radius;       /* r / d_max: dart-throwing 0.75 (0.70 in 1D), poisson-disk 0.65 (0.60 in 1D) */
     uint32_t attempts;   /* dart-throwing 1000 darts per point; poisson-disk 30 per active point */
     uint32_t iterations; /* lloyd: 10 Lloyd steps */
     uint32_t resolution; /* lloyd: 64 lattice points per Voronoi cell, about */
@@ -87,13 +87,15 @@ const char *mcs_bluenoise_kind_str(mcs_bluenoise_kind kind);
 /* 1 if kind is defined in dimension dim (the table above), else 0. */
 int mcs_bluenoise_has_dim(mcs_bluenoise_kind kind, size_t dim);
 
-/* The parameters a draw of kind uses when given params (NULL: all 0), the
- * defaults filled in, into *out. MCS_ERR_NULL (out), MCS_ERR_KIND (kind),
+/* The parameters a draw of kind in dim dimensions uses when given params
+ * (NULL: all 0), the defaults filled in, into *out. MCS_ERR_NULL (out),
+ * MCS_ERR_KIND (kind, or kind not defined in dim),
  * MCS_ERR_NOT_FINITE (radius NaN or infinite), MCS_ERR_DOMAIN (radius not 0
  * and outside [MCS_BLUENOISE_MIN_RADIUS, MCS_BLUENOISE_MAX_RADIUS], a field
  * above its maximum, or a field the kind does not read not 0). *out
  * untouched on error. */
-mcs_status mcs_bluenoise_params_resolve(mcs_bluenoise_kind kind, const mcs_bluenoise_params *params,
+mcs_status mcs_bluenoise_params_resolve(mcs_bluenoise_kind kind, size_t dim,
+                                        const mcs_bluenoise_params *params,
                                         mcs_bluenoise_params *out);
 
 /* Bytes of work a draw of k points of kind in dim dimensions needs (any

@@ -10,7 +10,11 @@
 #include <stddef.h>
 #include <stdint.h>
 
-/* Defaults (bluenoise.h; docs/samplers.md says why these). */
+/* Defaults (bluenoise.h; docs/samplers.md says why these). In 1D dart
+ * throwing jams at Renyi's parking constant 0.7476 and Bridson near 0.67,
+ * so their 1D radii are lower. */
+#define DART_RADIUS_1D 0.70
+#define DISK_RADIUS_1D 0.60
 #define DART_RADIUS 0.75
 #define DART_ATTEMPTS 1000u
 #define DISK_RADIUS 0.65
@@ -64,12 +68,13 @@ static void fields_of(mcs_bluenoise_kind kind, int used[5])
         used[4] = 1;
 }
 
-mcs_status mcs_bluenoise_params_resolve(mcs_bluenoise_kind kind, const mcs_bluenoise_params *params,
+mcs_status mcs_bluenoise_params_resolve(mcs_bluenoise_kind kind, size_t dim,
+                                        const mcs_bluenoise_params *params,
                                         mcs_bluenoise_params *out)
 {
     if (out == NULL)
         return MCS_ERR_NULL;
-    if (!kind_ok(kind))
+    if (!mcs_bluenoise_has_dim(kind, dim))
         return MCS_ERR_KIND;
     mcs_bluenoise_params p = {0.0, 0u, 0u, 0u, 0u};
     if (params != NULL)
@@ -90,7 +95,8 @@ mcs_status mcs_bluenoise_params_resolve(mcs_bluenoise_kind kind, const mcs_bluen
         return MCS_ERR_DOMAIN;
     const int dart = kind == MCS_BLUENOISE_DART_THROWING;
     if (used[0] && !set[0])
-        p.radius = dart ? DART_RADIUS : DISK_RADIUS;
+        p.radius = dart ? (dim == 1u ? DART_RADIUS_1D : DART_RADIUS)
+                        : (dim == 1u ? DISK_RADIUS_1D : DISK_RADIUS);
     if (used[1] && !set[1])
         p.attempts = dart ? DART_ATTEMPTS : DISK_ATTEMPTS;
     if (used[2] && !set[2])
@@ -143,7 +149,7 @@ static mcs_status check_draw(mcs_bluenoise_kind kind, size_t dim, size_t k,
         return MCS_ERR_NULL;
     mcs_status st = check_shape(kind, dim, k);
     if (st == MCS_OK)
-        st = mcs_bluenoise_params_resolve(kind, params, p);
+        st = mcs_bluenoise_params_resolve(kind, dim, params, p);
     if (st != MCS_OK)
         return st;
     if (!mcs_rng_is_seeded_(rng))
