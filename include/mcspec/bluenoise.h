@@ -124,20 +124,27 @@ mcs_status mcs_bluenoise_work_size(mcs_bluenoise_kind kind, size_t dim, size_t k
  * radius: dart throwing spent its budget, or Bridson's maximal set has fewer
  * than k points; ask a smaller radius or more attempts), MCS_ERR_INVARIANT
  * (pmj02 found no valid stratum: never observed, a defect if seen).
- * On error points and *rng are as they were. */
+ * On error points and *rng are as they were, and so is work except after
+ * MCS_ERR_EMPTY and MCS_ERR_INVARIANT (the failed run's scratch). */
 mcs_status mcs_bluenoise_draw(mcs_bluenoise_kind kind, size_t dim, size_t k,
                               const mcs_bluenoise_params *params, mcs_rng *rng, void *work,
                               size_t work_bytes, double *points);
 
+/* Points a maximal set of the Poisson kinds can hold (dim 1..3): the packing
+ * bound N <= k / radius^dim at radius 0.5, and 2 for rounding. */
+#define MCS_BLUENOISE_MAXIMAL_CAP(dim, k) (((size_t)1u << (dim)) * (size_t)(k) + 2u)
+
 /* The method's maximal set for the Poisson kinds at radius r = radius
  * d_max(k): dart throwing spends its whole budget (attempts k darts),
- * Bridson runs until no point is active. Its n points (at most 2^dim k + 2,
- * all of them, in the order placed) go to points[cap * dim] and n to *count;
- * its ratio r / d_max(n) is the figure Lagae and Dutre (2008) tabulate.
- * Statuses as mcs_bluenoise_draw, but MCS_ERR_KIND also for a kind that is
- * not a Poisson kind, MCS_ERR_NULL for count, MCS_ERR_SPACE also when n >
- * cap (nothing written), and no MCS_ERR_EMPTY. On error points, *count and
- * *rng are as they were. */
+ * Bridson runs until no point is active. Its n points (in the order placed)
+ * go to points[n * dim] of the caller's points[cap * dim], cap at least
+ * MCS_BLUENOISE_MAXIMAL_CAP(dim, k), and n to *count; the rest of points is
+ * not written. Its ratio r / d_max(n) is the figure Lagae and Dutre (2008)
+ * tabulate. Statuses as mcs_bluenoise_draw, but MCS_ERR_KIND also for a
+ * kind that is not a Poisson kind, MCS_ERR_NULL for count, MCS_ERR_SPACE
+ * also for cap below MCS_BLUENOISE_MAXIMAL_CAP(dim, k), MCS_ERR_ALIAS also
+ * for count overlapping the others, and no MCS_ERR_EMPTY. On error
+ * nothing is written, work included, and the rng is as it was. */
 mcs_status mcs_bluenoise_maximal(mcs_bluenoise_kind kind, size_t dim, size_t k,
                                  const mcs_bluenoise_params *params, mcs_rng *rng, void *work,
                                  size_t work_bytes, size_t cap, double *points, size_t *count);

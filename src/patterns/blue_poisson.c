@@ -12,7 +12,7 @@
  * packing bound N <= k / radius^dim (d_max(N) >= r), and 2 for rounding. */
 static size_t capacity(size_t dim, size_t k)
 {
-    return ((size_t)1u << dim) * k + 2u;
+    return MCS_BLUENOISE_MAXIMAL_CAP(dim, k);
 }
 
 size_t mcs_blue_poisson_work_bytes_(size_t dim, size_t k)
@@ -117,9 +117,8 @@ mcs_status mcs_blue_poisson_(mcs_bluenoise_kind kind, size_t dim, size_t k,
     else
         bridson(&g, rng, r, p->attempts, active);
 
-    if (maximal) {
-        if (g.count > cap)
-            return MCS_ERR_SPACE;
+    if (maximal) { /* cap >= hold, checked by the caller */
+        (void)cap;
         for (size_t j = 0; j < g.count * dim; ++j)
             points[j] = pts[j];
         *count = g.count;

@@ -196,6 +196,8 @@ mcs_status mcs_bluenoise_maximal(mcs_bluenoise_kind kind, size_t dim, size_t k,
     mcs_bluenoise_params p;
     const size_t len = cap > SIZE_MAX / 4u ? SIZE_MAX : cap * dim;
     mcs_status st = check_draw(kind, dim, k, params, rng, work, work_bytes_given, points, len, &p);
+    if (st == MCS_OK && cap < MCS_BLUENOISE_MAXIMAL_CAP(dim, k))
+        st = MCS_ERR_SPACE;
     if (st == MCS_OK && (mcs_overlap_(count, sizeof *count, points, mcs_bytes_(len, sizeof *points)) ||
                          mcs_overlap_(count, sizeof *count, rng, sizeof *rng) ||
                          mcs_overlap_(count, sizeof *count, work, work_bytes(kind, dim, k))))

@@ -508,6 +508,10 @@ static const scenario scenarios[] = {
     SCENARIO(io_provenances_breaking_a_rule_are_refused_unchanged, 0),
 };
 
+/* The blue-noise samplers' rows (test/support/adv_table_blue.c). */
+extern const adv_fn adv_fns_blue[];
+extern const size_t adv_fns_blue_count;
+
 static const scenario *current_scenario;
 
 static void test_scenario(void)
@@ -541,6 +545,7 @@ int main(void)
     run_table(adv_fns_2d, adv_fns_2d_count);
     run_table(adv_fns_io, adv_fns_io_count);
     run_table(adv_fns_measures, adv_fns_measures_count);
+    run_table(adv_fns_blue, adv_fns_blue_count);
     for (size_t i = 0; i < sizeof scenarios / sizeof scenarios[0]; ++i) {
         current_scenario = &scenarios[i];
         UnityDefaultTestRun(test_scenario, scenarios[i].name, __LINE__);
