@@ -143,7 +143,7 @@ typedef struct {
 
 static box_ box_of(const mcs_blue_grid_ *g, const double *p, size_t reach, int *whole)
 {
-    box_ b;
+    box_ b = {{0u, 0u, 0u}, {1u, 1u, 1u}};
     *whole = 1;
     for (size_t c = 0; c < g->dim; ++c) {
         if (2u * reach + 1u >= g->m) {

@@ -53,10 +53,11 @@ static void lloyd_step(mcs_blue_grid_ *g, size_t k, size_t lattice, mcs_rng *rng
             q[0] = mcs_blue_wrap_(((double)col + sx) * step);
             uint32_t near = MCS_BLUE_NONE;
             (void)mcs_blue_grid_nearest_(g, q, &near);
-            const double *at = g->pts + 2u * (size_t)near;
-            sum[3u * near] += displacement(at[0], q[0]);
-            sum[3u * near + 1u] += displacement(at[1], q[1]);
-            sum[3u * near + 2u] += 1.0;
+            const size_t i = (size_t)near;
+            const double *at = g->pts + 2u * i;
+            sum[3u * i] += displacement(at[0], q[0]);
+            sum[3u * i + 1u] += displacement(at[1], q[1]);
+            sum[3u * i + 2u] += 1.0;
         }
     }
     for (size_t i = 0; i < k; ++i) {

@@ -52,7 +52,7 @@ static void shell_point(mcs_rng *rng, size_t dim, const double *centre, double r
         dir[1] = s * sin(a);
         dir[2] = z;
     }
-    for (size_t c = 0; c < dim; ++c)
+    for (size_t c = 0; c < dim && c < 3u; ++c)
         p[c] = mcs_blue_wrap_(centre[c] + rho * dir[c]);
 }
 

@@ -96,37 +96,51 @@ static void begin_level(pmj_ *s, unsigned t, size_t placed)
         mark(s, i);
 }
 
-/* The valid x strata below x prefix px of a bits (shape a's y cell from the
- * subquadrant's h-bit y, sy). */
-static void find_x(pmj_ *s, unsigned h, unsigned a, uint64_t px, uint64_t sy)
+/* The cell bit of the node (depth d below the subquadrant, prefix q) of
+ * the x tree (y = 0: prefix of x, shape a = h + d, its y cell from the
+ * subquadrant's h-bit sy) or of the y tree (y = 1: prefix of y, shape
+ * a = t - h - d, its x cell from sx). */
+static size_t node_bit(const pmj_ *s, int y, unsigned h, unsigned d, uint64_t q, uint64_t sx,
+                       uint64_t sy)
 {
     const unsigned t = s->t;
-    const uint64_t ycell = sy >> (h - (t - a));
-    const size_t bit = ((size_t)a << t) + (size_t)(ycell << a | px);
-    if (occupied(s, bit))
-        return;
-    if (a == t) {
-        s->xs[s->nx++] = (uint32_t)px;
-        return;
+    if (!y) {
+        const unsigned a = h + d;
+        return ((size_t)a << t) + (size_t)((sy >> (h - (t - a))) << a | q);
     }
-    find_x(s, h, a + 1u, 2u * px, sy);
-    find_x(s, h, a + 1u, 2u * px + 1u, sy);
+    const unsigned a = t - h - d;
+    return ((size_t)a << t) + (size_t)(q << a | sx >> (h - a));
 }
 
-/* The same for y: prefix py of b = t - a bits, x cell from sx. */
-static void find_y(pmj_ *s, unsigned h, unsigned b, uint64_t py, uint64_t sx)
+/* The valid finest strata of one axis: a depth-first walk of the binary
+ * tree of strata below the subquadrant (depth t - h), pruned at the first
+ * occupied cell, leaves in increasing order; an explicit stack of at most
+ * 2 (t - h) + 1 nodes. */
+static size_t find_valid(const pmj_ *s, int y, unsigned h, uint64_t sx, uint64_t sy,
+                         uint32_t *out)
 {
-    const unsigned t = s->t, a = t - b;
-    const uint64_t xcell = sx >> (h - a);
-    const size_t bit = ((size_t)a << t) + (size_t)(py << a | xcell);
-    if (occupied(s, bit))
-        return;
-    if (b == t) {
-        s->ys[s->ny++] = (uint32_t)py;
-        return;
+    uint64_t stack_q[2u * 32u + 2u];
+    unsigned stack_d[2u * 32u + 2u];
+    size_t top = 0u, n = 0u;
+    const unsigned depth = s->t - h;
+    stack_q[top] = y ? sy : sx;
+    stack_d[top++] = 0u;
+    while (top > 0u) {
+        --top;
+        const uint64_t q = stack_q[top];
+        const unsigned d = stack_d[top];
+        if (occupied(s, node_bit(s, y, h, d, q, sx, sy)))
+            continue;
+        if (d == depth) {
+            out[n++] = (uint32_t)q;
+            continue;
+        }
+        stack_q[top] = 2u * q + 1u; /* right below left: leaves come out in order */
+        stack_d[top++] = d + 1u;
+        stack_q[top] = 2u * q;
+        stack_d[top++] = d + 1u;
     }
-    find_y(s, h, b + 1u, 2u * py, sx);
-    find_y(s, h, b + 1u, 2u * py + 1u, sx);
+    return n;
 }
 
 /* Point i in subquadrant (sx, sy) of the 2^h grid: the best of `candidates`
@@ -136,9 +150,8 @@ static int place(pmj_ *s, size_t i, unsigned h, uint64_t sx, uint64_t sy, uint32
                  mcs_rng *rng)
 {
     const unsigned t = s->t, low = FRAC_BITS - t;
-    s->nx = s->ny = 0u;
-    find_x(s, h, h, sx, sy);
-    find_y(s, h, h, sy, sx);
+    s->nx = find_valid(s, 0, h, sx, sy, s->xs);
+    s->ny = find_valid(s, 1, h, sx, sy, s->ys);
     if (s->nx == 0u || s->ny == 0u)
         return 0;
     double best = -1.0;
