@@ -101,7 +101,8 @@ mcs_status mcs_bluenoise_params_resolve(mcs_bluenoise_kind kind, size_t dim,
 /* Bytes of work a draw of k points of kind in dim dimensions needs (any
  * parameters), into *bytes; at most MCS_BLUENOISE_WORK_SIZE(dim, k).
  * MCS_ERR_NULL, MCS_ERR_KIND (kind, or kind not defined in dim),
- * MCS_ERR_K_RANGE (k = 0 or above MCS_BLUENOISE_MAX_K). *bytes untouched on
+ * MCS_ERR_K_RANGE (k = 0 or above MCS_BLUENOISE_MAX_K, or 300 k bytes past
+ * SIZE_MAX: 32-bit targets stop near 14 million points). *bytes untouched on
  * error. */
 mcs_status mcs_bluenoise_work_size(mcs_bluenoise_kind kind, size_t dim, size_t k, size_t *bytes);
 

@@ -115,6 +115,11 @@ static mcs_status check_shape(mcs_bluenoise_kind kind, size_t dim, size_t k)
         return MCS_ERR_KIND;
     if (k == 0u || k > (size_t)MCS_BLUENOISE_MAX_K)
         return MCS_ERR_K_RANGE;
+    /* With a 32-bit size_t the work of the largest sets would pass SIZE_MAX
+     * (at most 8 + 8 dim bytes per point of the 2^dim k + 2 the Poisson
+     * kinds hold, and 4 per cell: 300 k bytes bounds every kind). */
+    if ((double)k * 300.0 > (double)SIZE_MAX)
+        return MCS_ERR_K_RANGE;
     return MCS_OK;
 }
 
