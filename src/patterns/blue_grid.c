@@ -87,8 +87,7 @@ void *mcs_blue_carve_(mcs_blue_carver_ *c, size_t n, size_t elem)
     return p;
 }
 
-void mcs_blue_grid_init_(mcs_blue_grid_ *g, size_t dim, size_t k, size_t cap, uint32_t *head,
-                         uint32_t *next, double *pts)
+void mcs_blue_grid_init_(mcs_blue_grid_ *g, size_t dim, size_t k, size_t cap)
 {
     g->dim = dim;
     g->m = mcs_blue_grid_side_(dim, k);
@@ -96,9 +95,6 @@ void mcs_blue_grid_init_(mcs_blue_grid_ *g, size_t dim, size_t k, size_t cap, ui
     for (size_t c = 0; c < dim; ++c)
         g->cells *= g->m;
     g->cap = cap;
-    g->head = head;
-    g->next = next;
-    g->pts = pts;
     mcs_blue_grid_clear_(g);
 }
 

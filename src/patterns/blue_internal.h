@@ -38,10 +38,10 @@ size_t mcs_blue_carve_bytes_(size_t n, size_t elem);
  * buffer with mcs_blue_carve_bytes_, so there is room). */
 void *mcs_blue_carve_(mcs_blue_carver_ *c, size_t n, size_t elem);
 
-/* An empty grid of side mcs_blue_grid_side_(dim, k) over head[cells],
- * next[cap] and pts[cap dim]. */
-void mcs_blue_grid_init_(mcs_blue_grid_ *g, size_t dim, size_t k, size_t cap, uint32_t *head,
-                         uint32_t *next, double *pts);
+/* An empty grid of side mcs_blue_grid_side_(dim, k) over the caller's
+ * g->head[cells], g->next[cap] and g->pts[cap dim], set before the call
+ * (at most six arguments per call keeps every frame static: stack.sh). */
+void mcs_blue_grid_init_(mcs_blue_grid_ *g, size_t dim, size_t k, size_t cap);
 
 /* Empties the cells (the points stay in pts, count is 0). */
 void mcs_blue_grid_clear_(mcs_blue_grid_ *g);
@@ -77,10 +77,18 @@ uint64_t mcs_blue_bits_(mcs_rng *rng, unsigned bits); /* bits <= 64 uniform bits
  * the work's bytes are at least their *_work_bytes_ for (dim, k), rng is
  * seeded and may be advanced even on failure (the caller restores it), and
  * p holds the resolved parameters. Each writes points only on MCS_OK. */
+typedef struct {
+    mcs_bluenoise_kind kind;
+    size_t dim, k;
+    mcs_bluenoise_params p; /* resolved */
+    mcs_rng *rng;
+    void *work;
+    int maximal;   /* mcs_bluenoise_maximal: all n points, n to *count */
+    double *points;
+    size_t *count; /* maximal only */
+} mcs_blue_job_;
 size_t mcs_blue_poisson_work_bytes_(size_t dim, size_t k);
-mcs_status mcs_blue_poisson_(mcs_bluenoise_kind kind, size_t dim, size_t k,
-                             const mcs_bluenoise_params *p, mcs_rng *rng, void *work, int maximal,
-                             size_t cap, double *points, size_t *count);
+mcs_status mcs_blue_poisson_(const mcs_blue_job_ *job);
 size_t mcs_blue_lloyd_work_bytes_(size_t k);
 mcs_status mcs_blue_lloyd_(size_t k, const mcs_bluenoise_params *p, mcs_rng *rng, void *work,
                            double *points);

@@ -74,12 +74,13 @@ mcs_status mcs_blue_lloyd_(size_t k, const mcs_bluenoise_params *p, mcs_rng *rng
 {
     const size_t side = mcs_blue_grid_side_(2u, k);
     mcs_blue_carver_ cv = {(unsigned char *)work, mcs_blue_lloyd_work_bytes_(k)};
-    uint32_t *head = mcs_blue_carve_(&cv, side * side, 4u);
-    uint32_t *next = mcs_blue_carve_(&cv, k, 4u);
-    double *pts = mcs_blue_carve_(&cv, 2u * k, 8u);
-    double *sum = mcs_blue_carve_(&cv, 3u * k, 8u);
     mcs_blue_grid_ g;
-    mcs_blue_grid_init_(&g, 2u, k, k, head, next, pts);
+    g.head = mcs_blue_carve_(&cv, side * side, 4u);
+    g.next = mcs_blue_carve_(&cv, k, 4u);
+    g.pts = mcs_blue_carve_(&cv, 2u * k, 8u);
+    double *pts = g.pts;
+    double *sum = mcs_blue_carve_(&cv, 3u * k, 8u);
+    mcs_blue_grid_init_(&g, 2u, k, k);
     for (size_t i = 0; i < 2u * k; ++i)
         pts[i] = mcs_blue_uniform_(rng);
     const size_t lattice = lattice_side(k, p->resolution);

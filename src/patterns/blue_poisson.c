@@ -95,38 +95,41 @@ static void bridson(mcs_blue_grid_ *g, mcs_rng *rng, double r, uint32_t attempts
     }
 }
 
-mcs_status mcs_blue_poisson_(mcs_bluenoise_kind kind, size_t dim, size_t k,
-                             const mcs_bluenoise_params *p, mcs_rng *rng, void *work, int maximal,
-                             size_t cap, double *points, size_t *count)
+mcs_status mcs_blue_poisson_(const mcs_blue_job_ *job)
 {
+    const size_t dim = job->dim, k = job->k;
+    const mcs_bluenoise_params *p = &job->p;
+    mcs_rng *rng = job->rng;
+    double *points = job->points;
     const size_t hold = capacity(dim, k), side = mcs_blue_grid_side_(dim, k);
     size_t cells = 1u;
     for (size_t c = 0; c < dim; ++c)
         cells *= side;
-    mcs_blue_carver_ cv = {(unsigned char *)work, mcs_blue_poisson_work_bytes_(dim, k)};
-    uint32_t *head = mcs_blue_carve_(&cv, cells, 4u);
-    uint32_t *next = mcs_blue_carve_(&cv, hold, 4u);
-    uint32_t *active = mcs_blue_carve_(&cv, hold, 4u);
-    double *pts = mcs_blue_carve_(&cv, hold * dim, 8u);
+    mcs_blue_carver_ cv = {(unsigned char *)job->work, mcs_blue_poisson_work_bytes_(dim, k)};
     mcs_blue_grid_ g;
-    mcs_blue_grid_init_(&g, dim, k, hold, head, next, pts);
+    g.head = mcs_blue_carve_(&cv, cells, 4u);
+    g.next = mcs_blue_carve_(&cv, hold, 4u);
+    uint32_t *active = mcs_blue_carve_(&cv, hold, 4u);
+    g.pts = mcs_blue_carve_(&cv, hold * dim, 8u);
+    const double *pts = g.pts;
+    mcs_blue_grid_init_(&g, dim, k, hold);
 
     const double r = p->radius * mcs_blue_packing_distance_(dim, k);
-    if (kind == MCS_BLUENOISE_DART_THROWING)
-        throw_darts(&g, rng, r, (uint64_t)p->attempts * (uint64_t)k, maximal ? hold : k);
+    const int dart = job->kind == MCS_BLUENOISE_DART_THROWING;
+    if (dart)
+        throw_darts(&g, rng, r, (uint64_t)p->attempts * (uint64_t)k, job->maximal ? hold : k);
     else
         bridson(&g, rng, r, p->attempts, active);
 
-    if (maximal) { /* cap >= hold, checked by the caller */
-        (void)cap;
+    if (job->maximal) { /* the caller's cap >= hold, checked before */
         for (size_t j = 0; j < g.count * dim; ++j)
             points[j] = pts[j];
-        *count = g.count;
+        *job->count = g.count;
         return MCS_OK;
     }
     if (g.count < k)
         return MCS_ERR_EMPTY;
-    if (kind == MCS_BLUENOISE_DART_THROWING) {
+    if (dart) {
         for (size_t j = 0; j < k * dim; ++j)
             points[j] = pts[j];
         return MCS_OK;

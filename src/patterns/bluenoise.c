@@ -143,28 +143,38 @@ mcs_status mcs_bluenoise_work_size(mcs_bluenoise_kind kind, size_t dim, size_t k
     return MCS_OK;
 }
 
+/* A draw's or a maximal set's arguments. */
+typedef struct {
+    mcs_bluenoise_kind kind;
+    size_t dim, k;
+    const mcs_bluenoise_params *params;
+    mcs_rng *rng;
+    void *work;
+    size_t work_bytes;
+    double *points;
+    size_t points_len; /* doubles */
+} call_;
+
 /* Everything a draw or a maximal set checks before it runs, in the order
  * bluenoise.h lists the statuses; *p gets the resolved parameters. */
-static mcs_status check_draw(mcs_bluenoise_kind kind, size_t dim, size_t k,
-                             const mcs_bluenoise_params *params, const mcs_rng *rng,
-                             const void *work, size_t work_bytes_given, const double *points,
-                             size_t points_len, mcs_bluenoise_params *p)
+static mcs_status check_draw(const call_ *c, mcs_bluenoise_params *p)
 {
-    if (rng == NULL || work == NULL || points == NULL)
+    if (c->rng == NULL || c->work == NULL || c->points == NULL)
         return MCS_ERR_NULL;
-    mcs_status st = check_shape(kind, dim, k);
+    mcs_status st = check_shape(c->kind, c->dim, c->k);
     if (st == MCS_OK)
-        st = mcs_bluenoise_params_resolve(kind, dim, params, p);
+        st = mcs_bluenoise_params_resolve(c->kind, c->dim, c->params, p);
     if (st != MCS_OK)
         return st;
-    if (!mcs_rng_is_seeded_(rng))
+    if (!mcs_rng_is_seeded_(c->rng))
         return MCS_ERR_UNINIT;
-    const size_t need = work_bytes(kind, dim, k);
-    if (work_bytes_given < need)
+    const size_t need = work_bytes(c->kind, c->dim, c->k);
+    if (c->work_bytes < need)
         return MCS_ERR_SPACE;
-    const size_t pts_bytes = mcs_bytes_(points_len, sizeof *points);
-    if (mcs_overlap_(work, need, points, pts_bytes) || mcs_overlap_(work, need, rng, sizeof *rng) ||
-        mcs_overlap_(points, pts_bytes, rng, sizeof *rng))
+    const size_t pts_bytes = mcs_bytes_(c->points_len, sizeof *c->points);
+    if (mcs_overlap_(c->work, need, c->points, pts_bytes) ||
+        mcs_overlap_(c->work, need, c->rng, sizeof *c->rng) ||
+        mcs_overlap_(c->points, pts_bytes, c->rng, sizeof *c->rng))
         return MCS_ERR_ALIAS;
     return MCS_OK;
 }
@@ -173,18 +183,20 @@ mcs_status mcs_bluenoise_draw(mcs_bluenoise_kind kind, size_t dim, size_t k,
                               const mcs_bluenoise_params *params, mcs_rng *rng, void *work,
                               size_t work_bytes_given, double *points)
 {
-    mcs_bluenoise_params p;
-    mcs_status st =
-        check_draw(kind, dim, k, params, rng, work, work_bytes_given, points, k * dim, &p);
+    const call_ c = {kind, dim, k, params, rng, work, work_bytes_given, points, k * dim};
+    mcs_blue_job_ job = {kind, dim, k, {0.0, 0u, 0u, 0u, 0u}, NULL, work, 0, points, NULL};
+    mcs_status st = check_draw(&c, &job.p);
     if (st != MCS_OK)
         return st;
     mcs_rng local = *rng; /* committed only on success */
+    job.rng = &local;
     if (is_poisson(kind))
-        st = mcs_blue_poisson_(kind, dim, k, &p, &local, work, 0, k, points, NULL);
+        st = mcs_blue_poisson_(&job);
     else if (kind == MCS_BLUENOISE_LLOYD)
-        st = mcs_blue_lloyd_(k, &p, &local, work, points);
+        st = mcs_blue_lloyd_(k, &job.p, &local, work, points);
     else
-        st = mcs_pmj02_(k, kind == MCS_BLUENOISE_PMJ02BN ? p.candidates : 1u, &local, work, points);
+        st = mcs_pmj02_(k, kind == MCS_BLUENOISE_PMJ02BN ? job.p.candidates : 1u, &local, work,
+                        points);
     if (st == MCS_OK)
         *rng = local;
     return st;
@@ -198,9 +210,10 @@ mcs_status mcs_bluenoise_maximal(mcs_bluenoise_kind kind, size_t dim, size_t k,
         return MCS_ERR_NULL;
     if (kind_ok(kind) && !is_poisson(kind))
         return MCS_ERR_KIND;
-    mcs_bluenoise_params p;
     const size_t len = cap > SIZE_MAX / 4u ? SIZE_MAX : cap * dim;
-    mcs_status st = check_draw(kind, dim, k, params, rng, work, work_bytes_given, points, len, &p);
+    const call_ c = {kind, dim, k, params, rng, work, work_bytes_given, points, len};
+    mcs_blue_job_ job = {kind, dim, k, {0.0, 0u, 0u, 0u, 0u}, NULL, work, 1, points, count};
+    mcs_status st = check_draw(&c, &job.p);
     if (st == MCS_OK && cap < MCS_BLUENOISE_MAXIMAL_CAP(dim, k))
         st = MCS_ERR_SPACE;
     if (st == MCS_OK && (mcs_overlap_(count, sizeof *count, points, mcs_bytes_(len, sizeof *points)) ||
@@ -210,7 +223,8 @@ mcs_status mcs_bluenoise_maximal(mcs_bluenoise_kind kind, size_t dim, size_t k,
     if (st != MCS_OK)
         return st;
     mcs_rng local = *rng;
-    st = mcs_blue_poisson_(kind, dim, k, &p, &local, work, 1, cap, points, count);
+    job.rng = &local;
+    st = mcs_blue_poisson_(&job);
     if (st == MCS_OK)
         *rng = local;
     return st;

@@ -59,6 +59,8 @@ typedef struct {
     uint32_t *xs, *ys; /* the valid strata of the point being placed */
     size_t nx, ny;
     unsigned t;        /* the current level: 2^t points when it is complete */
+    uint32_t candidates; /* per point: 1 for pmj02 */
+    mcs_rng *rng;
     mcs_blue_grid_ grid; /* the points as doubles, for best candidates */
 } pmj_;
 
@@ -97,19 +99,18 @@ static void begin_level(pmj_ *s, unsigned t, size_t placed)
 }
 
 /* The cell bit of the node (depth d below the subquadrant, prefix q) of
- * the x tree (y = 0: prefix of x, shape a = h + d, its y cell from the
- * subquadrant's h-bit sy) or of the y tree (y = 1: prefix of y, shape
- * a = t - h - d, its x cell from sx). */
-static size_t node_bit(const pmj_ *s, int y, unsigned h, unsigned d, uint64_t q, uint64_t sx,
-                       uint64_t sy)
+ * the x tree (y = 0: prefix of x, shape a = h + d, its y cell from
+ * other, the subquadrant's h-bit y) or of the y tree (y = 1: prefix of y,
+ * shape a = t - h - d, its x cell from other, the subquadrant's x). */
+static size_t node_bit(const pmj_ *s, int y, unsigned h, unsigned d, uint64_t q, uint64_t other)
 {
     const unsigned t = s->t;
     if (!y) {
         const unsigned a = h + d;
-        return ((size_t)a << t) + (size_t)((sy >> (h - (t - a))) << a | q);
+        return ((size_t)a << t) + (size_t)((other >> (h - (t - a))) << a | q);
     }
     const unsigned a = t - h - d;
-    return ((size_t)a << t) + (size_t)(q << a | sx >> (h - a));
+    return ((size_t)a << t) + (size_t)(q << a | other >> (h - a));
 }
 
 /* The valid finest strata of one axis: a depth-first walk of the binary
@@ -119,26 +120,26 @@ static size_t node_bit(const pmj_ *s, int y, unsigned h, unsigned d, uint64_t q,
 static size_t find_valid(const pmj_ *s, int y, unsigned h, uint64_t sx, uint64_t sy,
                          uint32_t *out)
 {
-    uint64_t stack_q[2u * 32u + 2u];
-    unsigned stack_d[2u * 32u + 2u];
+    uint32_t stack_q[2u * 32u + 2u]; /* prefixes of at most t <= 24 bits */
+    uint8_t stack_d[2u * 32u + 2u];
     size_t top = 0u, n = 0u;
     const unsigned depth = s->t - h;
-    stack_q[top] = y ? sy : sx;
+    stack_q[top] = (uint32_t)(y ? sy : sx);
     stack_d[top++] = 0u;
     while (top > 0u) {
         --top;
-        const uint64_t q = stack_q[top];
+        const uint32_t q = stack_q[top];
         const unsigned d = stack_d[top];
-        if (occupied(s, node_bit(s, y, h, d, q, sx, sy)))
+        if (occupied(s, node_bit(s, y, h, d, q, y ? sx : sy)))
             continue;
         if (d == depth) {
             out[n++] = (uint32_t)q;
             continue;
         }
         stack_q[top] = 2u * q + 1u; /* right below left: leaves come out in order */
-        stack_d[top++] = d + 1u;
+        stack_d[top++] = (uint8_t)(d + 1u);
         stack_q[top] = 2u * q;
-        stack_d[top++] = d + 1u;
+        stack_d[top++] = (uint8_t)(d + 1u);
     }
     return n;
 }
@@ -146,9 +147,10 @@ static size_t find_valid(const pmj_ *s, int y, unsigned h, uint64_t sx, uint64_t
 /* Point i in subquadrant (sx, sy) of the 2^h grid: the best of `candidates`
  * uniform valid positions (farthest from the points so far; the first on a
  * tie), or the one position for candidates = 1. 0 if no stratum is valid. */
-static int place(pmj_ *s, size_t i, unsigned h, uint64_t sx, uint64_t sy, uint32_t candidates,
-                 mcs_rng *rng)
+static int place(pmj_ *s, size_t i, unsigned h, uint64_t sx, uint64_t sy)
 {
+    const uint32_t candidates = s->candidates;
+    mcs_rng *rng = s->rng;
     const unsigned t = s->t, low = FRAC_BITS - t;
     s->nx = find_valid(s, 0, h, sx, sy, s->xs);
     s->ny = find_valid(s, 1, h, sx, sy, s->ys);
@@ -192,16 +194,18 @@ static void carve(pmj_ *s, size_t k, void *work)
     s->occ = mcs_blue_carve_(&cv, occ_words(levels), 8u);
     s->xs = mcs_blue_carve_(&cv, list_len(levels), 4u);
     s->ys = mcs_blue_carve_(&cv, list_len(levels), 4u);
-    uint32_t *head = mcs_blue_carve_(&cv, side * side, 4u);
-    uint32_t *next = mcs_blue_carve_(&cv, k, 4u);
-    double *pts = mcs_blue_carve_(&cv, 2u * k, 8u);
-    mcs_blue_grid_init_(&s->grid, 2u, k, k, head, next, pts);
+    s->grid.head = mcs_blue_carve_(&cv, side * side, 4u);
+    s->grid.next = mcs_blue_carve_(&cv, k, 4u);
+    s->grid.pts = mcs_blue_carve_(&cv, 2u * k, 8u);
+    mcs_blue_grid_init_(&s->grid, 2u, k, k);
 }
 
 mcs_status mcs_pmj02_(size_t k, uint32_t candidates, mcs_rng *rng, void *work, double *points)
 {
     pmj_ s;
     carve(&s, k, work);
+    s.candidates = candidates;
+    s.rng = rng;
     s.x[0] = mcs_blue_bits_(rng, FRAC_BITS);
     s.y[0] = mcs_blue_bits_(rng, FRAC_BITS);
     const double p0[2] = {(double)s.x[0] * TWO_M53, (double)s.y[0] * TWO_M53};
@@ -219,7 +223,7 @@ mcs_status mcs_pmj02_(size_t k, uint32_t candidates, mcs_rng *rng, void *work, d
         const size_t r = mcs_blue_bounded_(rng, (uint32_t)n);
         for (size_t i = 0; i < n && placed < k && ok; ++i, ++placed) {
             const size_t old = i ^ r;
-            ok = place(&s, placed, h, sub_x(&s, old, h) ^ 1u, sub_y(&s, old, h) ^ 1u, candidates, rng);
+            ok = place(&s, placed, h, sub_x(&s, old, h) ^ 1u, sub_y(&s, old, h) ^ 1u);
         }
         if (placed >= k || !ok)
             break;
@@ -232,13 +236,12 @@ mcs_status mcs_pmj02_(size_t k, uint32_t candidates, mcs_rng *rng, void *work, d
             const size_t old = i ^ r2;
             const int swap_x = mcs_blue_bounded_(rng, 2u) == 0u;
             ok = place(&s, placed, h, sub_x(&s, old, h) ^ (swap_x ? 1u : 0u),
-                       sub_y(&s, old, h) ^ (swap_x ? 0u : 1u), candidates, rng);
+                       sub_y(&s, old, h) ^ (swap_x ? 0u : 1u));
         }
         for (size_t i = 0; i < n && placed < k && ok; ++i, ++placed) {
             /* The fourth subquadrant of the cell of point 2n + i: diagonal to it. */
             const size_t third = 2u * n + i;
-            ok = place(&s, placed, h, sub_x(&s, third, h) ^ 1u, sub_y(&s, third, h) ^ 1u,
-                       candidates, rng);
+            ok = place(&s, placed, h, sub_x(&s, third, h) ^ 1u, sub_y(&s, third, h) ^ 1u);
         }
     }
     if (!ok)
