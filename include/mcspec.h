@@ -13,6 +13,7 @@
 #include "mcspec/pattern.h"
 #include "mcspec/sampler.h"
 #include "mcspec/projections.h"
+#include "mcspec/bluenoise.h"
 #include "mcspec/pattern2d.h"
 #include "mcspec/estimate.h"
 #include "mcspec/welford.h"

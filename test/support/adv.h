@@ -195,6 +195,8 @@ extern const adv_fn adv_fns_owen[];
 extern const size_t adv_fns_owen_count;
 extern const adv_fn adv_fns_nd[];
 extern const size_t adv_fns_nd_count;
+extern const adv_fn adv_fns_blue[];
+extern const size_t adv_fns_blue_count;
 
 /* The outcomes adv_rows does not derive, for the slots of R_RANGE and
  * F_ZEROOK (adv_table_measures.c): run on the rows of every function. */
