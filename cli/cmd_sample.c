@@ -73,12 +73,30 @@ static mcs_status draw_random(const cli_sample_source *s, mcs_rng *rng, double *
     return st;
 }
 
+/* Blue noise (bluenoise.h): defaults for every parameter, work memory
+ * sized by the library's query. */
+static mcs_status init_blue(cli_sample_source *s)
+{
+    mcs_status st = mcs_bluenoise_work_size((mcs_bluenoise_kind)s->kind->arg, s->dim, s->k,
+                                            &s->work_bytes);
+    if (st != MCS_OK)
+        return st;
+    s->work = malloc(s->work_bytes > 0u ? s->work_bytes : 1u);
+    return s->work != NULL ? MCS_OK : MCS_ERR_SPACE;
+}
+
+static mcs_status draw_blue(const cli_sample_source *s, mcs_rng *rng, double *points)
+{
+    return mcs_bluenoise_draw((mcs_bluenoise_kind)s->kind->arg, s->dim, s->k, NULL, rng, s->work,
+                              s->work_bytes, points);
+}
+
 #define PAT1(name, kind) {name, 1, 1, kind, init_pattern, draw_pattern}
+#define BLUE(name, lo, hi, kind) {name, lo, hi, kind, init_blue, draw_blue}
 #define PAT2(name, kind) {name, 2, 2, kind, init_pattern2d, draw_pattern2d}
 #define SMP(name, lo, hi, kind) {name, lo, hi, kind, init_sampler, draw_sampler}
 
-/* One row per kind: the blue-noise kinds (dart-throwing, poisson-disk,
- * lloyd, pmj02) are added here as rows. */
+/* One row per kind. */
 static const cli_sample_kind kinds[] = {
     {"random", 1, MCS_SAMPLER_MAX_DIM, MCS_PATTERN_RANDOM, init_random, draw_random},
     PAT1("stratified", MCS_PATTERN_STRATIFIED),
@@ -100,6 +118,11 @@ static const cli_sample_kind kinds[] = {
     SMP("halton-owen", 1, MCS_SAMPLER_MAX_DIM, MCS_SAMPLER_HALTON_OWEN),
     SMP("lattice", 1, MCS_SAMPLER_MAX_DIM, MCS_SAMPLER_LATTICE),
     SMP("padded", 2, MCS_SAMPLER_MAX_DIM, MCS_SAMPLER_PADDED),
+    BLUE("dart-throwing", 1, 3, MCS_BLUENOISE_DART_THROWING),
+    BLUE("poisson-disk", 1, 3, MCS_BLUENOISE_POISSON_DISK),
+    BLUE("lloyd", 2, 2, MCS_BLUENOISE_LLOYD),
+    BLUE("pmj02", 2, 2, MCS_BLUENOISE_PMJ02),
+    BLUE("pmj02bn", 2, 2, MCS_BLUENOISE_PMJ02BN),
 };
 
 #define KIND_COUNT (sizeof kinds / sizeof kinds[0])
@@ -158,13 +181,18 @@ void cli_sample_free(cli_sample_source *src)
 {
     free(src->bins);
     free(src->weights);
+    free(src->work);
     src->bins = NULL;
     src->weights = NULL;
+    src->work = NULL;
 }
 
 int cli_sample_draw(const char *cmd, const cli_sample_source *src, mcs_rng *rng, double *points)
 {
     mcs_status st = src->kind->draw(src, rng, points);
+    if (st == MCS_ERR_EMPTY) /* a Poisson kind placed fewer than K points: the user's choice of K */
+        return cli_fail(cmd, "%s could not place %zu points at its default radius (its set "
+                        "saturated): ask for fewer points", src->kind->name, src->k);
     return st == MCS_OK ? 0 : cli_internal(cmd, "a draw failed: %s", mcs_status_str(st));
 }
 
@@ -194,7 +222,12 @@ static const char help[] =
     "  lattice                     1 to 64: Korobov rank-1 lattice, random shift\n"
     "  padded                      2 to 64: independent Owen-scrambled Sobol pairs,\n"
     "                              each in its own random order (pbrt's padding)\n"
-    "docs/samplers-nd.md defines each.\n"
+    "  dart-throwing, poisson-disk 1 to 3: blue noise on the torus, dart throwing\n"
+    "                              and Bridson's method at their default radius\n"
+    "  lloyd                       2: Lloyd's relaxation of random points on the torus\n"
+    "  pmj02, pmj02bn              2: progressive multi-jittered (0,2) sequences, and\n"
+    "                              their best-candidate blue-noise variant\n"
+    "docs/samplers-nd.md and docs/samplers.md define each.\n"
     "\n"
     "Options:\n"
     "  --dim D    dimensions, 1 to 64 as KIND has them (required)\n"

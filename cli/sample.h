@@ -1,7 +1,7 @@
 /* The point sources of `mcspec sample` and `mcspec projections KIND`: one
  * table of kinds (name, the dimensions it has, set-up and draw), the 1D
  * patterns, the 2D patterns and the samplers of the library. A new kind is
- * one row in cli/cmd_sample.c's table (the blue-noise kinds go there). */
+ * one row in cli/cmd_sample.c's table (the blue-noise kinds are there too). */
 #ifndef MCSPEC_CLI_SAMPLE_H
 #define MCSPEC_CLI_SAMPLE_H
 
@@ -21,6 +21,8 @@ typedef struct {
     mcs_sampler sampler;         /* samplers */
     size_t *bins;                /* 1D patterns: bins[k], weights[k] (allocated) */
     double *weights;
+    void *work;                  /* blue-noise kinds: their work memory (allocated) */
+    size_t work_bytes;
 } cli_sample_source;
 
 struct cli_sample_kind {

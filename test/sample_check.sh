@@ -65,7 +65,7 @@ for c in sample projections; do
     else bad "$c --help lacks its usage line"; fi
 done
 
-usage_error "unknown kind" "unknown kind 'blue' \(one of random, .*padded\)" "$MCSPEC" sample blue --dim 2 --k 4
+usage_error "unknown kind" "unknown kind 'blue' \(one of random, .*padded, dart-throwing, .*pmj02bn\)" "$MCSPEC" sample blue --dim 2 --k 4
 usage_error "halton in 3D" "halton has dimensions 2 only, not 3" "$MCSPEC" sample halton --dim 3 --k 4
 usage_error "padded in 1D" "padded has dimensions 2 to 64, not 1" "$MCSPEC" sample padded --dim 1 --k 4
 usage_error "sample without --dim" "give --dim" "$MCSPEC" sample sobol-owen --k 4
@@ -80,7 +80,8 @@ usage_error "projections of a kind outside its dimensions" "jittered has dimensi
 # Every kind in one of its dimensions: shape, range, separators.
 for spec in random:5 stratified:1 homogenized:1 uniform:1 jitter:1 jittered:2 grid:2 \
     shifted-grid:2 n-rooks:2 multi-jittered:2 cmj:2 van-der-corput:1 halton:2 hammersley:2 \
-    kronecker:2 sobol-owen:9 halton-permuted:7 halton-owen:7 lattice:6 padded:5; do
+    kronecker:2 sobol-owen:9 halton-permuted:7 halton-owen:7 lattice:6 padded:5 \
+    dart-throwing:2 poisson-disk:3 lloyd:2 pmj02:2 pmj02bn:2 dart-throwing:1; do
     kind=${spec%%:*} d=${spec#*:}
     if succeeds "sample $kind" "$MCSPEC" sample "$kind" --dim "$d" --k 16 --sets 3 --seed 9; then
         problems=$(awk -v d="$d" '
