@@ -21,6 +21,8 @@ static const cli_command commands[] = {
      cli_cmd_discrepancy},
     {"stats", "minimum and average minimum distances of point sets read from a file",
      cli_cmd_stats},
+    {"integrate", "integration error on integrand families, measured, exact and predicted",
+     cli_cmd_integrate},
     {"version", "print the library's version (also: mcspec --version)", cli_cmd_version},
 };
 
