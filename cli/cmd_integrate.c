@@ -503,12 +503,14 @@ static int write_figure(FILE *fp, const char *tmp, const void *ctx)
     }
     if (fclose(d) != 0)
         return -1;
-    fprintf(fp, "set title \"mcspec integrate: %s (%zuD), mean squared error against K\"\n",
-            c->o->kind != NULL ? c->o->kind : "point files", c->dim);
+    fprintf(fp, "set title \"mcspec integrate: %s (%zuD), mean squared error against K\\n"
+            "points: measured ± 1 standard error; dashed: least-squares fit%s\" noenhanced\n",
+            c->o->kind != NULL ? c->o->kind : "point files", c->dim,
+            c->ref != MCS_INTEGRATE_NONE ? "; solid: exact" : "");
     fputs("set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
           "set xlabel \"points per set K\"\nset ylabel \"mean squared error\"\n", fp);
     cli_plot_style(fp);
-    fputs("set key outside right\n", fp);
+    fputs("set key top right box opaque samplen 2\n", fp);
     const size_t k0 = c->g[0].k, k1 = c->g[c->ng - 1u].k;
     fprintf(fp, "set xrange [%.17g:%.17g]\n", (double)k0 / 1.5, (double)k1 * 1.5);
     fputs("plot ", fp);
@@ -527,12 +529,21 @@ static int write_figure(FILE *fp, const char *tmp, const void *ctx)
         const char *name = mcs_integrand_family_str((mcs_integrand_family)f);
         fprintf(fp, "%s", b > 0 ? ", \\\n     " : "");
         cli_plot_data_ref(fp, tmp, "data.txt");
-        fprintf(fp, " index %d using 1:2:3 with yerrorbars lc %d pt 7 ps 0.8 title \"%s\"", b,
-                b + 1, name);
+        char label[64];
+        if (isnan(c->slope[f]))
+            snprintf(label, sizeof label, "%s", name);
+        else
+            snprintf(label, sizeof label, "%s (slope %.2f)", name, c->slope[f]);
+        fprintf(fp, " index %d using 1:2:3 with yerrorbars lc %d pt 7 ps 0.8 title \"%s\" noenhanced",
+                b, b + 1, label);
+        if (c->ref != MCS_INTEGRATE_NONE) {
+            fputs(", ", fp);
+            cli_plot_data_ref(fp, tmp, "data.txt");
+            fprintf(fp, " index %d using 1:4 with lines lc %d lw 1.5 notitle", b, b + 1);
+        }
         if (!isnan(c->slope[f]) && n > 0.0)
-            fprintf(fp, ", exp(%.17g + %.17g * (log(x) - %.17g)) with lines lc %d dt 2 "
-                    "title sprintf(\"%s fit: slope %%.2f\", %.17g)",
-                    sy / n, c->slope[f], sx / n, b + 1, name, c->slope[f]);
+            fprintf(fp, ", exp(%.17g + %.17g * (log(x) - %.17g)) with lines lc %d dt 2 notitle",
+                    sy / n, c->slope[f], sx / n, b + 1);
         ++b;
     }
     fputc('\n', fp);
