@@ -95,6 +95,10 @@ extern "C" {
 #define MCS_INTEGRAND_DISK_MAX_RADIUS 0.4
 #define MCS_INTEGRAND_COSINE_MAX_FREQ 4
 
+/* Most cells of mcs_integrand_jittered_mse (2^22: its O(K) loops over the
+ * cells of the indicators stay under a second). */
+#define MCS_INTEGRAND_JITTERED_MAX_K 4194304u
+
 typedef enum {
     MCS_INTEGRAND_GAUSSIAN = 0,      /* a Gaussian bump on the square (not periodic) */
     MCS_INTEGRAND_GAUSSIAN_PERIODIC, /* the same bump periodised on the torus */
@@ -159,7 +163,8 @@ mcs_status mcs_integrand_variance(const mcs_integrand *f, double *out);
 
 /* The exact mean squared error of the jittered grid of strata_x x strata_y
  * cells (1D: strata_x cells, strata_y = 1). MCS_ERR_K_RANGE (a strata count
- * 0, strata_y not 1 in 1D, or strata_x strata_y above MCS_PATTERN2D_MAX_K).
+ * 0, strata_y not 1 in 1D, or strata_x strata_y above
+ * MCS_INTEGRAND_JITTERED_MAX_K).
  * *out untouched on error. */
 mcs_status mcs_integrand_jittered_mse(const mcs_integrand *f, size_t strata_x, size_t strata_y,
                                       double *out);

@@ -58,10 +58,12 @@ mcs_status mcs_integrate_init(mcs_integrate *acc, mcs_integrand_family family, s
  * squared error over them, and with reference RANDOM or JITTERED the mean
  * of their exact MSE (mcs_integrand_variance / k, or
  * mcs_integrand_jittered_mse of strata_x x strata_y cells, which must
- * multiply to k; both strata are ignored for NONE and RANDOM).
+ * multiply to k, at most MCS_INTEGRAND_JITTERED_MAX_K; both strata are
+ * ignored for NONE and RANDOM).
  * MCS_ERR_NULL, MCS_ERR_K_RANGE (k or m 0), MCS_ERR_POINT_RANGE,
  * MCS_ERR_MISMATCH (an integrand of another family or dim; strata that do
- * not multiply to k), MCS_ERR_KIND (not a reference), MCS_ERR_UNINIT (an
+ * not multiply to k), MCS_ERR_K_RANGE (JITTERED above
+ * MCS_INTEGRAND_JITTERED_MAX_K), MCS_ERR_KIND (not a reference), MCS_ERR_UNINIT (an
  * integrand no draw produces), MCS_ERR_ALIAS (points or fs overlapping
  * acc), MCS_ERR_COUNT, MCS_ERR_MAGNITUDE. *acc untouched on error. */
 mcs_status mcs_integrate_add(mcs_integrate *acc, size_t m, const mcs_integrand *fs, size_t k,

@@ -309,7 +309,7 @@ mcs_status mcs_integrand_jittered_mse(const mcs_integrand *f, size_t strata_x, s
     if (st != MCS_OK)
         return st;
     if (strata_x == 0u || strata_y == 0u || (f->dim == 1u && strata_y != 1u) ||
-        strata_x > (size_t)MCS_PATTERN2D_MAX_K / strata_y)
+        strata_x > (size_t)MCS_INTEGRAND_JITTERED_MAX_K / strata_y)
         return MCS_ERR_K_RANGE;
     return mcs_set_(out, mcs_integ_jittered_(f, strata_x, strata_y));
 }

@@ -88,10 +88,10 @@ double mcs_integ_power_(const mcs_integrand *f, long kx, long ky)
 /* ---- Prediction -------------------------------------------------------------- */
 
 /* The checks both predictions share, of everything but the accumulator. */
-static mcs_status check_family(const mcs_integrand *fs, size_t m, size_t dim, size_t k,
-                               const double *predicted, const double *tail)
+static mcs_status check_family(const mcs_integrand *fs, size_t m, size_t dim, const void *ps,
+                               size_t k, const double *predicted, const double *tail)
 {
-    if (fs == NULL || predicted == NULL || tail == NULL)
+    if (fs == NULL || ps == NULL || predicted == NULL || tail == NULL)
         return MCS_ERR_NULL;
     if (mcs_overlap_(predicted, sizeof *predicted, tail, sizeof *tail))
         return MCS_ERR_ALIAS;
@@ -139,9 +139,7 @@ static mcs_status finish(const mcs_integrand *fs, size_t m, size_t k, double s, 
 mcs_status mcs_integrand_predict(const mcs_integrand *fs, size_t m, const mcs_pointset2d *ps,
                                  size_t k, double *predicted, double *tail)
 {
-    mcs_status st = check_family(fs, m, 2u, k, predicted, tail);
-    if (st == MCS_OK && ps == NULL)
-        st = MCS_ERR_NULL;
+    mcs_status st = check_family(fs, m, 2u, ps, k, predicted, tail);
     double p = 0.0;
     if (st == MCS_OK)
         st = mcs_pointset2d_power(ps, 0, 0, &p);
@@ -165,9 +163,7 @@ mcs_status mcs_integrand_predict(const mcs_integrand *fs, size_t m, const mcs_po
 mcs_status mcs_integrand_predict_1d(const mcs_integrand *fs, size_t m, const mcs_pointset *ps,
                                     size_t k, double *predicted, double *tail)
 {
-    mcs_status st = check_family(fs, m, 1u, k, predicted, tail);
-    if (st == MCS_OK && ps == NULL)
-        st = MCS_ERR_NULL;
+    mcs_status st = check_family(fs, m, 1u, ps, k, predicted, tail);
     double p = 0.0;
     if (st == MCS_OK)
         st = mcs_pointset_power(ps, 0, &p);

@@ -29,7 +29,7 @@ double mcs_integ_halfplane_area_(const mcs_integrand *f, double x0, double x1, d
                                  double y1);
 
 /* The exact jittered-grid MSE of a valid f over mx x my cells (my = 1 in
- * 1D), mx my <= MCS_PATTERN2D_MAX_K. */
+ * 1D), mx my <= MCS_INTEGRAND_JITTERED_MAX_K. */
 double mcs_integ_jittered_(const mcs_integrand *f, size_t mx, size_t my);
 
 /* |f^(k)|^2 of a valid periodic f (k_y = 0 in 1D). */

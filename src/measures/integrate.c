@@ -72,6 +72,8 @@ static mcs_status check_add(const mcs_integrate *acc, size_t m, const mcs_integr
         (strata_x == 0u || strata_y == 0u || strata_x > k / strata_y ||
          strata_x * strata_y != k || (acc->dim == 1u && strata_y != 1u)))
         return MCS_ERR_MISMATCH;
+    if (reference == MCS_INTEGRATE_JITTERED && k > (size_t)MCS_INTEGRAND_JITTERED_MAX_K)
+        return MCS_ERR_K_RANGE;
     for (size_t i = 0; i < n; ++i)
         if (!(points[i] >= 0.0 && points[i] < 1.0))
             return MCS_ERR_POINT_RANGE;
