@@ -72,9 +72,9 @@ double mcs_integ_power_(const mcs_integrand *f, long kx, long ky)
         return v * v;
     }
     case MCS_INTEGRAND_COSINE: {
-        const long k[2] = {kx, ky};
+        const long k[MCS_INTEGRAND_MAX_DIM] = {kx, ky};
         double p = 1.0;
-        for (size_t i = 0; i < f->dim; ++i)
+        for (size_t i = 0; i < f->dim && i < (size_t)MCS_INTEGRAND_MAX_DIM; ++i)
             p *= k[i] == 0 ? 1.0
                  : (k[i] == f->freq[i] || k[i] == -f->freq[i]) ? 0.25 * f->amp[i] * f->amp[i]
                                                                : 0.0;
