@@ -313,17 +313,3 @@ mcs_status mcs_integrand_jittered_mse(const mcs_integrand *f, size_t strata_x, s
         return MCS_ERR_K_RANGE;
     return mcs_set_(out, mcs_integ_jittered_(f, strata_x, strata_y));
 }
-
-mcs_status mcs_integrand_power(const mcs_integrand *f, long freq_x, long freq_y, double *out)
-{
-    const mcs_status st = check(f, out);
-    if (st != MCS_OK)
-        return st;
-    if (!mcs_integrand_is_periodic(f->family))
-        return MCS_ERR_DOMAIN;
-    const long cap = (long)MCS_POINTSET_MAX_FREQ;
-    if (freq_x < -cap || freq_x > cap || freq_y < -cap || freq_y > cap ||
-        (f->dim == 1u && freq_y != 0))
-        return MCS_ERR_FREQ_RANGE;
-    return mcs_set_(out, mcs_integ_power_(f, freq_x, freq_y));
-}

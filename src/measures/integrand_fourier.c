@@ -85,6 +85,21 @@ double mcs_integ_power_(const mcs_integrand *f, long kx, long ky)
     return 0.0;
 }
 
+mcs_status mcs_integrand_power(const mcs_integrand *f, long freq_x, long freq_y, double *out)
+{
+    if (f == NULL || out == NULL)
+        return MCS_ERR_NULL;
+    if (!mcs_integ_valid_(f))
+        return MCS_ERR_UNINIT;
+    if (!mcs_integrand_is_periodic(f->family))
+        return MCS_ERR_DOMAIN;
+    const long cap = (long)MCS_POINTSET_MAX_FREQ;
+    if (freq_x < -cap || freq_x > cap || freq_y < -cap || freq_y > cap ||
+        (f->dim == 1u && freq_y != 0))
+        return MCS_ERR_FREQ_RANGE;
+    return mcs_set_(out, mcs_integ_power_(f, freq_x, freq_y));
+}
+
 /* ---- Prediction -------------------------------------------------------------- */
 
 /* The checks both predictions share, of everything but the accumulator. */
