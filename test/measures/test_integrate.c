@@ -150,8 +150,9 @@ static void test_prediction_brackets_the_measured_mse(void)
                 TEST_ASSERT_TRUE_MESSAGE(mse > pred - 5.0 * se, msg);
                 TEST_ASSERT_TRUE_MESSAGE(mse < pred + tail + 5.0 * se, msg);
                 /* smooth families: what F leaves out is rounding (exp(-4 pi^2 s^2 F^2), or none) */
-                if (periodic[fi] != MCS_INTEGRAND_DISK)
+                if (periodic[fi] != MCS_INTEGRAND_DISK) {
                     TEST_ASSERT_TRUE_MESSAGE(tail < 1e-9 * pred, msg);
+                }
             }
 }
 
