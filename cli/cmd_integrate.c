@@ -25,8 +25,10 @@
 #define NFAM MCS_INTEGRAND_FAMILIES
 #define MAX_KS 32         /* --k given at most this often */
 #define MAX_FILES 64      /* point files on one command line */
-#define MAX_FREQ_2D 1024u /* --freq caps: the prediction is O(T M F^d) */
-#define MAX_FREQ_1D 1048576u
+#define MAX_FREQ_2D 1024 /* --freq caps: the prediction is O(T M F^d) */
+#define MAX_FREQ_1D 1048576
+#define DEFAULT_FREQ_2D 128 /* the default's caps: a few seconds of prediction at M T = 1024 */
+#define DEFAULT_FREQ_1D 65536
 
 static const char help[] =
     "usage: mcspec integrate [options] FILE [FILE ...]\n"
@@ -66,8 +68,9 @@ static const char help[] =
     "  --integrands M   integrands per set and family (default 16)\n"
     "  --family NAME    one family only (default: all five)\n"
     "  --dim D          1 or 2 (KIND: default 2; files: the file's)\n"
-    "  --freq F         cutoff of the prediction (default 2 ceil(sqrt K) in 2D, 4 K\n"
-    "                   in 1D; at most " CLI_STR(MAX_FREQ_2D) " in 2D); 0: no prediction\n"
+    "  --freq F         cutoff of the prediction, O(T M F^D) work (default 2 ceil(sqrt K)\n"
+    "                   up to " CLI_STR(DEFAULT_FREQ_2D) " in 2D, 4 K up to " CLI_STR(DEFAULT_FREQ_1D) " in 1D; at most " CLI_STR(MAX_FREQ_2D) " in 2D\n"
+    "                   and " CLI_STR(MAX_FREQ_1D) " in 1D); 0: no prediction\n"
     "  --wrap           files: take coordinates modulo 1\n"
     "  --plot FILE.png  log-log figure of mse against K with the fitted slopes (or .svg)\n"
     "  --csv            print CSV only: the header, exactly\n"
@@ -203,8 +206,8 @@ static int parse(int argc, char **argv, integ_opts *o)
         if (o->nfiles == 0u)
             o->files[o->nfiles++] = "-";
     }
-    if (o->freq_given && o->freq > (o->dim == 2u ? MAX_FREQ_2D : MAX_FREQ_1D))
-        return cli_fail(CMD, "--freq: at most %u in 2D", MAX_FREQ_2D);
+    if (o->freq_given && o->freq > (size_t)(o->dim == 2u ? MAX_FREQ_2D : MAX_FREQ_1D))
+        return cli_fail(CMD, "--freq: at most %d in 2D", MAX_FREQ_2D);
     return o->plot != NULL ? cli_plot_check(CMD, o->plot) : 0;
 }
 
@@ -213,9 +216,9 @@ static int parse(int argc, char **argv, integ_opts *o)
 static size_t default_freq(size_t dim, size_t k)
 {
     if (dim == 1u)
-        return k * 4u < MAX_FREQ_1D ? k * 4u : MAX_FREQ_1D;
+        return k * 4u < (size_t)DEFAULT_FREQ_1D ? k * 4u : (size_t)DEFAULT_FREQ_1D;
     const size_t f = 2u * (size_t)ceil(sqrt((double)k));
-    return f < MAX_FREQ_2D ? f : MAX_FREQ_2D;
+    return f < (size_t)DEFAULT_FREQ_2D ? f : (size_t)DEFAULT_FREQ_2D;
 }
 
 static int any_periodic(const integ_ctx *c)
@@ -272,6 +275,8 @@ static int add_set(void *ctx, size_t k, const double *coords, const double *weig
             return cli_fail(CMD, "%s: the points have %zu coordinates; the integrands take 1 or 2",
                             c->name, c->stats->dim);
         c->dim = c->stats->dim;
+        if (c->dim == 2u && c->o->freq_given && c->o->freq > (size_t)MAX_FREQ_2D)
+            return cli_fail(CMD, "--freq: at most %d in 2D", MAX_FREQ_2D);
     }
     group *g = group_for(c, k);
     if (g == NULL)

@@ -105,6 +105,7 @@ usage_error "--sets 0" "--sets expects" "$MCSPEC" integrate random --k 16 --sets
 usage_error "--integrands 0" "--integrands expects" "$MCSPEC" integrate random --k 16 --integrands 0
 usage_error "--dim 3" "--dim expects a whole number from 1 to 2" "$MCSPEC" integrate random --dim 3 --k 16
 usage_error "--freq too high in 2D" "--freq: at most 1024 in 2D" "$MCSPEC" integrate random --k 16 --freq 2000
+usage_error "--freq too high for a 2D file" "--freq: at most 1024 in 2D" "$MCSPEC" integrate --freq 2000 "$tmp/one"
 usage_error "--wrap with a kind" "--wrap is for point files" "$MCSPEC" integrate random --k 16 --wrap
 usage_error "--plot .txt" "must end in .svg or .png" "$MCSPEC" integrate random --k 16 --plot "$tmp/f.txt"
 usage_error "three coordinates" "3 coordinates; the integrands take 1 or 2" "$MCSPEC" integrate "$tmp/three"
