@@ -72,6 +72,9 @@ static const char help[] =
     "                   up to " CLI_STR(DEFAULT_FREQ_2D) " in 2D, 4 K up to " CLI_STR(DEFAULT_FREQ_1D) " in 1D; at most " CLI_STR(MAX_FREQ_2D) " in 2D\n"
     "                   and " CLI_STR(MAX_FREQ_1D) " in 1D); 0: no prediction\n"
     "  --wrap           files: take coordinates modulo 1\n"
+    "  --exact KIND     files: the exact column for sets of that kind: random, or\n"
+    "                   jittered (2D: the most nearly square m x n grid of K cells,\n"
+    "                   as mcspec pattern draws it; 1D: K strata, = stratified)\n"
     "  --plot FILE.png  log-log figure of mse against K with the fitted slopes (or .svg)\n"
     "  --csv            print CSV only: the header, exactly\n"
     "                   " CSV_HEADER CSV_EXTRA "\n"
@@ -84,7 +87,7 @@ typedef struct {
     size_t dim, m, freq, sets_opt, ks[MAX_KS], nks;
     uint64_t seed, sets;
     int wrap, csv, freq_given, dim_given;
-    const char *family, *plot, *kind, *files[MAX_FILES];
+    const char *family, *plot, *kind, *exact, *files[MAX_FILES];
     size_t nfiles;
 } integ_opts;
 
@@ -174,6 +177,7 @@ static int parse(int argc, char **argv, integ_opts *o)
         {"wrap", CLI_OPT_FLAG, &o->wrap, 0, 0, 0},
         {"plot", CLI_OPT_STRING, &o->plot, 0, 0, 0},
         {"csv", CLI_OPT_FLAG, &o->csv, 0, 0, 0},
+        {"exact", CLI_OPT_STRING, &o->exact, 0, 0, 0},
     };
     cli_parser p = {CMD, help, opts, CLI_COUNT(opts), o->files, MAX_FILES, 0u, NULL};
     rc = cli_parse(&p, argc, argv);
@@ -193,6 +197,8 @@ static int parse(int argc, char **argv, integ_opts *o)
         o->nfiles = 0;
         if (o->wrap)
             return cli_fail(CMD, "--wrap is for point files, not a named pattern");
+        if (o->exact != NULL)
+            return cli_fail(CMD, "--exact is for point files: a named pattern has its own");
         if (!o->dim_given)
             o->dim = 2u;
     } else {
@@ -206,6 +212,9 @@ static int parse(int argc, char **argv, integ_opts *o)
         if (o->nfiles == 0u)
             o->files[o->nfiles++] = "-";
     }
+    if (o->exact != NULL && strcmp(o->exact, "random") != 0 && strcmp(o->exact, "jittered") != 0 &&
+        strcmp(o->exact, "stratified") != 0)
+        return cli_fail(CMD, "--exact takes random, jittered or stratified, not '%s'", o->exact);
     if (o->freq_given && o->freq > (size_t)(o->dim == 2u ? MAX_FREQ_2D : MAX_FREQ_1D))
         return cli_fail(CMD, "--freq: at most %d in 2D", MAX_FREQ_2D);
     return o->plot != NULL ? cli_plot_check(CMD, o->plot) : 0;
@@ -281,6 +290,16 @@ static int add_set(void *ctx, size_t k, const double *coords, const double *weig
     group *g = group_for(c, k);
     if (g == NULL)
         return CLI_EXIT_FAIL;
+    if (c->o->exact != NULL) { /* files: the pattern the user says they are */
+        mcs_pattern2d grid;
+        c->ref = strcmp(c->o->exact, "random") == 0 ? MCS_INTEGRATE_RANDOM : MCS_INTEGRATE_JITTERED;
+        c->strata[0] = k;
+        c->strata[1] = 1u;
+        if (c->dim == 2u && mcs_pattern2d_init(&grid, MCS_PATTERN2D_JITTERED, k, 0u, 0u) == MCS_OK) {
+            c->strata[0] = grid.strata_x; /* the most nearly square grid, as mcspec pattern's */
+            c->strata[1] = grid.strata_y;
+        }
+    }
     const size_t m = c->o->m;
     for (int f = 0; f < NFAM; ++f) {
         if (!c->fam_on[f])

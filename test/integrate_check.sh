@@ -106,6 +106,8 @@ usage_error "--integrands 0" "--integrands expects" "$MCSPEC" integrate random -
 usage_error "--dim 3" "--dim expects a whole number from 1 to 2" "$MCSPEC" integrate random --dim 3 --k 16
 usage_error "--freq too high in 2D" "--freq: at most 1024 in 2D" "$MCSPEC" integrate random --k 16 --freq 2000
 usage_error "--freq too high for a 2D file" "--freq: at most 1024 in 2D" "$MCSPEC" integrate --freq 2000 "$tmp/one"
+usage_error "--exact with a kind" "--exact is for point files" "$MCSPEC" integrate random --k 16 --exact random
+usage_error "--exact bogus" "--exact takes random, jittered or stratified, not 'blue'" "$MCSPEC" integrate --exact blue "$tmp/one"
 usage_error "--wrap with a kind" "--wrap is for point files" "$MCSPEC" integrate random --k 16 --wrap
 usage_error "--plot .txt" "must end in .svg or .png" "$MCSPEC" integrate random --k 16 --plot "$tmp/f.txt"
 usage_error "three coordinates" "3 coordinates; the integrands take 1 or 2" "$MCSPEC" integrate "$tmp/three"
@@ -169,6 +171,14 @@ if succeeds "two files" "$MCSPEC" integrate --csv "$tmp/k16" "$tmp/k4"; then
     if succeeds "standard input" "$MCSPEC" integrate --csv - && cmp -s "$tmp/out" "$tmp/files.csv"; then ok
     else bad "standard input differs from the files read in the same order"; fi
     : >"$tmp/in"
+fi
+# A jittered 8 x 8 file (awk's generator) with --exact jittered: within 5 se.
+awk 'BEGIN { srand(11); for (s = 0; s < 64; ++s) { for (i = 0; i < 8; ++i) for (j = 0; j < 8; ++j)
+    printf "%.9f %.9f\n", (j + 0.999 * rand()) / 8, (i + 0.999 * rand()) / 8; print "#" } }' >"$tmp/jit"
+if succeeds "--exact jittered" "$MCSPEC" integrate --exact jittered --csv "$tmp/jit"; then
+    csv_shape "--exact jittered --csv" "$tmp/out" 5
+    within "a jittered file against exact" "$tmp/out"
+    for fam in gaussian gaussian_periodic heaviside disk cosine; do column_is "--exact $fam" "$tmp/out" "$fam" 5 set; done
 fi
 if succeeds "table" "$MCSPEC" integrate jittered --k 16 --k 64 --sets 8 && grep -q '^convergence' "$tmp/out" &&
     grep -q '^family  *K  *mse' "$tmp/out"; then ok; else bad "table: no header or convergence section"; fi
