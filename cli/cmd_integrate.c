@@ -9,6 +9,7 @@
 #include "output.h"
 #include "plot.h"
 #include "progress.h"
+#include "integrate.h"
 #include "source2d.h"
 
 #include "mcspec.h"
@@ -22,9 +23,6 @@
 #define CMD "mcspec integrate"
 #define CSV_HEADER "family,k,mse,mse_stderr,exact,predicted"
 #define CSV_EXTRA ",predicted_tail,freq,sets,slope,rate_random,rate_jittered"
-#define NFAM MCS_INTEGRAND_FAMILIES
-#define MAX_KS 32         /* --k given at most this often */
-#define MAX_FILES 64      /* point files on one command line */
 #define MAX_FREQ_2D 1024 /* --freq caps: the prediction is O(T M F^d) */
 #define MAX_FREQ_1D 1048576
 #define DEFAULT_FREQ_2D 128 /* the default's caps: a few seconds of prediction at M T = 1024 */
@@ -83,45 +81,9 @@ static const char help[] =
     "\n"
     "Exit status: 0 on success, 2 on bad usage or input (one line on stderr).\n";
 
-typedef struct {
-    size_t dim, m, freq, sets_opt, ks[MAX_KS], nks;
-    uint64_t seed, sets;
-    int wrap, csv, freq_given, dim_given;
-    const char *family, *plot, *kind, *exact, *files[MAX_FILES];
-    size_t nfiles;
-} integ_opts;
-
-/* One point count K: an accumulator per family, the spectrum of its sets
- * and the integrands drawn for them (for the prediction). */
-typedef struct {
-    size_t k, freq;
-    uint64_t sets;
-    mcs_integrate acc[NFAM];
-    mcs_integrand *fs[NFAM];
-    size_t nfs[NFAM], cap[NFAM];
-    mcs_pointset2d ps2;
-    mcs_pointset ps1;
-    void *mem;
-    double mse[NFAM], se[NFAM], exact[NFAM], pred[NFAM], tail[NFAM];
-} group;
-
-typedef struct {
-    const integ_opts *o;
-    size_t dim;
-    int fam_on[NFAM];
-    mcs_rng frng[NFAM];
-    group *g;
-    size_t ng;
-    mcs_integrate_reference ref;
-    size_t strata[2];
-    const cli_pointset_stats *stats; /* files: the reader's */
-    const char *name;                /* files: the one being read */
-    double slope[NFAM];
-} integ_ctx;
-
 static int family_of(const char *name)
 {
-    for (int f = 0; f < NFAM; ++f)
+    for (int f = 0; f < CLI_INTEG_FAMILIES; ++f)
         if (strcmp(name, mcs_integrand_family_str((mcs_integrand_family)f)) == 0)
             return f;
     return -1;
@@ -151,8 +113,8 @@ static int take_ks(int *argc, char **argv, integ_opts *o)
         uint64_t k = 0;
         if (cli_parse_u64(v, 1u, CLI_MAX_K, &k) != 0)
             return cli_fail(CMD, "--k expects a whole number from 1 to %d, not '%s'", CLI_MAX_K, v);
-        if (o->nks == MAX_KS)
-            return cli_fail(CMD, "--k given more than %d times", MAX_KS);
+        if (o->nks == CLI_INTEG_MAX_KS)
+            return cli_fail(CMD, "--k given more than %d times", CLI_INTEG_MAX_KS);
         for (size_t j = 0; j < o->nks; ++j)
             if (o->ks[j] == (size_t)k)
                 return cli_fail(CMD, "--k %llu given twice", (unsigned long long)k);
@@ -179,7 +141,7 @@ static int parse(int argc, char **argv, integ_opts *o)
         {"csv", CLI_OPT_FLAG, &o->csv, 0, 0, 0},
         {"exact", CLI_OPT_STRING, &o->exact, 0, 0, 0},
     };
-    cli_parser p = {CMD, help, opts, CLI_COUNT(opts), o->files, MAX_FILES, 0u, NULL};
+    cli_parser p = {CMD, help, opts, CLI_COUNT(opts), o->files, CLI_INTEG_MAX_FILES, 0u, NULL};
     rc = cli_parse(&p, argc, argv);
     if (rc != CLI_PARSED)
         return rc;
@@ -232,7 +194,7 @@ static size_t default_freq(size_t dim, size_t k)
 
 static int any_periodic(const integ_ctx *c)
 {
-    for (int f = 0; f < NFAM; ++f)
+    for (int f = 0; f < CLI_INTEG_FAMILIES; ++f)
         if (c->fam_on[f] && mcs_integrand_is_periodic((mcs_integrand_family)f))
             return 1;
     return 0;
@@ -252,7 +214,7 @@ static group *group_for(integ_ctx *c, size_t k)
     group *g = &c->g[c->ng++];
     memset(g, 0, sizeof *g);
     g->k = k;
-    for (int f = 0; f < NFAM; ++f)
+    for (int f = 0; f < CLI_INTEG_FAMILIES; ++f)
         (void)mcs_integrate_init(&g->acc[f], (mcs_integrand_family)f, c->dim);
     g->freq = c->o->freq_given ? c->o->freq : default_freq(c->dim, k);
     if (g->freq == 0u || !any_periodic(c))
@@ -301,7 +263,7 @@ static int add_set(void *ctx, size_t k, const double *coords, const double *weig
         }
     }
     const size_t m = c->o->m;
-    for (int f = 0; f < NFAM; ++f) {
+    for (int f = 0; f < CLI_INTEG_FAMILIES; ++f) {
         if (!c->fam_on[f])
             continue;
         if (g->nfs[f] + m > g->cap[f]) {
@@ -399,7 +361,7 @@ static int results(integ_ctx *c)
     qsort(c->g, c->ng, sizeof *c->g, cmp_group);
     for (size_t i = 0; i < c->ng; ++i) {
         group *g = &c->g[i];
-        for (int f = 0; f < NFAM; ++f) {
+        for (int f = 0; f < CLI_INTEG_FAMILIES; ++f) {
             g->mse[f] = cli_or_nan(mcs_integrate_mse(&g->acc[f], &g->mse[f]), &g->mse[f]);
             g->se[f] = cli_or_nan(mcs_integrate_mse_stderr(&g->acc[f], &g->se[f]), &g->se[f]);
             g->exact[f] = cli_or_nan(mcs_integrate_exact(&g->acc[f], &g->exact[f]), &g->exact[f]);
@@ -415,7 +377,7 @@ static int results(integ_ctx *c)
                 return cli_internal(CMD, "prediction failed: %s", mcs_status_str(st));
         }
     }
-    for (int f = 0; f < NFAM; ++f) { /* least squares of log mse on log K */
+    for (int f = 0; f < CLI_INTEG_FAMILIES; ++f) { /* least squares of log mse on log K */
         double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
         for (size_t i = 0; i < c->ng; ++i)
             if (c->g[i].mse[f] > 0.0) {
@@ -455,7 +417,7 @@ static void report(const integ_ctx *c)
         printf("%-17s %8s %12s %11s %12s %7s %12s %10s %6s\n", "family", "K", "mse", "stderr",
                "exact", "z", "predicted", "tail", "F");
     }
-    for (int f = 0; f < NFAM; ++f) {
+    for (int f = 0; f < CLI_INTEG_FAMILIES; ++f) {
         if (!c->fam_on[f])
             continue;
         for (size_t i = 0; i < c->ng; ++i) {
@@ -492,7 +454,7 @@ static void report(const integ_ctx *c)
         return;
     printf("\nconvergence (least squares of log mse on log K over the rows above)\n");
     printf("%-17s %8s %14s %16s\n", "family", "slope", "random rate", "jittered rate");
-    for (int f = 0; f < NFAM; ++f) {
+    for (int f = 0; f < CLI_INTEG_FAMILIES; ++f) {
         if (!c->fam_on[f])
             continue;
         char b[40];
@@ -502,84 +464,12 @@ static void report(const integ_ctx *c)
     }
 }
 
-/* ---- The figure ---------------------------------------------------------------- */
-
-static int write_figure(FILE *fp, const char *tmp, const void *ctx)
-{
-    const integ_ctx *c = ctx;
-    FILE *d = cli_plot_data(tmp, "data.txt");
-    if (d == NULL)
-        return -1;
-    int blocks = 0;
-    for (int f = 0; f < NFAM; ++f) {
-        if (!c->fam_on[f])
-            continue;
-        for (size_t i = 0; i < c->ng; ++i) {
-            const group *g = &c->g[i];
-            fprintf(d, "%zu", g->k);
-            cli_plot_value(d, g->mse[f]);
-            cli_plot_value(d, isnan(g->se[f]) ? 0.0 : g->se[f]);
-            cli_plot_value(d, g->exact[f]);
-            fputc('\n', d);
-        }
-        fputs("\n\n", d);
-        ++blocks;
-    }
-    if (fclose(d) != 0)
-        return -1;
-    fprintf(fp, "set title \"mcspec integrate: %s (%zuD), mean squared error against K\\n"
-            "points: measured ± 1 standard error; dashed: least-squares fit%s\" noenhanced\n",
-            c->o->kind != NULL ? c->o->kind : "point files", c->dim,
-            c->ref != MCS_INTEGRATE_NONE ? "; solid: exact" : "");
-    fputs("set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
-          "set xlabel \"points per set K\"\nset ylabel \"mean squared error\"\n", fp);
-    cli_plot_style(fp);
-    fputs("set key top right box opaque samplen 2\n", fp);
-    const size_t k0 = c->g[0].k, k1 = c->g[c->ng - 1u].k;
-    fprintf(fp, "set xrange [%.17g:%.17g]\n", (double)k0 / 1.5, (double)k1 * 1.5);
-    fputs("plot ", fp);
-    int b = 0;
-    for (int f = 0; f < NFAM; ++f) {
-        if (!c->fam_on[f])
-            continue;
-        /* the fitted line through the rows' centre of mass in log-log */
-        double n = 0, sx = 0, sy = 0;
-        for (size_t i = 0; i < c->ng; ++i)
-            if (c->g[i].mse[f] > 0.0) {
-                n += 1.0;
-                sx += log((double)c->g[i].k);
-                sy += log(c->g[i].mse[f]);
-            }
-        const char *name = mcs_integrand_family_str((mcs_integrand_family)f);
-        fprintf(fp, "%s", b > 0 ? ", \\\n     " : "");
-        cli_plot_data_ref(fp, tmp, "data.txt");
-        char label[64];
-        if (isnan(c->slope[f]))
-            snprintf(label, sizeof label, "%s", name);
-        else
-            snprintf(label, sizeof label, "%s (slope %.2f)", name, c->slope[f]);
-        fprintf(fp, " index %d using 1:2:3 with yerrorbars lc %d pt 7 ps 0.8 title \"%s\" noenhanced",
-                b, b + 1, label);
-        if (c->ref != MCS_INTEGRATE_NONE) {
-            fputs(", ", fp);
-            cli_plot_data_ref(fp, tmp, "data.txt");
-            fprintf(fp, " index %d using 1:4 with lines lc %d lw 1.5 notitle", b, b + 1);
-        }
-        if (!isnan(c->slope[f]) && n > 0.0)
-            fprintf(fp, ", exp(%.17g + %.17g * (log(x) - %.17g)) with lines lc %d dt 2 notitle",
-                    sy / n, c->slope[f], sx / n, b + 1);
-        ++b;
-    }
-    fputc('\n', fp);
-    return blocks > 0 ? 0 : -1;
-}
-
 /* ---- Entry point ------------------------------------------------------------- */
 
 static void free_groups(integ_ctx *c)
 {
     for (size_t i = 0; i < c->ng; ++i) {
-        for (int f = 0; f < NFAM; ++f)
+        for (int f = 0; f < CLI_INTEG_FAMILIES; ++f)
             free(c->g[i].fs[f]);
         free(c->g[i].mem);
     }
@@ -615,7 +505,7 @@ int cli_cmd_integrate(int argc, char **argv)
     memset(&c, 0, sizeof c);
     c.o = &o;
     c.dim = o.kind != NULL || o.dim_given ? o.dim : 0u;
-    for (int f = 0; f < NFAM; ++f) {
+    for (int f = 0; f < CLI_INTEG_FAMILIES; ++f) {
         c.fam_on[f] = o.family == NULL || family_of(o.family) == f;
         mcs_rng_seed(&c.frng[f], o.seed, 1000u + (uint64_t)f);
     }
@@ -650,7 +540,7 @@ int cli_cmd_integrate(int argc, char **argv)
     if (rc == 0)
         report(&c);
     if (rc == 0 && o.plot != NULL)
-        rc = cli_plot_render(CMD, o.plot, write_figure, &c);
+        rc = cli_integrate_plot(CMD, o.plot, &c);
     free_groups(&c);
     return rc;
 }
