@@ -25,6 +25,8 @@ static const cli_command commands[] = {
      cli_cmd_sample},
     {"projections", "every 2D projection of a d-dimensional sampler or point file, flagged",
      cli_cmd_projections},
+    {"integrate", "integration error on integrand families, measured, exact and predicted",
+     cli_cmd_integrate},
     {"version", "print the library's version (also: mcspec --version)", cli_cmd_version},
 };
 

@@ -27,6 +27,8 @@
 #include "mcspec/spectrum2d.h"
 #include "mcspec/discrepancy.h"
 #include "mcspec/spacing.h"
+#include "mcspec/integrand.h"
+#include "mcspec/integrate.h"
 #include "mcspec/theory.h"
 #include "mcspec/owen.h"
 #include "mcspec/eq.h"

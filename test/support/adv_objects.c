@@ -73,6 +73,37 @@ static void spacing_build(int ov, mcs_spacing *acc)
             acc->stat[s].count = MCS_MAX_COUNT;
 }
 
+/* An integrand: a disk in 2D (base; variant 1: in 1D), in the other
+ * dimension (small), a Gaussian (max). */
+static void integrand_build(int ov, int v, mcs_integrand *f)
+{
+    mcs_rng rng;
+    const size_t dim = (v == 1) != (ov == OV_SMALL) ? 1u : 2u;
+    (void)mcs_rng_seed(&rng, 25u, 1u);
+    (void)mcs_integrand_draw(f, ov == OV_BIG ? MCS_INTEGRAND_GAUSSIAN : MCS_INTEGRAND_DISK, dim,
+                             &rng);
+}
+
+/* The integration error of disks (base, 2D; small: 1D), or of Heavisides
+ * (max, 2D): three sets of 5, 6, 7 points with one integrand each. */
+static void integrate_build(int ov, mcs_integrate *acc)
+{
+    static double pts[14];
+    const size_t dim = ov == OV_SMALL ? 1u : 2u;
+    const mcs_integrand_family fam = ov == OV_BIG ? MCS_INTEGRAND_HEAVISIDE : MCS_INTEGRAND_DISK;
+    mcs_rng rng;
+    (void)mcs_rng_seed(&rng, 26u, 1u);
+    (void)mcs_integrate_init(acc, fam, dim);
+    for (int t = 0; t < 3 && ov != OV_EMPTY; ++t) {
+        mcs_integrand f;
+        (void)mcs_integrand_draw(&f, fam, dim, &rng);
+        meas_points(t, 5u + (size_t)t, dim, pts);
+        (void)mcs_integrate_add(acc, 1u, &f, 5u + (size_t)t, pts, MCS_INTEGRATE_RANDOM, 0u, 0u);
+    }
+    if (ov == OV_FULL)
+        acc->sq.count = acc->exact.count = MCS_MAX_COUNT;
+}
+
 /* Plan variants: the dimension as L_KDIM reads it (1 for v % 7 < 3), so
  * that points[k d] follow the plan, and a tolerance each (1e-15: the widest
  * kernel; 1e-14 in 2D: sigma 5/2; 1e-1: the narrowest). */
@@ -202,6 +233,8 @@ static int meas_build(int type, int ov, int v, void *obj)
     switch (type) {
     case T_DISC: disc_build(ov, obj); break;
     case T_SPACING: spacing_build(ov, obj); break;
+    case T_INTEGRAND: integrand_build(ov, v, obj); break;
+    case T_INTEGRATE: integrate_build(ov, obj); break;
     case T_NUFFT: nufft_build(ov, v, obj); break;
     case T_PROV: prov_build(ov, v, arena_slot(obj), obj); break;
     case T_RECORD: {
@@ -226,12 +259,15 @@ static size_t meas_type_size(int type)
     case T_NUFFT: return sizeof(mcs_nufft);
     case T_PROV: return sizeof(mcs_io_provenance);
     case T_RECORD: return ADV_RECORD_CAP;
+    case T_INTEGRAND: return sizeof(mcs_integrand);
+    case T_INTEGRATE: return sizeof(mcs_integrate);
     default: return sizeof(size_t);
     }
 }
 
 static const char *const meas_type_names[T_COUNT - T_DISC] = {"discrepancy", "spacing", "nufft",
-                                                              "provenance", "record", "record_len"};
+                                                              "provenance", "record", "record_len",
+                                                              "integrand", "integrate"};
 
 /* Variant names: a plan's dimension and tolerance, a provenance's source,
  * and (a record appears only in mcs_io_set_provenance's rows) the source
@@ -255,6 +291,8 @@ static size_t meas_state_n(int type, int ov)
 {
     if (type == T_NUFFT)
         return nufft_freq(ov, 0);
+    if (type == T_INTEGRAND || type == T_INTEGRATE)
+        return ov == OV_SMALL ? 1u : 2u;
     return type == T_DISC || type == T_SPACING ? meas_dim(type, ov) : 0u;
 }
 
@@ -264,6 +302,8 @@ static size_t meas_state_nn(int type, int ov, int v)
         const size_t side = 2u * nufft_freq(ov, v % 6) + 1u;
         return 2u * (nufft_dim(v % 6) == 1u ? side : side * side);
     }
+    if (type == T_INTEGRAND || type == T_INTEGRATE)
+        return (size_t)ADV_LONG_LEN * (ov == OV_SMALL ? 1u : 2u);
     return type == T_DISC || type == T_SPACING ? (size_t)ADV_LONG_LEN * meas_dim(type, ov) : 0u;
 }
 
@@ -524,6 +564,8 @@ size_t adv_obj_n(int type, const void *obj)
     case T_TSPEC: return ((const mcs_theory_spectrum *)obj)->n;
     case T_DISC: return ((const mcs_discrepancy *)obj)->dim;
     case T_SPACING: return ((const mcs_spacing *)obj)->dim;
+    case T_INTEGRAND: return ((const mcs_integrand *)obj)->dim;
+    case T_INTEGRATE: return ((const mcs_integrate *)obj)->dim;
     case T_NUFFT: return ((const mcs_nufft *)obj)->freq;
     default: return 0;
     }
@@ -552,7 +594,7 @@ size_t adv_state_nn(int type, int ov, int v)
 
 int adv_has_count(int type)
 {
-    if (type == T_DISC || type == T_SPACING)
+    if (type == T_DISC || type == T_SPACING || type == T_INTEGRATE)
         return 1;
     return type == T_WELFORD || type == T_SPECTRUM || type == T_MOMENT || type == T_AUTOCORR ||
            type == T_POINTSET || type == T_POINTSET2D || type == T_SPECTRUM2D;
@@ -567,6 +609,7 @@ uint64_t adv_count(int type, const void *obj)
     case T_AUTOCORR: return ((const mcs_autocorr *)obj)->count;
     case T_DISC: return ((const mcs_discrepancy *)obj)->inv_k.count;
     case T_SPACING: return ((const mcs_spacing *)obj)->stat[0].count;
+    case T_INTEGRATE: return ((const mcs_integrate *)obj)->sq.count;
     default: break;
     }
     /* Their count is in their buffer, read only through a header that

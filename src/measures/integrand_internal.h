@@ -1,0 +1,38 @@
+/* Helpers the integrand files share (integrand.c, integrand_cells.c,
+ * integrand_fourier.c, integrate.c); private header. */
+#ifndef MCSPEC_INTEGRAND_INTERNAL_H
+#define MCSPEC_INTEGRAND_INTERNAL_H
+
+#include <stddef.h>
+
+#include "mcspec/integrand.h"
+
+#define MCS_INTEG_PI 3.14159265358979323846
+#define MCS_INTEG_TWO_PI 6.28318530717958647693
+
+/* Images n = -IMAGES..IMAGES per axis of the periodised Gaussian. */
+#define MCS_INTEG_IMAGES 3
+
+/* 1 if f is an integrand some draw produces (integrand.h), else 0. */
+int mcs_integ_valid_(const mcs_integrand *f);
+
+/* f at x (valid f, x in [0,1)^dim): no checks. */
+double mcs_integ_eval_(const mcs_integrand *f, const double *x);
+
+/* The exact I and Q = int f^2 of a valid f. */
+void mcs_integ_moments_(const mcs_integrand *f, double *integral, double *square);
+
+/* The area of the 2D Heaviside's half-plane inside [x0,x1] x [y0,y1]
+ * (the rectangle clipped by the line, Sutherland-Hodgman, then the shoelace
+ * formula); 1D (the step x < p): the length of [x0, x1] below p. */
+double mcs_integ_halfplane_area_(const mcs_integrand *f, double x0, double x1, double y0,
+                                 double y1);
+
+/* The exact jittered-grid MSE of a valid f over mx x my cells (my = 1 in
+ * 1D), mx my <= MCS_INTEGRAND_JITTERED_MAX_K. */
+double mcs_integ_jittered_(const mcs_integrand *f, size_t mx, size_t my);
+
+/* |f^(k)|^2 of a valid periodic f (k_y = 0 in 1D). */
+double mcs_integ_power_(const mcs_integrand *f, long kx, long ky);
+
+#endif /* MCSPEC_INTEGRAND_INTERNAL_H */
