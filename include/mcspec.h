@@ -25,6 +25,7 @@
 #include "mcspec/spectrum2d.h"
 #include "mcspec/discrepancy.h"
 #include "mcspec/spacing.h"
+#include "mcspec/pcf.h"
 #include "mcspec/theory.h"
 #include "mcspec/eq.h"
 #include "mcspec/io.h"
