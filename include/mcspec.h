@@ -26,6 +26,7 @@
 #include "mcspec/discrepancy.h"
 #include "mcspec/spacing.h"
 #include "mcspec/pcf.h"
+#include "mcspec/radial.h"
 #include "mcspec/theory.h"
 #include "mcspec/eq.h"
 #include "mcspec/io.h"
