@@ -41,6 +41,7 @@ int cli_cmd_merge(int argc, char **argv);
 int cli_cmd_show(int argc, char **argv);
 int cli_cmd_discrepancy(int argc, char **argv);
 int cli_cmd_stats(int argc, char **argv);
+int cli_cmd_pcf(int argc, char **argv);
 int cli_cmd_version(int argc, char **argv);
 
 /* Prints "cmd: message" as one line on stderr; returns CLI_EXIT_USAGE. */

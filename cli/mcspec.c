@@ -21,6 +21,8 @@ static const cli_command commands[] = {
      cli_cmd_discrepancy},
     {"stats", "minimum and average minimum distances of point sets read from a file",
      cli_cmd_stats},
+    {"pcf", "pair correlation (kernel PCF or psa's RDF) of point sets or a 2D pattern",
+     cli_cmd_pcf},
     {"version", "print the library's version (also: mcspec --version)", cli_cmd_version},
 };
 
