@@ -247,7 +247,7 @@ test: $(TEST_BIN) $(SECTION_BIN) $(BUILD)/examples/renderer_sampler
 	@ADVERSARIAL_KNOWN=$(ADVERSARIAL_KNOWN) \
 	    EXAMPLES="$(SECTION_BIN) $(BUILD)/examples/renderer_sampler" MCSPEC="$(CLI_BIN)" RENDERER="$(BUILD)/examples/renderer_sampler" \
 	    sh test/run_tests.sh $(TEST_BIN) test/examples_check.sh test/cli_check.sh test/measures_check.sh \
-	    test/record_check.sh test/renderer_check.sh
+	    test/record_check.sh test/renderer_check.sh test/pcf_check.sh
 
 clean:
 	rm -rf build
