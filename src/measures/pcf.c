@@ -366,8 +366,7 @@ mcs_status mcs_pcf_merge(mcs_pcf *dst, const mcs_pcf *src)
     if (st != MCS_OK)
         return st;
     if (dst->dim != src->dim || dst->estimator != src->estimator || dst->bins != src->bins ||
-        memcmp(&dst->radius, &src->radius, sizeof dst->radius) != 0 ||
-        memcmp(&dst->sigma, &src->sigma, sizeof dst->sigma) != 0)
+        !(dst->radius == src->radius) || !(dst->sigma == src->sigma))
         return MCS_ERR_MISMATCH;
     if (dst != src && (mcs_overlap_(dst->mem, dst->bytes, src->mem, src->bytes) ||
                        mcs_overlap_(dst, sizeof *dst, src->mem, src->bytes)))
