@@ -43,11 +43,18 @@
 extern "C" {
 #endif
 
+/* The range of step, and the largest |P| (a periodogram is at most K):
+ * with them no intermediate overflows (the sums run in index units). */
+#define MCS_RADIAL_MIN_STEP 1e-100
+#define MCS_RADIAL_MAX_STEP 1e100
+#define MCS_RADIAL_MAX_POWER 1e100
+
 /* The effective Nyquist frequency of power[n] (above), over K^(1/d), into
- * *out. dim 1 or 2, k points per set (>= 1), step > 0 finite; power[n]
- * finite, caller-owned, read only. MCS_ERR_NULL, MCS_ERR_DOMAIN (dim; step;
- * n < 2), MCS_ERR_K_RANGE (k = 0), MCS_ERR_NOT_FINITE (a power NaN or
- * infinite). *out untouched on error. */
+ * *out. dim 1 or 2, k points per set (>= 1), step in [MCS_RADIAL_MIN_STEP,
+ * MCS_RADIAL_MAX_STEP]; power[n] caller-owned, read only (entry 0 not at
+ * all). MCS_ERR_NULL, MCS_ERR_DOMAIN (dim; step; n < 2), MCS_ERR_K_RANGE
+ * (k = 0), MCS_ERR_NOT_FINITE (a power NaN or infinite), MCS_ERR_MAGNITUDE
+ * (a |power| above MCS_RADIAL_MAX_POWER). *out untouched on error. */
 mcs_status mcs_radial_effective_nyquist(size_t dim, size_t k, size_t n, const double *power,
                                         double step, double *out);
 

@@ -1,5 +1,8 @@
 /* psa's effective Nyquist frequency and oscillation metric of a radial
- * power spectrum (radial.h). */
+ * power spectrum (radial.h). Both are computed in index units (nu_i = i
+ * step): step cancels from C_i and from the oscillation's ratio, so only
+ * the threshold index, the range's end and the returned frequency see it,
+ * and no intermediate can overflow for powers and steps in range. */
 #include "mcspec/radial.h"
 
 #include <math.h>
@@ -10,25 +13,29 @@ static mcs_status check(size_t dim, size_t k, size_t n, const double *power, dou
 {
     if (power == NULL || out == NULL)
         return MCS_ERR_NULL;
-    if ((dim != 1u && dim != 2u) || !(isfinite(step) && step > 0.0) || n < 2u)
+    if ((dim != 1u && dim != 2u) || !(step >= MCS_RADIAL_MIN_STEP && step <= MCS_RADIAL_MAX_STEP) ||
+        n < 2u)
         return MCS_ERR_DOMAIN;
     if (k == 0u)
         return MCS_ERR_K_RANGE;
-    for (size_t i = 1; i < n; ++i)
+    for (size_t i = 1; i < n; ++i) {
         if (!isfinite(power[i]))
             return MCS_ERR_NOT_FINITE;
+        if (fabs(power[i]) > MCS_RADIAL_MAX_POWER)
+            return MCS_ERR_MAGNITUDE;
+    }
     return MCS_OK;
 }
 
-/* nu^(d - 1) and nu^d for d = 1, 2. */
-static double pow_d(size_t dim, double nu)
+/* x^d and d x^(d - 1) for d = 1, 2. */
+static double pow_d(size_t dim, double x)
 {
-    return dim == 1u ? nu : nu * nu;
+    return dim == 1u ? x : x * x;
 }
 
-static double pow_d1(size_t dim, double nu)
+static double weight(size_t dim, double x)
 {
-    return dim == 1u ? 1.0 : nu;
+    return dim == 1u ? 1.0 : 2.0 * x;
 }
 
 static double scale_of(size_t dim, size_t k)
@@ -36,11 +43,10 @@ static double scale_of(size_t dim, size_t k)
     return dim == 1u ? (double)k : sqrt((double)k);
 }
 
-/* The term of frequency j in C's sum: P_j d nu_j^(d-1) step. */
-static double term(size_t dim, const double *power, double step, size_t j)
+/* C's term of index j: P_j d j^(d - 1). */
+static double term(size_t dim, const double *power, size_t j)
 {
-    const double nu = (double)j * step;
-    return power[j] * (double)dim * pow_d1(dim, nu) * step;
+    return power[j] * weight(dim, (double)j);
 }
 
 mcs_status mcs_radial_effective_nyquist(size_t dim, size_t k, size_t n, const double *power,
@@ -54,21 +60,21 @@ mcs_status mcs_radial_effective_nyquist(size_t dim, size_t k, size_t n, const do
     i0 = i0 < 1u ? 1u : i0;
     double sum = 0.0; /* sum_{j=1..i} of the terms */
     for (size_t j = 1; j < i0 && j < n; ++j)
-        sum += term(dim, power, step, j);
+        sum += term(dim, power, j);
     for (size_t i = i0; i < n; ++i) {
-        sum += term(dim, power, step, i);
-        if (!(sum / pow_d(dim, (double)i * step) > 0.5))
+        sum += term(dim, power, i);
+        if (!(sum / pow_d(dim, (double)i) > 0.5))
             continue;
         /* Down from i: C_j from the same sum, less the terms above j. Once
          * this finds no j, psa's later i find none either (their only new
          * j is themselves, with C above 0.5), so the answer is 0. */
         double back = sum;
         for (size_t j = i; j > 0u; --j) {
-            if (back / pow_d(dim, (double)j * step) < 0.1) {
+            if (back / pow_d(dim, (double)j) < 0.1) {
                 *out = (double)j * step / scale;
                 return MCS_OK;
             }
-            back -= term(dim, power, step, j);
+            back -= term(dim, power, j);
         }
         break;
     }
@@ -89,18 +95,19 @@ mcs_status mcs_radial_oscillations(size_t dim, size_t k, size_t n, const double 
             maxp = power[i];
             io = i;
         }
-    const double x0 = (double)io * step, end = (double)n * step;
-    const double x1 = x0 + 5.0 * scale_of(dim, k) < end ? x0 + 5.0 * scale_of(dim, k) : end;
-    const double i1f = floor((x1 + step) / step);
+    /* x0, x1 and the samples in index units. */
+    const double x0 = (double)io, reach = 5.0 * scale_of(dim, k) / step;
+    const double x1 = x0 + reach < (double)n ? x0 + reach : (double)n;
+    const double i1f = floor(x1 + 1.0);
     const size_t i1 = i1f >= (double)(n - 1u) ? n - 1u : (size_t)i1f;
     if (!(x1 > x0) || i1 <= io)
         return MCS_ERR_DOMAIN;
     double sum = 0.0;
     for (size_t i = io; i <= i1; ++i) {
-        const double nu = (double)i * step, dev = power[i] - 1.0;
-        const double v = dev * dev * (double)dim * pow_d1(dim, nu);
+        const double dev = power[i] - 1.0;
+        const double v = dev * dev * weight(dim, (double)i);
         sum += i == io || i == i1 ? 0.5 * v : v;
     }
-    *out = 10.0 * sqrt(sum * step / (pow_d(dim, x1) - pow_d(dim, x0)));
+    *out = 10.0 * sqrt(sum / (pow_d(dim, x1) - pow_d(dim, x0)));
     return MCS_OK;
 }

@@ -541,6 +541,7 @@ int main(void)
     run_table(adv_fns_2d, adv_fns_2d_count);
     run_table(adv_fns_io, adv_fns_io_count);
     run_table(adv_fns_measures, adv_fns_measures_count);
+    run_table(adv_fns_pcf, adv_fns_pcf_count);
     for (size_t i = 0; i < sizeof scenarios / sizeof scenarios[0]; ++i) {
         current_scenario = &scenarios[i];
         UnityDefaultTestRun(test_scenario, scenarios[i].name, __LINE__);

@@ -191,6 +191,8 @@ extern const adv_fn adv_fns_io[];
 extern const size_t adv_fns_io_count;
 extern const adv_fn adv_fns_measures[];
 extern const size_t adv_fns_measures_count;
+extern const adv_fn adv_fns_pcf[];
+extern const size_t adv_fns_pcf_count;
 
 /* The outcomes adv_rows does not derive, for the slots of R_RANGE and
  * F_ZEROOK (adv_table_measures.c): run on the rows of every function. */
