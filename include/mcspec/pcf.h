@@ -61,6 +61,10 @@ extern "C" {
 /* Most bins. */
 #define MCS_PCF_MAX_BINS 1048576u
 
+/* Largest frequency of mcs_pcf_power (cycles per unit length; a
+ * periodogram's is at most a few million). */
+#define MCS_PCF_MAX_FREQ 1e12
+
 /* The estimators. */
 typedef enum {
     MCS_PCF_RDF = 0,     /* psa's histogram over ring areas */
@@ -111,8 +115,9 @@ mcs_status mcs_pcf_init(mcs_pcf *acc, size_t dim, mcs_pcf_estimator estimator, s
  * negative or not finite, counts out of order), changing nothing. */
 
 /* *bytes = the cell-grid work a set of k points needs (0: all pairs, work
- * may be NULL). MCS_ERR_NULL, MCS_ERR_UNINIT, MCS_ERR_K_RANGE (k < 2, or a
- * cutoff past 1/2 at this k). *bytes untouched on error. */
+ * may be NULL). MCS_ERR_NULL, MCS_ERR_UNINIT, MCS_ERR_K_RANGE (k < 2, a
+ * cutoff past 1/2 at this k, or MCS_PCF_WORK_SIZE(k) past SIZE_MAX).
+ * *bytes untouched on error. */
 mcs_status mcs_pcf_work_size(const mcs_pcf *acc, size_t k, size_t *bytes);
 
 /* Adds one set: points[k * dim] interleaved, each coordinate in [0, 1);
@@ -158,7 +163,8 @@ mcs_status mcs_pcf_stderr(const mcs_pcf *acc, size_t bin, double *out);
  * uses K and a Blackman window over the RDF instead. MCS_ERR_NULL,
  * MCS_ERR_UNINIT, MCS_ERR_INVARIANT, MCS_ERR_KIND (the Gaussian estimator),
  * MCS_ERR_EMPTY (no set), MCS_ERR_MISMATCH (sets of different K),
- * MCS_ERR_DOMAIN (freq negative or not finite). *out untouched on error. */
+ * MCS_ERR_DOMAIN (freq not in [0, MCS_PCF_MAX_FREQ]). *out untouched on
+ * error. */
 mcs_status mcs_pcf_power(const mcs_pcf *acc, double freq, double *out);
 
 /* The exact E g of bin for acc's estimator, bins and radius, for sets of

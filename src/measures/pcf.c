@@ -142,7 +142,7 @@ static size_t grid_side(size_t dim, size_t k, double c)
 
 mcs_status mcs_pcf_set_check_(const mcs_pcf *acc, size_t k, size_t *side, size_t *bytes)
 {
-    if (k < 2u)
+    if (k < 2u || k > (SIZE_MAX / sizeof(size_t) - 2u) / 2u)
         return MCS_ERR_K_RANGE;
     const double c = mcs_pcf_cutoff_(acc) * mcs_pcf_spacing_(acc->dim, k);
     if (!(c <= 0.5))

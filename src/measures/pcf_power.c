@@ -10,11 +10,22 @@ static const double pi = 3.14159265358979323846;
 
 /* J1(x) = (1/2 pi) int_0^{2 pi} cos(t - x sin t) dt: the integrand is
  * periodic and entire, so the M-point trapezoid rule errs by about
- * J_M(x) + J_{M+2}(x), below 1e-16 once M > |x| + 40 (Trefethen and
- * Weideman 2014, "The exponentially convergent trapezoidal rule"). */
+ * J_{M-1}(x) + J_{M+1}(x) (Trefethen and Weideman 2014, "The exponentially
+ * convergent trapezoidal rule"). Past the turning point J_{x + t x^(1/3)}(x)
+ * is about (2/x)^(1/3) Ai(2^(1/3) t), below 1e-17 for t >= 12, so
+ * M = |x| + 12 |x|^(1/3) + 40. Above 1e4, Hankel's expansion. */
 double mcs_pcf_bessel_j1_(double x)
 {
-    const size_t m = (size_t)fabs(x) + 48u;
+    if (fabs(x) > 1e4) {
+        /* Hankel's expansion (Abramowitz and Stegun 9.2.5-9.2.10, mu = 4):
+         * the first omitted term is below 1e-17 of the value here. */
+        const double ax = fabs(x), z = 8.0 * ax, t = ax - 0.75 * pi;
+        const double p = 1.0 - 3.0 * (-5.0) / (2.0 * z * z);
+        const double q = 3.0 / z - 3.0 * (-5.0) * (-21.0) / (6.0 * z * z * z);
+        const double j = sqrt(2.0 / (pi * ax)) * (p * cos(t) - q * sin(t));
+        return x < 0.0 ? -j : j;
+    }
+    const size_t m = (size_t)(fabs(x) + 12.0 * cbrt(fabs(x))) + 40u;
     double sum = 0.0;
     for (size_t j = 0; j < m; ++j) {
         const double t = 2.0 * pi * (double)j / (double)m;
@@ -44,7 +55,7 @@ mcs_status mcs_pcf_power(const mcs_pcf *acc, double freq, double *out)
         return MCS_ERR_EMPTY;
     if (acc->k_min != acc->k_max)
         return MCS_ERR_MISMATCH;
-    if (!(isfinite(freq) && freq >= 0.0))
+    if (!(freq >= 0.0 && freq <= MCS_PCF_MAX_FREQ))
         return MCS_ERR_DOMAIN;
     const size_t k = acc->k_max;
     const double w = acc->radius / (double)acc->bins * mcs_pcf_spacing_(acc->dim, k);
