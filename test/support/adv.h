@@ -28,6 +28,7 @@ enum {
     T_PROV,    /* mcs_io_provenance */
     T_RECORD,  /* a caller buffer of ADV_RECORD_CAP bytes holding a saved record */
     T_RECLEN,  /* the size_t holding that record's length (mcs_io_set_provenance) */
+    T_PCF,     /* mcs_pcf over a buffer inside the object; its N is the dimension */
     T_COUNT
 };
 
