@@ -17,7 +17,7 @@
 #   --exact random: every bin of the RDF and of the kernel PCF within 5
 #   standard errors of exact; 200 jittered sets of 256 points drawn by the
 #   command: every RDF bin within 5 standard errors of the exact jittered
-#   RDF; a grid's RDF equal to its exact one; --bin-width; --spectral: its
+#   RDF, and every kernel PCF bin of 100 such sets; a grid's RDF equal to its exact one; --bin-width; --spectral: its
 #   header, F rows, difference = power_from_rdf - power, and the two powers
 #   within 5 standard errors at frequencies past 3 / R; the same bytes twice;
 #   --plot renders a PNG (when gnuplot is on PATH);
@@ -111,6 +111,9 @@ fi
 if succeeds "jittered RDF" "$MCSPEC" pcf jittered --k 256 --sets 200 --rdf --bin-width 0.1 --csv; then
     within5 "jittered sets, RDF" "$tmp/out"
     if [ "$(wc -l <"$tmp/out")" -eq 31 ]; then ok; else bad "--bin-width 0.1 of 3: $(wc -l <"$tmp/out") lines"; fi
+fi
+if succeeds "jittered kernel PCF" "$MCSPEC" pcf jittered --k 256 --sets 100 --radius 2 --bins 20 --csv; then
+    within5 "jittered sets, kernel PCF" "$tmp/out"
 fi
 if succeeds "grid RDF" "$MCSPEC" pcf grid --k 64 --sets 1 --rdf --radius 3.3 --bins 23 --csv; then
     within5 "the grid, RDF" "$tmp/out"

@@ -178,16 +178,20 @@ mcs_status mcs_pcf_power(const mcs_pcf *acc, double freq, double *out);
  *   n-rooks     RDF: (K^2 A_b - K (Ix_b + Iy_b) + I2_b) / ((K - 1)^2 A_b),
  *               Ix, Iy the ring's mass of one axis' triangle (half-width
  *               1/K) and I2 of their product
- *   grid and shifted grid: deterministic, the RDF of the m x n lattice
- *               (pairs counted by their offsets)
+ *   grid and shifted grid: deterministic, the lattice's offsets counted
+ *   Gaussian, jittered and n-rooks: the expected pair count within d, N(d)
+ *               (the same disk integrals), integrated against the kernel:
+ *               int k(r - d) dN(d) over |r - d| <= 8 sigma, as counted;
+ *               the grids: the sum over their offsets
  * (docs/measures.md derives them: the sum over cell offsets of the
  * per-axis difference densities is constant, so only the same-cell term
- * remains). The ring integrals are one-dimensional quadratures (Gauss-
- * Legendre on pieces between the integrand's kinks, mapped to remove the
- * square-root ends), to about 1e-13. MCS_ERR_NULL (acc, out), MCS_ERR_UNINIT,
- * MCS_ERR_INVARIANT, MCS_ERR_BIN_RANGE, MCS_ERR_KIND (a kind not listed, or
- * a pattern with the Gaussian estimator), MCS_ERR_MISMATCH (a pattern with
- * a 1D acc), MCS_ERR_K_RANGE (R s above 1/2 at the pattern's K).
+ * remains). The ring and disk integrals are one-dimensional quadratures
+ * (Gauss-Legendre on pieces between the integrand's kinks, mapped to remove
+ * the square-root ends); doubling the nodes and quartering the kernel's
+ * pieces moves no value by more than 1e-14. MCS_ERR_NULL (acc, out),
+ * MCS_ERR_UNINIT, MCS_ERR_INVARIANT, MCS_ERR_BIN_RANGE, MCS_ERR_KIND (a
+ * kind not listed: multi-jittered, cmj), MCS_ERR_MISMATCH (a pattern with
+ * a 1D acc), MCS_ERR_K_RANGE (the cutoff past 1/2 at the pattern's K).
  * *out untouched on error. */
 mcs_status mcs_pcf_exact(const mcs_pcf *acc, const mcs_pattern2d *pat, size_t bin, double *out);
 

@@ -141,6 +141,88 @@ static double grid_rdf(const mcs_pcf *acc, size_t m, size_t n, size_t bin, doubl
     return count / ((double)(m * n - 1u) * area);
 }
 
+/* Expected ordered pairs of a jittered (m x n) or n-rooks set closer
+ * than d (absolute, d <= 1/2): K (K pi d^2 - D(d)), or
+ * K/(K - 1) (K^2 pi d^2 - K (Dx(d) + Dy(d)) + D(d)). */
+static double pairs_within(const gauss_rule *g, const mcs_pattern2d *pat, double d)
+{
+    const double kd = (double)pat->k, area = pi * d * d;
+    if (pat->kind == MCS_PATTERN2D_JITTERED)
+        return kd * (kd * area - disk(g, pat->strata_x, pat->strata_y, d));
+    const size_t k = pat->k;
+    return kd / (kd - 1.0) *
+           (kd * kd * area - kd * (disk(g, k, 0u, d) + disk(g, 0u, k, d)) + disk(g, k, k, d));
+}
+
+/* The kernel PCF's E g at bin centre r (absolute), kernel sd sg: the
+ * estimator counts k(r - d) for |r - d| <= 8 sg, so
+ *   E sum_ordered = int_lo^hi k(r - d) dN(d)
+ *                 = [k(r - d) N(d)]_lo^hi + int_lo^hi N(d) k'(r - d) dd,
+ * lo = max(0, r - 8 sg), hi = r + 8 sg, k' = -(u / sg^2) k(u); N is smooth
+ * between the kinks of its same-cell terms (1/m, 1/n, their hypotenuse),
+ * where the range is cut, and each piece is cut again to at most sg wide. */
+static double kernel_exact(const gauss_rule *g, const mcs_pattern2d *pat, double r, double sg)
+{
+    const double lo = r - 8.0 * sg > 0.0 ? r - 8.0 * sg : 0.0, hi = r + 8.0 * sg;
+    const double norm = 1.0 / (sg * sqrt(2.0 * pi));
+    const size_t m = pat->kind == MCS_PATTERN2D_JITTERED ? pat->strata_x : pat->k;
+    const size_t n = pat->kind == MCS_PATTERN2D_JITTERED ? pat->strata_y : pat->k;
+    double cuts[6];
+    size_t nc = 0;
+    cuts[nc++] = lo;
+    const double kinks[3] = {m >= 2u ? 1.0 / (double)m : -1.0, n >= 2u ? 1.0 / (double)n : -1.0,
+                             m >= 2u && n >= 2u ? sqrt(1.0 / ((double)m * (double)m) +
+                                                       1.0 / ((double)n * (double)n))
+                                                : -1.0};
+    for (int i = 0; i < 3; ++i)
+        if (kinks[i] > lo && kinks[i] < hi)
+            cuts[nc++] = kinks[i];
+    cuts[nc++] = hi;
+    for (size_t i = 1; i < nc; ++i) /* a few values: insertion sort */
+        for (size_t j = i; j > 0u && cuts[j - 1u] > cuts[j]; --j) {
+            const double t = cuts[j];
+            cuts[j] = cuts[j - 1u];
+            cuts[j - 1u] = t;
+        }
+    const double klo = norm * exp(-0.5 * (r - lo) * (r - lo) / (sg * sg));
+    const double khi = norm * exp(-0.5 * (r - hi) * (r - hi) / (sg * sg));
+    double sum = khi * pairs_within(g, pat, hi) - (lo > 0.0 ? klo * pairs_within(g, pat, lo) : 0.0);
+    for (size_t i = 0; i + 1u < nc; ++i) {
+        const double a = cuts[i], b = cuts[i + 1u];
+        const size_t parts = (size_t)ceil((b - a) / sg);
+        for (size_t p = 0; p < parts; ++p) {
+            const double pa = a + (b - a) * (double)p / (double)parts;
+            const double pb = a + (b - a) * (double)(p + 1u) / (double)parts;
+            for (int q = 0; q < GL_N; ++q) {
+                const double d = pa + (pb - pa) * g->x[q], u = r - d;
+                const double dk = -(u / (sg * sg)) * norm * exp(-0.5 * u * u / (sg * sg));
+                sum += g->w[q] * (pb - pa) * dk * pairs_within(g, pat, d);
+            }
+        }
+    }
+    const double kd = (double)pat->k;
+    return sum / (kd * (kd - 1.0) * 2.0 * pi * r);
+}
+
+/* The grid's kernel PCF at r: sum over the lattice offsets within 8 sg of
+ * r of k(r - d), over (K - 1) 2 pi r. */
+static double grid_kernel(size_t m, size_t n, double r, double sg)
+{
+    const double norm = 1.0 / (sg * sqrt(2.0 * pi));
+    double sum = 0.0;
+    for (size_t a = 0; a < m; ++a)
+        for (size_t b = 0; b < n; ++b) {
+            if (a == 0u && b == 0u)
+                continue;
+            const double dx = (double)(a <= m - a ? a : m - a) / (double)m;
+            const double dy = (double)(b <= n - b ? b : n - b) / (double)n;
+            const double u = r - sqrt(dx * dx + dy * dy);
+            if (fabs(u) <= 8.0 * sg)
+                sum += norm * exp(-0.5 * u * u / (sg * sg));
+        }
+    return sum / ((double)(m * n - 1u) * 2.0 * pi * r);
+}
+
 static double normal_cdf(double x)
 {
     return 0.5 * erfc(-x / sqrt(2.0));
@@ -171,13 +253,21 @@ mcs_status mcs_pcf_exact(const mcs_pcf *acc, const mcs_pattern2d *pat, size_t bi
         const double phi = exp(-0.5 * z * z) / sqrt(2.0 * pi);
         return mcs_set_(out, acc->dim == 1u ? normal_cdf(z) : normal_cdf(z) + phi / z);
     }
-    if (acc->estimator != MCS_PCF_RDF)
-        return MCS_ERR_KIND;
     const size_t k = pat->k, m = pat->strata_x, n = pat->strata_y;
     const double s = mcs_pcf_spacing_(2u, k), w = acc->radius / (double)acc->bins * s;
+    gauss_rule g;
+    if (acc->estimator == MCS_PCF_GAUSSIAN) {
+        const double r = ((double)bin + 0.5) * w, sg = acc->sigma * s;
+        switch (pat->kind) {
+        case MCS_PATTERN2D_GRID:
+        case MCS_PATTERN2D_SHIFTED_GRID: return mcs_set_(out, grid_kernel(m, n, r, sg));
+        case MCS_PATTERN2D_JITTERED:
+        case MCS_PATTERN2D_NROOKS: gauss_init(&g); return mcs_set_(out, kernel_exact(&g, pat, r, sg));
+        default: return MCS_ERR_KIND;
+        }
+    }
     const double r0 = (double)bin * w, r1 = (double)(bin + 1u) * w;
     const double area = mcs_pcf_ring_(2u, r0, r1), kd = (double)k;
-    gauss_rule g;
     switch (pat->kind) {
     case MCS_PATTERN2D_GRID:
     case MCS_PATTERN2D_SHIFTED_GRID: return mcs_set_(out, grid_rdf(acc, m, n, bin, s, area));
