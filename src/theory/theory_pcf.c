@@ -122,14 +122,26 @@ static double ring(const gauss_rule *g, size_t cx, size_t cy, double r0, double 
     return disk(g, cx, cy, r1) - disk(g, cx, cy, r0);
 }
 
+/* The next column (or row) offset after t of an m-periodic lattice whose
+ * toroidal distance min(t, m - t) / m can be below reach: the offsets past
+ * reach are skipped, so a bin costs O((reach m) (reach n)), not O(K). */
+static size_t next_offset(size_t t, size_t m, double reach)
+{
+    const double lim = ceil(reach * (double)m);
+    const size_t a = lim >= (double)m ? m : (size_t)lim;
+    ++t;
+    return t > a && t + a < m ? m - a : t;
+}
+
 /* The grid's RDF in bin: offsets (a, b) != 0 of the m x n lattice whose
  * toroidal distance falls in the bin, over (K - 1) A. */
 static double grid_rdf(const mcs_pcf *acc, size_t m, size_t n, size_t bin, double s, double area)
 {
     const double scale = (double)acc->bins / (acc->radius * s);
+    const double reach = (double)(bin + 1u) / scale;
     double count = 0.0;
-    for (size_t a = 0; a < m; ++a)
-        for (size_t b = 0; b < n; ++b) {
+    for (size_t a = 0; a < m; a = next_offset(a, m, reach))
+        for (size_t b = 0; b < n; b = next_offset(b, n, reach)) {
             if (a == 0u && b == 0u)
                 continue;
             const double dx = (double)(a <= m - a ? a : m - a) / (double)m;
@@ -208,10 +220,10 @@ static double kernel_exact(const gauss_rule *g, const mcs_pattern2d *pat, double
  * r of k(r - d), over (K - 1) 2 pi r. */
 static double grid_kernel(size_t m, size_t n, double r, double sg)
 {
-    const double norm = 1.0 / (sg * sqrt(2.0 * pi));
+    const double norm = 1.0 / (sg * sqrt(2.0 * pi)), reach = r + 8.0 * sg;
     double sum = 0.0;
-    for (size_t a = 0; a < m; ++a)
-        for (size_t b = 0; b < n; ++b) {
+    for (size_t a = 0; a < m; a = next_offset(a, m, reach))
+        for (size_t b = 0; b < n; b = next_offset(b, n, reach)) {
             if (a == 0u && b == 0u)
                 continue;
             const double dx = (double)(a <= m - a ? a : m - a) / (double)m;
