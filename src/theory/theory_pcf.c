@@ -28,34 +28,33 @@
 
 static const double pi = 3.14159265358979323846;
 
-typedef struct {
-    double x[GL_N], w[GL_N];
-} gauss_rule;
-
-/* Nodes and weights on [0, 1] by Newton's method on P_n (Golub-Welsch
- * would need an eigensolver; these converge in a few steps from the
- * Chebyshev guesses). */
-static void gauss_init(gauss_rule *g)
-{
-    for (int i = 0; i < GL_N; ++i) {
-        double z = cos(pi * ((double)i + 0.75) / ((double)GL_N + 0.5)), dp = 1.0;
-        for (int it = 0; it < 100; ++it) {
-            double p0 = 1.0, p1 = z;
-            for (int j = 2; j <= GL_N; ++j) {
-                const double p2 = ((2.0 * j - 1.0) * z * p1 - (j - 1.0) * p0) / (double)j;
-                p0 = p1;
-                p1 = p2;
-            }
-            dp = (double)GL_N * (z * p1 - p0) / (z * z - 1.0);
-            const double dz = p1 / dp;
-            z -= dz;
-            if (fabs(dz) < 1e-16)
-                break;
-        }
-        g->x[i] = 0.5 * (1.0 - z);
-        g->w[i] = 1.0 / ((1.0 - z * z) * dp * dp); /* 2 / ((1 - z^2) P'^2), halved for [0, 1] */
-    }
-}
+/* 32-point Gauss-Legendre nodes and weights on [0, 1] (numpy's leggauss,
+ * mapped to [0, 1]): constants, so the frames stay small and nothing is
+ * computed per call. */
+static const double gl_x[GL_N] = {
+    0.0013680690752592151, 0.0071942442273658092, 0.017618872206246805,
+    0.032546962031130167, 0.051839422116973899, 0.075316193133715015,
+    0.10275810201602881, 0.13390894062985514, 0.16847786653489238,
+    0.20614212137961885, 0.24655004553388532, 0.28932436193468236,
+    0.33406569885893617, 0.38035631887393145, 0.42776401920860174,
+    0.47584616715613082, 0.52415383284386918, 0.57223598079139826,
+    0.61964368112606849, 0.66593430114106389, 0.71067563806531764,
+    0.75344995446611462, 0.79385787862038115, 0.83152213346510762,
+    0.86609105937014486, 0.89724189798397114, 0.92468380686628504,
+    0.9481605778830261, 0.96745303796886983, 0.98238112779375319,
+    0.99280575577263419, 0.99863193092474078};
+static const double gl_w[GL_N] = {
+    0.0035093050047346492, 0.0081371973654529826, 0.012696032654631213,
+    0.017136931456510813, 0.021417949011113213, 0.025499029631188122,
+    0.029342046739267852, 0.032911111388180876, 0.036172897054424225,
+    0.039096947893535156, 0.041655962113473423, 0.043826046502201954,
+    0.045586939347881932, 0.046922199540402283, 0.047819360039637417,
+    0.048270044257363906, 0.048270044257363906, 0.047819360039637417,
+    0.046922199540402283, 0.045586939347881932, 0.043826046502201954,
+    0.041655962113473423, 0.039096947893535156, 0.036172897054424225,
+    0.032911111388180876, 0.029342046739267852, 0.025499029631188122,
+    0.021417949011113213, 0.017136931456510813, 0.012696032654631213,
+    0.0081371973654529826, 0.0035093050047346492};
 
 /* One axis' same-cell difference density: a triangle of half-width 1/cells
  * (cells >= 2), the constant 1 with one cell (the wrapped triangle), or
@@ -81,23 +80,23 @@ static double mass(size_t cells, double t)
 /* int_a^b density(cx, x) mass(cy, sqrt(rho^2 - x^2)) dx on a piece where
  * both are smooth, through x = a + (b - a)(3u^2 - 2u^3), which turns the
  * square-root ends into smooth ones. */
-static double piece(const gauss_rule *g, size_t cx, size_t cy, double rho, double a, double b)
+static double piece(size_t cx, size_t cy, double rho, double a, double b)
 {
     if (!(b > a))
         return 0.0;
     double sum = 0.0;
     for (int i = 0; i < GL_N; ++i) {
-        const double u = g->x[i];
+        const double u = gl_x[i];
         const double x = a + (b - a) * u * u * (3.0 - 2.0 * u);
         const double dx = (b - a) * 6.0 * u * (1.0 - u);
         const double t2 = rho * rho - x * x;
-        sum += g->w[i] * dx * density(cx, x) * mass(cy, t2 > 0.0 ? sqrt(t2) : 0.0);
+        sum += gl_w[i] * dx * density(cx, x) * mass(cy, t2 > 0.0 ? sqrt(t2) : 0.0);
     }
     return sum;
 }
 
 /* D(rho) = int_{|v| < rho} density(cx, x) density(cy, y) dv, rho <= 1/2. */
-static double disk(const gauss_rule *g, size_t cx, size_t cy, double rho)
+static double disk(size_t cx, size_t cy, double rho)
 {
     if (rho <= 0.0)
         return 0.0;
@@ -113,13 +112,13 @@ static double disk(const gauss_rule *g, size_t cx, size_t cy, double rho)
     cuts[nc++] = end;
     double sum = 0.0;
     for (size_t i = 0; i + 1u < nc; ++i)
-        sum += piece(g, cx, cy, rho, cuts[i], cuts[i + 1u]);
+        sum += piece(cx, cy, rho, cuts[i], cuts[i + 1u]);
     return 2.0 * sum;
 }
 
-static double ring(const gauss_rule *g, size_t cx, size_t cy, double r0, double r1)
+static double ring(size_t cx, size_t cy, double r0, double r1)
 {
-    return disk(g, cx, cy, r1) - disk(g, cx, cy, r0);
+    return disk(cx, cy, r1) - disk(cx, cy, r0);
 }
 
 /* The next column (or row) offset after t of an m-periodic lattice whose
@@ -156,14 +155,14 @@ static double grid_rdf(const mcs_pcf *acc, size_t m, size_t n, size_t bin, doubl
 /* Expected ordered pairs of a jittered (m x n) or n-rooks set closer
  * than d (absolute, d <= 1/2): K (K pi d^2 - D(d)), or
  * K/(K - 1) (K^2 pi d^2 - K (Dx(d) + Dy(d)) + D(d)). */
-static double pairs_within(const gauss_rule *g, const mcs_pattern2d *pat, double d)
+static double pairs_within(const mcs_pattern2d *pat, double d)
 {
     const double kd = (double)pat->k, area = pi * d * d;
     if (pat->kind == MCS_PATTERN2D_JITTERED)
-        return kd * (kd * area - disk(g, pat->strata_x, pat->strata_y, d));
+        return kd * (kd * area - disk(pat->strata_x, pat->strata_y, d));
     const size_t k = pat->k;
     return kd / (kd - 1.0) *
-           (kd * kd * area - kd * (disk(g, k, 0u, d) + disk(g, 0u, k, d)) + disk(g, k, k, d));
+           (kd * kd * area - kd * (disk(k, 0u, d) + disk(0u, k, d)) + disk(k, k, d));
 }
 
 /* The kernel PCF's E g at bin centre r (absolute), kernel sd sg: the
@@ -173,7 +172,7 @@ static double pairs_within(const gauss_rule *g, const mcs_pattern2d *pat, double
  * lo = max(0, r - 8 sg), hi = r + 8 sg, k' = -(u / sg^2) k(u); N is smooth
  * between the kinks of its same-cell terms (1/m, 1/n, their hypotenuse),
  * where the range is cut, and each piece is cut again to at most sg wide. */
-static double kernel_exact(const gauss_rule *g, const mcs_pattern2d *pat, double r, double sg)
+static double kernel_exact(const mcs_pattern2d *pat, double r, double sg)
 {
     const double lo = r - 8.0 * sg > 0.0 ? r - 8.0 * sg : 0.0, hi = r + 8.0 * sg;
     const double norm = 1.0 / (sg * sqrt(2.0 * pi));
@@ -198,7 +197,7 @@ static double kernel_exact(const gauss_rule *g, const mcs_pattern2d *pat, double
         }
     const double klo = norm * exp(-0.5 * (r - lo) * (r - lo) / (sg * sg));
     const double khi = norm * exp(-0.5 * (r - hi) * (r - hi) / (sg * sg));
-    double sum = khi * pairs_within(g, pat, hi) - (lo > 0.0 ? klo * pairs_within(g, pat, lo) : 0.0);
+    double sum = khi * pairs_within(pat, hi) - (lo > 0.0 ? klo * pairs_within(pat, lo) : 0.0);
     for (size_t i = 0; i + 1u < nc; ++i) {
         const double a = cuts[i], b = cuts[i + 1u];
         const size_t parts = (size_t)ceil((b - a) / sg);
@@ -206,9 +205,9 @@ static double kernel_exact(const gauss_rule *g, const mcs_pattern2d *pat, double
             const double pa = a + (b - a) * (double)p / (double)parts;
             const double pb = a + (b - a) * (double)(p + 1u) / (double)parts;
             for (int q = 0; q < GL_N; ++q) {
-                const double d = pa + (pb - pa) * g->x[q], u = r - d;
+                const double d = pa + (pb - pa) * gl_x[q], u = r - d;
                 const double dk = -(u / (sg * sg)) * norm * exp(-0.5 * u * u / (sg * sg));
-                sum += g->w[q] * (pb - pa) * dk * pairs_within(g, pat, d);
+                sum += gl_w[q] * (pb - pa) * dk * pairs_within(pat, d);
             }
         }
     }
@@ -267,14 +266,13 @@ mcs_status mcs_pcf_exact(const mcs_pcf *acc, const mcs_pattern2d *pat, size_t bi
     }
     const size_t k = pat->k, m = pat->strata_x, n = pat->strata_y;
     const double s = mcs_pcf_spacing_(2u, k), w = acc->radius / (double)acc->bins * s;
-    gauss_rule g;
     if (acc->estimator == MCS_PCF_GAUSSIAN) {
         const double r = ((double)bin + 0.5) * w, sg = acc->sigma * s;
         switch (pat->kind) {
         case MCS_PATTERN2D_GRID:
         case MCS_PATTERN2D_SHIFTED_GRID: return mcs_set_(out, grid_kernel(m, n, r, sg));
         case MCS_PATTERN2D_JITTERED:
-        case MCS_PATTERN2D_NROOKS: gauss_init(&g); return mcs_set_(out, kernel_exact(&g, pat, r, sg));
+        case MCS_PATTERN2D_NROOKS: return mcs_set_(out, kernel_exact(pat, r, sg));
         default: return MCS_ERR_KIND;
         }
     }
@@ -284,12 +282,10 @@ mcs_status mcs_pcf_exact(const mcs_pcf *acc, const mcs_pattern2d *pat, size_t bi
     case MCS_PATTERN2D_GRID:
     case MCS_PATTERN2D_SHIFTED_GRID: return mcs_set_(out, grid_rdf(acc, m, n, bin, s, area));
     case MCS_PATTERN2D_JITTERED:
-        gauss_init(&g);
-        return mcs_set_(out, (kd * area - ring(&g, m, n, r0, r1)) / ((kd - 1.0) * area));
+        return mcs_set_(out, (kd * area - ring(m, n, r0, r1)) / ((kd - 1.0) * area));
     case MCS_PATTERN2D_NROOKS: {
-        gauss_init(&g);
-        const double ix = ring(&g, k, 0u, r0, r1), iy = ring(&g, 0u, k, r0, r1);
-        const double i2 = ring(&g, k, k, r0, r1);
+        const double ix = ring(k, 0u, r0, r1), iy = ring(0u, k, r0, r1);
+        const double i2 = ring(k, k, r0, r1);
         return mcs_set_(out, (kd * kd * area - kd * (ix + iy) + i2) /
                                  ((kd - 1.0) * (kd - 1.0) * area));
     }
