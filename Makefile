@@ -249,7 +249,7 @@ test: $(TEST_BIN) $(SECTION_BIN) $(BUILD)/examples/renderer_sampler $(BUILD)/exa
 	    sh test/run_tests.sh $(TEST_BIN) test/examples_check.sh test/cli_check.sh test/measures_check.sh \
 	    test/record_check.sh test/renderer_check.sh \
 	    test/spectrum_check.sh test/sample_check.sh \
-	    test/integrate_check.sh
+	    test/integrate_check.sh test/pcf_check.sh
 
 clean:
 	rm -rf build

@@ -42,6 +42,7 @@ int cli_cmd_show(int argc, char **argv);
 int cli_cmd_discrepancy(int argc, char **argv);
 int cli_cmd_stats(int argc, char **argv);
 int cli_cmd_integrate(int argc, char **argv);
+int cli_cmd_pcf(int argc, char **argv);
 int cli_cmd_version(int argc, char **argv);
 int cli_cmd_sample(int argc, char **argv);
 int cli_cmd_projections(int argc, char **argv);

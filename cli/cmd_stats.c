@@ -1,5 +1,7 @@
 /* mcspec stats: the spatial statistics of point sets read from a file, the
- * minimum and average minimum distances over the maximal packing distance. */
+ * minimum and average minimum distances over the maximal packing distance,
+ * and psa's effective Nyquist frequency and oscillation metric of each
+ * set's radial power spectrum (1D and 2D). */
 #include "cli.h"
 #include "input.h"
 #include "output.h"
@@ -22,7 +24,7 @@
 #define MAX_DIM MCS_SPACING_MAX_DIM
 
 static const char help[] =
-    "usage: mcspec stats [--dim D] [--wrap] [--csv] [FILE|-]\n"
+    "usage: mcspec stats [--dim D] [--freq F] [--wrap] [--csv] [FILE|-]\n"
     "\n"
     "The spatial statistics of point sets read from FILE (or standard input,\n"
     "given as '-' or by giving no FILE), one set per trial, with distances taken\n"
@@ -34,7 +36,17 @@ static const char help[] =
     "sqrt(2 / (sqrt(3) K)) in 2D (the hexagonal lattice's spacing; psa's\n"
     "normalisation, Lagae and Dutre 2008) and 1/K in 1D, so a hexagonal lattice\n"
     "gives 1, a square grid 0.93, and independent uniform points about 0.47\n"
-    "(avg) in 2D; then their mean over the sets (value) and its standard error.\n"
+    "(avg) in 2D; in 1D and 2D also, from the set's periodogram (radial average\n"
+    "over annuli of width 1 in 2D, P at each frequency in 1D, up to F)\n"
+    "  effective_nyquist psa's effective Nyquist frequency over sqrt(K) (K in\n"
+    "                    1D): where the mean power over the disk first stays\n"
+    "                    below 0.1 (Heck, Schloemer and Deussen 2013)\n"
+    "  oscillations      psa's oscillation metric: 10 x the RMS of P - 1 over\n"
+    "                    the 5 sqrt(K) frequencies past P's first rise to 0.98\n"
+    "                    (cut at F)\n"
+    "then their mean over the sets (value) and its standard error. psa applies\n"
+    "the last two to the mean spectrum of its sets: the rows\n"
+    "effective_nyquist_of_mean and oscillations_of_mean do that (no stderr).\n"
     "Definitions and references: docs/measures.md.\n"
     "\n"
     "Input: one point per line, D coordinates in [0,1) separated by spaces or\n"
@@ -46,6 +58,8 @@ static const char help[] =
     "Options:\n"
     "  --dim D   coordinates per point, 1 to " CLI_STR(MCS_SPACING_MAX_DIM) " (default: as many as the\n"
     "            first point line has; every line must then have as many)\n"
+    "  --freq F  the periodogram's cutoff (default: ceil(5 sqrt(K)) in 2D, 5 K in\n"
+    "            1D, K of the first set)\n"
     "  --wrap    take coordinates modulo 1 (default: outside [0,1) is an error)\n"
     "  --csv     print CSV only: the header, exactly\n"
     "            " CSV_HEADER "\n"
@@ -55,10 +69,27 @@ static const char help[] =
     "Exit status: 0 on success, 2 on bad usage or input (one line on stderr).\n";
 
 typedef struct {
-    size_t dim;
+    size_t dim, freq;
     int wrap, csv;
     const char *path;
 } stats_opts;
+
+/* The spectral rows: per-set values, and the values of the mean spectrum. */
+enum { SPEC_NYQUIST = 0, SPEC_OSCILLATIONS, SPEC_ROWS };
+static const char *const spec_names[SPEC_ROWS] = {"effective_nyquist", "oscillations"};
+
+typedef struct {
+    size_t freq;          /* F; 0 until the first set */
+    mcs_pointset ps1;     /* one set's periodogram, 1D */
+    mcs_pointset2d ps2;   /* 2D */
+    void *mem;
+    size_t bytes;
+    double *power;        /* one set's radial power, [F + 1] */
+    double *sum;          /* their sum over the sets */
+    size_t k_first;
+    int same_k;
+    mcs_welford stat[SPEC_ROWS];
+} spectral_ctx;
 
 typedef struct {
     mcs_spacing acc;
@@ -67,12 +98,15 @@ typedef struct {
     void *work;       /* scratch, grown to the largest set's need */
     size_t work_bytes;
     const cli_pointset_stats *stats; /* the reader's: the file's dimension */
+    size_t freq_opt;                 /* --freq, 0: the default */
+    spectral_ctx spec;
 } stats_ctx;
 
 static int parse(int argc, char **argv, stats_opts *o)
 {
     cli_opt opts[] = {
         {"dim", CLI_OPT_SIZE, &o->dim, 1, MAX_DIM, 0},
+        {"freq", CLI_OPT_SIZE, &o->freq, 1, MCS_POINTSET2D_MAX_FREQ, 0},
         {"wrap", CLI_OPT_FLAG, &o->wrap, 0, 0, 0},
         {"csv", CLI_OPT_FLAG, &o->csv, 0, 0, 0},
     };
@@ -82,6 +116,66 @@ static int parse(int argc, char **argv, stats_opts *o)
     if (o->path == NULL && isatty(STDIN_FILENO))
         return cli_fail(CMD, "no input: give a point file, or '-' to read standard input");
     return 0;
+}
+
+/* The periodogram's accumulators over one buffer, for cutoff F. */
+static int spectral_start(spectral_ctx *sp, size_t dim, size_t freq, size_t k)
+{
+    size_t bytes = 0;
+    mcs_status st = dim == 1u ? mcs_pointset_size(freq, 0u, &bytes)
+                              : mcs_pointset2d_size(freq, 0u, &bytes);
+    if (st != MCS_OK)
+        return cli_fail(CMD, "--freq %zu: %s (at most %d in 2D)", freq, mcs_status_str(st),
+                        MCS_POINTSET2D_MAX_FREQ);
+    sp->mem = cli_alloc(CMD, 1, bytes);
+    sp->power = cli_alloc(CMD, 2u * (freq + 1u), sizeof *sp->power);
+    if (sp->mem == NULL || sp->power == NULL)
+        return CLI_EXIT_FAIL;
+    sp->sum = sp->power + freq + 1u;
+    for (size_t i = 0; i <= freq; ++i)
+        sp->sum[i] = 0.0;
+    sp->bytes = bytes;
+    sp->freq = freq;
+    sp->k_first = k;
+    sp->same_k = 1;
+    for (int r = 0; r < SPEC_ROWS; ++r)
+        mcs_welford_init(&sp->stat[r]);
+    return 0;
+}
+
+/* One set's radial power (annulus r at its inner radius in 2D, P(f) in
+ * 1D) from a fresh accumulator, its two metrics into the Welfords. */
+static int spectral_add(spectral_ctx *sp, size_t dim, size_t k, const double *coords)
+{
+    mcs_status st = dim == 1u ? mcs_pointset_init(&sp->ps1, sp->freq, 0u, sp->mem, sp->bytes)
+                              : mcs_pointset2d_init(&sp->ps2, sp->freq, 0u, sp->mem, sp->bytes);
+    if (st == MCS_OK)
+        st = dim == 1u ? mcs_pointset_add(&sp->ps1, k, coords)
+                       : mcs_pointset2d_add(&sp->ps2, k, coords);
+    for (size_t i = 0; i <= sp->freq && st == MCS_OK; ++i)
+        st = dim == 1u ? mcs_pointset_power(&sp->ps1, (long)i, &sp->power[i])
+                       : mcs_pointset2d_radial(&sp->ps2, i, &sp->power[i]);
+    if (st != MCS_OK)
+        return cli_internal(CMD, "the periodogram of a set failed: %s", mcs_status_str(st));
+    for (size_t i = 0; i <= sp->freq; ++i)
+        sp->sum[i] += sp->power[i];
+    sp->same_k = sp->same_k && k == sp->k_first;
+    double v[SPEC_ROWS];
+    const size_t n = sp->freq + 1u;
+    st = mcs_radial_effective_nyquist(dim, k, n, sp->power, 1.0, &v[SPEC_NYQUIST]);
+    if (st == MCS_OK && mcs_radial_oscillations(dim, k, n, sp->power, 1.0, &v[SPEC_OSCILLATIONS]) != MCS_OK)
+        v[SPEC_OSCILLATIONS] = (double)NAN; /* no rise to 0.98 before F: no value */
+    for (int r = 0; r < SPEC_ROWS && st == MCS_OK; ++r)
+        if (!isnan(v[r]))
+            st = mcs_welford_add(&sp->stat[r], v[r]);
+    if (st != MCS_OK)
+        return cli_internal(CMD, "the spectral statistics of a set failed: %s", mcs_status_str(st));
+    return 0;
+}
+
+static size_t default_freq(size_t dim, size_t k)
+{
+    return dim == 1u ? 5u * k : (size_t)ceil(5.0 * sqrt((double)k));
 }
 
 static int add_set(void *ctx, size_t k, const double *coords, const double *weights)
@@ -113,10 +207,20 @@ static int add_set(void *ctx, size_t k, const double *coords, const double *weig
         st = mcs_spacing_add(&c->acc, k, coords, c->work, c->work_bytes);
     if (st != MCS_OK)
         return cli_internal(CMD, "adding a point set failed: %s", mcs_status_str(st));
-    return 0;
+    const size_t dim = c->acc.dim;
+    if (dim > 2u)
+        return 0;
+    int rc = 0;
+    if (c->spec.freq == 0u) {
+        size_t f = c->freq_opt != 0u ? c->freq_opt : default_freq(dim, k);
+        f = f < (size_t)MCS_POINTSET2D_MAX_FREQ || dim == 1u ? f : (size_t)MCS_POINTSET2D_MAX_FREQ;
+        rc = spectral_start(&c->spec, dim, f, k);
+    }
+    return rc != 0 ? rc : spectral_add(&c->spec, dim, k, coords);
 }
 
-static void report(const stats_opts *o, const mcs_spacing *acc, const cli_pointset_stats *stats)
+static void report(const stats_opts *o, const mcs_spacing *acc, const cli_pointset_stats *stats,
+                   spectral_ctx *spec)
 {
     if (o->csv) {
         puts(CSV_HEADER);
@@ -129,7 +233,11 @@ static void report(const stats_opts *o, const mcs_spacing *acc, const cli_points
                                               : stats->dim == 2u ? "sqrt(2 / (sqrt(3) K))"
                                                                  : "that of the densest lattice "
                                                                    "packing (docs/measures.md)");
-        printf("\n%-17s %13s %13s\n", "statistic", "value", "stderr");
+        if (stats->dim <= 2u)
+            printf("spectral rows: the periodogram up to F = %zu (radial average over annuli of "
+                   "width 1 in 2D); effective_nyquist over %s\n", spec->freq,
+                   stats->dim == 1u ? "K" : "sqrt(K)");
+        printf("\n%-25s %13s %13s\n", "statistic", "value", "stderr");
     }
     for (int i = 0; i < MCS_SPACING_STATISTICS; ++i) {
         const mcs_spacing_statistic s = (mcs_spacing_statistic)i;
@@ -138,20 +246,49 @@ static void report(const stats_opts *o, const mcs_spacing *acc, const cli_points
             v[0] = (double)NAN;
         if (mcs_spacing_stderr(acc, s, &v[1]) != MCS_OK)
             v[1] = (double)NAN;
-        printf(o->csv ? "%s" : "%-17s", mcs_spacing_statistic_str(s));
+        printf(o->csv ? "%s" : "%-25s", mcs_spacing_statistic_str(s));
+        cli_print_values(o->csv, v, 2);
+    }
+    if (stats->dim > 2u || spec->freq == 0u)
+        return;
+    for (int r = 0; r < SPEC_ROWS; ++r) {
+        double v[2] = {(double)NAN, (double)NAN};
+        if (mcs_welford_mean(&spec->stat[r], &v[0]) != MCS_OK)
+            v[0] = (double)NAN;
+        if (mcs_welford_stderr(&spec->stat[r], &v[1]) != MCS_OK)
+            v[1] = (double)NAN;
+        printf(o->csv ? "%s" : "%-25s", spec_names[r]);
+        cli_print_values(o->csv, v, 2);
+    }
+    /* psa's way: the metrics of the mean spectrum (one K only). */
+    for (int r = 0; r < SPEC_ROWS; ++r) {
+        double v[2] = {(double)NAN, (double)NAN};
+        const size_t n = spec->freq + 1u;
+        for (size_t i = 0; i <= spec->freq; ++i)
+            spec->power[i] = spec->sum[i] / (double)stats->sets;
+        mcs_status st = MCS_ERR_MISMATCH;
+        if (spec->same_k)
+            st = r == SPEC_NYQUIST
+                     ? mcs_radial_effective_nyquist(stats->dim, spec->k_first, n, spec->power, 1.0, &v[0])
+                     : mcs_radial_oscillations(stats->dim, spec->k_first, n, spec->power, 1.0, &v[0]);
+        if (st != MCS_OK)
+            v[0] = (double)NAN;
+        char name[40];
+        snprintf(name, sizeof name, "%s_of_mean", spec_names[r]);
+        printf(o->csv ? "%s" : "%-25s", name);
         cli_print_values(o->csv, v, 2);
     }
 }
 
 int cli_cmd_stats(int argc, char **argv)
 {
-    stats_opts o = {0, 0, 0, NULL};
+    stats_opts o = {0, 0, 0, 0, NULL};
     int rc = parse(argc, argv, &o);
     if (rc != 0)
         return rc < 0 ? CLI_EXIT_OK : rc;
     cli_pointset_stats stats;
     stats_ctx ctx = {.name = cli_input_name(o.path), .sets = 0, .work = NULL, .work_bytes = 0,
-                     .stats = &stats};
+                     .stats = &stats, .freq_opt = o.freq};
     ctx.acc.dim = 0; /* initialised at the first set, when the dimension is known */
     cli_pointset_format fmt = {.dim = o.dim, .weights = 0, .wrap = o.wrap};
     cli_progress progress;
@@ -159,7 +296,9 @@ int cli_cmd_stats(int argc, char **argv)
     rc = cli_read_pointsets(CMD, o.path, &fmt, add_set, &ctx, &stats, &progress);
     cli_progress_end(&progress);
     if (rc == 0)
-        report(&o, &ctx.acc, &stats);
+        report(&o, &ctx.acc, &stats, &ctx.spec);
     free(ctx.work);
+    free(ctx.spec.mem);
+    free(ctx.spec.power);
     return rc;
 }

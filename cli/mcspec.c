@@ -27,6 +27,8 @@ static const cli_command commands[] = {
      cli_cmd_projections},
     {"integrate", "integration error on integrand families, measured, exact and predicted",
      cli_cmd_integrate},
+    {"pcf", "pair correlation (kernel PCF or psa's RDF) of point sets or a 2D pattern",
+     cli_cmd_pcf},
     {"version", "print the library's version (also: mcspec --version)", cli_cmd_version},
 };
 

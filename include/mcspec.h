@@ -29,6 +29,8 @@
 #include "mcspec/spacing.h"
 #include "mcspec/integrand.h"
 #include "mcspec/integrate.h"
+#include "mcspec/pcf.h"
+#include "mcspec/radial.h"
 #include "mcspec/theory.h"
 #include "mcspec/owen.h"
 #include "mcspec/eq.h"

@@ -175,7 +175,7 @@ fi
 # circle: every gap 1/10 = d_max.
 awk 'BEGIN { for (i = 0; i < 256; ++i) printf "%.17g %.17g\n", (i % 16 + 0.5) / 16, (int(i / 16) + 0.5) / 16 }' >"$tmp/grid"
 if succeeds "stats of a grid" "$MCSPEC" stats --csv "$tmp/grid"; then
-    csv_shape "stats --csv" "$tmp/out" 'statistic,value,stderr' 2 3
+    csv_shape "stats --csv" "$tmp/out" 'statistic,value,stderr' 6 3
     expect "a 16 x 16 grid" "$tmp/out" "$(printf '%s\n' 'min_distance 2 0.93060485910209959' \
         'avg_min_distance 2 0.93060485910209959' 'min_distance 3 empty')"
 fi

@@ -544,6 +544,7 @@ int main(void)
         {adv_fns_io, &adv_fns_io_count},       {adv_fns_measures, &adv_fns_measures_count},
         {adv_fns_owen, &adv_fns_owen_count},   {adv_fns_nd, &adv_fns_nd_count},
         {adv_fns_blue, &adv_fns_blue_count},   {adv_fns_integ, &adv_fns_integ_count},
+        {adv_fns_pcf, &adv_fns_pcf_count},
     };
     const size_t ntables = sizeof tables / sizeof tables[0];
     if (getenv("ADVERSARIAL_LIST") != NULL) { /* the names the table covers, for check-api */

@@ -30,6 +30,7 @@ enum {
     T_RECLEN,  /* the size_t holding that record's length (mcs_io_set_provenance) */
     T_INTEGRAND, /* mcs_integrand: a disk in 2D (variant 1: 1D; small: the other D; max: a Gaussian) */
     T_INTEGRATE, /* mcs_integrate; its N is the dimension (max: another family) */
+    T_PCF,     /* mcs_pcf over a buffer inside the object; its N is the dimension */
     T_COUNT
 };
 
@@ -201,6 +202,8 @@ extern const adv_fn adv_fns_blue[];
 extern const size_t adv_fns_blue_count;
 extern const adv_fn adv_fns_integ[];
 extern const size_t adv_fns_integ_count;
+extern const adv_fn adv_fns_pcf[];
+extern const size_t adv_fns_pcf_count;
 
 /* The outcomes adv_rows does not derive, for the slots of R_RANGE and
  * F_ZEROOK (adv_table_measures.c): run on the rows of every function. */

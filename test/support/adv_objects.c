@@ -6,6 +6,8 @@
 #include "adv_world.h" /* the arena: a plan's buffer, a provenance's slot */
 
 #include <math.h>
+#include <stddef.h>
+#include <stdint.h>
 #include <string.h>
 
 #define BASE_N 12u
@@ -35,6 +37,8 @@ static void meas_points(int t, size_t k, size_t dim, double *p)
 static size_t meas_dim(int type, int ov)
 {
     const int disc = type == T_DISC;
+    if (type == T_PCF)
+        return ov == OV_SMALL ? 1u : 2u;
     return ov == OV_SMALL ? 1u
            : ov == OV_BIG ? (disc ? (size_t)MCS_DISCREPANCY_MAX_DIM : (size_t)MCS_SPACING_MAX_DIM)
                           : 2u;
@@ -102,6 +106,30 @@ static void integrate_build(int ov, mcs_integrate *acc)
     }
     if (ov == OV_FULL)
         acc->sq.count = acc->exact.count = MCS_MAX_COUNT;
+}
+
+/* A pair-correlation accumulator over a buffer inside the object (8 bins
+ * of psa's RDF over [0, 1/2) mean spacings; 1D for OV_SMALL; no OV_BIG, as
+ * 2D is the base), three sets of 64 points in (one K, so its radial power
+ * reads out; 64 takes the cell grid). The header's pointers point
+ * into the object's own buffer, so a copy is repointed (adv_copy_object). */
+typedef struct {
+    mcs_pcf acc;
+    _Alignas(64) unsigned char mem[MCS_PCF_SIZE(8)];
+} adv_pcf;
+
+static void pcf_build(int ov, adv_pcf *o)
+{
+    static double pts[2u * 64u];
+    static unsigned char work[MCS_PCF_WORK_SIZE(64)];
+    const size_t dim = meas_dim(T_PCF, ov);
+    (void)mcs_pcf_init(&o->acc, dim, MCS_PCF_RDF, 8u, 0.5, 0.0, o->mem, sizeof o->mem);
+    for (int t = 0; t < 3 && ov != OV_EMPTY; ++t) {
+        meas_points(t, 64u, dim, pts);
+        (void)mcs_pcf_add(&o->acc, 64u, pts, work, sizeof work);
+    }
+    if (ov == OV_FULL)
+        o->acc.count = MCS_MAX_COUNT;
 }
 
 /* Plan variants: the dimension as L_KDIM reads it (1 for v % 7 < 3), so
@@ -223,7 +251,7 @@ static int meas_build(int type, int ov, int v, void *obj)
 {
     if ((ov == OV_EMPTY || ov == OV_FULL) && !adv_has_count(type))
         return 0;
-    if (ov == OV_BIGK)
+    if (ov == OV_BIGK || (ov == OV_BIG && type == T_PCF))
         return 0;
     if ((ov == OV_ZERO || ov == OV_FF) && type != T_NUFFT) {
         memset(obj, ov == OV_ZERO ? 0 : 0xFF, adv_type_size(type));
@@ -235,6 +263,7 @@ static int meas_build(int type, int ov, int v, void *obj)
     case T_SPACING: spacing_build(ov, obj); break;
     case T_INTEGRAND: integrand_build(ov, v, obj); break;
     case T_INTEGRATE: integrate_build(ov, obj); break;
+    case T_PCF: pcf_build(ov, obj); break;
     case T_NUFFT: nufft_build(ov, v, obj); break;
     case T_PROV: prov_build(ov, v, arena_slot(obj), obj); break;
     case T_RECORD: {
@@ -256,6 +285,7 @@ static size_t meas_type_size(int type)
     switch (type) {
     case T_DISC: return sizeof(mcs_discrepancy);
     case T_SPACING: return sizeof(mcs_spacing);
+    case T_PCF: return sizeof(adv_pcf);
     case T_NUFFT: return sizeof(mcs_nufft);
     case T_PROV: return sizeof(mcs_io_provenance);
     case T_RECORD: return ADV_RECORD_CAP;
@@ -265,9 +295,9 @@ static size_t meas_type_size(int type)
     }
 }
 
-static const char *const meas_type_names[T_COUNT - T_DISC] = {"discrepancy", "spacing", "nufft",
-                                                              "provenance", "record", "record_len",
-                                                              "integrand", "integrate"};
+static const char *const meas_type_names[T_COUNT - T_DISC] = {
+    "discrepancy", "spacing", "nufft", "provenance", "record", "record_len", "integrand",
+    "integrate", "pcf"};
 
 /* Variant names: a plan's dimension and tolerance, a provenance's source,
  * and (a record appears only in mcs_io_set_provenance's rows) the source
@@ -293,7 +323,7 @@ static size_t meas_state_n(int type, int ov)
         return nufft_freq(ov, 0);
     if (type == T_INTEGRAND || type == T_INTEGRATE)
         return ov == OV_SMALL ? 1u : 2u;
-    return type == T_DISC || type == T_SPACING ? meas_dim(type, ov) : 0u;
+    return type == T_DISC || type == T_SPACING || type == T_PCF ? meas_dim(type, ov) : 0u;
 }
 
 static size_t meas_state_nn(int type, int ov, int v)
@@ -304,7 +334,9 @@ static size_t meas_state_nn(int type, int ov, int v)
     }
     if (type == T_INTEGRAND || type == T_INTEGRATE)
         return (size_t)ADV_LONG_LEN * (ov == OV_SMALL ? 1u : 2u);
-    return type == T_DISC || type == T_SPACING ? (size_t)ADV_LONG_LEN * meas_dim(type, ov) : 0u;
+    return type == T_DISC || type == T_SPACING || type == T_PCF
+               ? (size_t)ADV_LONG_LEN * meas_dim(type, ov)
+               : 0u;
 }
 
 static const size_t type_sizes[T_COUNT] = {
@@ -566,6 +598,7 @@ size_t adv_obj_n(int type, const void *obj)
     case T_SPACING: return ((const mcs_spacing *)obj)->dim;
     case T_INTEGRAND: return ((const mcs_integrand *)obj)->dim;
     case T_INTEGRATE: return ((const mcs_integrate *)obj)->dim;
+    case T_PCF: return ((const mcs_pcf *)obj)->dim;
     case T_NUFFT: return ((const mcs_nufft *)obj)->freq;
     default: return 0;
     }
@@ -594,7 +627,7 @@ size_t adv_state_nn(int type, int ov, int v)
 
 int adv_has_count(int type)
 {
-    if (type == T_DISC || type == T_SPACING || type == T_INTEGRATE)
+    if (type == T_DISC || type == T_SPACING || type == T_INTEGRATE || type == T_PCF)
         return 1;
     return type == T_WELFORD || type == T_SPECTRUM || type == T_MOMENT || type == T_AUTOCORR ||
            type == T_POINTSET || type == T_POINTSET2D || type == T_SPECTRUM2D;
@@ -610,6 +643,7 @@ uint64_t adv_count(int type, const void *obj)
     case T_DISC: return ((const mcs_discrepancy *)obj)->inv_k.count;
     case T_SPACING: return ((const mcs_spacing *)obj)->stat[0].count;
     case T_INTEGRATE: return ((const mcs_integrate *)obj)->sq.count;
+    case T_PCF: return ((const mcs_pcf *)obj)->count;
     default: break;
     }
     /* Their count is in their buffer, read only through a header that
@@ -643,7 +677,20 @@ void adv_copy_object(int type, void *dst, const void *src)
         (void)mcs_spectrum2d_copy(&d->acc, d->mem, sizeof d->mem, src);
         break;
     }
-    default: memcpy(dst, src, type_sizes[type]); break;
+    case T_PCF: { /* repoint what pointed into the source's own buffer */
+        adv_pcf *d = dst;
+        const adv_pcf *o = src;
+        memcpy(d, o, sizeof *d);
+        const uintptr_t lo = (uintptr_t)o->mem, hi = lo + sizeof o->mem;
+        double **ptrs[3] = {&d->acc.mean, &d->acc.m2, &d->acc.value};
+        for (int i = 0; i < 3; ++i)
+            if ((uintptr_t)*ptrs[i] >= lo && (uintptr_t)*ptrs[i] < hi)
+                *ptrs[i] = (double *)(void *)(d->mem + ((uintptr_t)*ptrs[i] - lo));
+        if ((uintptr_t)o->acc.mem >= lo && (uintptr_t)o->acc.mem < hi)
+            d->acc.mem = d->mem + ((uintptr_t)o->acc.mem - lo);
+        break;
+    }
+    default: memcpy(dst, src, adv_type_size(type)); break;
     }
 }
 
@@ -673,10 +720,26 @@ size_t adv_canonical(int type, const void *obj, unsigned char *out, size_t cap)
         settings[2] = a->wrap;
         break;
     }
+    case T_PCF: { /* the fields and the statistics, wherever the buffer is */
+        const mcs_pcf *a = obj;
+        const double fields[8] = {(double)a->dim, (double)a->estimator, (double)a->bins, a->radius,
+                                  a->sigma, (double)a->count, (double)a->k_min, (double)a->k_max};
+        if (sizeof fields > cap)
+            break;
+        memcpy(out, fields, sizeof fields);
+        len = sizeof fields;
+        const int mine = a->bins <= 8u && a->mean == (const double *)(const void *)((const adv_pcf *)obj)->mem &&
+                         a->m2 == a->mean + a->bins;
+        if (mine && len + 2u * a->bins * sizeof(double) <= cap) {
+            memcpy(out + len, a->mean, 2u * a->bins * sizeof(double));
+            len += 2u * a->bins * sizeof(double);
+        }
+        return len;
+    }
     default: break;
     }
     if (st != MCS_OK) {
-        len = type_sizes[type] < cap ? type_sizes[type] : cap;
+        len = adv_type_size(type) < cap ? adv_type_size(type) : cap;
         memcpy(out, obj, len);
         return len;
     }
