@@ -28,5 +28,6 @@
 #include "mcspec/theory.h"
 #include "mcspec/eq.h"
 #include "mcspec/io.h"
+#include "mcspec/abi.h"
 
 #endif /* MCSPEC_H */

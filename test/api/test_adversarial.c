@@ -13,6 +13,7 @@
  * ADVERSARIAL_TIMEOUT_MS sets the time after which a row counts as hung
  * (2 s, 6 s under ASan; raise it under valgrind). */
 #include "adv.h"
+#include "adv_table.h"
 #include "unity.h"
 
 #include <float.h>
@@ -541,6 +542,7 @@ int main(void)
     run_table(adv_fns_2d, adv_fns_2d_count);
     run_table(adv_fns_io, adv_fns_io_count);
     run_table(adv_fns_measures, adv_fns_measures_count);
+    run_table(adv_fns_abi, adv_fns_abi_count);
     for (size_t i = 0; i < sizeof scenarios / sizeof scenarios[0]; ++i) {
         current_scenario = &scenarios[i];
         UnityDefaultTestRun(test_scenario, scenarios[i].name, __LINE__);
