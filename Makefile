@@ -248,6 +248,7 @@ test: $(TEST_BIN) $(SECTION_BIN) $(BUILD)/examples/renderer_sampler
 	    EXAMPLES="$(SECTION_BIN) $(BUILD)/examples/renderer_sampler" MCSPEC="$(CLI_BIN)" RENDERER="$(BUILD)/examples/renderer_sampler" \
 	    sh test/run_tests.sh $(TEST_BIN) test/examples_check.sh test/cli_check.sh test/measures_check.sh \
 	    test/record_check.sh test/renderer_check.sh
+	@sh python/tests/run.sh $(BUILD)/libmcspec.so $(CLI_BIN) $(SAN)
 
 clean:
 	rm -rf build

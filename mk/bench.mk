@@ -23,6 +23,7 @@ BENCH_FLAGS_STR  := $(strip $(OPT) $(SANFLAGS))
 bench:
 	@sh tools/bench_deps.sh install '$(CC)'
 	@$(MAKE) --no-print-directory bench-run
+	@$(MAKE) --no-print-directory python-bench
 
 bench-run: $(BENCH_PROG)
 	@$(BENCH_PROG) $(if $(filter 1,$(BENCH_QUICK)),--quick) \

@@ -81,3 +81,11 @@ def test_exact_power_of_jittered_is_the_library_s_closed_form():
     s = lambda f: np.sinc(f / 4.0) ** 2
     np.testing.assert_allclose(power[(fx != 0) | (fy != 0)],
                                (1 - s(fx) * s(fy))[(fx != 0) | (fy != 0)], rtol=1e-12)
+
+
+def test_the_package_version_in_pyproject_is_the_library_s():
+    import os
+    import re
+    here = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    text = open(os.path.join(here, "pyproject.toml")).read()
+    assert re.search(r'^version = "([^"]+)"', text, re.M).group(1) == mcspec.__version__
