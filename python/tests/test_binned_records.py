@@ -108,3 +108,14 @@ def test_empty_read_outs_and_bad_sizes_raise_instead_of_crashing():
     with pytest.raises(mcspec.Error) as e:
         mcspec.PointSet(2).merge(mcspec.PointSet(3))
     assert e.value.name == "MCS_ERR_MISMATCH"
+
+
+def test_the_section_3_example_runs_and_its_z_scores_are_small():
+    import os
+    import subprocess
+    import sys
+    root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    out = subprocess.run([sys.executable, os.path.join(root, "examples", "python", "sec3_spectra.py"),
+                          "--trials", "400"], capture_output=True, text=True, check=True).stdout
+    worst = [float(line.split()[-1]) for line in out.splitlines() if line.startswith("largest")]
+    assert len(worst) == 3 and max(worst) < 5.0
