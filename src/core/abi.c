@@ -4,13 +4,12 @@
 #include "mcspec/abi.h"
 #include "mcspec.h"
 
-#include <stdalign.h>
 
 typedef struct {
     size_t size, align;
 } abi_entry;
 
-#define ABI_ENTRY(t) {sizeof(t), alignof(t)}
+#define ABI_ENTRY(t) {sizeof(t), _Alignof(t)}
 
 /* Indexed by mcs_abi_type. */
 static const abi_entry abi_table[MCS_ABI_TYPE_COUNT] = {
@@ -26,13 +25,16 @@ mcs_status mcs_abi_sizeof(mcs_abi_type type, size_t *size, size_t *align)
 {
     if (size == NULL && align == NULL)
         return MCS_ERR_NULL;
-    if ((int)type < 0 || (int)type >= (int)MCS_ABI_TYPE_COUNT)
+    /* as unsigned: a negative value is huge, and short-enum targets (the
+     * enum an unsigned char) get no always-false comparison */
+    const unsigned t = (unsigned)type;
+    if (t >= (unsigned)MCS_ABI_TYPE_COUNT)
         return MCS_ERR_KIND;
     if (size != NULL && align != NULL && (void *)size == (void *)align)
         return MCS_ERR_ALIAS;
     if (size != NULL)
-        *size = abi_table[type].size;
+        *size = abi_table[t].size;
     if (align != NULL)
-        *align = abi_table[type].align;
+        *align = abi_table[t].align;
     return MCS_OK;
 }
