@@ -12,22 +12,31 @@
 
 #include <math.h>
 
+/* What the checks need of an object: its header and buffer (for overlaps),
+ * its wrap flag and its count (a struct, so that no helper takes more
+ * arguments than registers: stack arguments make make stack's frames
+ * dynamic). */
+typedef struct {
+    const void *hdr, *mem;
+    size_t hdr_bytes, mem_bytes;
+    int wrap;
+    uint64_t count;
+} batch_obj;
+
 /* The checks of a batch of sets of k points of dims coordinates, in the
  * order of the single add (pointset.c): points, the object, K and the
  * path, the overlap with the object, every coordinate, the count. */
-static mcs_status check_batch(const mcs_ps_points *pts, const void *hdr, size_t hdr_bytes,
-                              const void *mem, size_t mem_bytes, int wrap, size_t sets, size_t k,
-                              uint64_t count)
+static mcs_status check_batch(const mcs_ps_points *pts, const batch_obj *o, size_t sets, size_t k)
 {
     if (sets == 0u || k > SIZE_MAX / 2u / sets)
         return MCS_ERR_K_RANGE;
     const size_t all = sets * k;
-    if (mcs_ps_points_overlap(pts, all, hdr, hdr_bytes) ||
-        mcs_ps_points_overlap(pts, all, mem, mem_bytes))
+    if (mcs_ps_points_overlap(pts, all, o->hdr, o->hdr_bytes) ||
+        mcs_ps_points_overlap(pts, all, o->mem, o->mem_bytes))
         return MCS_ERR_ALIAS;
     int ones = 0;
-    mcs_status st = mcs_ps_check_points(pts, all, wrap, &ones);
-    return st != MCS_OK ? st : mcs_check_count_(count, (uint64_t)sets);
+    mcs_status st = mcs_ps_check_points(pts, all, o->wrap, &ones);
+    return st != MCS_OK ? st : mcs_check_count_(o->count, (uint64_t)sets);
 }
 
 /* The statuses an add would give before it looks at the points: NULL,
@@ -40,9 +49,10 @@ static mcs_status check_1d(const mcs_pointset *acc, const mcs_ps_points *pts, si
     mcs_status st = mcs_ps_points_null(pts) ? MCS_ERR_NULL : mcs_pointset_count(acc, &count);
     if (st == MCS_OK)
         st = mcs_pointset_path_for(acc, k, &path);
-    return st != MCS_OK ? st
-                        : check_batch(pts, acc, sizeof *acc, acc->mem, acc->bytes, acc->wrap,
-                                      sets, k, count);
+    if (st != MCS_OK)
+        return st;
+    const batch_obj o = {acc, acc->mem, sizeof *acc, acc->bytes, acc->wrap, count};
+    return check_batch(pts, &o, sets, k);
 }
 
 mcs_status mcs_pointset_add_sets(mcs_pointset *acc, size_t sets, size_t k, const double *points)
@@ -73,9 +83,10 @@ static mcs_status check_2d(const mcs_pointset2d *acc, const mcs_ps_points *pts, 
         st = mcs_pointset2d_path_for(acc, k, &path);
     if (st == MCS_OK && k > SIZE_MAX / 4u)
         st = MCS_ERR_POINT_RANGE; /* as the single add: 2 k coordinates cannot fit */
-    return st != MCS_OK ? st
-                        : check_batch(pts, acc, sizeof *acc, acc->mem, acc->bytes, acc->wrap,
-                                      sets, k, count);
+    if (st != MCS_OK)
+        return st;
+    const batch_obj o = {acc, acc->mem, sizeof *acc, acc->bytes, acc->wrap, count};
+    return check_batch(pts, &o, sets, k);
 }
 
 mcs_status mcs_pointset2d_add_sets(mcs_pointset2d *acc, size_t sets, size_t k,
@@ -102,9 +113,8 @@ mcs_status mcs_pointset2d_add_sets_f(mcs_pointset2d *acc, size_t sets, size_t k,
  * (NULL when not wanted, not all): none may overlap another, the header
  * or the buffer; the count must be at least 1, or 2 with a standard error
  * (stderr_given). */
-static mcs_status check_arrays(double *const *arr, int n, size_t len, const void *hdr,
-                               size_t hdr_bytes, const void *mem, size_t mem_bytes,
-                               uint64_t count, int stderr_given)
+static mcs_status check_arrays(double *const *arr, int n, size_t len, const batch_obj *o,
+                               int stderr_given)
 {
     int any = 0;
     const size_t bytes = mcs_bytes_(len, sizeof(double));
@@ -112,7 +122,8 @@ static mcs_status check_arrays(double *const *arr, int n, size_t len, const void
         if (arr[i] == NULL)
             continue;
         any = 1;
-        if (mcs_overlap_(arr[i], bytes, hdr, hdr_bytes) || mcs_overlap_(arr[i], bytes, mem, mem_bytes))
+        if (mcs_overlap_(arr[i], bytes, o->hdr, o->hdr_bytes) ||
+            mcs_overlap_(arr[i], bytes, o->mem, o->mem_bytes))
             return MCS_ERR_ALIAS;
         for (int j = 0; j < i; ++j)
             if (arr[j] != NULL && mcs_overlap_(arr[i], bytes, arr[j], bytes))
@@ -120,7 +131,7 @@ static mcs_status check_arrays(double *const *arr, int n, size_t len, const void
     }
     if (!any)
         return MCS_ERR_NULL;
-    return count < (stderr_given ? 2u : 1u) ? MCS_ERR_EMPTY : MCS_OK;
+    return o->count < (stderr_given ? 2u : 1u) ? MCS_ERR_EMPTY : MCS_OK;
 }
 
 mcs_status mcs_pointset_read_all(const mcs_pointset *acc, size_t n_out, double *power,
@@ -131,9 +142,10 @@ mcs_status mcs_pointset_read_all(const mcs_pointset *acc, size_t n_out, double *
     if (st == MCS_OK && n_out != acc->freq_max + 1u)
         st = MCS_ERR_MISMATCH;
     double *const arr[2] = {power, power_stderr};
+    const batch_obj o = {acc, st == MCS_OK ? acc->mem : NULL, sizeof *acc,
+                         st == MCS_OK ? acc->bytes : 0u, 0, count};
     if (st == MCS_OK)
-        st = check_arrays(arr, 2, n_out, acc, sizeof *acc, acc->mem, acc->bytes, count,
-                          power_stderr != NULL);
+        st = check_arrays(arr, 2, n_out, &o, power_stderr != NULL);
     for (size_t f = 0; st == MCS_OK && f < n_out; ++f) {
         if (power != NULL)
             st = mcs_pointset_power(acc, (long)f, &power[f]);
@@ -151,9 +163,10 @@ mcs_status mcs_pointset2d_read_all(const mcs_pointset2d *acc, size_t side, doubl
     if (st == MCS_OK && side != 2u * acc->freq_max + 1u)
         st = MCS_ERR_MISMATCH;
     double *const arr[2] = {power, power_stderr};
+    const batch_obj o = {acc, st == MCS_OK ? acc->mem : NULL, sizeof *acc,
+                         st == MCS_OK ? acc->bytes : 0u, 0, count};
     if (st == MCS_OK)
-        st = check_arrays(arr, 2, side * side, acc, sizeof *acc, acc->mem, acc->bytes, count,
-                          power_stderr != NULL);
+        st = check_arrays(arr, 2, side * side, &o, power_stderr != NULL);
     const long f = st == MCS_OK ? (long)acc->freq_max : 0L;
     for (long fy = -f; st == MCS_OK && fy <= f; ++fy)
         for (long fx = -f; st == MCS_OK && fx <= f; ++fx) {
@@ -174,9 +187,10 @@ mcs_status mcs_pointset2d_radial_all(const mcs_pointset2d *acc, size_t n_out, do
     if (st == MCS_OK && n_out != acc->freq_max + 1u)
         st = MCS_ERR_MISMATCH;
     double *const arr[3] = {radial, radial_stderr, anisotropy_db};
+    const batch_obj o = {acc, st == MCS_OK ? acc->mem : NULL, sizeof *acc,
+                         st == MCS_OK ? acc->bytes : 0u, 0, count};
     if (st == MCS_OK)
-        st = check_arrays(arr, 3, n_out, acc, sizeof *acc, acc->mem, acc->bytes, count,
-                          radial_stderr != NULL);
+        st = check_arrays(arr, 3, n_out, &o, radial_stderr != NULL);
     for (size_t r = 0; st == MCS_OK && r < n_out; ++r) {
         if (radial != NULL)
             st = mcs_pointset2d_radial(acc, r, &radial[r]);
