@@ -31,7 +31,7 @@ def main():
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--plot")
     a = ap.parse_args()
-    show = [1, 2, 4, 8, a.k, a.k + 1, 2 * a.k, a.n // 2]
+    show = sorted({f for f in (1, 2, 4, 8, a.k, a.k + 1, 2 * a.k, a.n // 2) if f <= a.n // 2})
     print("N = %d bins, K = %d samples, %d trials, seed %d; z = (measured - exact) / stderr"
           % (a.n, a.k, a.trials, a.seed))
     results = {}

@@ -5,12 +5,12 @@ import numpy as np
 
 
 def _axes(ax):
+    """ax, or the axes of a new figure (matplotlib.figure.Figure: no pyplot,
+    no display needed; fig.savefig writes it)."""
     if ax is not None:
         return ax
-    import matplotlib
-    import matplotlib.pyplot as plt
-    del matplotlib
-    return plt.subplots(figsize=(7, 4))[1]
+    from matplotlib.figure import Figure
+    return Figure(figsize=(7, 4)).add_subplot()
 
 
 def spectrum(acc, theory=None, ax=None, log=False):

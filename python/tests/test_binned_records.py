@@ -116,6 +116,22 @@ def test_the_section_3_example_runs_and_its_z_scores_are_small():
     import sys
     root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
     out = subprocess.run([sys.executable, os.path.join(root, "examples", "python", "sec3_spectra.py"),
-                          "--trials", "400"], capture_output=True, text=True, check=True).stdout
+                          "--trials", "300", "--n", "64", "--k", "8"], capture_output=True, text=True, check=True).stdout
     worst = [float(line.split()[-1]) for line in out.splitlines() if line.startswith("largest")]
     assert len(worst) == 3 and max(worst) < 5.0
+
+
+def test_the_plot_helpers_draw_the_command_s_three_figures(tmp_path):
+    matplotlib = pytest.importorskip("matplotlib")
+    matplotlib.use("Agg")
+    import mcspec.plot
+    pts = mcspec.sample("jittered", 2, 64, sets=8, seed=1)
+    acc = mcspec.PointSet(8).add(pts)
+    ax = mcspec.plot.periodogram2d(acc.power)
+    assert len(ax.images) == 1
+    ax = mcspec.plot.radial(acc.radial, acc.radial_stderr, exact=mcspec.exact_power("jittered", 64, 8)[1])
+    assert len(ax.lines) >= 2
+    pat = mcspec.Pattern("stratified", 64, 8)
+    sp = mcspec.Spectrum(64).add(*pat.draw(100, seed=1))
+    ax = mcspec.plot.spectrum(sp, mcspec.TheorySpectrum(pat), log=True)
+    assert len(ax.lines) == 2
