@@ -7,7 +7,7 @@
 #                      pytest)
 #   make install       also copies the package to $(PYTHONDIR)/mcspec
 #                      (default $(PREFIX)/lib/python3/dist-packages, on the
-#                      path of Debian's python3 for PREFIX=/usr/local; else
+#                      path of Debian's python3 for PREFIX=/usr only; else
 #                      PYTHONPATH=$(PYTHONDIR)); it finds the library in
 #                      $(PREFIX)/lib next to it (python/mcspec/_lib.py)
 #   make python-bench  the Python route against `mcspec spectrum --dim 2`
