@@ -250,6 +250,7 @@ test: $(TEST_BIN) $(SECTION_BIN) $(BUILD)/examples/renderer_sampler $(BUILD)/exa
 	    test/record_check.sh test/renderer_check.sh \
 	    test/spectrum_check.sh test/sample_check.sh \
 	    test/integrate_check.sh test/pcf_check.sh
+	@sh python/tests/run.sh $(BUILD)/libmcspec.so $(CLI_BIN) $(SAN)
 
 clean:
 	rm -rf build

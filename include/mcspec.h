@@ -35,5 +35,6 @@
 #include "mcspec/owen.h"
 #include "mcspec/eq.h"
 #include "mcspec/io.h"
+#include "mcspec/abi.h"
 
 #endif /* MCSPEC_H */

@@ -28,6 +28,7 @@ bench:
 	@sh tools/bench_deps.sh install '$(CC)'
 	@$(MAKE) --no-print-directory bench-run
 	@$(MAKE) --no-print-directory bench-pointsets
+	@$(MAKE) --no-print-directory python-bench
 
 bench-pointsets: $(BUILD)/bench/pointset_jobs
 	@$(BUILD)/bench/pointset_jobs $(if $(filter 1,$(BENCH_QUICK)),--quick) \

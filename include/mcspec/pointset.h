@@ -222,6 +222,29 @@ mcs_status mcs_pointset_power_stderr(const mcs_pointset *acc, long freq, double 
  * only on N bins; or an unknown kind). */
 mcs_status mcs_pointset_exact_power(mcs_pattern_kind kind, size_t k, long freq, double *out);
 
+/* ---- Batches (pointset_batch.c): for callers that pay per call, such as
+ * a binding (python/mcspec). Bits as the per-set and per-frequency calls. */
+
+/* Adds sets trials of k points each: points[sets * k], set t at
+ * points[t k] (a C-order array of shape (sets, k)). The statistics are
+ * bit for bit those of sets calls of mcs_pointset_add in order. Statuses as
+ * mcs_pointset_add, and MCS_ERR_K_RANGE for sets = 0 or sets * k too large,
+ * MCS_ERR_COUNT if the count cannot take all sets. Every point of every
+ * set is checked first: on error neither *acc nor its buffer changes. */
+mcs_status mcs_pointset_add_sets(mcs_pointset *acc, size_t sets, size_t k, const double *points);
+
+/* The same for float points (mcs_pointset_add_f). */
+mcs_status mcs_pointset_add_sets_f(mcs_pointset *acc, size_t sets, size_t k, const float *points);
+
+/* Every frequency f = 0..F at once: power[f] = <P(f)> and power_stderr[f]
+ * its standard error, bit for bit mcs_pointset_power and _power_stderr.
+ * Caller arrays of n_out doubles, n_out = F + 1 (else MCS_ERR_MISMATCH);
+ * either may be NULL, not both (MCS_ERR_NULL); they must overlap neither
+ * each other nor the object (MCS_ERR_ALIAS). MCS_ERR_UNINIT, MCS_ERR_EMPTY
+ * (no trials, or fewer than 2 with power_stderr). Nothing written on error. */
+mcs_status mcs_pointset_read_all(const mcs_pointset *acc, size_t n_out, double *power,
+                                 double *power_stderr);
+
 #ifdef __cplusplus
 }
 #endif

@@ -224,6 +224,43 @@ mcs_status mcs_pointset2d_exact_radial(const mcs_pattern2d *pat, size_t radius, 
 mcs_status mcs_pointset2d_exact_anisotropy(const mcs_pattern2d *pat, size_t radius,
                                            double *out_db);
 
+/* ---- Batches (pointset_batch.c): for callers that pay per call, such as
+ * a binding (python/mcspec). Bits as the per-set and per-frequency calls. */
+
+/* Adds sets trials of k interleaved 2D points each: points[2 sets k], set t
+ * at points[2 t k] (a C-order array of shape (sets, k, 2)). Bit for bit
+ * sets calls of mcs_pointset2d_add in order. Statuses as mcs_pointset2d_add,
+ * and MCS_ERR_K_RANGE for sets = 0 or 2 sets k too large, MCS_ERR_COUNT if
+ * the count cannot take all sets. Every point of every set is checked first:
+ * on error neither *acc nor its buffer changes. */
+mcs_status mcs_pointset2d_add_sets(mcs_pointset2d *acc, size_t sets, size_t k,
+                                   const double *points);
+
+/* The same for float points (mcs_pointset2d_add_f). */
+mcs_status mcs_pointset2d_add_sets_f(mcs_pointset2d *acc, size_t sets, size_t k,
+                                     const float *points);
+
+/* Every wave vector |fx|, |fy| <= F at once, the whole plane:
+ * power[(fy + F) side + fx + F] = <P(fx, fy)> and power_stderr[...] its
+ * standard error, bit for bit mcs_pointset2d_power and _power_stderr.
+ * Caller arrays of side * side doubles, side = 2F + 1 (else
+ * MCS_ERR_MISMATCH); either may be NULL, not both (MCS_ERR_NULL); no
+ * overlap with each other or the object (MCS_ERR_ALIAS). MCS_ERR_UNINIT,
+ * MCS_ERR_EMPTY (no trials, or fewer than 2 with power_stderr). Nothing
+ * written on error. */
+mcs_status mcs_pointset2d_read_all(const mcs_pointset2d *acc, size_t side, double *power,
+                                   double *power_stderr);
+
+/* Every annulus r = 0..F at once: radial[r], radial_stderr[r] and
+ * anisotropy_db[r], bit for bit mcs_pointset2d_radial, _radial_stderr and
+ * _anisotropy, with NaN in anisotropy_db[r] where that call gives
+ * MCS_ERR_DOMAIN (always at r = 0). Arrays of n_out = F + 1 doubles (else
+ * MCS_ERR_MISMATCH), any may be NULL, not all; statuses and overlap rules as
+ * mcs_pointset2d_read_all (MCS_ERR_EMPTY below 2 trials with
+ * radial_stderr). Nothing written on error. */
+mcs_status mcs_pointset2d_radial_all(const mcs_pointset2d *acc, size_t n_out, double *radial,
+                                     double *radial_stderr, double *anisotropy_db);
+
 #ifdef __cplusplus
 }
 #endif

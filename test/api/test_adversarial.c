@@ -13,6 +13,7 @@
  * ADVERSARIAL_TIMEOUT_MS sets the time after which a row counts as hung
  * (2 s, 6 s under ASan; raise it under valgrind). */
 #include "adv.h"
+#include "adv_table.h"
 #include "unity.h"
 
 #include <float.h>
@@ -544,7 +545,7 @@ int main(void)
         {adv_fns_io, &adv_fns_io_count},       {adv_fns_measures, &adv_fns_measures_count},
         {adv_fns_owen, &adv_fns_owen_count},   {adv_fns_nd, &adv_fns_nd_count},
         {adv_fns_blue, &adv_fns_blue_count},   {adv_fns_integ, &adv_fns_integ_count},
-        {adv_fns_pcf, &adv_fns_pcf_count},
+        {adv_fns_pcf, &adv_fns_pcf_count},     {adv_fns_abi, &adv_fns_abi_count},
     };
     const size_t ntables = sizeof tables / sizeof tables[0];
     if (getenv("ADVERSARIAL_LIST") != NULL) { /* the names the table covers, for check-api */

@@ -104,7 +104,8 @@ enum {
 };
 
 /* Array length: op over slot values. */
-enum { L_SLOT, L_2SLOT, L_SQ, L_HALF, L_OBJN, L_OBJNN, L_KDIM, L_PROD, L_CONST, L_REC };
+enum { L_SLOT, L_2SLOT, L_SQ, L_HALF, L_OBJN, L_OBJNN, L_KDIM, L_PROD, L_CONST, L_REC,
+       L_PROD2 /* 2 a b: a sets of b interleaved 2D points (adv_table_abi.c) */ };
 
 typedef struct {
     uint8_t op, a, b; /* L_REC: a is the record's object type */

@@ -67,6 +67,7 @@ static size_t length_of(const adv_row *r, const adv_call *c, const adv_len *l)
     case L_OBJN: return adv_state_n(t, c->ov[l->a]);
     case L_OBJNN: return adv_state_nn(t, c->ov[l->a], r->variant);
     case L_PROD: return slot_value(r, l->a) * slot_value(r, l->b);
+    case L_PROD2: return 2u * slot_value(r, l->a) * slot_value(r, l->b);
     case L_CONST: return l->c;
     case L_REC: return adv_record_size(l->a);
     default: /* L_KDIM: k times the dimension of the sampler in slot b */

@@ -75,4 +75,8 @@
 const float *adv_floats_begin(void *points, size_t len);
 void adv_floats_end(void *points, size_t len);
 
+/* adv_table_abi.c: the abi query and the point-set batches. */
+extern const adv_fn adv_fns_abi[];
+extern const size_t adv_fns_abi_count;
+
 #endif /* ADV_TABLE_H */
