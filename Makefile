@@ -245,12 +245,12 @@ export ADVERSARIAL_KNOWN
 # examples (test/examples_check.sh prints a Unity-style summary too).
 test: $(TEST_BIN) $(SECTION_BIN) $(BUILD)/examples/renderer_sampler $(BUILD)/examples/sampler_check
 	@ADVERSARIAL_KNOWN=$(ADVERSARIAL_KNOWN) SAMPLER_CHECK=$(BUILD)/examples/sampler_check \
+	    MCSPEC_LIBRARY=$(BUILD)/libmcspec.so SAN=$(SAN) \
 	    EXAMPLES="$(SECTION_BIN) $(BUILD)/examples/renderer_sampler" MCSPEC="$(CLI_BIN)" RENDERER="$(BUILD)/examples/renderer_sampler" \
 	    sh test/run_tests.sh $(TEST_BIN) test/examples_check.sh test/cli_check.sh test/measures_check.sh \
 	    test/record_check.sh test/renderer_check.sh \
 	    test/spectrum_check.sh test/sample_check.sh \
-	    test/integrate_check.sh test/pcf_check.sh
-	@sh python/tests/run.sh $(BUILD)/libmcspec.so $(CLI_BIN) $(SAN)
+	    test/integrate_check.sh test/pcf_check.sh python/tests/run.sh
 
 clean:
 	rm -rf build

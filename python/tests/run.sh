@@ -5,17 +5,30 @@
 # (python/find_python.sh). Without one, or under SAN=1 (an instrumented
 # libmcspec.so cannot load into an uninstrumented python), it prints one line
 # saying the tests were skipped and why, and succeeds.
-#   sh python/tests/run.sh LIBRARY MCSPEC [SAN]
-lib=$1 cli=$2 san=${3:-}
+# It ends with a Unity-style summary ("N Tests F Failures 0 Ignored") so that
+# test/run_tests.sh counts its tests in make test's one total line.
+#   sh python/tests/run.sh [LIBRARY [MCSPEC [SAN]]]
+# (defaults: $MCSPEC_LIBRARY, $MCSPEC, $SAN from the environment)
+lib=${1:-${MCSPEC_LIBRARY:-}} cli=${2:-${MCSPEC:-}} san=${3:-${SAN:-}}
 here=$(dirname "$0")
-if [ "$san" = 1 ]; then
-    echo "python: tests skipped: SAN=1 builds an instrumented libmcspec.so that python cannot load"
-    exit 0
-fi
-py=$(sh "$here/../find_python.sh" pytest) || {
-    echo "python: tests skipped: no python3 that imports numpy and pytest (tried \$PYTHON, python3 on PATH, /usr/bin/python3; Debian: apt-get install python3-numpy python3-pytest)"
+skipped() {
+    echo "python: tests skipped: $1"
+    echo "0 Tests 0 Failures 0 Ignored"
     exit 0
 }
+[ "$san" != 1 ] || skipped "SAN=1 builds an instrumented libmcspec.so that python cannot load"
+py=$(sh "$here/../find_python.sh" pytest) ||
+    skipped "no python3 that imports numpy and pytest (tried \$PYTHON, python3 on PATH, /usr/bin/python3; Debian: apt-get install python3-numpy python3-pytest)"
 echo "== python/tests ($py, $lib)"
-MCSPEC_LIBRARY=$lib MCSPEC=$cli PYTHONPATH="$here/..${PYTHONPATH:+:$PYTHONPATH}" \
-    PYTHONDONTWRITEBYTECODE=1 "$py" -m pytest -q -p no:cacheprovider "$here"
+out=$(MCSPEC_LIBRARY=$lib MCSPEC=$cli PYTHONPATH="$here/..${PYTHONPATH:+:$PYTHONPATH}" \
+    PYTHONDONTWRITEBYTECODE=1 "$py" -m pytest -q -p no:cacheprovider "$here" 2>&1)
+rc=$?
+printf '%s\n' "$out"
+line=$(printf '%s\n' "$out" | tail -n 1)
+count() { printf '%s\n' "$line" | grep -o "[0-9][0-9]* $1" | grep -o '^[0-9]*'; }
+passed=$(count passed) failed=$(count failed) errors=$(count error)
+passed=${passed:-0} failed=$((${failed:-0} + ${errors:-0}))
+[ "$rc" -eq 0 ] || [ "$failed" -gt 0 ] || failed=1 # pytest failed without a count
+echo "$((passed + failed)) Tests $failed Failures 0 Ignored"
+[ "$failed" -eq 0 ] && echo OK || echo FAIL
+exit "$rc"
