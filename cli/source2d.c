@@ -65,6 +65,48 @@ static int measure_base(const char *cmd, cli_source2d *src, size_t freq)
     return 0;
 }
 
+/* Owen's exact theory for a nested-scrambled sampler: Sobol at K = 2^m by
+ * the (0,m,2)-net route, else the pair counts of its unscrambled points
+ * (bases 2, 2 for Sobol, 2, 3 for Halton); nothing (no exact column) above
+ * CLI_OWEN_MAX_K points. */
+static int setup_owen(const char *cmd, cli_source2d *src)
+{
+    mcs_owen_theory t = MCS_OWEN_THEORY_NONE;
+    if (!src->is_sampler || mcs_owen_theory_of(src->sampler.kind, 2u, &t) != MCS_OK ||
+        t != MCS_OWEN_THEORY_NESTED)
+        return 0;
+    const int sobol = src->sampler.kind == MCS_SAMPLER_SOBOL ||
+                      src->sampler.kind == MCS_SAMPLER_SOBOL_ND;
+    if (sobol && (src->k & (src->k - 1u)) == 0u) {
+        size_t m = 0;
+        while (((size_t)1 << m) < src->k)
+            ++m;
+        src->net_m = m + 1u;
+        return 0;
+    }
+    if (src->k > CLI_OWEN_MAX_K)
+        return 0;
+    const size_t axes[2] = {0u, 1u};
+    const unsigned bases[2] = {2u, sobol ? 2u : 3u};
+    size_t len = 0;
+    mcs_status st = mcs_owen_len(2u, bases, &len);
+    double *pts = cli_alloc(cmd, 2u * src->k, sizeof *pts);
+    src->owen = cli_alloc(cmd, 1, sizeof *src->owen);
+    src->owen_work = cli_alloc(cmd, len > 0u ? len : 1u, sizeof *src->owen_work);
+    if (pts == NULL || src->owen == NULL || src->owen_work == NULL) {
+        free(pts);
+        return CLI_EXIT_FAIL;
+    }
+    if (st == MCS_OK)
+        st = mcs_sampler_base_points(&src->sampler, src->k, pts);
+    if (st == MCS_OK)
+        st = mcs_owen_init(src->owen, src->k, 2u, pts, 2u, axes, bases, src->owen_work, len);
+    free(pts);
+    if (st != MCS_OK)
+        return cli_internal(cmd, "Owen's theory for %s: %s", src->name, mcs_status_str(st));
+    return 0;
+}
+
 int cli_source2d_init(const char *cmd, const char *name, size_t k, size_t freq,
                       cli_source2d *src)
 {
@@ -83,21 +125,30 @@ int cli_source2d_init(const char *cmd, const char *name, size_t k, size_t freq,
         return cli_fail(cmd, "unknown 2D pattern '%s' (%s)", name, CLI_SOURCE2D_NAMES);
     if (st != MCS_OK)
         return cli_fail(cmd, "cannot set up %s with K = %zu: %s", name, k, mcs_status_str(st));
-    return has_base(src) ? measure_base(cmd, src, freq) : 0;
+    return has_base(src) ? measure_base(cmd, src, freq) : setup_owen(cmd, src);
 }
 
 void cli_source2d_free(cli_source2d *src)
 {
     free(src->base);
     free(src->base_mem);
+    free(src->owen);
+    free(src->owen_work);
     src->base = NULL;
     src->base_mem = NULL;
+    src->owen = NULL;
+    src->owen_work = NULL;
 }
+
+static int has_owen(const cli_source2d *src) { return src->net_m != 0u || src->owen != NULL; }
 
 const char *cli_source2d_exact_source(const cli_source2d *src)
 {
     if (has_base(src))
         return "unrandomised set";
+    if (has_owen(src))
+        return src->net_m != 0u ? "Owen scrambling, (0,m,2)-net counts (docs/owen.md)"
+                                : "Owen scrambling, pair counts of the unscrambled set (docs/owen.md)";
     if (src->is_sampler || src->pattern.kind == MCS_PATTERN2D_MULTI_JITTERED ||
         src->pattern.kind == MCS_PATTERN2D_CMJ)
         return "";
@@ -116,6 +167,10 @@ static double exact_at(const void *ctx, long kx, long ky)
     double v = 0.0;
     if (has_base(src))
         return cli_or_nan(mcs_pointset2d_power(src->base, kx, ky, &v), &v);
+    if (src->net_m != 0u)
+        return cli_or_nan(mcs_owen_net_power(2u, src->net_m - 1u, kx, ky, &v), &v);
+    if (src->owen != NULL)
+        return cli_or_nan(mcs_owen_power(src->owen, kx, ky, &v), &v);
     if (src->is_sampler)
         return (double)NAN;
     return cli_or_nan(mcs_pointset2d_exact_power(&src->pattern, kx, ky, &v), &v);
@@ -127,6 +182,20 @@ static double exact_radial(const void *ctx, size_t r)
     double v = 0.0;
     if (has_base(src))
         return cli_or_nan(mcs_pointset2d_radial(src->base, r, &v), &v);
+    if (has_owen(src)) { /* the mean of the exact P over the annulus r <= |k| < r + 1 */
+        const long lo = (long)r * (long)r, hi = ((long)r + 1) * ((long)r + 1), rr = (long)r + 1;
+        double sum = 0.0;
+        size_t n = 0;
+        for (long ky = -rr; ky <= rr; ++ky)
+            for (long kx = -rr; kx <= rr; ++kx) {
+                const long q = kx * kx + ky * ky;
+                if (q >= lo && q < hi) {
+                    sum += exact_at(ctx, kx, ky);
+                    ++n;
+                }
+            }
+        return n > 0u ? sum / (double)n : (double)NAN;
+    }
     if (src->is_sampler)
         return (double)NAN;
     return cli_or_nan(mcs_pointset2d_exact_radial(&src->pattern, r, &v), &v);

@@ -8,7 +8,9 @@
  * samplers (halton, hammersley, kronecker) the periodogram of the
  * unrandomised set, which a Cranley-Patterson rotation or a shift changes by
  * a common phase only at integer wave vectors (mcs_sampler_base_points), so
- * every trial has it exactly; none for multi-jittered, cmj and sobol-owen. */
+ * every trial has it exactly; Owen's theory for the scrambled samplers
+ * (docs/owen.md: Sobol, Owen-scrambled Halton); none for multi-jittered, cmj,
+ * permuted Halton and padded pairs, which the report says. */
 #ifndef MCSPEC_CLI_SOURCE2D_H
 #define MCSPEC_CLI_SOURCE2D_H
 
@@ -33,7 +35,17 @@ typedef struct {
     size_t k;              /* points per trial */
     mcs_pointset2d *base;  /* rotated samplers: the unrandomised set's periodogram; else NULL */
     void *base_mem;        /* its buffer */
+    /* Owen-scrambled samplers (mcs_owen_theory_of NESTED): the (0,m,2)-net
+     * route for Sobol at K = 2^m (net_m = m + 1), else the pair counts of the
+     * unscrambled points (owen, over owen_work) up to CLI_OWEN_MAX_K points */
+    size_t net_m;
+    mcs_owen *owen;
+    uint64_t *owen_work;
 } cli_source2d;
+
+/* Most points whose pair counts the command forms for Owen's theory (O(K^2),
+ * about 2 s at this K); above it only Sobol at K = 2^m has the exact column. */
+#define CLI_OWEN_MAX_K 16384u
 
 /* 1 if name is a 2D source, else 0. */
 int cli_source2d_known(const char *name);

@@ -152,4 +152,21 @@ elif succeeds "sampler_check" "$SAMPLER_CHECK" --k 512 --sets 16 --seed 3; then
     done
 fi
 
+# Owen's exact theory in mcspec pattern --dim 2 (docs/owen.md): Sobol at
+# K = 2^m by the net route and at K = 48 by the pair counts, Owen-scrambled
+# Halton (bases 2, 3) by the pair counts; every wave vector within 5 SE of
+# 3000 trials. Permuted Halton has none, and the report says so.
+for spec in sobol-owen:64 sobol-owen:48 halton-owen:100; do
+    kind=${spec%%:*} k=${spec#*:}
+    if succeeds "pattern $kind --dim 2 --k $k" "$MCSPEC" pattern "$kind" --dim 2 --k "$k" --freq 6 \
+        --trials 3000 --seed 5 --csv; then
+        verdict=$(awk -F, 'NR > 1 { if ($5 == "") e++; else { n++; z = $6 < 0 ? -$6 : $6; if (z > m) m = z } }
+                  END { if (e > 0 || n != 169 || m >= 5) printf "%d without exact, %d with, max |z| %.2f", e, n, m }' "$tmp/out")
+        if [ -z "$verdict" ]; then ok; else bad "Owen theory for $kind at K = $k: $verdict"; fi
+    fi
+done
+if succeeds "pattern halton-permuted --dim 2" "$MCSPEC" pattern halton-permuted --dim 2 --k 16 --freq 2 --trials 10; then
+    if grep -q '^exact: none for this kind' "$tmp/out"; then ok; else bad "halton-permuted: the report does not say it has no exact theory"; fi
+fi
+
 check_summary

@@ -153,9 +153,11 @@ typedef enum {
                                    base points (any K), or mcs_owen_net_power at K = 2^m */
 } mcs_owen_theory;
 
-/* The exact theory of sampler kind in dim dimensions into *out (every kind
- * of sampler.h has one: Sobol is NESTED, the others PHASE; kinds added later
- * without one are NONE). MCS_ERR_NULL, MCS_ERR_KIND (unknown kind, or kind
+/* The exact theory of sampler kind in dim dimensions into *out: Sobol (2D
+ * and any-dimension) and Owen-scrambled Halton are NESTED (bases 2, 2 and 2,
+ * 3, ... per axis); van der Corput, Halton, Hammersley, Kronecker and the
+ * lattice PHASE; permuted Halton and padded NONE (permuted digits are not
+ * nested; a padded set's pairs are independent Sobol pairs). MCS_ERR_NULL, MCS_ERR_KIND (unknown kind, or kind
  * not defined in dim, as mcs_sampler_init). *out untouched on error. */
 mcs_status mcs_owen_theory_of(mcs_sampler_kind kind, size_t dim, mcs_owen_theory *out);
 

@@ -107,11 +107,16 @@ mcs_status mcs_owen_theory_of(mcs_sampler_kind kind, size_t dim, mcs_owen_theory
     if (!mcs_sampler_has_dim(kind, dim))
         return MCS_ERR_KIND;
     switch (kind) {
-    case MCS_SAMPLER_SOBOL: *out = MCS_OWEN_THEORY_NESTED; break;
+    case MCS_SAMPLER_SOBOL:
+    case MCS_SAMPLER_SOBOL_ND:
+    case MCS_SAMPLER_HALTON_OWEN: *out = MCS_OWEN_THEORY_NESTED; break;
     case MCS_SAMPLER_VAN_DER_CORPUT:
     case MCS_SAMPLER_HALTON:
     case MCS_SAMPLER_HAMMERSLEY:
-    case MCS_SAMPLER_KRONECKER: *out = MCS_OWEN_THEORY_PHASE; break;
+    case MCS_SAMPLER_KRONECKER:
+    case MCS_SAMPLER_LATTICE: *out = MCS_OWEN_THEORY_PHASE; break;
+    /* permuted digits are not nested (docs/owen.md); padded pairs are
+     * Sobol pairs only dimension by dimension */
     default: *out = MCS_OWEN_THEORY_NONE; break;
     }
     return MCS_OK;

@@ -322,6 +322,18 @@ static void test_every_sampler_kind_states_its_theory(void)
     TEST_ASSERT_EQUAL_INT(MCS_ERR_KIND, mcs_owen_theory_of(MCS_SAMPLER_HALTON, 1u, &t));
     TEST_ASSERT_EQUAL_INT(MCS_ERR_KIND, mcs_owen_theory_of((mcs_sampler_kind)99, 2u, &t));
     TEST_ASSERT_EQUAL_INT(MCS_OWEN_THEORY_PHASE, t);
+    const struct {
+        mcs_sampler_kind kind;
+        mcs_owen_theory want;
+    } kinds[] = {{MCS_SAMPLER_SOBOL_ND, MCS_OWEN_THEORY_NESTED},
+                 {MCS_SAMPLER_HALTON_OWEN, MCS_OWEN_THEORY_NESTED},
+                 {MCS_SAMPLER_LATTICE, MCS_OWEN_THEORY_PHASE},
+                 {MCS_SAMPLER_HALTON_PERMUTED, MCS_OWEN_THEORY_NONE},
+                 {MCS_SAMPLER_PADDED, MCS_OWEN_THEORY_NONE}};
+    for (size_t i = 0; i < sizeof kinds / sizeof kinds[0]; ++i) {
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_owen_theory_of(kinds[i].kind, 2u, &t));
+        TEST_ASSERT_EQUAL_INT(kinds[i].want, t);
+    }
 }
 
 int main(void)
