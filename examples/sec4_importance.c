@@ -10,6 +10,7 @@
 #include "importance.h"
 #include "mcspec.h"
 #include "measure.h"
+#include "outside.h"
 #include "readout.h"
 #include "report.h"
 
@@ -56,6 +57,7 @@ typedef struct {
     const char *name;
 } run_spec;
 
+_Static_assert(0x400u + R_COUNT == EX_OUTSIDE_STREAM, "the support runs' streams follow ours");
 static const run_spec specs[R_COUNT] = {
     {MCS_PATTERN_RANDOM, EX_G_NONE, "random"},
     {MCS_PATTERN_STRATIFIED, EX_G_NONE, "stratified"},
@@ -205,80 +207,6 @@ static void unbiasedness_section(const ex_options *opt)
                     "(eq. 11)");
     for (int r = R_RANDOM_G1; r < R_COUNT; ++r)
         ex_estimator_mean_row(opt, "sec4", specs[r].name, &exacts[r], &runs[r], f);
-}
-
-/* ---- bins outside the support ---- */
-
-/* g1 with g = 0 on the bins whose centre lies in [0.6, 0.75): never drawn,
- * so the estimator integrates f over the support only. Its runs are apart
- * from the others (their own streams after theirs): random and stratified. */
-#define SUPPORT_RUNS 2
-static mcs_importance imp_g1z;
-static ex_run support_runs[SUPPORT_RUNS];
-static ex_exact support_exacts[SUPPORT_RUNS];
-static const mcs_pattern_kind support_kinds[SUPPORT_RUNS] = {MCS_PATTERN_RANDOM,
-                                                            MCS_PATTERN_STRATIFIED};
-static const char *const support_names[SUPPORT_RUNS] = {"random+g1z", "stratified+g1z"};
-
-/* 1 if the band holds a bin and leaves one outside it (else the section
- * has nothing to show: small N), and the runs went. */
-static int measure_support(const ex_options *opt)
-{
-    static double w[MCS_MAX_N];
-    int zeros = 0, others = 0;
-    if (ex_importance_for(EX_G_FOLLOW, opt->n, opt->k, &imp_g1z) != MCS_OK)
-        return 0;
-    for (size_t b = 0; b < opt->n; ++b) {
-        const double x = ((double)b + 0.5) / (double)opt->n;
-        const int out = x >= 0.6 && x < 0.75;
-        w[b] = out ? 0.0 : imp_g1z.g[b];
-        zeros += out;
-        others += !out;
-    }
-    if (zeros == 0 || others == 0 || mcs_importance_init(&imp_g1z, opt->n, w) != MCS_OK)
-        return 0;
-    for (int r = 0; r < SUPPORT_RUNS; ++r) {
-        ex_run *run = &support_runs[r];
-        mcs_status st = ex_run_setup(run, &support_exacts[r], NULL, support_kinds[r], opt->n,
-                                     opt->k, &imp_g1z, opt->seed, 0x400u + R_COUNT + (uint64_t)r);
-        if (st == MCS_OK) {
-            ex_run_integrand(run, f);
-            st = ex_run_go(run, opt->trials, NULL, NULL);
-        }
-        if (st != MCS_OK)
-            return 0;
-    }
-    return 1;
-}
-
-/* The bias <I> - mean of f: closed, -(1/N) sum of f over the bins with g =
- * 0 (summed here); exact, mcspec's bias read-out; measured, the mean of I
- * less the mean of f, with the mean's standard error. */
-static void support_section(const ex_options *opt)
-{
-    if (!measure_support(opt))
-        return;
-    ex_heading(opt, "bins outside the support (g = 0 on [0.6, 0.75)): <I> = mean of f less "
-                    "(1/N) sum of f there");
-    double fbar = 0.0, outside = 0.0;
-    for (size_t b = 0; b < n_bins; ++b) {
-        fbar += f[b] / (double)n_bins;
-        outside += imp_g1z.g[b] == 0.0 ? f[b] : 0.0;
-    }
-    for (int r = 0; r < SUPPORT_RUNS; ++r) {
-        const ex_exact *ex = &support_exacts[r];
-        ex_estimator_mean_row(opt, "sec4", support_names[r], ex, &support_runs[r], f);
-        double bias = 0.0, se = 0.0;
-        const mcs_theory *th = ex_exact_theory(ex);
-        const mcs_status st = th != NULL ? mcs_theory_bias(th, n_bins, k_samples, f, &bias)
-                                         : mcs_theory_spectrum_bias(&ex->spectrum, n_bins,
-                                                                    k_samples, f, &bias);
-        const double exact = ex_or_na(st, &bias);
-        const double meas = ex_mean(&support_runs[r].estimate[0], &se) - fbar;
-        ex_row row = ex_row_of("sec4", "<I> - mean f", "support", support_names[r], EX_NO_FREQ,
-                               EX_NO_FREQ, -outside / (double)n_bins, exact, meas, se, 1e-12);
-        ex_row_print(opt, &row);
-    }
 }
 
 /* <|S_q|^2> of run r: eq. 46 (random) or eq. 51 (stratified) at q = 0, where
@@ -649,7 +577,7 @@ int main(int argc, char **argv)
     ex_begin(&opt, "Section 4: importance sampling (eq. 38-58)");
     harmonic_mean_note(&opt);
     unbiasedness_section(&opt);              /* eq. 11 */
-    support_section(&opt);                   /* eq. 11 over the support */
+    ex_outside_section(&opt, f);             /* eq. 11 over the support */
     power0_section(&opt);                    /* eq. 46, 51 */
     power_section(&opt);                     /* eq. 45, 50 */
     cross_section(&opt);                     /* eq. 43, 49 */
