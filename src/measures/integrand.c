@@ -33,7 +33,7 @@ int mcs_integrand_is_periodic(mcs_integrand_family family)
 
 static int family_ok(mcs_integrand_family family)
 {
-    return (int)family >= 0 && family < MCS_INTEGRAND_FAMILIES;
+    return (unsigned)family < (unsigned)MCS_INTEGRAND_FAMILIES; /* an enum may be unsigned (ARM) */
 }
 
 static int unit_ok(double x)

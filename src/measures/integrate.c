@@ -8,7 +8,7 @@
 
 static int family_ok(mcs_integrand_family family)
 {
-    return (int)family >= 0 && family < MCS_INTEGRAND_FAMILIES;
+    return (unsigned)family < (unsigned)MCS_INTEGRAND_FAMILIES; /* an enum may be unsigned (ARM) */
 }
 
 mcs_status mcs_integrate_init(mcs_integrate *acc, mcs_integrand_family family, size_t dim)
