@@ -36,17 +36,6 @@ fi
 
 HEADER='family,k,mse,mse_stderr,exact,predicted,predicted_tail,freq,sets,slope,rate_random,rate_jittered'
 
-usage_error() {
-    label=$1 pattern=$2
-    shift 2
-    run "$@"
-    if [ "$rc" -ne 2 ]; then bad "$label: exit status $rc, expected 2"
-    elif [ -s "$tmp/out" ]; then bad "$label: wrote to stdout"
-    elif [ "$(wc -l <"$tmp/err")" -ne 1 ]; then bad "$label: $(wc -l <"$tmp/err") lines on stderr"
-    elif ! grep -Eq -- "$pattern" "$tmp/err"; then bad "$label: message '$(cat "$tmp/err")' lacks /$pattern/"
-    else ok; fi
-}
-
 # csv_shape LABEL FILE ROWS: the header exactly, ROWS rows of 12 fields,
 # fields 2.. numbers or empty.
 csv_shape() {

@@ -40,31 +40,6 @@ if [ ! -x "$MCSPEC" ]; then
     exit 1
 fi
 
-# usage_error LABEL PATTERN CMD...: exit 2, nothing on stdout, exactly one
-# line on stderr, matching the extended regular expression PATTERN.
-usage_error() {
-    label=$1 pattern=$2
-    shift 2
-    run "$@"
-    if [ "$rc" -ne 2 ]; then bad "$label: exit status $rc, expected 2"
-    elif [ -s "$tmp/out" ]; then bad "$label: wrote to stdout"
-    elif [ "$(wc -l <"$tmp/err")" -ne 1 ]; then bad "$label: $(wc -l <"$tmp/err") lines on stderr"
-    elif ! grep -Eq -- "$pattern" "$tmp/err"; then bad "$label: message '$(cat "$tmp/err")' lacks /$pattern/"
-    else ok; fi
-}
-
-# csv_shape LABEL FILE HEADER ROWS FIELDS: the header line exactly, then ROWS
-# rows of FIELDS fields, each field after the first a number or empty.
-csv_shape() {
-    if [ "$(head -n 1 "$2")" = "$3" ]; then ok; else bad "$1: header '$(head -n 1 "$2")'"; fi
-    problems=$(tail -n +2 "$2" | awk -F, -v rows="$4" -v fields="$5" '
-        function num(s) { return s == "" || s ~ /^[-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?$/ }
-        NF != fields { printf "row %d: %d fields; ", NR, NF }
-        { for (i = 2; i <= NF; ++i) if (!num($i)) printf "row %d field %d \"%s\"; ", NR, i, $i }
-        END { if (NR != rows) printf "%d rows, expected %d", NR, rows }')
-    if [ -z "$problems" ]; then ok; else bad "$1: $problems"; fi
-}
-
 # expect LABEL CSV WANT: every "name col value" line of WANT (col 2..5 of the
 # CSV, value a number or "empty") holds in the CSV to 1e-12 relative.
 expect() {

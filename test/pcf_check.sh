@@ -38,17 +38,6 @@ if [ ! -x "$MCSPEC" ]; then
     exit 1
 fi
 
-usage_error() {
-    label=$1 pattern=$2
-    shift 2
-    run "$@"
-    if [ "$rc" -ne 2 ]; then bad "$label: exit status $rc, expected 2"
-    elif [ -s "$tmp/out" ]; then bad "$label: wrote to stdout"
-    elif [ "$(wc -l <"$tmp/err")" -ne 1 ]; then bad "$label: $(wc -l <"$tmp/err") lines on stderr"
-    elif ! grep -Eq -- "$pattern" "$tmp/err"; then bad "$label: message '$(cat "$tmp/err")' lacks /$pattern/"
-    else ok; fi
-}
-
 # within5 LABEL FILE: every row with an exact value has |pcf - exact| <= 5 stderr
 # (or agrees to 1e-12 where the stderr is 0); prints the worst z.
 within5() {

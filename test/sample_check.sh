@@ -49,17 +49,6 @@ check_summary
     exit 1
 fi
 
-usage_error() {
-    label=$1 pattern=$2
-    shift 2
-    run "$@"
-    if [ "$rc" -ne 2 ]; then bad "$label: exit status $rc, expected 2"
-    elif [ -s "$tmp/out" ]; then bad "$label: wrote to stdout"
-    elif [ "$(wc -l <"$tmp/err")" -ne 1 ]; then bad "$label: $(wc -l <"$tmp/err") lines on stderr"
-    elif ! grep -Eq -- "$pattern" "$tmp/err"; then bad "$label: message '$(cat "$tmp/err")' lacks /$pattern/"
-    else ok; fi
-}
-
 for c in sample projections; do
     if succeeds "$c --help" "$MCSPEC" "$c" --help && grep -q "usage: mcspec $c" "$tmp/out"; then ok
     else bad "$c --help lacks its usage line"; fi

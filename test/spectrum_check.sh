@@ -39,19 +39,6 @@ fi
 have_numpy=0
 "$PYTHON" -c 'import numpy' 2>/dev/null && have_numpy=1
 
-# usage_error LABEL PATTERN CMD...: exit 2, nothing on stdout, exactly one
-# line on stderr matching the extended regular expression PATTERN.
-usage_error() {
-    label=$1 pattern=$2
-    shift 2
-    run "$@"
-    if [ "$rc" -ne 2 ]; then bad "$label: exit status $rc, expected 2"
-    elif [ -s "$tmp/out" ]; then bad "$label: wrote to stdout"
-    elif [ "$(wc -l <"$tmp/err")" -ne 1 ]; then bad "$label: $(wc -l <"$tmp/err") lines on stderr"
-    elif ! grep -Eq -- "$pattern" "$tmp/err"; then bad "$label: message '$(cat "$tmp/err")' lacks /$pattern/"
-    else ok; fi
-}
-
 # points SEED SETS K DIM [psa]: SETS sets of K uniform points of DIM
 # coordinates from awk's generator, utk's '#' between sets (or, with psa,
 # one set only, its count first).
