@@ -12,6 +12,8 @@ from .sampling import sample, kinds, base_points, exact_power
 from .measures import discrepancy, discrepancy_exact_random, spacing
 from .binned import Importance, Pattern, Spectrum, Moment, Autocorr, Theory, TheorySpectrum
 from .records import save, load, save_file, load_file, merge
+from .analysis import (Pcf, pcf, effective_nyquist, oscillations, spectral_stats,
+                       integration_error, projections)
 
 __all__ = [
     "Error", "library_path", "library_source", "__version__", "status_name",
@@ -20,4 +22,6 @@ __all__ = [
     "discrepancy", "discrepancy_exact_random", "spacing",
     "Importance", "Pattern", "Spectrum", "Moment", "Autocorr", "Theory", "TheorySpectrum",
     "save", "load", "save_file", "load_file", "merge",
+    "Pcf", "pcf", "effective_nyquist", "oscillations", "spectral_stats", "integration_error",
+    "projections",
 ]
