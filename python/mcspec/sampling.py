@@ -18,6 +18,8 @@ SAMPLERS = {"van-der-corput": 0, "halton": 1, "hammersley": 2, "kronecker": 4, "
             "halton-permuted": 6, "halton-owen": 8, "lattice": 9, "padded": 7}
 BLUENOISE = {"dart-throwing": 0, "poisson-disk": 1, "lloyd": 2, "pmj02": 3, "pmj02bn": 4}
 MAX_DIM = 64  # MCS_SAMPLER_MAX_DIM
+# The 2D kinds a padded sampler's pairs may be (mcs_sampler_init_padded).
+PADS = {"halton": 1, "hammersley": 2, "sobol-owen": 3, "kronecker": 4}
 
 DEFAULT_BINS = 4096  # MCS_MAX_N, mcspec sample's default --n
 
@@ -61,7 +63,50 @@ def _random_nd(rng, k, dim, sets, out):
             check(fn.rng_double(rng.addr, flat[t].ctypes.data + 8 * (n - 1)), "mcs_rng_double")
 
 
-def sample(kind, dim, k, sets=1, seed=1, n=None, importance=None, strata=(0, 0)):
+class BluenoiseParams(ctypes.Structure):
+    """mcs_bluenoise_params (bluenoise.h, transparent); a field at 0 takes
+    the kind's default. Its size is checked against mcs_abi_sizeof."""
+    _fields_ = [("radius", ctypes.c_double), ("attempts", ctypes.c_uint32),
+                ("iterations", ctypes.c_uint32), ("resolution", ctypes.c_uint32),
+                ("candidates", ctypes.c_uint32)]
+
+
+def _bluenoise_params(params):
+    if params is None:
+        return None
+    if ctypes.sizeof(BluenoiseParams) != _lib.struct_size("bluenoise_params"):
+        raise Error(_lib.ERR_MISMATCH, "mcs_bluenoise_params has another layout in this library")
+    unknown = set(params) - {f[0] for f in BluenoiseParams._fields_}
+    if unknown:
+        raise Error(_lib.ERR_DOMAIN, "unknown blue-noise parameter(s) %s (radius, attempts, "
+                    "iterations, resolution, candidates)" % ", ".join(sorted(unknown)))
+    return BluenoiseParams(**params)
+
+
+def _init_sampler(obj, kind, dim, k, pad, generator):
+    if pad is not None:
+        if kind != "padded":
+            raise Error(_lib.ERR_KIND, "pad is for the padded kind, not %r" % (kind,))
+        check(fn.sampler_init_padded(obj.addr, PADS.get(pad, -1), dim, k),
+              "mcs_sampler_init_padded(pad %s, dim %d, K = %d)" % (pad, dim, k))
+    elif generator is not None:
+        if kind != "lattice":
+            raise Error(_lib.ERR_KIND, "generator is for the lattice kind, not %r" % (kind,))
+        check(fn.sampler_init_lattice(obj.addr, dim, k, int(generator)),
+              "mcs_sampler_init_lattice(dim %d, K = %d, g = %d)" % (dim, k, int(generator)))
+    else:
+        check(fn.sampler_init(obj.addr, SAMPLERS[kind], dim, k),
+              "mcs_sampler_init(%s, dim %d, K = %d)" % (kind, dim, k))
+
+
+def lattice_generator(k, dim):
+    """Korobov's generator g that the lattice kind picks for k points in dim
+    dimensions (mcs_sampler_lattice_generator; 0 when out of range)."""
+    return int(fn.sampler_lattice_generator(int(k), int(dim)))
+
+
+def sample(kind, dim, k, sets=1, seed=1, n=None, importance=None, strata=(0, 0), pad=None,
+           generator=None, params=None):
     """sets trials of k points of `kind` in dim dimensions, as a float64
     array (sets, k, dim), drawn from PCG32 seeded (seed, 0) in order: the
     sets `mcspec sample KIND --dim D --k K --sets T --seed S` prints, bit for
@@ -76,7 +121,12 @@ def sample(kind, dim, k, sets=1, seed=1, n=None, importance=None, strata=(0, 0))
     (1), halton, hammersley (2), kronecker (1, 2), sobol-owen,
     halton-permuted, halton-owen, lattice (1..64), padded (2..64); blue noise
     dart-throwing, poisson-disk (1..3), lloyd, pmj02, pmj02bn (2), at their
-    default parameters, in work memory sized by mcs_bluenoise_work_size."""
+    default parameters, in work memory sized by mcs_bluenoise_work_size.
+    Beyond the command: pad (padded: the 2D kind of each pair, halton,
+    hammersley, sobol-owen or kronecker; mcs_sampler_init_padded), generator
+    (lattice: Korobov's g; mcs_sampler_init_lattice), params (blue noise: a
+    dict of radius, attempts, iterations, resolution, candidates; 0 or absent
+    the default; mcs_bluenoise_params)."""
     k, sets, dim = int(k), int(sets), int(dim)
     if sets < 1:
         raise Error(_lib.ERR_K_RANGE, "sets must be at least 1, not %d" % sets)
@@ -86,20 +136,25 @@ def sample(kind, dim, k, sets=1, seed=1, n=None, importance=None, strata=(0, 0))
         raise Error(_lib.ERR_KIND, "unknown %dD kind %r (%s)" % (dim, kind, ", ".join(kinds(dim))))
     out = np.empty((sets, k, dim), dtype=np.float64)
     rng = _rng(seed)
+    if (pad is not None or generator is not None) and kind not in SAMPLERS or \
+            params is not None and kind not in BLUENOISE:
+        raise Error(_lib.ERR_KIND, "pad, generator and params are for padded, lattice and the "
+                    "blue-noise kinds, not %r" % (kind,))
     if kind == "random" and dim > 2:
         _random_nd(rng, k, dim, sets, out)
         return out
     if kind in SAMPLERS:
         obj = struct("sampler")
-        check(fn.sampler_init(obj.addr, SAMPLERS[kind], dim, k),
-              "mcs_sampler_init(%s, dim %d, K = %d)" % (kind, dim, k))
+        _init_sampler(obj, kind, dim, k, pad, generator)
         draw = lambda t: fn.sampler_draw(obj.addr, rng.addr, k, out[t].ctypes.data)
     elif kind in BLUENOISE:
         size = ctypes.c_size_t(0)
         check(fn.bluenoise_work_size(BLUENOISE[kind], dim, k, ctypes.addressof(size)),
               "mcs_bluenoise_work_size(%s, dim %d, K = %d)" % (kind, dim, k))
         work = _lib.Buffer(max(size.value, 1))
-        draw = lambda t: fn.bluenoise_draw(BLUENOISE[kind], dim, k, None, rng.addr, work.addr,
+        bp = _bluenoise_params(params)
+        bpa = None if bp is None else ctypes.addressof(bp)
+        draw = lambda t: fn.bluenoise_draw(BLUENOISE[kind], dim, k, bpa, rng.addr, work.addr,
                                            work.size, out[t].ctypes.data)
     elif dim == 2:
         obj = struct("pattern2d")
@@ -123,10 +178,12 @@ def sample(kind, dim, k, sets=1, seed=1, n=None, importance=None, strata=(0, 0))
     return out
 
 
-def base_points(kind, dim, k):
+def base_points(kind, dim, k, pad=None, generator=None):
     """The sampler's K points without randomisation (mcs_sampler_base_points)."""
     obj = struct("sampler")
-    check(fn.sampler_init(obj.addr, SAMPLERS.get(kind, -1), dim, int(k)), "mcs_sampler_init")
+    if kind not in SAMPLERS:
+        raise Error(_lib.ERR_KIND, "unknown sampler %r (%s)" % (kind, ", ".join(SAMPLERS)))
+    _init_sampler(obj, kind, int(dim), int(k), pad, generator)
     out = np.empty((int(k), dim))
     check(fn.sampler_base_points(obj.addr, int(k), out.ctypes.data), "mcs_sampler_base_points")
     return out

@@ -189,3 +189,48 @@ def test_a_refused_projection_raises():
     with pytest.raises(mcspec.Error) as e:
         mcspec.projections(mcspec.sample("random", 1, 8))
     assert e.value.name == "MCS_ERR_DOMAIN"
+
+
+def test_a_saturated_poisson_set_raises_empty_as_the_command_exits_2(raw):
+    with pytest.raises(subprocess.CalledProcessError) as c:
+        raw("sample", "dart-throwing", "--dim", 3, "--k", 4, "--sets", 50)
+    assert c.value.returncode == 2
+    with pytest.raises(mcspec.Error) as e:
+        mcspec.sample("dart-throwing", 3, 4, sets=50)
+    assert e.value.name == "MCS_ERR_EMPTY" and "fewer points" in str(e.value)
+
+
+def test_pcf_exact_random_is_the_random_pattern_s_column(cli):
+    pts = mcspec.sample("random", 2, 100, sets=3, seed=6)
+    got = mcspec.pcf(pts, exact="random", bins=10)
+    rows = cli("pcf", "random", "--k", 100, "--sets", 3, "--seed", 6, "--bins", 10)
+    assert [row[1:] for row in rows[1:]] == [[c17(got.mean[b]), c17(got.stderr[b]),
+                                              c17(got.exact[b])] for b in range(10)]
+
+
+def test_the_sampler_and_blue_noise_options_reproduce_the_defaults_and_refuse_bad_values():
+    k, d = 32, 4
+    assert np.array_equal(mcspec.sample("padded", d, k, sets=2, seed=3, pad="sobol-owen"),
+                          mcspec.sample("padded", d, k, sets=2, seed=3))
+    assert not np.array_equal(mcspec.sample("padded", d, k, sets=2, seed=3, pad="halton"),
+                              mcspec.sample("padded", d, k, sets=2, seed=3))
+    g = mcspec.lattice_generator(k, d)
+    assert 1 <= g < k
+    assert np.array_equal(mcspec.sample("lattice", d, k, sets=2, seed=3, generator=g),
+                          mcspec.sample("lattice", d, k, sets=2, seed=3))
+    assert np.array_equal(mcspec.base_points("lattice", d, k, generator=g),
+                          mcspec.base_points("lattice", d, k))
+    assert np.array_equal(mcspec.sample("dart-throwing", 2, 16, seed=2, params={"radius": 0.75}),
+                          mcspec.sample("dart-throwing", 2, 16, seed=2))
+    for kw, name in ((dict(kind="padded", pad="lattice"), "MCS_ERR_KIND"),
+                     (dict(kind="lattice", generator=0), "MCS_ERR_MISMATCH"),
+                     (dict(kind="lattice", generator=k), "MCS_ERR_MISMATCH"),
+                     (dict(kind="halton-owen", generator=3), "MCS_ERR_KIND"),
+                     (dict(kind="poisson-disk", params={"radius": 2.0}), "MCS_ERR_DOMAIN"),
+                     (dict(kind="poisson-disk", params={"radius": np.nan}), "MCS_ERR_NOT_FINITE"),
+                     (dict(kind="lloyd", params={"candidates": 3}), "MCS_ERR_DOMAIN"),
+                     (dict(kind="pmj02", params={"bogus": 1}), "MCS_ERR_DOMAIN")):
+        kind = kw.pop("kind")
+        with pytest.raises(mcspec.Error) as e:
+            mcspec.sample(kind, 2, 16, **kw)
+        assert e.value.name == name, (kind, kw)
