@@ -12,7 +12,7 @@ from .sampling import sample, kinds, base_points, exact_power, lattice_generator
 from .measures import discrepancy, discrepancy_exact_random, spacing
 from .binned import Importance, Pattern, Spectrum, Moment, Autocorr, Theory, TheorySpectrum
 from .records import save, load, save_file, load_file, merge
-from .analysis import (Pcf, pcf, effective_nyquist, oscillations, spectral_stats,
+from .analysis import (Pcf, PairCorrelation, pcf, effective_nyquist, oscillations, spectral_stats,
                        integration_error, projections)
 
 __all__ = [
@@ -22,6 +22,6 @@ __all__ = [
     "discrepancy", "discrepancy_exact_random", "spacing",
     "Importance", "Pattern", "Spectrum", "Moment", "Autocorr", "Theory", "TheorySpectrum",
     "save", "load", "save_file", "load_file", "merge",
-    "Pcf", "pcf", "effective_nyquist", "oscillations", "spectral_stats", "integration_error",
+    "Pcf", "PairCorrelation", "pcf", "effective_nyquist", "oscillations", "spectral_stats", "integration_error",
     "projections",
 ]

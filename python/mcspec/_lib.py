@@ -192,6 +192,7 @@ _PROTOS = {
     "mcs_pcf_init": (_I, [_P, _Z, _I, _Z, _D, _D, _P, _Z]),
     "mcs_pcf_work_size": (_I, [_P, _Z, _P]),
     "mcs_pcf_add": (_I, [_P, _Z, _P, _P, _Z]),
+    "mcs_pcf_merge": (_I, [_P, _P]),
     "mcs_pcf_count": (_I, [_P, _P]),
     "mcs_pcf_radius_at": (_I, [_P, _Z, _P]),
     "mcs_pcf_mean": (_I, [_P, _Z, _P]),

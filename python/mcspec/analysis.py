@@ -46,6 +46,95 @@ def _double(f, *args):
 
 # ---- pair correlation --------------------------------------------------------
 
+class PairCorrelation:
+    """The pair correlation accumulator (mcs_pcf over its own buffer): g(r)
+    of 1D or 2D sets over bins bins of [0, radius) mean spacings, psa's RDF
+    (rdf=True) or the Gaussian-kernel PCF of kernel sigma. add(sets) adds
+    each set as one trial (one library call a set, every point checked
+    before any is added), merge(other) takes another of the same shape;
+    read-outs r, mean, stderr (NaN below 2 sets) and exact(pattern, k) are
+    arrays [bins] (one library call per bin: pcf.h reads a bin at a time)."""
+
+    def __init__(self, dim=2, radius=3.0, bins=60, sigma=0.1, rdf=False):
+        bins, dim = int(bins), int(dim)
+        size = ctypes.c_size_t(0)
+        check(fn.pcf_size(bins, ctypes.addressof(size)), "mcs_pcf_size(B = %d)" % bins)
+        self._acc = struct("pcf")
+        self._mem = Buffer(size.value)
+        check(fn.pcf_init(self._acc.addr, dim, 0 if rdf else 1, bins, float(radius), float(sigma),
+                          self._mem.addr, self._mem.size),
+              "mcs_pcf_init(dim %d, radius %r, sigma %r)" % (dim, radius, sigma))
+        self.dim, self.bins, self.rdf = dim, bins, bool(rdf)
+        self.radius, self.sigma = float(radius), float(sigma)
+        self._work = Buffer(1)
+
+    def add(self, sets):
+        parts, d = sets_array(sets, self.dim)
+        _all_in_range(parts)
+        todo = []
+        for kk, one in _sets(parts):  # every set's K checked before any is added
+            need = ctypes.c_size_t(0)
+            check(fn.pcf_work_size(self._acc.addr, kk, ctypes.addressof(need)),
+                  "mcs_pcf_work_size(K = %d: the radius reaches past half the torus)" % kk)
+            todo.append((kk, one, need.value))
+        for kk, one, need in todo:
+            if need > self._work.size:
+                self._work = Buffer(need)
+            _call(fn.pcf_add(self._acc.addr, kk, one.ctypes.data, self._work.addr,
+                             self._work.size), one, "mcs_pcf_add")
+        return self
+
+    def merge(self, other):
+        if not isinstance(other, PairCorrelation):
+            raise Error(_lib.ERR_MISMATCH, "merge takes a PairCorrelation")
+        check(fn.pcf_merge(self._acc.addr, other._acc.addr), "mcs_pcf_merge")
+        return self
+
+    @property
+    def count(self):
+        c = ctypes.c_uint64(0)
+        check(fn.pcf_count(self._acc.addr, ctypes.addressof(c)), "mcs_pcf_count")
+        return c.value
+
+    def _column(self, f, *args):
+        col = np.full(self.bins, np.nan)
+        for b in range(self.bins):
+            st, v = _double(f, self._acc.addr, *args, b)
+            if st == 0:
+                col[b] = v
+        return col
+
+    @property
+    def r(self):
+        return self._column(fn.pcf_radius_at)
+
+    @property
+    def mean(self):
+        return self._column(fn.pcf_mean)
+
+    @property
+    def stderr(self):
+        return self._column(fn.pcf_stderr)
+
+    def exact(self, pattern=None, k=None):
+        """E g per bin (mcs_pcf_exact): pattern None for independent uniform
+        points, else a 2D pattern name with k points (its strata the most
+        nearly square); NaN where the library has none."""
+        pat = None
+        if pattern is not None:
+            if pattern not in PATTERNS_2D or k is None:
+                raise Error(_lib.ERR_KIND, "pattern is a 2D pattern (%s) with its k, not %r"
+                            % (", ".join(PATTERNS_2D), pattern))
+            pat = struct("pattern2d")
+            check(fn.pattern2d_init(pat.addr, PATTERNS_2D[pattern], int(k), 0, 0),
+                  "mcs_pattern2d_init")
+        return self._column(fn.pcf_exact, None if pat is None else pat.addr)
+
+    def __repr__(self):
+        return "<mcspec.PairCorrelation %s dim=%d bins=%d radius=%g sets=%d>" % (
+            "rdf" if self.rdf else "gaussian", self.dim, self.bins, self.radius, self.count)
+
+
 def pcf(sets, radius=3.0, bins=60, sigma=0.1, rdf=False, exact=None, k=None):
     """The pair correlation g(r) of 1D or 2D sets (mcs_pcf): per bin its
     centre r (mean spacings), the mean over the sets, its standard error
@@ -53,51 +142,23 @@ def pcf(sets, radius=3.0, bins=60, sigma=0.1, rdf=False, exact=None, k=None):
     arrays [bins], the columns of `mcspec pcf --csv`. rdf=True: psa's RDF,
     else the Gaussian-kernel PCF of kernel sigma. exact: None, "random"
     (independent uniform points, as --exact random) or a 2D pattern name
-    (jittered, grid, shifted-grid, n-rooks; random), whose strata are those
-    of k points (default the sets' K), as `mcspec pcf KIND --k K` fills it.
-    One library call per set (mcs_pcf_add); every point is checked first, so
-    a refused call adds nothing."""
+    (random, jittered, grid, shifted-grid, n-rooks), whose strata are those
+    of k points (default the sets' first K), as `mcspec pcf KIND --k K`
+    fills it. A refused call adds nothing and changes nothing."""
     parts, d = sets_array(sets)
     if d not in (1, 2):
         raise Error(_lib.ERR_DOMAIN, "the pair correlation takes 1D or 2D sets, not %dD" % d)
-    bins = int(bins)
-    size = ctypes.c_size_t(0)
-    check(fn.pcf_size(bins, ctypes.addressof(size)), "mcs_pcf_size(B = %d)" % bins)
-    acc = struct("pcf")
-    mem = Buffer(size.value)
-    check(fn.pcf_init(acc.addr, d, 0 if rdf else 1, bins, float(radius), float(sigma), mem.addr,
-                      mem.size), "mcs_pcf_init")
-    pat = None
-    if exact not in (None, "random"):
-        if exact not in PATTERNS_2D or d != 2:
-            raise Error(_lib.ERR_KIND, "exact is None, 'random' or a 2D pattern (%s), not %r"
-                        % (", ".join(PATTERNS_2D), exact))
-        pat = struct("pattern2d")
-        check(fn.pattern2d_init(pat.addr, PATTERNS_2D[exact],
-                                int(k if k is not None else parts[0].shape[1]), 0, 0),
-              "mcs_pattern2d_init")
-    _all_in_range(parts)
-    work = Buffer(1)
-    for kk, one in _sets(parts):
-        need = ctypes.c_size_t(0)
-        check(fn.pcf_work_size(acc.addr, kk, ctypes.addressof(need)),
-              "mcs_pcf_work_size(K = %d: the radius reaches past half the torus)" % kk)
-        if need.value > work.size:
-            work = Buffer(need.value)
-        _call(fn.pcf_add(acc.addr, kk, one.ctypes.data, work.addr, work.size), one, "mcs_pcf_add")
-    # One call per bin and column: the library reads a bin at a time (no
-    # whole-array read-out of mcs_pcf), B calls for B values.
-    cols = np.full((4, bins), np.nan)
-    for b in range(bins):
-        for i, f in enumerate((fn.pcf_radius_at, fn.pcf_mean, fn.pcf_stderr)):
-            st, v = _double(f, acc.addr, b)
-            if st == 0:
-                cols[i, b] = v
-        if exact is not None:
-            st, v = _double(fn.pcf_exact, acc.addr, None if pat is None else pat.addr, b)
-            if st == 0:
-                cols[3, b] = v
-    return Pcf(*cols)
+    if exact not in (None, "random") and (exact not in PATTERNS_2D or d != 2):
+        raise Error(_lib.ERR_KIND, "exact is None, 'random' or a 2D pattern (%s), not %r"
+                    % (", ".join(PATTERNS_2D), exact))
+    acc = PairCorrelation(d, radius, bins, sigma, rdf).add(sets)
+    if exact is None:
+        ex = np.full(acc.bins, np.nan)
+    elif exact == "random" and k is None:
+        ex = acc.exact()
+    else:
+        ex = acc.exact(exact, k if k is not None else parts[0].shape[1])
+    return Pcf(acc.r, acc.mean, acc.stderr, ex)
 
 
 # ---- psa's spectral statistics -----------------------------------------------

@@ -234,3 +234,31 @@ def test_the_sampler_and_blue_noise_options_reproduce_the_defaults_and_refuse_ba
         with pytest.raises(mcspec.Error) as e:
             mcspec.sample(kind, 2, 16, **kw)
         assert e.value.name == name, (kind, kw)
+
+
+def test_pair_correlation_accumulators_merge_to_the_one_of_all_sets():
+    pts = mcspec.sample("n-rooks", 2, 100, sets=6, seed=8)
+    whole = mcspec.PairCorrelation(2, bins=12, rdf=True).add(pts)
+    a = mcspec.PairCorrelation(2, bins=12, rdf=True).add(pts[:3])
+    b = mcspec.PairCorrelation(2, bins=12, rdf=True).add([s for s in pts[3:]])
+    a.merge(b)
+    assert a.count == whole.count == 6
+    assert np.allclose(a.mean, whole.mean, rtol=1e-14, atol=1e-14)
+    assert np.allclose(a.stderr, whole.stderr, rtol=1e-12)
+    assert np.array_equal(a.r, whole.r)
+    before = (a.count, a.mean.tobytes(), a._mem.bytes(), a._acc.bytes())
+    bad = pts.copy()
+    bad[4, 0, 1] = -0.5
+    with pytest.raises(mcspec.Error) as e:
+        a.add(bad)
+    assert e.value.name == "MCS_ERR_POINT_RANGE"
+    with pytest.raises(mcspec.Error) as e:
+        a.merge(mcspec.PairCorrelation(2, bins=13, rdf=True))
+    assert e.value.name == "MCS_ERR_MISMATCH"
+    small = [pts[0], pts[1][:10]]  # the second set is too small for the radius: neither is added
+    with pytest.raises(mcspec.Error) as e:
+        a.add(small)
+    assert e.value.name == "MCS_ERR_K_RANGE"
+    assert before == (a.count, a.mean.tobytes(), a._mem.bytes(), a._acc.bytes())
+    assert np.isnan(a.exact("multi-jittered", 100)).all()
+    assert not np.isnan(a.exact("n-rooks", 100)).any()
