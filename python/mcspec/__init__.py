@@ -13,7 +13,7 @@ from .measures import discrepancy, discrepancy_exact_random, spacing
 from .binned import Importance, Pattern, Spectrum, Moment, Autocorr, Theory, TheorySpectrum
 from .records import save, load, save_file, load_file, merge
 from .analysis import (Pcf, PairCorrelation, pcf, effective_nyquist, oscillations, spectral_stats,
-                       integration_error, projections)
+                       integration_error, integration_error_of, projections)
 
 __all__ = [
     "Error", "library_path", "library_source", "__version__", "status_name",
@@ -22,6 +22,7 @@ __all__ = [
     "discrepancy", "discrepancy_exact_random", "spacing",
     "Importance", "Pattern", "Spectrum", "Moment", "Autocorr", "Theory", "TheorySpectrum",
     "save", "load", "save_file", "load_file", "merge",
-    "Pcf", "PairCorrelation", "pcf", "effective_nyquist", "oscillations", "spectral_stats", "integration_error",
+    "Pcf", "PairCorrelation", "pcf", "effective_nyquist", "oscillations", "spectral_stats",
+    "integration_error", "integration_error_of",
     "projections",
 ]

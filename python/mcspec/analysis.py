@@ -12,7 +12,7 @@ import numpy as np
 from . import _lib
 from ._lib import Buffer, Error, check, fn, struct
 from ._points import sets_array, where_bad
-from .sampling import PATTERNS_2D
+from .sampling import PATTERNS_2D, sample
 
 Pcf = collections.namedtuple("Pcf", "r mean stderr exact")
 SpectralStats = collections.namedtuple("SpectralStats", "mean stderr")
@@ -266,21 +266,56 @@ def integration_error(sets, integrands=16, seed=1, family=None, freq=None, exact
     the sets' mean periodogram to F (default 2 ceil(sqrt K) capped at 128 in
     2D, 4 K capped at 65536 in 1D; 0: none). exact: None, "random" or
     "jittered" (the most nearly square grid of K cells in 2D). One library
-    call per set and integrand (the draws), per set and family (the add)."""
+    call per set and integrand (the draws), per set and family (the add).
+    Each family's dict also has the command's slope (least squares of log
+    mse on log K over its rows; NaN below two K), rate_random and
+    rate_jittered (the reference slopes), repeated per row as the CSV has
+    them."""
     parts, d = sets_array(sets)
     if d not in (1, 2):
         raise Error(_lib.ERR_DOMAIN, "the integrands take 1D or 2D points, not %dD" % d)
+    if exact not in (None, "random", "jittered"):
+        raise Error(_lib.ERR_KIND, "exact is None, 'random' or 'jittered', not %r" % (exact,))
+    _all_in_range(parts)
+    ref = {None: 0, "random": 1, "jittered": 2}[exact]
+    return _integrate(((kk, one, ref) for kk, one in _sets(parts)), d, integrands, seed, family,
+                      freq)
+
+
+def integration_error_of(kind, ks, dim=2, sets=64, integrands=16, seed=1, family=None,
+                         freq=None):
+    """The integration error of `sets` sets of each K in ks drawn from
+    `kind` (any kind sample() draws in dim 1 or 2), as `mcspec integrate KIND
+    --k K1,K2,... --dim D --sets T --csv`: the sets of the i-th K from PCG32
+    (seed, 1 + i), the exact column for random, jittered (2D) and
+    stratified (1D). Returns what integration_error() does."""
+    ks = [int(k) for k in (ks if hasattr(ks, "__len__") else [ks])]
+    dim = int(dim)
+    if dim not in (1, 2):
+        raise Error(_lib.ERR_DOMAIN, "the integrands take 1D or 2D points, not %dD" % dim)
+    if not ks:
+        raise Error(_lib.ERR_K_RANGE, "no K given")
+    refs = {"random": 1, "jittered" if dim == 2 else "stratified": 2}
+
+    def items():
+        for i, k in enumerate(ks):
+            pts = sample(kind, dim, k, sets=sets, seed=seed, stream=1 + i)
+            for one in pts:
+                yield k, one, refs.get(kind, 0)
+    for k in ks:  # every K drawable before anything is done
+        sample(kind, dim, k, sets=1, seed=seed)
+    return _integrate(items(), dim, integrands, seed, family, freq)
+
+
+def _integrate(items, d, integrands, seed, family, freq):
+    """The accumulation of integration_error over (k, set, reference) items."""
     names = _family_names()
     if family is not None and family not in names:
         raise Error(_lib.ERR_KIND, "unknown family %r (%s)" % (family, ", ".join(names)))
-    if exact not in (None, "random", "jittered"):
-        raise Error(_lib.ERR_KIND, "exact is None, 'random' or 'jittered', not %r" % (exact,))
     m = int(integrands)
     if m < 1:
         raise Error(_lib.ERR_K_RANGE, "integrands must be at least 1, not %d" % m)
-    _all_in_range(parts)
     fams = [f for f in range(len(names)) if family is None or names[f] == family]
-    ref = {None: 0, "random": 1, "jittered": 2}[exact]
     isz = _lib.struct_size("integrand")
     rngs = {}
     for f in range(len(names)):
@@ -289,7 +324,7 @@ def integration_error(sets, integrands=16, seed=1, family=None, freq=None, exact
     periodic = [f for f in fams if fn.integrand_is_periodic(f)]
     groups = {}
     ps_name = "pointset" if d == 1 else "pointset2d"
-    for kk, one in _sets(parts):
+    for kk, one, ref in items:
         g = groups.get(kk)
         if g is None:
             g = groups[kk] = {"acc": {}, "fs": {f: [] for f in fams}, "sets": 0}
@@ -351,8 +386,29 @@ def integration_error(sets, integrands=16, seed=1, family=None, freq=None, exact
                 cols["predicted"][i], cols["predicted_tail"][i] = pred.value, tail.value
                 cols["freq"][i] = g["freq"]
         cols["k"] = np.array(ks)
+        slope = _slope(ks, cols["mse"])
+        smooth = names[f] not in ("heaviside", "disk")
+        cols["slope"] = np.full(len(ks), slope)
+        cols["rate_random"] = np.full(len(ks), -1.0)
+        cols["rate_jittered"] = np.full(len(ks), -(1.0 + (2.0 if smooth else 1.0) / d))
         out[names[f]] = cols
     return out
+
+
+def _slope(ks, mse):
+    """The command's least squares of log mse on log K (its sums, in its
+    order; NaN below two positive rows)."""
+    n = sx = sy = sxx = sxy = 0.0
+    for k, v in zip(ks, mse):
+        if v > 0.0:
+            x, y = math.log(float(k)), math.log(float(v))
+            n += 1.0
+            sx += x
+            sy += y
+            sxx += x * x
+            sxy += x * y
+    den = n * sxx - sx * sx
+    return (n * sxy - sx * sy) / den if n >= 2.0 and den > 0.0 else math.nan
 
 
 class _Pattern2d(ctypes.Structure):

@@ -106,7 +106,7 @@ def lattice_generator(k, dim):
 
 
 def sample(kind, dim, k, sets=1, seed=1, n=None, importance=None, strata=(0, 0), pad=None,
-           generator=None, params=None):
+           generator=None, params=None, stream=0):
     """sets trials of k points of `kind` in dim dimensions, as a float64
     array (sets, k, dim), drawn from PCG32 seeded (seed, 0) in order: the
     sets `mcspec sample KIND --dim D --k K --sets T --seed S` prints, bit for
@@ -126,7 +126,8 @@ def sample(kind, dim, k, sets=1, seed=1, n=None, importance=None, strata=(0, 0),
     hammersley, sobol-owen or kronecker; mcs_sampler_init_padded), generator
     (lattice: Korobov's g; mcs_sampler_init_lattice), params (blue noise: a
     dict of radius, attempts, iterations, resolution, candidates; 0 or absent
-    the default; mcs_bluenoise_params)."""
+    the default; mcs_bluenoise_params), stream (PCG32's initseq, 0 as the
+    command; mcspec integrate KIND draws its i-th K from stream 1 + i)."""
     k, sets, dim = int(k), int(sets), int(dim)
     if sets < 1:
         raise Error(_lib.ERR_K_RANGE, "sets must be at least 1, not %d" % sets)
@@ -135,7 +136,7 @@ def sample(kind, dim, k, sets=1, seed=1, n=None, importance=None, strata=(0, 0),
     if kind not in kinds(dim):
         raise Error(_lib.ERR_KIND, "unknown %dD kind %r (%s)" % (dim, kind, ", ".join(kinds(dim))))
     out = np.empty((sets, k, dim), dtype=np.float64)
-    rng = _rng(seed)
+    rng = _rng(seed, stream)
     if (pad is not None or generator is not None) and kind not in SAMPLERS or \
             params is not None and kind not in BLUENOISE:
         raise Error(_lib.ERR_KIND, "pad, generator and params are for padded, lattice and the "

@@ -140,7 +140,7 @@ def test_integration_error_is_the_command_s_rows_for_point_files(cli, tmp_path, 
         fam, k = row[0], int(row[1])
         cols = got[fam]
         i = list(cols["k"]).index(k)
-        for c in ("mse", "mse_stderr", "exact", "predicted", "predicted_tail", "freq", "sets"):
+        for c in head[2:]:
             assert row[head.index(c)] == c17(cols[c][i]), (fam, k, c)
         n += 1
     assert n == 10
@@ -262,3 +262,23 @@ def test_pair_correlation_accumulators_merge_to_the_one_of_all_sets():
     assert before == (a.count, a.mean.tobytes(), a._mem.bytes(), a._acc.bytes())
     assert np.isnan(a.exact("multi-jittered", 100)).all()
     assert not np.isnan(a.exact("n-rooks", 100)).any()
+
+
+@pytest.mark.parametrize("kind,dim", [("jittered", 2), ("halton", 2), ("stratified", 1)])
+def test_integration_error_of_a_kind_is_the_command_s_kind_form(cli, kind, dim):
+    got = mcspec.integration_error_of(kind, [9, 16, 25], dim=dim, sets=4, integrands=3, seed=2)
+    rows = cli("integrate", kind, "--k", 9, "--k", 16, "--k", 25, "--dim", dim, "--sets", 4,
+               "--integrands", 3,
+               "--seed", 2)
+    head = rows[0]
+    assert len(rows) == 1 + 15
+    for row in rows[1:]:
+        cols = got[row[0]]
+        i = list(cols["k"]).index(int(row[1]))
+        for c in head[2:]:
+            assert row[head.index(c)] == c17(cols[c][i]), (kind, row[0], row[1], c)
+    if kind != "halton":
+        assert not np.isnan(got["gaussian"]["exact"]).any()
+    with pytest.raises(mcspec.Error) as e:
+        mcspec.integration_error_of(kind, [9, 0], dim=dim)
+    assert e.value.name == "MCS_ERR_K_RANGE"
