@@ -33,7 +33,13 @@ typedef enum {
     MCS_ABI_DISCREPANCY = 15, /* mcs_discrepancy (discrepancy.h) */
     MCS_ABI_SPACING = 16,     /* mcs_spacing (spacing.h) */
     MCS_ABI_PROVENANCE = 17,  /* mcs_io_provenance (io.h) */
-    MCS_ABI_TYPE_COUNT = 18
+    MCS_ABI_PCF = 18,         /* mcs_pcf, the header only (pcf.h) */
+    MCS_ABI_INTEGRAND = 19,   /* mcs_integrand (integrand.h) */
+    MCS_ABI_INTEGRATE = 20,   /* mcs_integrate, the header only (integrate.h) */
+    MCS_ABI_PROJECTIONS = 21, /* mcs_projections, the header only (projections.h) */
+    MCS_ABI_PROJECTIONS_PAIR = 22, /* mcs_projections_pair (projections.h) */
+    MCS_ABI_BLUENOISE_PARAMS = 23, /* mcs_bluenoise_params (bluenoise.h) */
+    MCS_ABI_TYPE_COUNT = 24
 } mcs_abi_type;
 
 /* sizeof and _Alignof of the struct type in this build, into *size and

@@ -8,16 +8,21 @@ compiled extension). See docs/python.md.
 from ._lib import Error, library_path, library_source, version as __version__
 from ._lib import status_name
 from .pointsets import PointSet, Estimate, periodogram, anisotropy, wave_vectors
-from .sampling import sample, kinds, base_points, exact_power
+from .sampling import sample, kinds, base_points, exact_power, lattice_generator
 from .measures import discrepancy, discrepancy_exact_random, spacing
 from .binned import Importance, Pattern, Spectrum, Moment, Autocorr, Theory, TheorySpectrum
 from .records import save, load, save_file, load_file, merge
+from .analysis import (Pcf, PairCorrelation, pcf, effective_nyquist, oscillations, spectral_stats,
+                       integration_error, integration_error_of, projections)
 
 __all__ = [
     "Error", "library_path", "library_source", "__version__", "status_name",
     "PointSet", "Estimate", "periodogram", "anisotropy", "wave_vectors",
-    "sample", "kinds", "base_points", "exact_power",
+    "sample", "kinds", "base_points", "exact_power", "lattice_generator",
     "discrepancy", "discrepancy_exact_random", "spacing",
     "Importance", "Pattern", "Spectrum", "Moment", "Autocorr", "Theory", "TheorySpectrum",
     "save", "load", "save_file", "load_file", "merge",
+    "Pcf", "PairCorrelation", "pcf", "effective_nyquist", "oscillations", "spectral_stats",
+    "integration_error", "integration_error_of",
+    "projections",
 ]

@@ -175,6 +175,51 @@ _PROTOS = {
     "mcs_io_load_autocorr": (_I, [_P, _Z, _P]),
     "mcs_io_load_pointset": (_I, [_P, _U, _P, _Z, _Z, _P]),
     "mcs_io_load_pointset2d": (_I, [_P, _U, _P, _Z, _Z, _P]),
+    # the modules wrapped by issue 27's second round
+    "mcs_rng_double": (_I, [_P, _P]),
+    "mcs_sampler_init_padded": (_I, [_P, _I, _Z, _Z]),
+    "mcs_sampler_init_lattice": (_I, [_P, _Z, _Z, _U32]),
+    "mcs_sampler_lattice_generator": (_U32, [_Z, _Z]),
+    "mcs_bluenoise_kind_str": (_S, [_I]),
+    "mcs_bluenoise_has_dim": (_I, [_I, _Z]),
+    "mcs_bluenoise_work_size": (_I, [_I, _Z, _Z, _P]),
+    "mcs_bluenoise_draw": (_I, [_I, _Z, _Z, _P, _P, _P, _Z, _P]),
+    "mcs_welford_init": (_I, [_P]),
+    "mcs_welford_add": (_I, [_P, _D]),
+    "mcs_welford_mean": (_I, [_P, _P]),
+    "mcs_welford_stderr": (_I, [_P, _P]),
+    "mcs_pcf_size": (_I, [_Z, _P]),
+    "mcs_pcf_init": (_I, [_P, _Z, _I, _Z, _D, _D, _P, _Z]),
+    "mcs_pcf_work_size": (_I, [_P, _Z, _P]),
+    "mcs_pcf_add": (_I, [_P, _Z, _P, _P, _Z]),
+    "mcs_pcf_merge": (_I, [_P, _P]),
+    "mcs_pcf_count": (_I, [_P, _P]),
+    "mcs_pcf_radius_at": (_I, [_P, _Z, _P]),
+    "mcs_pcf_mean": (_I, [_P, _Z, _P]),
+    "mcs_pcf_stderr": (_I, [_P, _Z, _P]),
+    "mcs_pcf_power": (_I, [_P, _D, _P]),
+    "mcs_pcf_exact": (_I, [_P, _P, _Z, _P]),
+    "mcs_radial_effective_nyquist": (_I, [_Z, _Z, _Z, _P, _D, _P]),
+    "mcs_radial_oscillations": (_I, [_Z, _Z, _Z, _P, _D, _P]),
+    "mcs_integrand_family_str": (_S, [_I]),
+    "mcs_integrand_is_periodic": (_I, [_I]),
+    "mcs_integrand_draw": (_I, [_P, _I, _Z, _P]),
+    "mcs_integrand_predict": (_I, [_P, _Z, _P, _Z, _P, _P]),
+    "mcs_integrand_predict_1d": (_I, [_P, _Z, _P, _Z, _P, _P]),
+    "mcs_integrate_init": (_I, [_P, _I, _Z]),
+    "mcs_integrate_add": (_I, [_P, _Z, _P, _Z, _P, _I, _Z, _Z]),
+    "mcs_integrate_mse": (_I, [_P, _P]),
+    "mcs_integrate_mse_stderr": (_I, [_P, _P]),
+    "mcs_integrate_exact": (_I, [_P, _P]),
+    "mcs_pointset_add": (_I, [_P, _Z, _P]),
+    "mcs_pointset2d_add": (_I, [_P, _Z, _P]),
+    "mcs_pointset_power": (_I, [_P, _L, _P]),
+    "mcs_pointset2d_radial": (_I, [_P, _Z, _P]),
+    "mcs_projections_size": (_I, [_Z, _Z, _Z, _P]),
+    "mcs_projections_init": (_I, [_P, _Z, _Z, _Z, _Z, _Z, _P, _Z]),
+    "mcs_projections_add": (_I, [_P, _Z, _P]),
+    "mcs_projections_pair_stats": (_I, [_P, _Z, _Z, _P]),
+    "mcs_projections_flagged": (_I, [_P, _P]),
 }
 
 
@@ -229,7 +274,9 @@ def sizeof(abi_type):
 # mcs_abi_type (abi.h)
 ABI = dict(rng=0, importance=1, pattern=2, pattern2d=3, sampler=4, welford=5, dft=6, spectrum=7,
            moment=8, autocorr=9, pointset=10, pointset2d=11, spectrum2d=12, theory=13,
-           theory_spectrum=14, discrepancy=15, spacing=16, provenance=17)
+           theory_spectrum=14, discrepancy=15, spacing=16, provenance=17, pcf=18,
+           integrand=19, integrate=20, projections=21, projections_pair=22,
+           bluenoise_params=23)
 _SIZES = {}
 
 

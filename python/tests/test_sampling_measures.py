@@ -47,13 +47,20 @@ def test_discrepancies_and_spacing_are_the_command_s_means(cli, tmp_path):
             acc += (v - acc) / (i + 1)
         assert f17(acc) == row[head.index("value")], name
     s = mcspec.spacing(pts)
+    spectral = mcspec.spectral_stats(pts)
     rows = cli("stats", f)
     head = rows[0]
+    names = []
     for row in rows[1:]:
         name = row[head.index("statistic")]
-        if name not in s:  # the spectral rows (effective Nyquist, oscillations) are not wrapped yet
+        names.append(name)
+        if name in spectral:  # effective Nyquist and oscillations, per set and of the mean
+            want = spectral[name]
+            assert [row[head.index("value")], row[head.index("stderr")]] == \
+                [("" if np.isnan(v) else f17(v)) for v in want], name
             continue
         acc = 0.0
         for i, v in enumerate(s[name]):
             acc += (v - acc) / (i + 1)
         assert f17(acc) == row[head.index("value")], name
+    assert set(names) == set(s) | set(spectral)

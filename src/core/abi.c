@@ -19,6 +19,8 @@ static const abi_entry abi_table[MCS_ABI_TYPE_COUNT] = {
     ABI_ENTRY(mcs_autocorr),     ABI_ENTRY(mcs_pointset),        ABI_ENTRY(mcs_pointset2d),
     ABI_ENTRY(mcs_spectrum2d),   ABI_ENTRY(mcs_theory),          ABI_ENTRY(mcs_theory_spectrum),
     ABI_ENTRY(mcs_discrepancy),  ABI_ENTRY(mcs_spacing),         ABI_ENTRY(mcs_io_provenance),
+    ABI_ENTRY(mcs_pcf),          ABI_ENTRY(mcs_integrand),       ABI_ENTRY(mcs_integrate),
+    ABI_ENTRY(mcs_projections),  ABI_ENTRY(mcs_projections_pair), ABI_ENTRY(mcs_bluenoise_params),
 };
 
 mcs_status mcs_abi_sizeof(mcs_abi_type type, size_t *size, size_t *align)

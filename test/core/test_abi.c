@@ -36,6 +36,12 @@ static void test_every_type_has_the_size_and_alignment_of_its_struct(void)
     CHECK(MCS_ABI_DISCREPANCY, mcs_discrepancy);
     CHECK(MCS_ABI_SPACING, mcs_spacing);
     CHECK(MCS_ABI_PROVENANCE, mcs_io_provenance);
+    CHECK(MCS_ABI_PCF, mcs_pcf);
+    CHECK(MCS_ABI_INTEGRAND, mcs_integrand);
+    CHECK(MCS_ABI_INTEGRATE, mcs_integrate);
+    CHECK(MCS_ABI_PROJECTIONS, mcs_projections);
+    CHECK(MCS_ABI_PROJECTIONS_PAIR, mcs_projections_pair);
+    CHECK(MCS_ABI_BLUENOISE_PARAMS, mcs_bluenoise_params);
 }
 
 static void test_an_unknown_type_or_no_output_is_refused_untouched(void)
