@@ -151,6 +151,16 @@ mcs_status mcs_pcf_radius_at(const mcs_pcf *acc, size_t bin, double *out);
 mcs_status mcs_pcf_mean(const mcs_pcf *acc, size_t bin, double *out);
 mcs_status mcs_pcf_stderr(const mcs_pcf *acc, size_t bin, double *out);
 
+/* Every bin at once, bit for bit mcs_pcf_radius_at, _mean and _stderr:
+ * radius[b], mean[b], stderr_out[b] for b = 0..B-1, caller arrays of bins
+ * doubles, bins = B (else MCS_ERR_MISMATCH); any may be NULL, not all
+ * (MCS_ERR_NULL); they must overlap neither each other, *acc nor its
+ * buffer (MCS_ERR_ALIAS). MCS_ERR_UNINIT, MCS_ERR_INVARIANT, MCS_ERR_EMPTY
+ * (no set with mean, fewer than 2 with stderr_out). Nothing written on
+ * error. O(B). */
+mcs_status mcs_pcf_read_all(const mcs_pcf *acc, size_t bins, double *radius, double *mean,
+                            double *stderr_out);
+
 /* psa's spectral check: the radial power the mean RDF implies at frequency
  * freq (cycles per unit length, >= 0), with g = 1 past the radius (the
  * truncation):

@@ -197,6 +197,7 @@ _PROTOS = {
     "mcs_pcf_radius_at": (_I, [_P, _Z, _P]),
     "mcs_pcf_mean": (_I, [_P, _Z, _P]),
     "mcs_pcf_stderr": (_I, [_P, _Z, _P]),
+    "mcs_pcf_read_all": (_I, [_P, _Z, _P, _P, _P]),
     "mcs_pcf_power": (_I, [_P, _D, _P]),
     "mcs_pcf_exact": (_I, [_P, _P, _Z, _P]),
     "mcs_radial_effective_nyquist": (_I, [_Z, _Z, _Z, _P, _D, _P]),

@@ -96,25 +96,28 @@ class PairCorrelation:
         check(fn.pcf_count(self._acc.addr, ctypes.addressof(c)), "mcs_pcf_count")
         return c.value
 
-    def _column(self, f, *args):
+    def _column(self, which):
+        """One read-out over every bin in one call (mcs_pcf_read_all: 0 the
+        radii, 1 the means, 2 their standard errors); NaN where the library
+        has none (no set, or one set for the standard error)."""
         col = np.full(self.bins, np.nan)
-        for b in range(self.bins):
-            st, v = _double(f, self._acc.addr, *args, b)
-            if st == 0:
-                col[b] = v
+        ptrs = [None, None, None]
+        ptrs[which] = col.ctypes.data
+        if fn.pcf_read_all(self._acc.addr, self.bins, *ptrs) != 0:
+            col[:] = np.nan
         return col
 
     @property
     def r(self):
-        return self._column(fn.pcf_radius_at)
+        return self._column(0)
 
     @property
     def mean(self):
-        return self._column(fn.pcf_mean)
+        return self._column(1)
 
     @property
     def stderr(self):
-        return self._column(fn.pcf_stderr)
+        return self._column(2)
 
     def exact(self, pattern=None, k=None):
         """E g per bin (mcs_pcf_exact): pattern None for independent uniform
@@ -128,7 +131,12 @@ class PairCorrelation:
             pat = struct("pattern2d")
             check(fn.pattern2d_init(pat.addr, PATTERNS_2D[pattern], int(k), 0, 0),
                   "mcs_pattern2d_init")
-        return self._column(fn.pcf_exact, None if pat is None else pat.addr)
+        col = np.full(self.bins, np.nan)  # one call per bin: the exact value is a quadrature
+        for b in range(self.bins):
+            st, v = _double(fn.pcf_exact, self._acc.addr, None if pat is None else pat.addr, b)
+            if st == 0:
+                col[b] = v
+        return col
 
     def __repr__(self):
         return "<mcspec.PairCorrelation %s dim=%d bins=%d radius=%g sets=%d>" % (

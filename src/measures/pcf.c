@@ -431,3 +431,43 @@ mcs_status mcs_pcf_stderr(const mcs_pcf *acc, size_t bin, double *out)
     const double n = (double)acc->count;
     return mcs_set_(out, sqrt(acc->m2[bin] / (n - 1.0) / n));
 }
+
+/* One array's overlap with the others before it, the object and its buffer. */
+static int array_aliases(const mcs_pcf *acc, double *const *arr, size_t i, size_t len)
+{
+    if (mcs_overlap_(arr[i], len, acc, sizeof *acc) || mcs_overlap_(arr[i], len, acc->mem, acc->bytes))
+        return 1;
+    for (size_t j = 0; j < i; ++j)
+        if (arr[j] != NULL && mcs_overlap_(arr[i], len, arr[j], len))
+            return 1;
+    return 0;
+}
+
+mcs_status mcs_pcf_read_all(const mcs_pcf *acc, size_t bins, double *radius, double *mean,
+                            double *stderr_out)
+{
+    double *const arr[3] = {radius, mean, stderr_out};
+    if (radius == NULL && mean == NULL && stderr_out == NULL)
+        return MCS_ERR_NULL;
+    mcs_status st = mcs_pcf_check_(acc);
+    if (st == MCS_OK && bins != acc->bins)
+        st = MCS_ERR_MISMATCH;
+    if (st == MCS_OK && ((mean != NULL && acc->count == 0u) ||
+                         (stderr_out != NULL && acc->count < 2u)))
+        st = MCS_ERR_EMPTY;
+    for (size_t i = 0; st == MCS_OK && i < 3u; ++i)
+        if (arr[i] != NULL && array_aliases(acc, arr, i, bins * sizeof(double)))
+            st = MCS_ERR_ALIAS;
+    if (st != MCS_OK)
+        return st;
+    const double n = (double)acc->count;
+    for (size_t b = 0; b < bins; ++b) { /* the arithmetic of the per-bin calls */
+        if (radius != NULL)
+            radius[b] = ((double)b + 0.5) * acc->radius / (double)acc->bins;
+        if (mean != NULL)
+            mean[b] = acc->mean[b];
+        if (stderr_out != NULL)
+            stderr_out[b] = sqrt(acc->m2[b] / (n - 1.0) / n);
+    }
+    return MCS_OK;
+}

@@ -243,6 +243,42 @@ static void test_merging_two_halves_equals_one_pass(void)
     TEST_ASSERT_DOUBLE_WITHIN(1e-15 * m3, m3, mean(&half, 3u));
 }
 
+/* The whole-array read-out is the per-bin calls bit for bit, and a refused
+ * one (a wrong length, one set for the standard error, an array inside the
+ * object's buffer) writes nothing. */
+static void test_reading_every_bin_at_once_equals_the_per_bin_calls(void)
+{
+    mcs_rng rng;
+    mcs_rng_seed(&rng, 9u, 9u);
+    mcs_pcf acc = make(mem_a, 2u, MCS_PCF_RDF, 16u, 2.5, 0.0);
+    static double r[16], m[16], se[16], r2[16];
+    points_uniform(&rng, 2u * 64u, pts);
+    add(&acc, 64u, pts);
+    for (size_t b = 0; b < 16u; ++b)
+        r2[b] = m[b] = se[b] = -7.0;
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_EMPTY, mcs_pcf_read_all(&acc, 16u, r2, m, se));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_MISMATCH, mcs_pcf_read_all(&acc, 15u, r2, m, NULL));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_pcf_read_all(&acc, 16u, acc.mean, NULL, NULL));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_ALIAS, mcs_pcf_read_all(&acc, 16u, r2, r2, NULL));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_NULL, mcs_pcf_read_all(&acc, 16u, NULL, NULL, NULL));
+    for (size_t b = 0; b < 16u; ++b)
+        TEST_ASSERT_TRUE(r2[b] == -7.0 && m[b] == -7.0 && se[b] == -7.0);
+    for (int t = 0; t < 5; ++t) {
+        points_uniform(&rng, 2u * 64u, pts);
+        add(&acc, 64u, pts);
+    }
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pcf_read_all(&acc, 16u, r, m, se));
+    for (size_t b = 0; b < 16u; ++b) {
+        double one = 0.0;
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_pcf_radius_at(&acc, b, &one));
+        TEST_ASSERT_EQUAL_MEMORY(&one, &r[b], sizeof one);
+        one = mean(&acc, b);
+        TEST_ASSERT_EQUAL_MEMORY(&one, &m[b], sizeof one);
+        one = stderr_of(&acc, b);
+        TEST_ASSERT_EQUAL_MEMORY(&one, &se[b], sizeof one);
+    }
+}
+
 /* J1 by its power series, independent of the library's trapezoid rule. */
 static double j1_series(double x)
 {
@@ -378,6 +414,7 @@ int main(void)
     RUN_TEST(test_random_sets_give_g_of_one_within_five_standard_errors);
     RUN_TEST(test_random_sets_give_the_kernels_exact_curve_within_five_standard_errors);
     RUN_TEST(test_merging_two_halves_equals_one_pass);
+    RUN_TEST(test_reading_every_bin_at_once_equals_the_per_bin_calls);
     RUN_TEST(test_the_power_from_the_rdf_is_its_hankel_transform);
     RUN_TEST(test_bad_input_changes_nothing);
     return UNITY_END();

@@ -100,7 +100,10 @@ enum {
     F_OKIN = 8,    /* every in-range size must succeed */
     F_NOMAX = 16,  /* Z_DEF without a documented maximum (hi = SIZE_MAX) */
     F_FREE = 32,   /* every value is meaningful (no status to check) */
-    F_ZEROOK = 64  /* the zeroed object is a valid state (adv_refine_rows) */
+    F_ZEROOK = 64, /* the zeroed object is a valid state (adv_refine_rows) */
+    F_BACKED = 128 /* Z_DEF counting elements of an object the row holds one of: no rows
+                      above hi (a larger count would read past the caller's array, which
+                      no call can see) */
 };
 
 /* Array length: op over slot values. */

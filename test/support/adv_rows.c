@@ -184,7 +184,7 @@ static void size_rows(row_sink *k, int i, const adv_slot *s)
         }
         return;
     }
-    const int nomax = (s->flags & F_NOMAX) != 0;
+    const int nomax = (s->flags & (F_NOMAX | F_BACKED)) != 0;
     vals[nv++] = 0u;
     vals[nv++] = 1u;
     if (s->role == Z_LEN) {
@@ -199,7 +199,8 @@ static void size_rows(row_sink *k, int i, const adv_slot *s)
             vals[nv++] = (size_t)s->base + 1u;
         }
     }
-    if (s->role != Z_LEN) /* a length without a maximum cannot be a lie the call could see */
+    if (s->role != Z_LEN && !(s->flags & F_BACKED)) /* a length without a maximum cannot be a
+                                                         lie the call could see */
         vals[nv++] = SIZE_MAX;
     for (int a = 0; a < nv; ++a) {
         size_t z = vals[a];

@@ -67,6 +67,10 @@ static int t_pcf_count(const adv_val *a) { return mcs_pcf_count(a[0].p, a[1].p);
 static int t_pcf_radius_at(const adv_val *a) { return mcs_pcf_radius_at(a[0].p, a[1].z, a[2].p); }
 static int t_pcf_mean(const adv_val *a) { return mcs_pcf_mean(a[0].p, a[1].z, a[2].p); }
 static int t_pcf_stderr(const adv_val *a) { return mcs_pcf_stderr(a[0].p, a[1].z, a[2].p); }
+static int t_pcf_read_all(const adv_val *a)
+{
+    return mcs_pcf_read_all(a[0].p, a[1].z, a[2].p, a[3].p, a[4].p);
+}
 static int t_pcf_power(const adv_val *a) { return mcs_pcf_power(a[0].p, a[1].d, a[2].p); }
 static int t_pcf_exact(const adv_val *a) { return mcs_pcf_exact(a[0].p, a[1].p, a[2].z, a[3].p); }
 
@@ -115,6 +119,10 @@ const adv_fn adv_fns_pcf[] = {
     FN(pcf_radius_at, EF_NONE, 1, 0, ACC_IN, BIN, OUT("out", E_D, O_NN, 0)),
     FN(pcf_mean, EF_NONE, 1, 0, ACC_IN, BIN, OUT("out", E_D, O_NN, 0)),
     FN(pcf_stderr, EF_NONE, 1, 0, ACC_IN, BIN, OUT("out", E_D, O_NN, 0)),
+    FN(pcf_read_all, EF_NONE, 1, 0, ACC_IN, SZ_MATCH("bins", 8, 8),
+       AOUT("radius", E_D, O_NN, LEN(L_SLOT, 1), F_NULLOK),
+       AOUT("mean", E_D, O_NN, LEN(L_SLOT, 1), F_NULLOK),
+       AOUT("stderr", E_D, O_NN, LEN(L_SLOT, 1), F_NULLOK)),
     FN(pcf_power, EF_NONE, 1, 0, ACC_IN, FREQ, OUT("out", E_D, O_VAL, 0)),
     FN(pcf_exact, EF_NONE, 1, 0, ACC_IN, OBJ_IN("pat", T_PAT2D, F_NULLOK), BIN,
        OUT("out", E_D, O_NN, 0)),
