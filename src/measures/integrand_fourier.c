@@ -102,15 +102,26 @@ mcs_status mcs_integrand_power(const mcs_integrand *f, long freq_x, long freq_y,
 
 /* ---- Prediction -------------------------------------------------------------- */
 
+/* A prediction's arguments and running sums, in one place: helpers of more
+ * than six arguments pass some on the stack, which gcc's -fstack-usage
+ * reports as a dynamic frame (make stack). */
+typedef struct {
+    const mcs_integrand *fs;
+    size_t m, k;
+    double *predicted, *tail;
+    double s, w, p_tail; /* sum |f^|^2 <P>, sum |f^|^2, the largest P on the outer shell */
+} prediction;
+
 /* The checks both predictions share, of everything but the accumulator. */
-static mcs_status check_family(const mcs_integrand *fs, size_t m, size_t dim, const void *ps,
-                               size_t k, const double *predicted, const double *tail)
+static mcs_status check_family(const prediction *pr, size_t dim, const void *ps)
 {
-    if (fs == NULL || ps == NULL || predicted == NULL || tail == NULL)
+    const mcs_integrand *fs = pr->fs;
+    const size_t m = pr->m;
+    if (fs == NULL || ps == NULL || pr->predicted == NULL || pr->tail == NULL)
         return MCS_ERR_NULL;
-    if (mcs_overlap_(predicted, sizeof *predicted, tail, sizeof *tail))
+    if (mcs_overlap_(pr->predicted, sizeof *pr->predicted, pr->tail, sizeof *pr->tail))
         return MCS_ERR_ALIAS;
-    if (m == 0u || k == 0u)
+    if (m == 0u || pr->k == 0u)
         return MCS_ERR_K_RANGE;
     for (size_t i = 0; i < m; ++i)
         if (!mcs_integ_valid_(&fs[i]))
@@ -122,77 +133,74 @@ static mcs_status check_family(const mcs_integrand *fs, size_t m, size_t dim, co
 }
 
 /* Sums over the integrands for one wave vector q (counted `mult` times: q
- * and -q): sum |f^(q)|^2 <P(q)> into *s and sum |f^(q)|^2 into *w. */
-static void add_wave(const mcs_integrand *fs, size_t m, long qx, long qy, double p, double mult,
-                     double *s, double *w)
+ * and -q): |f^(q)|^2 <P(q)> into pr->s and |f^(q)|^2 into pr->w. */
+static void add_wave(prediction *pr, long qx, long qy, double p, double mult)
 {
-    for (size_t i = 0; i < m; ++i) {
-        const double a = mult * mcs_integ_power_(&fs[i], qx, qy);
-        *s += a * p;
-        *w += a;
+    for (size_t i = 0; i < pr->m; ++i) {
+        const double a = mult * mcs_integ_power_(&pr->fs[i], qx, qy);
+        pr->s += a * p;
+        pr->w += a;
     }
 }
 
 /* The results from the sums: terms is how many wave vectors were summed. */
-static mcs_status finish(const mcs_integrand *fs, size_t m, size_t k, double s, double w,
-                         double p_tail, double terms, double *predicted, double *tail)
+static mcs_status finish(const prediction *pr, double terms)
 {
     double q = 0.0;
-    for (size_t i = 0; i < m; ++i) {
+    for (size_t i = 0; i < pr->m; ++i) {
         double i1, q1;
-        mcs_integ_moments_(&fs[i], &i1, &q1);
+        mcs_integ_moments_(&pr->fs[i], &i1, &q1);
         q += q1;
     }
-    const double left = q - w; /* Parseval: sum over |q|_inf > F of |f^|^2 */
+    const double left = q - pr->w; /* Parseval: sum over |q|_inf > F of |f^|^2 */
     const double rounding = (terms + 16.0) * DBL_EPSILON * q;
-    const double kd = (double)k, md = (double)m;
-    *predicted = s / (kd * md);
-    *tail = p_tail * ((left > 0.0 ? left : 0.0) + rounding) / (kd * md);
+    const double kd = (double)pr->k, md = (double)pr->m;
+    *pr->predicted = pr->s / (kd * md);
+    *pr->tail = pr->p_tail * ((left > 0.0 ? left : 0.0) + rounding) / (kd * md);
     return MCS_OK;
 }
 
 mcs_status mcs_integrand_predict(const mcs_integrand *fs, size_t m, const mcs_pointset2d *ps,
                                  size_t k, double *predicted, double *tail)
 {
-    mcs_status st = check_family(fs, m, 2u, ps, k, predicted, tail);
+    prediction pr = {fs, m, k, predicted, tail, 0.0, 0.0, 1.0};
+    mcs_status st = check_family(&pr, 2u, ps);
     double p = 0.0;
     if (st == MCS_OK)
         st = mcs_pointset2d_power(ps, 0, 0, &p);
     if (st != MCS_OK)
         return st;
     const long fmax = (long)ps->freq_max;
-    double s = 0.0, w = 0.0, p_tail = 1.0;
-    add_wave(fs, m, 0, 0, 0.0, 1.0, &s, &w); /* k = 0: in the Parseval sum, not the error */
+    add_wave(&pr, 0, 0, 0.0, 1.0); /* k = 0: in the Parseval sum, not the error */
     for (long qy = 0; qy <= fmax; ++qy)
         for (long qx = qy == 0 ? 1 : -fmax; qx <= fmax; ++qx) {
             if (mcs_pointset2d_power(ps, qx, qy, &p) != MCS_OK)
                 return MCS_ERR_INVARIANT;
-            if ((qx == fmax || qx == -fmax || qy == fmax) && p > p_tail)
-                p_tail = p;
-            add_wave(fs, m, qx, qy, p, 2.0, &s, &w);
+            if ((qx == fmax || qx == -fmax || qy == fmax) && p > pr.p_tail)
+                pr.p_tail = p;
+            add_wave(&pr, qx, qy, p, 2.0);
         }
-    const double terms = (double)(2 * fmax + 1) * (double)(2 * fmax + 1);
-    return finish(fs, m, k, s, w, p_tail, terms, predicted, tail);
+    return finish(&pr, (double)(2 * fmax + 1) * (double)(2 * fmax + 1));
 }
 
 mcs_status mcs_integrand_predict_1d(const mcs_integrand *fs, size_t m, const mcs_pointset *ps,
                                     size_t k, double *predicted, double *tail)
 {
-    mcs_status st = check_family(fs, m, 1u, ps, k, predicted, tail);
+    prediction pr = {fs, m, k, predicted, tail, 0.0, 0.0, 1.0};
+    mcs_status st = check_family(&pr, 1u, ps);
     double p = 0.0;
     if (st == MCS_OK)
         st = mcs_pointset_power(ps, 0, &p);
     if (st != MCS_OK)
         return st;
     const long fmax = (long)ps->freq_max;
-    double s = 0.0, w = 0.0, p_tail = 1.0;
-    add_wave(fs, m, 0, 0, 0.0, 1.0, &s, &w);
+    add_wave(&pr, 0, 0, 0.0, 1.0);
     for (long q = 1; q <= fmax; ++q) {
         if (mcs_pointset_power(ps, q, &p) != MCS_OK)
             return MCS_ERR_INVARIANT;
-        if (q == fmax && p > p_tail)
-            p_tail = p;
-        add_wave(fs, m, q, 0, p, 2.0, &s, &w);
+        if (q == fmax && p > pr.p_tail)
+            pr.p_tail = p;
+        add_wave(&pr, q, 0, p, 2.0);
     }
-    return finish(fs, m, k, s, w, p_tail, (double)(2 * fmax + 1), predicted, tail);
+    return finish(&pr, (double)(2 * fmax + 1));
 }
