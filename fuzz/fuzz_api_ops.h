@@ -263,10 +263,18 @@ static void op_sampler_pattern2d(void)
     mcs_sampler *smp = obj_or_null(SMP);
     mcs_pattern2d *p2 = obj_or_null(P2D);
     mcs_rng *r = obj_or_null(RNG);
-    const size_t k = len_arg() / 2u, a = size_any(), b = size_any();
-    const int kind = (int)(byte() % 9u) - 1;
+    size_t k = len_arg() / 2u;
+    const size_t a = size_any(), b = size_any();
+    const int kind = (int)(byte() % (MCS_SAMPLER_KIND_COUNT + 2u)) - 1;
     begin(which < 3 ? "sampler" : "pattern2d");
-    double *pts = out(dout[0], 2u * k, 8);
+    /* a sampler writes k dim doubles (dim up to MCS_SAMPLER_MAX_DIM): the
+     * output holds that many, k cut so they fit (the call then refuses a k
+     * that is not the sampler's) */
+    const size_t dim = which < 3 && smp != NULL && smp->dim >= 1u &&
+                               smp->dim <= MCS_SAMPLER_MAX_DIM ? smp->dim : 2u;
+    if (k * dim > MAXLEN)
+        k = MAXLEN / dim;
+    double *pts = out(dout[0], k * dim, 8);
     mcs_status st = MCS_OK;
     switch (which) {
     case 0: end(mcs_sampler_init(inout(SMP, smp), (mcs_sampler_kind)kind, a, byte() % 8u ? k : b)); return;
@@ -282,8 +290,8 @@ static void op_sampler_pattern2d(void)
         return;
     }
     }
-    for (size_t j = 0; st == MCS_OK && j < 2u * k; ++j)
-        if (!(pts[j] >= 0.0 && pts[j] < 1.0) && (which == 4 || j < k * smp->dim))
+    for (size_t j = 0; st == MCS_OK && j < k * dim; ++j)
+        if (!(pts[j] >= 0.0 && pts[j] < 1.0))
             finding(0, cur_fn, "coordinate %g outside [0, 1)", pts[j]);
 }
 
