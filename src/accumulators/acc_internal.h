@@ -322,6 +322,17 @@ static inline double mcs_moment_power_rounding_(const mcs_moment_sums_ *s, doubl
            nd;
 }
 
+/* What underflow adds to a moment power or variance whatever the sums'
+ * scale (as mcs_autocorr_power_underflow_): near the smallest doubles each
+ * operation errs by up to DBL_TRUE_MIN / 2 absolutely, and a read-out sums
+ * about N^2 products, scaled by 1/N (fuzz_load: sums of a few DBL_TRUE_MIN
+ * over 2^52 trials made every bound 0 and a variance of -4.9e-324 was
+ * refused); the read-outs allow 64 (N^2 + 8) DBL_TRUE_MIN, the loader 16. */
+static inline double mcs_moment_underflow_(size_t n, int load)
+{
+    return (load ? 16.0 : 64.0) * ((double)n * (double)n + 8.0) * DBL_TRUE_MIN;
+}
+
 /* Frequencies a power check forms at once: each value of the sums is read
  * once per this many (a record's values are decoded at every read). */
 #define MCS_POWER_FREQS_ 8u

@@ -66,8 +66,9 @@ int mcs_moment_powers_ok(const mcs_moment_sums_ *s)
         return 1;
     const double nd = (double)n, t = (double)s->count;
     double acc, var_r;
-    const double floor = -(4.0 * mcs_moment_power_rounding_(s, &acc, &var_r) + acc);
-    const double var_floor = -(4.0 * var_r + acc);
+    const double floor = -(4.0 * mcs_moment_power_rounding_(s, &acc, &var_r) + acc +
+                           mcs_moment_underflow_(n, 1));
+    const double var_floor = -(4.0 * var_r + acc + mcs_moment_underflow_(n, 1));
     for (size_t k0 = 0; k0 < n; k0 += MCS_POWER_FREQS_) {
         const size_t len = n - k0 < MCS_POWER_FREQS_ ? n - k0 : MCS_POWER_FREQS_;
         double second[MCS_POWER_FREQS_] = {0.0};

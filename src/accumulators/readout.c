@@ -2,6 +2,7 @@
  * alike (see readout.h). Every frame stays small (the library's `make stack`
  * limit is 1 KiB): transforms are taken one coefficient at a time. */
 #include "readout.h"
+#include "acc_internal.h"
 #include "core/internal.h"
 
 #include <float.h>
@@ -192,7 +193,7 @@ static double variance_rounding(const mcs_readout *view)
     if (view->shift != NULL) /* measured: 8 R_v + A, whatever the loader accepts at 4 R_v + A */
         return 8.0 * ((2.0 * nd + 64.0) * DBL_EPSILON * a + 4.0 * (nd + 32.0) * DBL_EPSILON * b * b) /
                    nd +
-               mcs_readout_accumulated(view, NULL, NULL) / nd;
+               mcs_readout_accumulated(view, NULL, NULL) / nd + mcs_moment_underflow_(n, 0);
     return (4.0 * ((double)n + 2.0) * DBL_EPSILON * (a + b * b) +
             mcs_readout_accumulated(view, NULL, NULL) + view->exact_rounding) /
            (double)n;
@@ -246,7 +247,7 @@ static double power_bound(const mcs_readout *view)
     const double r = ((2.0 * nd + 64.0) * DBL_EPSILON * sum +
                       4.0 * (nd + 32.0) * DBL_EPSILON * (d * d + s * s)) /
                      nd;
-    return 8.0 * r + mcs_readout_accumulated(view, NULL, NULL) / nd;
+    return 8.0 * r + mcs_readout_accumulated(view, NULL, NULL) / nd + mcs_moment_underflow_(n, 0);
 }
 
 /* ---- checked read-outs ---------------------------------------------------- */

@@ -197,7 +197,7 @@ mcs_status mcs_pointset2d_radial_all(const mcs_pointset2d *acc, size_t n_out, do
         if (st == MCS_OK && radial_stderr != NULL)
             st = mcs_pointset2d_radial_stderr(acc, r, &radial_stderr[r]);
         if (st == MCS_OK && anisotropy_db != NULL) {
-            double db = NAN;
+            double db = (double)NAN;
             const mcs_status sa = r == 0u ? MCS_ERR_DOMAIN : mcs_pointset2d_anisotropy(acc, r, &db);
             anisotropy_db[r] = sa == MCS_OK ? db : (double)NAN;
             st = sa == MCS_ERR_DOMAIN ? MCS_OK : sa;
