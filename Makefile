@@ -11,6 +11,12 @@
 # never instead of them: `make CPPFLAGS=-DMCS_MAX_N=256 lib` still finds
 # include/. Warnings are errors only with WERROR=1 (.ci/run sets it).
 
+# Builds run one job per core unless the command line says how many (-j N,
+# or -j1 for one): `make test` from a clean clone builds in parallel.
+ifeq ($(filter -j% j%,$(MAKEFLAGS)),)
+MAKEFLAGS += -j$(shell nproc 2>/dev/null || echo 2)
+endif
+
 CC      ?= cc
 AR      ?= ar
 OBJCOPY ?= objcopy
