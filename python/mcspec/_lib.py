@@ -287,6 +287,9 @@ def struct_size(name):
     return _SIZES[name]
 
 
+_SCRIBBLE = os.environ.get("MCSPEC_SCRIBBLE") == "1"
+
+
 class Buffer:
     """bytes of zeroed memory aligned to 64 bytes (numpy uint8), .addr its address."""
     __slots__ = ("array", "raw", "addr", "size")
@@ -300,6 +303,17 @@ class Buffer:
 
     def bytes(self):
         return self.array.tobytes()
+
+    def __del__(self):
+        # MCSPEC_SCRIBBLE=1 (python/tests/run.sh sets it) fills memory that
+        # is freed, so a call handed the address of a temporary object that
+        # Python has already freed sees a corrupted object and is refused
+        # every time, instead of passing while the freed memory is intact.
+        if _SCRIBBLE:
+            try:
+                self.raw.fill(0xA5)
+            except Exception:  # interpreter shutdown
+                pass
 
 
 def struct(name):

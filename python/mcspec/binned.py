@@ -264,14 +264,16 @@ class Autocorr(_Binned):
     @property
     def mean(self):
         re, im = np.empty(self.n), np.empty(self.n)
-        check(fn.autocorr_mean(self._obj.addr, self._plan().addr, self.n, re.ctypes.data,
+        plan = self._plan()  # held: a temporary's memory is freed before the call
+        check(fn.autocorr_mean(self._obj.addr, plan.addr, self.n, re.ctypes.data,
                                im.ctypes.data), "mcs_autocorr_mean")
         return re + 1j * im
 
     @property
     def power(self):
         p = np.empty(self.n)
-        check(fn.autocorr_power(self._obj.addr, self._plan().addr, self.n, p.ctypes.data),
+        plan = self._plan()
+        check(fn.autocorr_power(self._obj.addr, plan.addr, self.n, p.ctypes.data),
               "mcs_autocorr_power")
         return p
 

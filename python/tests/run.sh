@@ -20,7 +20,7 @@ skipped() {
 py=$(sh "$here/../find_python.sh" pytest) ||
     skipped "no python3 that imports numpy and pytest (tried \$PYTHON, python3 on PATH, /usr/bin/python3; Debian: apt-get install python3-numpy python3-pytest)"
 echo "== python/tests ($py, $lib)"
-out=$(MCSPEC_LIBRARY=$lib MCSPEC=$cli PYTHONPATH="$here/..${PYTHONPATH:+:$PYTHONPATH}" \
+out=$(MCSPEC_SCRIBBLE=1 MCSPEC_LIBRARY=$lib MCSPEC=$cli PYTHONPATH="$here/..${PYTHONPATH:+:$PYTHONPATH}" \
     PYTHONDONTWRITEBYTECODE=1 "$py" -m pytest -q -p no:cacheprovider "$here" 2>&1)
 rc=$?
 printf '%s\n' "$out"
