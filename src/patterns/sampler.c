@@ -240,9 +240,9 @@ mcs_status mcs_sampler_draw(const mcs_sampler *s, mcs_rng *rng, size_t k, double
     const size_t dim = s->dim;
     for (size_t a = 0; a < dim; ++a) {
         if (s->kind == MCS_SAMPLER_SOBOL) {
-            uint32_t seed = mcs_rng_next_(rng);
+            const uint64_t key = mcs_smp_draw_key_(rng);
             for (size_t j = 0; j < k; ++j)
-                points[dim * j + a] = owen_to_double(sobol_bits((uint32_t)j, a), seed);
+                points[dim * j + a] = owen_to_double(sobol_bits((uint32_t)j, a), key);
         } else if (s->kind == MCS_SAMPLER_KRONECKER) {
             /* A 64-bit fixed-point shift keeps j alpha + shift exact mod 1. */
             uint64_t shift = (uint64_t)mcs_rng_next_(rng) << 32;

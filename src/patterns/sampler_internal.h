@@ -9,6 +9,7 @@
 #include <stdint.h>
 #include "mcspec/sampler.h"
 #include "mcspec/rng.h"
+#include "random/rng_inline.h"
 
 /* 2^-32 and 2^-53: a 32-bit binary fraction and a 53-bit one to double. */
 #define MCS_SMP_TWO_M32 (1.0 / 4294967296.0)
@@ -36,39 +37,75 @@ static inline uint32_t mcs_smp_reverse_bits_(uint32_t x)
     return (x >> 16) | (x << 16);
 }
 
+/* A 64-bit integer mixer (the splitmix64 finalizer, Stafford's variant 13):
+ * a bijection whose every output bit depends on every input bit. */
+static inline uint64_t mcs_smp_mix64_(uint64_t z)
+{
+    z = (z ^ (z >> 30)) * UINT64_C(0xbf58476d1ce4e5b9);
+    z = (z ^ (z >> 27)) * UINT64_C(0x94d049bb133111eb);
+    return z ^ (z >> 31);
+}
+
+/* The scrambling key of a seed: a splitmix64 step, so that seeds with few
+ * differing bits (1, 2, 3; s and s ^ 2^31) give unrelated keys. */
+static inline uint64_t mcs_smp_owen_key_(uint64_t seed)
+{
+    return mcs_smp_mix64_(seed + UINT64_C(0x9e3779b97f4a7c15));
+}
+
+/* The key of one axis of a trial: a 64-bit seed from two PCG32 outputs.
+ * (One output was used before; but the first outputs after seeding PCG32
+ * with S and 2S + 1 coincide about one time in 64 -- 34 pairs among
+ * --seed 1..4096 -- which gave those trials the same first axis.) */
+static inline uint64_t mcs_smp_draw_key_(mcs_rng *rng)
+{
+    const uint64_t hi = mcs_rng_next_(rng);
+    return mcs_smp_owen_key_(hi << 32 | mcs_rng_next_(rng));
+}
+
+/* The hash of the node of the digit tree at depth `depth` (0..32) whose
+ * digits above are the top `depth` bits of x: the prefix below a sentinel
+ * bit, so that every (depth, prefix) is a distinct input. */
+static inline uint64_t mcs_smp_node_hash_(uint32_t x, unsigned depth, uint64_t key)
+{
+    uint64_t prefix = depth == 0u ? 0u : (uint64_t)x >> (32u - depth);
+    return mcs_smp_mix64_(key ^ (prefix | UINT64_C(1) << depth));
+}
+
+/* Nested uniform scrambling (Owen 1995) of a 32-bit binary fraction x, bit 31
+ * the 1/2 digit: digit l + 1 is flipped by a coin of its node (l, the top l
+ * digits of x), every node its own coin. The 63 nodes of the 6 levels below
+ * depth 6q (1 + 2 + ... + 32) take the 63 low bits of one hash of their
+ * common ancestor at depth 6q, the node (r, t) of that subtree (depth 6q + r,
+ * t the r digits below the ancestor) bit 2^r - 1 + t: 6 hashes for 32 digits.
+ * (The Laine-Karras hash this replaces gave 3 digits' 7 coins only 32 of
+ * their 128 joint values, and its top digits depended on few seed bits.) */
+static inline uint32_t mcs_smp_owen_scramble_key_(uint32_t x, uint64_t key)
+{
+    uint32_t flips = 0u;
+    for (unsigned top = 0u; top < 32u; top += 6u) {
+        const uint64_t h = mcs_smp_node_hash_(x, top, key);
+        const uint32_t below = x << top; /* the digits below the ancestor, on top */
+        for (unsigned r = 0u; r < 6u && top + r < 32u; ++r) {
+            const uint32_t t = r == 0u ? 0u : below >> (32u - r);
+            flips |= (uint32_t)(h >> ((1u << r) - 1u + t) & 1u) << (31u - top - r);
+        }
+    }
+    return x ^ flips;
+}
+
 static inline uint32_t mcs_smp_owen_scramble_(uint32_t x, uint32_t seed)
 {
-    /* Bit-reversed, the 1/2 digit is bit 0. Each step changes bit b only by
-     * bits below b: x ^= x * even (the product's bit b uses bits < b), adding
-     * a constant and multiplying by an odd number (carries move upwards). So
-     * reversed back, each digit is flipped by a function of the digits above
-     * it: nested scrambling. Constants: Vegdahl's improved Laine-Karras hash. */
-    x = mcs_smp_reverse_bits_(x);
-    x ^= x * 0x3d20adeau;
-    x += seed;
-    x *= (seed >> 16) | 1u;
-    x ^= x * 0x05526c56u;
-    x ^= x * 0x53a22864u;
-    return mcs_smp_reverse_bits_(x);
+    return mcs_smp_owen_scramble_key_(x, mcs_smp_owen_key_(seed));
 }
 
-/* A 32-bit integer mixer (Wellons' lowbias32): supplies the digits below
- * 2^-32 of a scrambled coordinate from its 32-bit prefix and the seed, and
- * the keys of the hashed digit permutations. */
-static inline uint32_t mcs_smp_mix32_(uint32_t x)
+/* The scrambled coordinate as a double: 32 scrambled digits, and below them
+ * 21 digits from the hash of the depth-32 node (x's whole prefix), which
+ * continues the nesting: uniform and independent for distinct prefixes. */
+static inline double mcs_smp_owen_to_double_(uint32_t bits, uint64_t key)
 {
-    x ^= x >> 16;
-    x *= 0x7feb352du;
-    x ^= x >> 15;
-    x *= 0x846ca68bu;
-    x ^= x >> 16;
-    return x;
-}
-
-static inline double mcs_smp_owen_to_double_(uint32_t bits, uint32_t seed)
-{
-    uint32_t scrambled = mcs_smp_owen_scramble_(bits, seed);
-    uint32_t low = mcs_smp_mix32_(scrambled ^ mcs_smp_mix32_(seed ^ 0x9e3779b9u)) >> 11;
+    uint32_t scrambled = mcs_smp_owen_scramble_key_(bits, key);
+    uint32_t low = (uint32_t)(mcs_smp_node_hash_(bits, 32u, key) >> 43);
     return ((double)scrambled * 2097152.0 + (double)low) * MCS_SMP_TWO_M53;
 }
 

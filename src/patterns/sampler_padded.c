@@ -10,10 +10,10 @@
 #include <stdint.h>
 
 /* One pair's randomisation, drawn in the order the pad kind's own 2D draw
- * uses (two seeds, two shifts, or two 64-bit shifts), then the permutation
+ * uses (two Owen keys, two shifts, or two 64-bit shifts), then the permutation
  * key. */
 typedef struct {
-    uint32_t seed[2];
+    uint64_t key[2]; /* the Owen keys drawn */
     double shift[2];
     uint64_t shift64[2];
     uint32_t perm;
@@ -22,11 +22,11 @@ typedef struct {
 static void draw_pair(uint32_t pad, mcs_rng *rng, pair_rand *r)
 {
     for (int c = 0; c < 2; ++c) {
-        r->seed[c] = 0u;
+        r->key[c] = 0u;
         r->shift[c] = 0.0;
         r->shift64[c] = 0u;
         if (pad == (uint32_t)MCS_SAMPLER_SOBOL) {
-            r->seed[c] = mcs_rng_next_(rng);
+            r->key[c] = mcs_smp_draw_key_(rng);
         } else if (pad == (uint32_t)MCS_SAMPLER_KRONECKER) {
             uint64_t hi = mcs_rng_next_(rng);
             r->shift64[c] = hi << 32 | mcs_rng_next_(rng);
@@ -44,7 +44,7 @@ static double pair_coordinate(uint32_t pad, uint64_t k, uint32_t idx, int c, con
     switch (pad) {
     case MCS_SAMPLER_SOBOL: {
         uint32_t bits = mcs_smp_sobol_bits_(idx, (size_t)c);
-        return r != NULL ? mcs_smp_owen_to_double_(bits, r->seed[c])
+        return r != NULL ? mcs_smp_owen_to_double_(bits, r->key[c])
                          : (double)bits * MCS_SMP_TWO_M32;
     }
     case MCS_SAMPLER_KRONECKER: {
