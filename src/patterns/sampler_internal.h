@@ -72,25 +72,31 @@ static inline uint64_t mcs_smp_node_hash_(uint32_t x, unsigned depth, uint64_t k
     return mcs_smp_mix64_(key ^ (prefix | UINT64_C(1) << depth));
 }
 
+/* The 6 coins of one block of levels (below: the digits under the block's
+ * root, on top), coin r (depth root + r) as bit 5 - r: the node (r, t) of the
+ * block, t the r digits below the root, reads bit 2^r - 1 + t of the root's
+ * hash h. */
+static inline uint32_t mcs_smp_owen_block_(uint64_t h, uint32_t below)
+{
+    return (uint32_t)(h & 1u) << 5 | (uint32_t)(h >> (1u + (below >> 31)) & 1u) << 4 |
+           (uint32_t)(h >> (3u + (below >> 30)) & 1u) << 3 |
+           (uint32_t)(h >> (7u + (below >> 29)) & 1u) << 2 |
+           (uint32_t)(h >> (15u + (below >> 28)) & 1u) << 1 |
+           (uint32_t)(h >> (31u + (below >> 27)) & 1u);
+}
+
 /* Nested uniform scrambling (Owen 1995) of a 32-bit binary fraction x, bit 31
  * the 1/2 digit: digit l + 1 is flipped by a coin of its node (l, the top l
- * digits of x), every node its own coin. The 63 nodes of the 6 levels below
- * depth 6q (1 + 2 + ... + 32) take the 63 low bits of one hash of their
- * common ancestor at depth 6q, the node (r, t) of that subtree (depth 6q + r,
- * t the r digits below the ancestor) bit 2^r - 1 + t: 6 hashes for 32 digits.
+ * digits of x), every node its own coin. The 63 nodes of the 6 levels from
+ * depth 6q (1 + 2 + ... + 32) take 63 bits of one hash of their common root
+ * at depth 6q: 6 hashes for 32 digits (the last block uses 2 levels).
  * (The Laine-Karras hash this replaces gave 3 digits' 7 coins only 32 of
  * their 128 joint values, and its top digits depended on few seed bits.) */
 static inline uint32_t mcs_smp_owen_scramble_key_(uint32_t x, uint64_t key)
 {
-    uint32_t flips = 0u;
-    for (unsigned top = 0u; top < 32u; top += 6u) {
-        const uint64_t h = mcs_smp_node_hash_(x, top, key);
-        const uint32_t below = x << top; /* the digits below the ancestor, on top */
-        for (unsigned r = 0u; r < 6u && top + r < 32u; ++r) {
-            const uint32_t t = r == 0u ? 0u : below >> (32u - r);
-            flips |= (uint32_t)(h >> ((1u << r) - 1u + t) & 1u) << (31u - top - r);
-        }
-    }
+    uint32_t flips = mcs_smp_owen_block_(mcs_smp_node_hash_(x, 30u, key), x << 30) >> 4;
+    for (unsigned top = 0u; top <= 24u; top += 6u)
+        flips |= mcs_smp_owen_block_(mcs_smp_node_hash_(x, top, key), x << top) << (26u - top);
     return x ^ flips;
 }
 

@@ -33,22 +33,24 @@ static unsigned digit_count(uint32_t b, uint64_t *bn)
 }
 
 /* The permutation of digit i (0 = the 1/b digit) of an axis of key `key`:
- * an affine map d -> (alpha d + beta) mod b, (alpha, beta) one of the
- * b (b - 1) maps with alpha != 0, from a hash of the node: per axis and digit
- * position (as pbrt-v4's DigitPermutation), and for Owen also the digits
- * above (prefix = j mod b^i, below 2^32). b is prime, so these maps send two
- * distinct digits to a uniform pair of distinct digits (the affine group is
- * sharply 2-transitive): each digit uniform, and the law of a pair of points
- * (what spectra and Owen's theory use) that of uniform random permutations.
- * h mod b (b - 1) is uniform to within b^2 / 2^64. (Kensler's hashed
- * permutation, used before, sent digits 0 and 1 of base 7 to a pair whose
- * chi-square over its 42 values was 170 standard units off uniform.) */
+ * an affine map d -> (alpha d + beta) mod b, 1 <= alpha < b, 0 <= beta < b,
+ * from a hash of the node: per axis and digit position (as pbrt-v4's
+ * DigitPermutation), and for Owen also the digits above (prefix = j mod b^i,
+ * below 2^32). b is prime, so a uniform affine map sends two distinct digits
+ * to a uniform pair of distinct digits (the affine group is sharply
+ * 2-transitive): each digit uniform, and the law of a pair of points (what
+ * spectra and Owen's theory use) that of uniform random permutations.
+ * alpha and beta come from the hash's two halves by a multiply-shift: uniform
+ * to within b / 2^32. (Kensler's hashed permutation, used before, sent the
+ * digits 0 and 1 of base 7 to a pair 170 standard units off uniform.) */
 static uint32_t permute_digit(uint32_t d, uint32_t b, uint64_t key, unsigned i, uint64_t prefix,
                               digit_mode mode)
 {
     const uint64_t node = (uint64_t)(i + 1u) << 40 | (mode == DIGITS_OWEN ? prefix : 0u);
-    const uint64_t c = mcs_smp_mix64_(key ^ node) % ((uint64_t)b * (b - 1u));
-    return (uint32_t)(((1u + c / b) * d + c % b) % b);
+    const uint64_t h = mcs_smp_mix64_(key ^ node);
+    const uint64_t alpha = 1u + ((h >> 32) * (b - 1u) >> 32);
+    const uint64_t beta = (h & 0xffffffffu) * b >> 32;
+    return (uint32_t)((alpha * d + beta) % b);
 }
 
 /* phi_b(j) with each of its n digits (the zeros beyond j's last digit too)

@@ -235,7 +235,7 @@ static void test_axes_of_one_seed_do_not_agree(void)
 static void test_user_seeds_one_high_bit_apart_give_unrelated_sets(void)
 {
     const mcs_sampler_kind kinds[2] = {MCS_SAMPLER_SOBOL, MCS_SAMPLER_SOBOL_ND};
-    const size_t dims[2] = {2u, MAXD}, k = 64u;
+    const size_t dims[2] = {2u, MAXD}, k = 16u;
     const uint64_t flips[2] = {UINT64_C(1) << 63, UINT64_C(1) << 32};
     for (int c = 0; c < 2; ++c)
         for (int f = 0; f < 2; ++f) {
@@ -265,78 +265,79 @@ static unsigned digit(double x, unsigned b, unsigned i)
     return (unsigned)(x * b);
 }
 
-/* Points j and j2 have different digits at position i below a shared
- * prefix (the same node of the digit tree): an ideal permutation sends
- * them to a uniform pair of distinct digits, b (b - 1) pairs equally often. */
-static void assert_pair_law(mcs_sampler_kind kind, size_t j, size_t j2, unsigned i,
-                            unsigned nseed, const char *what)
+#define NPAIR (4u * NSEED)
+static unsigned tally[5][121];
+
+/* Over user seeds 1..NPAIR, on each axis a (base b), the pair (digit i of
+ * point 0, digit i of point j2[a]) tallied in tally[a][u * b + v]. */
+static void tally_digit_pairs(mcs_sampler_kind kind, size_t k, const size_t *j2, unsigned i)
 {
-    mcs_sampler s = make(kind, 5u, j2 + 1u);
+    mcs_sampler s = make(kind, 5u, k);
+    memset(tally, 0, sizeof tally);
+    for (uint64_t seed = 1u; seed <= NPAIR; ++seed) {
+        draw_with_user_seed(&s, seed, k, pts);
+        for (size_t a = 0; a < 5u; ++a) {
+            const unsigned b = halton_bases[a];
+            tally[a][digit(pts[a], b, i) * b + digit(pts[5u * j2[a] + a], b, i)]++;
+        }
+    }
+}
+
+/* Two different digits below the same node of the digit tree: an ideal
+ * permutation sends them to a uniform pair of distinct digits, each of the
+ * b (b - 1) pairs equally often, never to equal digits. */
+static void assert_distinct_pair_law(mcs_sampler_kind kind, const char *what)
+{
     for (size_t a = 0; a < 5u; ++a) {
         const unsigned b = halton_bases[a];
-        memset(counts, 0, sizeof(unsigned) * b * b);
-        for (uint64_t seed = 1u; seed <= nseed; ++seed) {
-            draw_with_user_seed(&s, seed, j2 + 1u, pts);
-            counts[digit(pts[5u * j + a], b, i) * b + digit(pts[5u * j2 + a], b, i)]++;
-        }
         unsigned off[121], n = 0u;
         for (unsigned u = 0; u < b; ++u)
             for (unsigned v = 0; v < b; ++v) {
                 if (u == v)
-                    TEST_ASSERT_EQUAL_UINT_MESSAGE(0u, counts[u * b + v], "two digits merged");
+                    TEST_ASSERT_EQUAL_UINT_MESSAGE(0u, tally[a][u * b + v], "two digits merged");
                 else
-                    off[n++] = counts[u * b + v];
+                    off[n++] = tally[a][u * b + v];
             }
         char msg[120];
         snprintf(msg, sizeof msg, "%s: %s, base %u", mcs_sampler_kind_str(kind), what, b);
-        assert_uniform(off, n, nseed, msg);
+        assert_uniform(off, n, NPAIR, msg);
     }
 }
 
 static void test_halton_permutations_send_two_digits_to_a_uniform_pair(void)
 {
-    const mcs_sampler_kind kinds[2] = {MCS_SAMPLER_HALTON_PERMUTED, MCS_SAMPLER_HALTON_OWEN};
-    for (int c = 0; c < 2; ++c)
-        assert_pair_law(kinds[c], 0u, 1u, 0u, 4u * NSEED, "first digits of points 0, 1");
+    const size_t one[5] = {1u, 1u, 1u, 1u, 1u};
+    tally_digit_pairs(MCS_SAMPLER_HALTON_PERMUTED, 2u, one, 0u);
+    assert_distinct_pair_law(MCS_SAMPLER_HALTON_PERMUTED, "digit 0 of points 0, 1");
+    tally_digit_pairs(MCS_SAMPLER_HALTON_OWEN, 2u, one, 0u);
+    assert_distinct_pair_law(MCS_SAMPLER_HALTON_OWEN, "digit 0 of points 0, 1");
     /* Owen, one level down: on the axis of base b, points 0 and b share
      * digit 0 and differ in digit 1 (0 and 1), below the same node. */
-    for (size_t a = 0; a < 5u; ++a) {
-        const unsigned b = halton_bases[a];
-        mcs_sampler s = make(MCS_SAMPLER_HALTON_OWEN, 5u, b + 1u);
-        memset(counts, 0, sizeof(unsigned) * b * b);
-        for (uint64_t seed = 1u; seed <= 4u * NSEED; ++seed) {
-            draw_with_user_seed(&s, seed, b + 1u, pts);
-            TEST_ASSERT_EQUAL_UINT(digit(pts[a], b, 0u), digit(pts[5u * b + a], b, 0u));
-            counts[digit(pts[a], b, 1u) * b + digit(pts[5u * b + a], b, 1u)]++;
-        }
-        unsigned off[121], n = 0u;
-        for (unsigned u = 0; u < b; ++u)
-            for (unsigned v = 0; v < b; ++v)
-                if (u != v)
-                    off[n++] = counts[u * b + v];
-                else
-                    TEST_ASSERT_EQUAL_UINT(0u, counts[u * b + v]);
-        assert_uniform(off, n, 4.0 * NSEED, "halton-owen: digit 1 of points 0, b");
-    }
+    const size_t own_base[5] = {2u, 3u, 5u, 7u, 11u};
+    tally_digit_pairs(MCS_SAMPLER_HALTON_OWEN, 12u, own_base, 1u);
+    assert_distinct_pair_law(MCS_SAMPLER_HALTON_OWEN, "digit 1 of points 0, b");
 }
 
-/* Owen: points 0 and 1 differ in digit 0, so digit 1 of each is permuted at a
- * different node: independently, b^2 pairs equally often. Permuted (one
- * permutation per digit position): both have digit 1 = 0, so equal images. */
+/* Owen: points 0 and 1 differ in digit 0, so digit 1 (0 for both) is
+ * permuted at two different nodes: independently, b^2 pairs equally often.
+ * Permuted (one permutation per digit position): equal images, always. */
 static void test_halton_owen_permutes_each_node_independently(void)
 {
-    mcs_sampler so = make(MCS_SAMPLER_HALTON_OWEN, 5u, 2u);
-    mcs_sampler sp = make(MCS_SAMPLER_HALTON_PERMUTED, 5u, 2u);
+    const size_t one[5] = {1u, 1u, 1u, 1u, 1u};
+    tally_digit_pairs(MCS_SAMPLER_HALTON_OWEN, 2u, one, 1u);
     for (size_t a = 0; a < 5u; ++a) {
         const unsigned b = halton_bases[a];
-        memset(counts, 0, sizeof(unsigned) * b * b);
-        for (uint64_t seed = 1u; seed <= 4u * NSEED; ++seed) {
-            draw_with_user_seed(&so, seed, 2u, pts);
-            counts[digit(pts[a], b, 1u) * b + digit(pts[5u + a], b, 1u)]++;
-            draw_with_user_seed(&sp, seed, 2u, pts);
-            TEST_ASSERT_EQUAL_UINT(digit(pts[a], b, 1u), digit(pts[5u + a], b, 1u));
-        }
-        assert_uniform(counts, b * b, 4.0 * NSEED, "halton-owen: digit 1 of points 0, 1");
+        char msg[120];
+        snprintf(msg, sizeof msg, "halton-owen: digit 1 of points 0, 1, base %u", b);
+        assert_uniform(tally[a], b * b, NPAIR, msg);
+    }
+    tally_digit_pairs(MCS_SAMPLER_HALTON_PERMUTED, 2u, one, 1u);
+    for (size_t a = 0; a < 5u; ++a) {
+        const unsigned b = halton_bases[a];
+        unsigned same = 0u;
+        for (unsigned u = 0; u < b; ++u)
+            same += tally[a][u * b + u];
+        TEST_ASSERT_EQUAL_UINT(NPAIR, same);
     }
 }
 
