@@ -14,12 +14,12 @@
  * (point j is the xor of the direction numbers of j's set bits, as in pbrt
  * and Burley), not Gray-code order: the first 2^m points are the same set. A Cranley-Patterson rotation adds
  * one uniform shift per axis, modulo 1. Owen scrambling (nested uniform
- * scrambling) flips each binary digit of a coordinate by a random function
- * of the digits above it; here the random functions are the hash of
- * Laine-Karras / Burley ("Practical hash-based Owen scrambling", JCGT 2020)
- * with N. Vegdahl's constants, one 32-bit seed per axis per trial, and the
- * digits below 2^-32 come from a second hash of the scrambled prefix and the
- * seed (what scrambling to full double precision would give).
+ * scrambling) flips each binary digit of a coordinate by an independent
+ * fair coin per node of the digit tree (the digit's place and the digits
+ * above it); here each coin is a bit of a 64-bit hash of the node and a key
+ * mixed from a 64-bit seed per axis per trial (two rng outputs), and the
+ * digits below 2^-32 come from the hash of the whole 32-digit prefix (what
+ * scrambling to full double precision would give).
  *
  * Any dimension, 1..MCS_SAMPLER_MAX_DIM (docs/samplers-nd.md has the
  * definitions, data sources and references):
@@ -29,7 +29,7 @@
  *                             new-joe-kuo-6.21201 direction       one seed per axis (the same
  *                             numbers                             draws as sobol-owen: its
  *                                                                 dims 1 and 2 bit for bit)
- *   halton-permuted  1..64    phi_b(j), b the (a+1)-th prime,     a random permutation of the
+ *   halton-permuted  1..64    phi_b(j), b the (a+1)-th prime,     a random (affine) map of the
  *                             every digit to double precision     digits per base and digit
  *                                                                 position (pbrt-v4's
  *                                                                 DigitPermutation), one seed
@@ -46,9 +46,12 @@
  *                             (an odd last axis: the first        permutation of [0, K)
  *                             coordinate of one more pair)        (as pbrt pads)
  *
- * The random permutations are Kensler's hashed permutations
- * (mcs_pattern2d_permute) keyed by hashes of the seed: random functions of a
- * 32-bit seed, not uniform over all b! permutations.
+ * The Halton digit permutations are affine maps d -> (alpha d + beta) mod b,
+ * alpha != 0, uniform over the b (b - 1) of them from a hash of the node:
+ * each digit uniform and every pair of distinct digits sent to a uniform
+ * pair of distinct digits (the pair law of uniform permutations; not
+ * uniform over all b! permutations). The padded point orders are Kensler's
+ * hashed permutations (mcs_pattern2d_permute).
  *
  * Points are written interleaved: points[dim * j + d] is coordinate d of
  * point j, every coordinate in [0, 1). K is at most 2^32 (32-bit indices).
@@ -131,7 +134,8 @@ mcs_status mcs_sampler_init_lattice(mcs_sampler *s, size_t dim, size_t k, uint32
 uint32_t mcs_sampler_lattice_generator(size_t k, size_t dim);
 
 /* One randomised trial: points[k * dim] written. k must equal s->k.
- * Draws dim values from rng per trial (a shift, or a scrambling seed).
+ * Draws from rng per axis per trial a shift or a 64-bit scrambling seed, two
+ * outputs each (a padded sampler one more per pair, for its point order).
  * MCS_ERR_NULL, MCS_ERR_UNINIT (s not from mcs_sampler_init, or rng never
  * seeded), MCS_ERR_MISMATCH (k != s->k).
  * On error nothing is written and rng is not advanced. */
@@ -148,9 +152,11 @@ mcs_status mcs_sampler_base_points(const mcs_sampler *s, size_t k, double *point
 
 /* Base-2 nested uniform (Owen) scrambling of a 32-bit binary fraction x (bit
  * 31 is the 1/2 digit) under seed: bit b of the result is bit b of x flipped
- * by a function of seed and the bits of x above b. So for every m, the top m
- * bits of the result depend only on the top m bits of x, and distinct top-m
- * prefixes stay distinct. */
+ * by a coin of the node (b, the bits of x above b): a bit of a 64-bit hash
+ * of the node and of a key mixed from seed, so the coins of all nodes are
+ * independent fair coins as far as tests over seeds tell. So for every m, the
+ * top m bits of the result depend only on the top m bits of x, and distinct
+ * top-m prefixes stay distinct. */
 uint32_t mcs_sampler_owen_scramble(uint32_t x, uint32_t seed);
 
 /* 1 if kind's randomisation is a rotation or shift mod 1 (van der Corput,
