@@ -3,6 +3,7 @@
  * with nested uniform (Owen) scrambling in base b, and Korobov's rank-1
  * lattice with a random shift, whose generator is picked here. */
 #include "sampler_internal.h"
+#include "mcspec/pattern2d.h"
 #include "random/rng_inline.h"
 
 #include <stddef.h>
@@ -32,25 +33,63 @@ static unsigned digit_count(uint32_t b, uint64_t *bn)
     return n;
 }
 
-/* The permutation of digit i (0 = the 1/b digit) of an axis of key `key`:
- * an affine map d -> (alpha d + beta) mod b, 1 <= alpha < b, 0 <= beta < b,
- * from a hash of the node: per axis and digit position (as pbrt-v4's
+/* Image of d under a uniform random permutation of [0, b), b <= 13: Fisher
+ * and Yates' shuffle driven by the mixed-radix digits of r (uniform to within
+ * b! / 2^64 < 2^-31). Called with constant b (fisher_yates_small), so that
+ * the loop unrolls and its divisions become multiplications. */
+static inline uint32_t fisher_yates(uint32_t d, uint64_t r, uint32_t b)
+{
+    unsigned char p[13];
+    for (uint32_t e = 0; e < b; ++e)
+        p[e] = (unsigned char)e;
+    for (uint32_t i = b - 1u; i > 0u; --i) {
+        const uint32_t j = (uint32_t)(r % (i + 1u));
+        r /= i + 1u;
+        const unsigned char t = p[i];
+        p[i] = p[j];
+        p[j] = t;
+    }
+    return p[d];
+}
+
+static uint32_t fisher_yates_small(uint32_t d, uint64_t r, uint32_t b)
+{
+    switch (b) {
+    case 2u: return d ^ (uint32_t)(r & 1u);
+    case 3u: return fisher_yates(d, r, 3u);
+    case 5u: return fisher_yates(d, r, 5u);
+    case 7u: return fisher_yates(d, r, 7u);
+    case 11u: return fisher_yates(d, r, 11u);
+    default: return fisher_yates(d, r, 13u);
+    }
+}
+
+/* The permutation of digit i (0 = the 1/b digit) of an axis of key `key`,
+ * from a hash h of the node: per axis and digit position (as pbrt-v4's
  * DigitPermutation), and for Owen also the digits above (prefix = j mod b^i,
- * below 2^32). b is prime, so a uniform affine map sends two distinct digits
- * to a uniform pair of distinct digits (the affine group is sharply
- * 2-transitive): each digit uniform, and the law of a pair of points (what
- * spectra and Owen's theory use) that of uniform random permutations.
- * alpha and beta come from the hash's two halves by a multiply-shift: uniform
- * to within b / 2^32. (Kensler's hashed permutation, used before, sent the
- * digits 0 and 1 of base 7 to a pair 170 standard units off uniform.) */
+ * below 2^32).
+ * Bases up to 13: a uniform random permutation (Fisher-Yates from h).
+ * Larger bases: a uniform affine map d -> (alpha d + beta) mod b,
+ * 1 <= alpha < b (from h's halves by multiply-shift: uniform to within
+ * b / 2^32), after Kensler's hashed permutation sigma. b is prime, so the
+ * affine maps send any two distinct digits sigma(d), sigma(d') to a uniform
+ * pair of distinct digits (the affine group is sharply 2-transitive): each
+ * digit uniform, and the law of a pair of points (what spectra and Owen's
+ * theory use) exactly that of uniform random permutations; sigma breaks up
+ * the arithmetic progressions an affine map alone would leave, but triples
+ * are only close to uniform. (Kensler's permutation alone, used before, sent
+ * digits 0 and 1 of base 7 to a pair 32 standard units off uniform.) */
 static uint32_t permute_digit(uint32_t d, uint32_t b, uint64_t key, unsigned i, uint64_t prefix,
                               digit_mode mode)
 {
     const uint64_t node = (uint64_t)(i + 1u) << 40 | (mode == DIGITS_OWEN ? prefix : 0u);
     const uint64_t h = mcs_smp_mix64_(key ^ node);
+    if (b <= 13u)
+        return fisher_yates_small(d, h, b);
     const uint64_t alpha = 1u + ((h >> 32) * (b - 1u) >> 32);
     const uint64_t beta = (h & 0xffffffffu) * b >> 32;
-    return (uint32_t)((alpha * d + beta) % b);
+    const uint32_t sigma = mcs_pattern2d_permute(d, b, (uint32_t)(mcs_smp_mix64_(h) >> 32));
+    return (uint32_t)((alpha * sigma + beta) % b);
 }
 
 /* phi_b(j) with each of its n digits (the zeros beyond j's last digit too)

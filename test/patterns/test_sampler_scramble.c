@@ -341,6 +341,50 @@ static void test_halton_owen_permutes_each_node_independently(void)
     }
 }
 
+/* Three points with distinct digits 0, 1, 2 at place 0 (points 0, 1, 2):
+ * under uniform permutations their images are a uniform triple of distinct
+ * digits, b (b - 1) (b - 2) triples equally often. Affine maps alone reach
+ * only b (b - 1) of them (an arithmetic progression), which a spectrum does
+ * not see but a set's largest periodogram peaks do. Bases 5 and 7 (60 and
+ * 210 triples), both kinds; bound 5 standard units (the hashed permutations
+ * are random functions of the key, not uniform permutations: this measures
+ * how close). */
+static void test_halton_permutations_send_three_digits_to_a_uniform_triple(void)
+{
+    const mcs_sampler_kind kinds[2] = {MCS_SAMPLER_HALTON_PERMUTED, MCS_SAMPLER_HALTON_OWEN};
+    static unsigned trip[2][343];
+    for (int c = 0; c < 2; ++c) {
+        mcs_sampler s = make(kinds[c], 4u, 3u);
+        memset(trip, 0, sizeof trip);
+        for (uint64_t seed = 1u; seed <= NPAIR; ++seed) {
+            draw_with_user_seed(&s, seed, 3u, pts);
+            for (size_t a = 2; a < 4u; ++a) {
+                const unsigned b = halton_bases[a];
+                const unsigned u = digit(pts[a], b, 0u), v = digit(pts[4u + a], b, 0u),
+                               w = digit(pts[8u + a], b, 0u);
+                trip[a - 2u][(u * b + v) * b + w]++;
+            }
+        }
+        for (size_t a = 2; a < 4u; ++a) {
+            const unsigned b = halton_bases[a];
+            unsigned cells[210], n = 0u;
+            for (unsigned u = 0; u < b; ++u)
+                for (unsigned v = 0; v < b; ++v)
+                    for (unsigned w = 0; w < b; ++w) {
+                        const unsigned got = trip[a - 2u][(u * b + v) * b + w];
+                        if (u != v && v != w && u != w)
+                            cells[n++] = got;
+                        else
+                            TEST_ASSERT_EQUAL_UINT(0u, got);
+                    }
+            char msg[120];
+            snprintf(msg, sizeof msg, "%s: digit 0 of points 0, 1, 2, base %u",
+                     mcs_sampler_kind_str(kinds[c]), b);
+            assert_uniform(cells, n, NPAIR, msg);
+        }
+    }
+}
+
 /* The first point over user seeds: uniform over the b^L cells of every
  * level L with b^L <= 4096, on every axis, for both kinds. */
 static void test_first_halton_point_over_user_seeds_is_uniform_at_every_level(void)
@@ -378,6 +422,7 @@ int main(void)
     RUN_TEST(test_axes_of_one_seed_do_not_agree);
     RUN_TEST(test_user_seeds_one_high_bit_apart_give_unrelated_sets);
     RUN_TEST(test_halton_permutations_send_two_digits_to_a_uniform_pair);
+    RUN_TEST(test_halton_permutations_send_three_digits_to_a_uniform_triple);
     RUN_TEST(test_halton_owen_permutes_each_node_independently);
     RUN_TEST(test_first_halton_point_over_user_seeds_is_uniform_at_every_level);
     return UNITY_END();
