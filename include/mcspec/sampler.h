@@ -29,7 +29,7 @@
  *                             new-joe-kuo-6.21201 direction       one seed per axis (the same
  *                             numbers                             draws as sobol-owen: its
  *                                                                 dims 1 and 2 bit for bit)
- *   halton-permuted  1..64    phi_b(j), b the (a+1)-th prime,     a random (affine) map of the
+ *   halton-permuted  1..64    phi_b(j), b the (a+1)-th prime,     a random permutation of the
  *                             every digit to double precision     digits per base and digit
  *                                                                 position (pbrt-v4's
  *                                                                 DigitPermutation), one seed
@@ -46,11 +46,11 @@
  *                             (an odd last axis: the first        permutation of [0, K)
  *                             coordinate of one more pair)        (as pbrt pads)
  *
- * The Halton digit permutations are affine maps d -> (alpha d + beta) mod b,
- * alpha != 0, uniform over the b (b - 1) of them from a hash of the node:
- * each digit uniform and every pair of distinct digits sent to a uniform
- * pair of distinct digits (the pair law of uniform permutations; not
- * uniform over all b! permutations). The padded point orders are Kensler's
+ * The Halton digit permutations come from a hash of the node: uniform random
+ * permutations (Fisher-Yates) in bases up to 13; above, a uniform affine map
+ * after Kensler's hashed permutation, which sends every pair of distinct
+ * digits to a uniform pair of distinct digits (the pair law of uniform
+ * permutations, all a spectrum uses). The padded point orders are Kensler's
  * hashed permutations (mcs_pattern2d_permute).
  *
  * Points are written interleaved: points[dim * j + d] is coordinate d of
