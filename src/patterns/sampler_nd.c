@@ -40,7 +40,7 @@ static unsigned digit_count(uint32_t b, uint64_t *bn)
 static inline uint32_t fisher_yates(uint32_t d, uint64_t r, uint32_t b)
 {
     unsigned char p[13];
-    for (uint32_t e = 0; e < b; ++e)
+    for (uint32_t e = 0; e < 13u; ++e)
         p[e] = (unsigned char)e;
     for (uint32_t i = b - 1u; i > 0u; --i) {
         const uint32_t j = (uint32_t)(r % (i + 1u));
