@@ -98,6 +98,22 @@ mcs_status mcs_spacing_distances(size_t k, size_t dim, const double *points, voi
 mcs_status mcs_spacing_distances_f(size_t k, size_t dim, const float *points, void *work,
                                    size_t work_bytes, double *out);
 
+/* The exact expectation of a statistic (divided by d_max, as
+ * mcs_spacing_distances gives it) for k independent uniform points on the
+ * torus in dim dimensions, where theory gives it in closed form:
+ *   avg_min_distance, 1D: 1/2 (E = 1/(2k), d_max = 1/k);
+ *   avg_min_distance, 2D: E = int_0^{sqrt(2)/2} (1 - A(r))^(k-1) dr, A(r) the
+ *     area of the toroidal disk (pi r^2 up to 1/2, less four segments
+ *     beyond), = Gamma(k) / (2 Gamma(k + 1/2)) plus two integrals below
+ *     (1 - pi/4)^(k-1) / 4 by quadrature (spacing_exact.c), to a few 1e-15
+ *     relative; over d_max, it tends to sqrt(sqrt(3) / 8) = 0.4653 as k grows;
+ *   min_distance, 1D: 1/k (E = 1/k^2, the least of k Dirichlet gaps).
+ * MCS_ERR_NULL, MCS_ERR_KIND (not a statistic), MCS_ERR_DOMAIN (dim not in
+ * 1..MCS_SPACING_MAX_DIM, or a pair not listed: no closed form),
+ * MCS_ERR_K_RANGE (k < 2). *out untouched on error. */
+mcs_status mcs_spacing_exact_random(mcs_spacing_statistic statistic, size_t dim, size_t k,
+                                    double *out);
+
 /* ---- Accumulator over sets ----------------------------------------------------
  * A Welford accumulator (welford.h) per statistic of the per-set values, so
  * the mean over sets, its standard error and the merge come from
