@@ -38,8 +38,9 @@ static const char help[] =
     "root = sqrt(value), on utk's scale (utk prints one set's D, the root of\n"
     "its D^2; with one set the two agree), and exact, the exact E[D^2] of the\n"
     "sets' own kind where it is known (KIND random: exact_random; jittered in\n"
-    "2D, one uniform point per cell of its m x n grid, and stratified in 1D:\n"
-    "the jittered closed form; empty otherwise and for files). Rows:\n"
+    "2D, one uniform point per cell of its m x n grid, stratified in 1D, and\n"
+    "sobol-owen and halton-owen in 1D with K a power of 2, which are stratified\n"
+    "sets: the jittered closed form; empty otherwise and for files). Rows:\n"
     "  l2_star         Warnock's L2 star discrepancy (utk L2Discrepancy)\n"
     "  l2_centered     Hickernell's centred L2 (utk CenteredL2Discrepancy)\n"
     "  l2_wraparound   Hickernell's wrap-around L2 (not in utk)\n"
@@ -219,7 +220,10 @@ static void report(const disc_opts *o, const mcs_discrepancy *acc,
 }
 
 /* The exact E[D^2] of KIND's sets where the library has it: random (any
- * dimension), 2D jittered over its strata, 1D stratified (n = K strata). */
+ * dimension), 2D jittered over its strata, 1D stratified (n = K strata),
+ * and the 1D Owen-scrambled base-2 kinds at K = 2^m: a scrambled (0,m,1)-net
+ * has the pair laws of the stratified pattern (docs/owen.md, "The 1D
+ * identity"), and D^2 depends on the points through pairs only. */
 static void kind_exact(const cli_sample_source *src, disc_exact *ex)
 {
     const char *name = src->kind->name;
@@ -232,7 +236,9 @@ static void kind_exact(const cli_sample_source *src, disc_exact *ex)
         else if (strcmp(name, "jittered") == 0)
             st = mcs_discrepancy_l2_exact_jittered2d(m, src->pattern2d.strata_x,
                                                      src->pattern2d.strata_y, &v);
-        else if (strcmp(name, "stratified") == 0)
+        else if (strcmp(name, "stratified") == 0 ||
+                 ((strcmp(name, "sobol-owen") == 0 || strcmp(name, "halton-owen") == 0) &&
+                  src->dim == 1u && (src->k & (src->k - 1u)) == 0u))
             st = mcs_discrepancy_l2_exact_jittered(m, src->k, 1u, &v);
         ex->exact[i] = st == MCS_OK ? v : (double)NAN;
     }

@@ -30,7 +30,8 @@
 #   of mcspec sample runs in a dimension it has; the sets are those of
 #   mcspec sample (the same CSV as its output read back); the exact column
 #   is exact_random for random and within 5 standard errors of the mean for
-#   random (2D, 5D), jittered (2D, 8 x 4 strata) and stratified (1D), and
+#   random (2D, 5D), jittered (2D, 8 x 4 strata), stratified (1D) and
+#   sobol-owen (1D, K = 32; none at K = 24), and
 #   for stats of random sets the average minimum distance (1D, 2D) and the
 #   1D minimum distance.
 # Ends with a Unity-style summary ("N Tests F Failures 0 Ignored", then OK or
@@ -285,6 +286,8 @@ rows=7 random=1 nexact=6 disc_z "discrepancy random 2D" random --dim 2 --k 64 --
 rows=6 random=1 nexact=6 disc_z "discrepancy random 5D" random --dim 5 --k 32 --sets 400 --seed 12
 rows=7 random=0 nexact=6 disc_z "discrepancy jittered 8x4" jittered --dim 2 --k 32 --sets 400 --seed 13
 rows=6 random=0 nexact=6 disc_z "discrepancy stratified 1D" stratified --dim 1 --k 16 --sets 400 --seed 14
+rows=6 random=0 nexact=6 disc_z "discrepancy sobol-owen 1D, K = 32" sobol-owen --dim 1 --k 32 --sets 2000 --seed 15
+rows=6 random=0 nexact=0 disc_z "discrepancy sobol-owen 1D, K = 24 (no exact)" sobol-owen --dim 1 --k 24 --sets 10
 rows=7 random=0 nexact=0 disc_z "discrepancy n-rooks (no exact)" n-rooks --dim 2 --k 16 --sets 10
 if succeeds "discrepancy jittered table" "$MCSPEC" discrepancy jittered --dim 2 --k 32 --sets 10 &&
     grep -q '^mcspec discrepancy: jittered 8 x 4 strata (seed 1), 10 point sets in 2D, K = 32' "$tmp/out" &&
