@@ -134,17 +134,18 @@ static int parse(int argc, char **argv, stats_opts *o)
     int rc = cli_parse_one(CMD, help, NULL, opts, CLI_COUNT(opts), argc, argv, &o->path);
     if (rc != CLI_PARSED)
         return rc;
-    o->kind_mode = opts[4].given;
+    const size_t nopts = CLI_COUNT(opts);
+    o->kind_mode = cli_opt_given(opts, nopts, "k");
     if (o->kind_mode) {
         if (o->path == NULL || strcmp(o->path, "-") == 0)
             return cli_fail(CMD, "--k draws sets of a KIND: give KIND (see mcspec sample --help)");
-        if (!opts[0].given)
+        if (!cli_opt_given(opts, nopts, "dim"))
             return cli_fail(CMD, "give --dim D with KIND %s", o->path);
-        if (opts[2].given)
+        if (cli_opt_given(opts, nopts, "wrap"))
             return cli_fail(CMD, "--wrap goes with a point file, not KIND --k K");
         return 0;
     }
-    if (opts[5].given || opts[6].given)
+    if (cli_opt_given(opts, nopts, "sets") || cli_opt_given(opts, nopts, "seed"))
         return cli_fail(CMD, "--sets and --seed go with KIND --k K, not a point file");
     if (o->path != NULL && cli_kind_known(o->path) && access(o->path, F_OK) != 0)
         return cli_fail(CMD, "KIND %s draws sets with --dim D --k K: give --k K", o->path);

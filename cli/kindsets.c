@@ -5,6 +5,14 @@
 #include <stdlib.h>
 #include <string.h>
 
+int cli_opt_given(const cli_opt *opts, size_t nopts, const char *name)
+{
+    for (size_t i = 0; i < nopts; ++i)
+        if (strcmp(opts[i].name, name) == 0)
+            return opts[i].given;
+    return 0;
+}
+
 int cli_kind_known(const char *name)
 {
     char names[1024];

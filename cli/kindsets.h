@@ -8,9 +8,14 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "cli.h"
 #include "input.h"
 #include "progress.h"
 #include "sample.h"
+
+/* Whether the option --name of opts[nopts] was given (by name, so that
+ * options added to a table do not move the checks). */
+int cli_opt_given(const cli_opt *opts, size_t nopts, const char *name);
 
 /* Whether name is one of the kinds of mcspec sample. */
 int cli_kind_known(const char *name);
