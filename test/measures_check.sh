@@ -32,8 +32,8 @@
 #   is exact_random for random and within 5 standard errors of the mean for
 #   random (2D, 5D), jittered (2D, 8 x 4 strata), stratified (1D) and
 #   sobol-owen (1D, K = 32; none at K = 24), and
-#   for stats of random sets the average minimum distance (1D, 2D) and the
-#   1D minimum distance.
+#   for stats of random sets the average minimum distance (1D, 2D; 3D from
+#   K = 52, none at 51) and the 1D minimum distance.
 # Ends with a Unity-style summary ("N Tests F Failures 0 Ignored", then OK or
 # FAIL) so test/run_tests.sh counts it; exit status non-zero on failure.
 
@@ -255,6 +255,7 @@ done
 if [ -n "$kinds" ] && [ -z "$fails" ]; then ok; else bad "kinds:${fails:- no kinds listed}"; fi
 
 # the sets are mcspec sample's: its output read back gives the same columns
+# shellcheck disable=SC2016 # $1 and $2 are the inner shell's
 if succeeds "sample | discrepancy" sh -c '"$1" sample halton-owen --dim 3 --k 40 --sets 20 --seed 5 >"$2"' \
     sh "$MCSPEC" "$tmp/sampled" &&
     succeeds "discrepancy of the file" "$MCSPEC" discrepancy --csv "$tmp/sampled" &&
@@ -267,9 +268,11 @@ if succeeds "stats KIND twice" "$MCSPEC" stats random --dim 2 --k 30 --sets 10 -
     cmp -s "$tmp/out" "$tmp/s1"; then ok; else bad "stats KIND: not the same bytes twice"; fi
 
 # z = (value - exact) / stderr within 5 (CSV columns: 2 value, 3 stderr, 4 exact_random, 6 exact)
+# disc_z LABEL ROWS RANDOM NEXACT ARGS...: RANDOM 1 when exact must be exact_random
+# (else below it), NEXACT rows with an exact value.
 disc_z() {
-    label=$1
-    shift
+    label=$1 rows=$2 random=$3 nexact=$4
+    shift 4
     if succeeds "$label" "$MCSPEC" discrepancy "$@" --csv; then
         csv_shape "$label" "$tmp/out" 'measure,value,stderr,exact_random,root,exact' "$rows" 6
         line=$(awk -F, 'NR > 1 && $6 != "" { printf "%s %.2f  ", $1, ($2 - $6) / $3 }' "$tmp/out")
@@ -282,24 +285,25 @@ disc_z() {
         if [ -z "$problems" ]; then ok; else bad "$label: $problems"; fi
     fi
 }
-rows=7 random=1 nexact=6 disc_z "discrepancy random 2D" random --dim 2 --k 64 --sets 400 --seed 11
-rows=6 random=1 nexact=6 disc_z "discrepancy random 5D" random --dim 5 --k 32 --sets 400 --seed 12
-rows=7 random=0 nexact=6 disc_z "discrepancy jittered 8x4" jittered --dim 2 --k 32 --sets 400 --seed 13
-rows=6 random=0 nexact=6 disc_z "discrepancy stratified 1D" stratified --dim 1 --k 16 --sets 400 --seed 14
-rows=6 random=0 nexact=6 disc_z "discrepancy sobol-owen 1D, K = 32" sobol-owen --dim 1 --k 32 --sets 2000 --seed 15
-rows=6 random=0 nexact=0 disc_z "discrepancy sobol-owen 1D, K = 24 (no exact)" sobol-owen --dim 1 --k 24 --sets 10
-rows=7 random=0 nexact=0 disc_z "discrepancy n-rooks (no exact)" n-rooks --dim 2 --k 16 --sets 10
+disc_z "discrepancy random 2D" 7 1 6 random --dim 2 --k 64 --sets 400 --seed 11
+disc_z "discrepancy random 5D" 6 1 6 random --dim 5 --k 32 --sets 400 --seed 12
+disc_z "discrepancy jittered 8x4" 7 0 6 jittered --dim 2 --k 32 --sets 400 --seed 13
+disc_z "discrepancy stratified 1D" 6 0 6 stratified --dim 1 --k 16 --sets 400 --seed 14
+disc_z "discrepancy sobol-owen 1D, K = 32" 6 0 6 sobol-owen --dim 1 --k 32 --sets 2000 --seed 15
+disc_z "discrepancy sobol-owen 1D, K = 24 (no exact)" 6 0 0 sobol-owen --dim 1 --k 24 --sets 10
+disc_z "discrepancy n-rooks (no exact)" 7 0 0 n-rooks --dim 2 --k 16 --sets 10
 if succeeds "discrepancy jittered table" "$MCSPEC" discrepancy jittered --dim 2 --k 32 --sets 10 &&
     grep -q '^mcspec discrepancy: jittered 8 x 4 strata (seed 1), 10 point sets in 2D, K = 32' "$tmp/out" &&
     grep -Eq '^measure +value +stderr +exact_random +root +exact +z$' "$tmp/out"
 then ok; else bad "discrepancy jittered table: no source line or header"; fi
 
-# stats: want = "statistic ..." rows with an exact value; z within 5
+# stats_z LABEL ROWS WANT ARGS...: WANT = " statistic ..." the rows with an
+# exact value; z within 5.
 stats_z() {
-    label=$1 want=$2
-    shift 2
+    label=$1 rows=$2 want=$3
+    shift 3
     if succeeds "$label" "$MCSPEC" stats "$@" --csv; then
-        csv_shape "$label" "$tmp/out" 'statistic,value,stderr,exact' 6 4
+        csv_shape "$label" "$tmp/out" 'statistic,value,stderr,exact' "$rows" 4
         line=$(awk -F, 'NR > 1 && $4 != "" { printf "%s %.2f  ", $1, ($2 - $4) / $3 }' "$tmp/out")
         echo "   $label: z $line"
         problems=$(awk -F, -v want="$want" '
@@ -308,10 +312,12 @@ stats_z() {
         if [ -z "$problems" ]; then ok; else bad "$label: $problems"; fi
     fi
 }
-stats_z "stats random 2D" " avg_min_distance" random --dim 2 --k 64 --sets 400 --seed 21
-stats_z "stats random 2D, K = 3" " avg_min_distance" random --dim 2 --k 3 --sets 4000 --seed 22
-stats_z "stats random 1D" " min_distance avg_min_distance" random --dim 1 --k 16 --sets 2000 --seed 23
-stats_z "stats jittered (no exact)" "" jittered --dim 2 --k 16 --sets 10
+stats_z "stats random 2D" 6 " avg_min_distance" random --dim 2 --k 64 --sets 400 --seed 21
+stats_z "stats random 2D, K = 3" 6 " avg_min_distance" random --dim 2 --k 3 --sets 4000 --seed 22
+stats_z "stats random 1D" 6 " min_distance avg_min_distance" random --dim 1 --k 16 --sets 2000 --seed 23
+stats_z "stats random 3D, K = 52" 2 " avg_min_distance" random --dim 3 --k 52 --sets 300 --seed 24
+stats_z "stats random 3D, K = 51 (no exact)" 2 "" random --dim 3 --k 51 --sets 3
+stats_z "stats jittered (no exact)" 6 "" jittered --dim 2 --k 16 --sets 10
 if succeeds "stats random 1D exact" "$MCSPEC" stats random --dim 1 --k 16 --sets 2 --csv; then
     expect "stats random 1D exact" "$tmp/out" "min_distance 4 0.0625
 avg_min_distance 4 0.5

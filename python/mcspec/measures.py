@@ -82,8 +82,9 @@ def discrepancy_exact_jittered(measure, strata, dim=None):
 def spacing_exact_random(statistic, dim, k):
     """The exact expectation of a spacing statistic (over d_max, as spacing()
     gives it) for k independent uniform points in dim dimensions
-    (mcs_spacing_exact_random): avg_min_distance in 1D and 2D, min_distance in
-    1D; Error MCS_ERR_DOMAIN elsewhere."""
+    (mcs_spacing_exact_random): avg_min_distance in 1D, 2D and, from k = 52,
+    104, 212, 450, 1007, 2370, in 3D to 8D; min_distance in 1D; Error
+    MCS_ERR_DOMAIN elsewhere."""
     v = ctypes.c_double()
     check(fn.spacing_exact_random(SPACING.index(statistic), int(dim), int(k),
                                   ctypes.addressof(v)), "mcs_spacing_exact_random")

@@ -135,6 +135,37 @@ static void test_large_sets_follow_the_gamma_ratio_and_its_limit(void)
     TEST_ASSERT_TRUE(exact(MCS_SPACING_AVG_MIN_DISTANCE, 2, 1000000u) > limit); /* from above: 1 + 1/(8K) */
 }
 
+/* Gamma(K) / Gamma(K + a) by the recurrence in long double. */
+static long double ratio_ref_a(size_t k, long double a, long double gamma_1a)
+{
+    long double r = 1.0L / gamma_1a;
+    for (size_t j = 1; j < k; ++j)
+        r *= (long double)j / ((long double)j + a);
+    return r;
+}
+
+static void test_3d_to_8d_give_the_ball_s_value_from_the_first_k_the_bound_allows(void)
+{
+    static const size_t first[9] = {0, 0, 0, 52, 104, 212, 450, 1007, 2370};
+    /* V_d^(-1/d) and Gamma(1 + 1/d), written again */
+    for (size_t d = 3; d <= 8; ++d) {
+        const long double v = powl(pi_l, (long double)d / 2.0L) / tgammal((long double)d / 2.0L + 1.0L);
+        const long double a = 1.0L / (long double)d, g = tgammal(1.0L + a);
+        double e = 7.0;
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_DOMAIN,
+                              mcs_spacing_exact_random(MCS_SPACING_AVG_MIN_DISTANCE, d, first[d] - 1u, &e));
+        TEST_ASSERT_EQUAL_DOUBLE(7.0, e);
+        const size_t ks[4] = {first[d], first[d] + 1u, 5000u, 123457u};
+        for (int i = 0; i < 4; ++i) {
+            const long double want = powl(v, -a) * g * ratio_ref_a(ks[i], a, g);
+            const double got = exact(MCS_SPACING_AVG_MIN_DISTANCE, d, ks[i]) * dmax(d, ks[i]);
+            TEST_ASSERT_DOUBLE_WITHIN(2e-14 * (double)want, (double)want, got);
+        }
+        TEST_ASSERT_EQUAL_INT(MCS_ERR_DOMAIN,
+                              mcs_spacing_exact_random(MCS_SPACING_MIN_DISTANCE, d, 100000u, &e));
+    }
+}
+
 static void test_1d_values_are_their_closed_forms(void)
 {
     for (size_t k = 2; k < 100; k += 7) {
@@ -146,7 +177,7 @@ static void test_1d_values_are_their_closed_forms(void)
 /* Means over t random sets of k points in dim dimensions. */
 static void monte_carlo(size_t dim, size_t k, uint64_t t, mcs_spacing *acc)
 {
-    static double pts[64 * 2];
+    static double pts[64 * 3];
     size_t bytes = 0;
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_spacing_work_size(dim, k, &bytes));
     void *work = bytes > 0u ? malloc(bytes) : NULL;
@@ -185,6 +216,8 @@ static void test_monte_carlo_means_of_random_sets_are_within_5_stderr(void)
     assert_z(&acc, MCS_SPACING_AVG_MIN_DISTANCE, exact(MCS_SPACING_AVG_MIN_DISTANCE, 2, 2), 0.0015);
     monte_carlo(2, 16, 4000u, &acc);
     assert_z(&acc, MCS_SPACING_AVG_MIN_DISTANCE, exact(MCS_SPACING_AVG_MIN_DISTANCE, 2, 16), 0.01);
+    monte_carlo(3, 52, 2000u, &acc);
+    assert_z(&acc, MCS_SPACING_AVG_MIN_DISTANCE, exact(MCS_SPACING_AVG_MIN_DISTANCE, 3, 52), 0.01);
 }
 
 static void test_bad_input_is_refused_and_writes_nothing(void)
@@ -210,6 +243,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_2d_average_minimum_distance_matches_an_independent_quadrature);
     RUN_TEST(test_large_sets_follow_the_gamma_ratio_and_its_limit);
+    RUN_TEST(test_3d_to_8d_give_the_ball_s_value_from_the_first_k_the_bound_allows);
     RUN_TEST(test_1d_values_are_their_closed_forms);
     RUN_TEST(test_monte_carlo_means_of_random_sets_are_within_5_stderr);
     RUN_TEST(test_bad_input_is_refused_and_writes_nothing);
