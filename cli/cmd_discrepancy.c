@@ -1,8 +1,10 @@
 /* mcspec discrepancy: the L2 discrepancies (and the exact 2D star
- * discrepancy) of point sets read from a file, mean over the sets beside the
- * exact expectation for independent uniform points. */
+ * discrepancy) of point sets read from a file or drawn from a named kind,
+ * mean over the sets beside the exact expectation for independent uniform
+ * points and, for a kind whose expectation is known, the kind's own. */
 #include "cli.h"
 #include "input.h"
+#include "kindsets.h"
 #include "output.h"
 #include "progress.h"
 
@@ -11,12 +13,13 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <unistd.h>
 
 /* The entry point, declared here until cli.h lists it with the others. */
 
 #define CMD "mcspec discrepancy"
-#define CSV_HEADER "measure,value,stderr,exact_random,root"
+#define CSV_HEADER "measure,value,stderr,exact_random,root,exact"
 
 /* Most coordinates a point line may have: the reader's cap, which is the
  * library's MCS_DISCREPANCY_MAX_DIM. */
@@ -25,6 +28,7 @@ _Static_assert(CLI_MAX_DIM <= MCS_DISCREPANCY_MAX_DIM, "the reader takes what th
 
 static const char help[] =
     "usage: mcspec discrepancy [--dim D] [--wrap] [--csv] [FILE|-]\n"
+    "       mcspec discrepancy KIND --dim D --k K [--sets T] [--seed S] [--csv]\n"
     "\n"
     "The L2 discrepancies of point sets read from FILE (or standard input, given\n"
     "as '-' or by giving no FILE), one set per trial: per set the squared\n"
@@ -32,7 +36,11 @@ static const char help[] =
     "sets its mean (value), the standard error of the mean, the exact E[D^2] of\n"
     "independent uniform points in sets of the same sizes (exact_random) and\n"
     "root = sqrt(value), on utk's scale (utk prints one set's D, the root of\n"
-    "its D^2; with one set the two agree). Rows:\n"
+    "its D^2; with one set the two agree), and exact, the exact E[D^2] of the\n"
+    "sets' own kind where it is known (KIND random: exact_random; jittered in\n"
+    "2D, one uniform point per cell of its m x n grid, stratified in 1D, and\n"
+    "sobol-owen and halton-owen in 1D with K a power of 2, which are stratified\n"
+    "sets: the jittered closed form; empty otherwise and for files). Rows:\n"
     "  l2_star         Warnock's L2 star discrepancy (utk L2Discrepancy)\n"
     "  l2_centered     Hickernell's centred L2 (utk CenteredL2Discrepancy)\n"
     "  l2_wraparound   Hickernell's wrap-around L2 (not in utk)\n"
@@ -44,7 +52,7 @@ static const char help[] =
     "                  of at most " CLI_STR(MCS_DISCREPANCY_STAR_MAX_K)
     " points only, and no exact_random\n"
     "The formulas, their expectations and references: docs/measures.md. In the\n"
-    "table, z = (value - exact_random) / stderr.\n"
+    "table, z = (value - exact) / stderr, or against exact_random without exact.\n"
     "\n"
     "Input: one point per line, D coordinates in [0,1) separated by spaces or\n"
     "tabs; a line starting with '#' ends the current set (utk's convention), as\n"
@@ -52,9 +60,17 @@ static const char help[] =
     "printed: a malformed line stops the run with the file, the line number\n"
     "and what was wrong, exit 2.\n"
     "\n"
+    "KIND (instead of a file): T sets of K points of a kind of mcspec sample, in\n"
+    "D dimensions it has (mcspec sample --help lists them), drawn from PCG32\n"
+    "seeded with S as mcspec sample --seed S draws them.\n"
+    "\n"
     "Options:\n"
     "  --dim D   coordinates per point, 1 to " CLI_STR(CLI_MAX_DIM) " (default: as many as the\n"
     "            first point line has; every line must then have as many)\n"
+    "            (KIND: required, 1 to 64 as KIND has them)\n"
+    "  --k K     KIND: points per set, 1.." CLI_STR(CLI_MAX_K) "\n"
+    "  --sets T  KIND: sets, 1..1000000 (default 64)\n"
+    "  --seed S  KIND: the PCG32 seed (default 1)\n"
     "  --wrap    take coordinates modulo 1 (default: outside [0,1) is an error)\n"
     "  --csv     print CSV only: the header, exactly\n"
     "            " CSV_HEADER "\n"
@@ -64,9 +80,10 @@ static const char help[] =
     "Exit status: 0 on success, 2 on bad usage or input (one line on stderr).\n";
 
 typedef struct {
-    size_t dim;
-    int wrap, csv;
-    const char *path;
+    size_t dim, k, sets;
+    uint64_t seed;
+    int wrap, csv, kind_mode;
+    const char *path; /* the file, or KIND */
 } disc_opts;
 
 typedef struct {
@@ -82,10 +99,28 @@ static int parse(int argc, char **argv, disc_opts *o)
         {"dim", CLI_OPT_SIZE, &o->dim, 1, MAX_DIM, 0},
         {"wrap", CLI_OPT_FLAG, &o->wrap, 0, 0, 0},
         {"csv", CLI_OPT_FLAG, &o->csv, 0, 0, 0},
+        {"k", CLI_OPT_SIZE, &o->k, 1, CLI_MAX_K, 0},
+        {"sets", CLI_OPT_SIZE, &o->sets, 1, 1000000, 0},
+        {"seed", CLI_OPT_U64, &o->seed, 0, UINT64_MAX, 0},
     };
     int rc = cli_parse_one(CMD, help, NULL, opts, CLI_COUNT(opts), argc, argv, &o->path);
     if (rc != CLI_PARSED)
         return rc;
+    const size_t nopts = CLI_COUNT(opts);
+    o->kind_mode = cli_opt_given(opts, nopts, "k");
+    if (o->kind_mode) {
+        if (o->path == NULL || strcmp(o->path, "-") == 0)
+            return cli_fail(CMD, "--k draws sets of a KIND: give KIND (see mcspec sample --help)");
+        if (!cli_opt_given(opts, nopts, "dim"))
+            return cli_fail(CMD, "give --dim D with KIND %s", o->path);
+        if (cli_opt_given(opts, nopts, "wrap"))
+            return cli_fail(CMD, "--wrap goes with a point file, not KIND --k K");
+        return 0;
+    }
+    if (cli_opt_given(opts, nopts, "sets") || cli_opt_given(opts, nopts, "seed"))
+        return cli_fail(CMD, "--sets and --seed go with KIND --k K, not a point file");
+    if (o->path != NULL && cli_kind_known(o->path) && access(o->path, F_OK) != 0)
+        return cli_fail(CMD, "KIND %s draws sets with --dim D --k K: give --k K", o->path);
     if (o->path == NULL && isatty(STDIN_FILENO))
         return cli_fail(CMD, "no input: give a point file, or '-' to read standard input");
     return 0;
@@ -119,28 +154,36 @@ static double read_or_nan(mcs_status (*read)(const mcs_discrepancy *, mcs_discre
     return read(acc, m, &v) == MCS_OK ? v : (double)NAN;
 }
 
+/* v: value, stderr, exact_random, root, exact. */
 static void print_row(int csv, mcs_discrepancy_measure m, const double *v)
 {
     if (csv) {
         printf("%s", mcs_discrepancy_measure_str(m));
-        cli_print_values(1, v, 4);
+        cli_print_values(1, v, 5);
         return;
     }
     printf("%-15s", mcs_discrepancy_measure_str(m));
-    for (int i = 0; i < 4; ++i) {
+    for (int i = 0; i < 5; ++i) {
         char buf[40];
         cli_table_double(buf, sizeof buf, 13, v[i]);
         printf(" %s", buf);
     }
-    const double z = cli_z(v[0], v[2], v[1], 1e-12 * fabs(v[2]));
+    const double want = isnan(v[4]) ? v[2] : v[4];
+    const double z = cli_z(v[0], want, v[1], 1e-12 * fabs(want));
     if (isnan(z))
         printf(" %8s\n", "-");
     else
         printf(" %8.2f\n", z);
 }
 
+/* The exact E[D^2] of the sets' kind, per measure (NaN: not known). */
+typedef struct {
+    const char *source; /* "random (seed 1)", or NULL for the input's name */
+    double exact[MCS_DISCREPANCY_MEASURES];
+} disc_exact;
+
 static void report(const disc_opts *o, const mcs_discrepancy *acc,
-                   const cli_pointset_stats *stats)
+                   const cli_pointset_stats *stats, const disc_exact *ex)
 {
     uint64_t star = 0;
     mcs_discrepancy_count(acc, MCS_DISCREPANCY_STAR, &star);
@@ -148,35 +191,93 @@ static void report(const disc_opts *o, const mcs_discrepancy *acc,
     if (o->csv) {
         puts(CSV_HEADER);
     } else {
-        printf("%s: %s, %llu point sets in %zuD, K = %zu to %zu points per set (%lu lines read)\n",
-               CMD, cli_input_name(o->path), (unsigned long long)stats->sets, stats->dim,
-               stats->k_min, stats->k_max, stats->lines);
+        if (ex->source != NULL)
+            printf("%s: %s, %llu point sets in %zuD, K = %zu points per set\n", CMD, ex->source,
+                   (unsigned long long)stats->sets, stats->dim, stats->k_min);
+        else
+            printf("%s: %s, %llu point sets in %zuD, K = %zu to %zu points per set (%lu lines "
+                   "read)\n", CMD, cli_input_name(o->path), (unsigned long long)stats->sets,
+                   stats->dim, stats->k_min, stats->k_max, stats->lines);
         printf("value: mean over the sets of D^2; root = sqrt(value); exact_random: E[D^2] of "
-               "independent uniform points; z = (value - exact_random) / stderr\n");
+               "independent uniform points; exact: E[D^2] of the sets' kind (- where not "
+               "known); z = (value - exact, else exact_random) / stderr\n");
         if (stats->dim == 2u && !with_star)
             printf("star: not computed (a set has more than %d points)\n",
                    MCS_DISCREPANCY_STAR_MAX_K);
-        printf("\n%-15s %13s %13s %13s %13s %8s\n", "measure", "value", "stderr", "exact_random",
-               "root", "z");
+        printf("\n%-15s %13s %13s %13s %13s %13s %8s\n", "measure", "value", "stderr",
+               "exact_random", "root", "exact", "z");
     }
     for (int i = 0; i < MCS_DISCREPANCY_MEASURES; ++i) {
         const mcs_discrepancy_measure m = (mcs_discrepancy_measure)i;
         if (m == MCS_DISCREPANCY_STAR && !with_star)
             continue;
-        double v[4] = {read_or_nan(mcs_discrepancy_mean, acc, m),
+        double v[5] = {read_or_nan(mcs_discrepancy_mean, acc, m),
                        read_or_nan(mcs_discrepancy_stderr, acc, m),
-                       read_or_nan(mcs_discrepancy_exact_random, acc, m), (double)NAN};
+                       read_or_nan(mcs_discrepancy_exact_random, acc, m), (double)NAN,
+                       ex->exact[i]};
         v[3] = sqrt(fmax(v[0], 0.0)); /* a D^2 within rounding of 0 may be slightly negative */
         print_row(o->csv, m, v);
     }
 }
 
+/* The exact E[D^2] of KIND's sets where the library has it: random (any
+ * dimension), 2D jittered over its strata, 1D stratified (n = K strata),
+ * and the 1D Owen-scrambled base-2 kinds at K = 2^m: a scrambled (0,m,1)-net
+ * has the pair laws of the stratified pattern (docs/owen.md, "The 1D
+ * identity"), and D^2 depends on the points through pairs only. */
+static void kind_exact(const cli_sample_source *src, disc_exact *ex)
+{
+    const char *name = src->kind->name;
+    for (int i = 0; i < MCS_DISCREPANCY_L2_COUNT; ++i) {
+        const mcs_discrepancy_measure m = (mcs_discrepancy_measure)i;
+        double v = NAN;
+        mcs_status st = MCS_ERR_DOMAIN;
+        if (strcmp(name, "random") == 0)
+            st = mcs_discrepancy_l2_exact_random(m, src->k, src->dim, &v);
+        else if (strcmp(name, "jittered") == 0)
+            st = mcs_discrepancy_l2_exact_jittered2d(m, src->pattern2d.strata_x,
+                                                     src->pattern2d.strata_y, &v);
+        else if (strcmp(name, "stratified") == 0 ||
+                 ((strcmp(name, "sobol-owen") == 0 || strcmp(name, "halton-owen") == 0) &&
+                  src->dim == 1u && (src->k & (src->k - 1u)) == 0u))
+            st = mcs_discrepancy_l2_exact_jittered(m, src->k, 1u, &v);
+        ex->exact[i] = st == MCS_OK ? v : (double)NAN;
+    }
+}
+
+/* T sets of KIND into ctx, as the file's sets would go. */
+static int run_kind(const disc_opts *o, disc_ctx *ctx, cli_pointset_stats *stats, disc_exact *ex,
+                    char *source, size_t source_size)
+{
+    cli_sample_source src;
+    int rc = cli_sample_init(CMD, o->path, o->dim, o->k, MCS_MAX_N, &src);
+    if (rc != 0)
+        return rc;
+    kind_exact(&src, ex);
+    if (strcmp(o->path, "jittered") == 0)
+        snprintf(source, source_size, "jittered %zu x %zu strata (seed %llu)",
+                 src.pattern2d.strata_x, src.pattern2d.strata_y, (unsigned long long)o->seed);
+    else
+        snprintf(source, source_size, "%s (seed %llu)", o->path, (unsigned long long)o->seed);
+    ex->source = source;
+    cli_progress progress;
+    cli_progress_init(&progress, !o->csv, CMD, "sets drawn", o->sets);
+    rc = cli_kind_feed(CMD, &src, o->sets, o->seed, add_set, ctx, stats, &progress);
+    cli_progress_end(&progress);
+    cli_sample_free(&src);
+    return rc;
+}
+
 int cli_cmd_discrepancy(int argc, char **argv)
 {
-    disc_opts o = {0, 0, 0, NULL};
+    disc_opts o = {0, 0, 64, 1, 0, 0, 0, NULL};
     int rc = parse(argc, argv, &o);
     if (rc != 0)
         return rc < 0 ? CLI_EXIT_OK : rc;
+    disc_exact ex = {.source = NULL};
+    for (int i = 0; i < MCS_DISCREPANCY_MEASURES; ++i)
+        ex.exact[i] = (double)NAN;
+    char source[160];
     disc_ctx *ctx = cli_alloc(CMD, 1, sizeof *ctx);
     if (ctx == NULL)
         return CLI_EXIT_FAIL;
@@ -185,13 +286,17 @@ int cli_cmd_discrepancy(int argc, char **argv)
     ctx->work = NULL;
     ctx->work_bytes = 0;
     ctx->stats = &stats;
-    cli_pointset_format fmt = {.dim = o.dim, .weights = 0, .wrap = o.wrap};
-    cli_progress progress;
-    cli_progress_init(&progress, !o.csv, CMD, "sets read", 0);
-    rc = cli_read_pointsets(CMD, o.path, &fmt, add_set, ctx, &stats, &progress);
-    cli_progress_end(&progress);
+    if (o.kind_mode) {
+        rc = run_kind(&o, ctx, &stats, &ex, source, sizeof source);
+    } else {
+        cli_pointset_format fmt = {.dim = o.dim, .weights = 0, .wrap = o.wrap};
+        cli_progress progress;
+        cli_progress_init(&progress, !o.csv, CMD, "sets read", 0);
+        rc = cli_read_pointsets(CMD, o.path, &fmt, add_set, ctx, &stats, &progress);
+        cli_progress_end(&progress);
+    }
     if (rc == 0)
-        report(&o, &ctx->acc, &stats);
+        report(&o, &ctx->acc, &stats, &ex);
     free(ctx->work);
     free(ctx);
     return rc;

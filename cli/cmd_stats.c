@@ -1,9 +1,12 @@
 /* mcspec stats: the spatial statistics of point sets read from a file, the
  * minimum and average minimum distances over the maximal packing distance,
  * and psa's effective Nyquist frequency and oscillation metric of each
- * set's radial power spectrum (1D and 2D). */
+ * set's radial power spectrum (1D and 2D), of point sets read from a file
+ * or drawn from a named kind, with the exact expectation for independent
+ * uniform points where theory gives it. */
 #include "cli.h"
 #include "input.h"
+#include "kindsets.h"
 #include "output.h"
 #include "progress.h"
 
@@ -12,12 +15,13 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <unistd.h>
 
 /* The entry point, declared here until cli.h lists it with the others. */
 
 #define CMD "mcspec stats"
-#define CSV_HEADER "statistic,value,stderr"
+#define CSV_HEADER "statistic,value,stderr,exact"
 
 /* Most coordinates a point line may have: the library's cap (the densest
  * lattice packings are known to d = 8). */
@@ -25,6 +29,7 @@
 
 static const char help[] =
     "usage: mcspec stats [--dim D] [--freq F] [--wrap] [--csv] [FILE|-]\n"
+    "       mcspec stats KIND --dim D --k K [--sets T] [--seed S] [--freq F] [--csv]\n"
     "\n"
     "The spatial statistics of point sets read from FILE (or standard input,\n"
     "given as '-' or by giving no FILE), one set per trial, with distances taken\n"
@@ -47,6 +52,12 @@ static const char help[] =
     "then their mean over the sets (value) and its standard error. psa applies\n"
     "the last two to the mean spectrum of its sets: the rows\n"
     "effective_nyquist_of_mean and oscillations_of_mean do that (no stderr).\n"
+    "The column exact is the exact expectation of the row for KIND random where\n"
+    "theory gives it (empty otherwise and for files): avg_min_distance in 1D\n"
+    "(1/2) and 2D (the integral of (1 - A(r))^(K-1), A the toroidal disk's\n"
+    "area) and in 3D to 8D from the K where the ball's closed form is exact\n"
+    "to rounding (52 in 3D, 104 in 4D, ... 2370 in 8D), min_distance in 1D\n"
+    "(1/K: E = 1/K^2, the least Dirichlet gap).\n"
     "Definitions and references: docs/measures.md.\n"
     "\n"
     "Input: one point per line, D coordinates in [0,1) separated by spaces or\n"
@@ -55,9 +66,17 @@ static const char help[] =
     "and checked before anything is printed: a malformed line stops the run\n"
     "with the file, the line number and what was wrong, exit 2.\n"
     "\n"
+    "KIND (instead of a file): T sets of K points of a kind of mcspec sample, in\n"
+    "D dimensions it has (up to 8 here), drawn from PCG32 seeded with S as\n"
+    "mcspec sample --seed S draws them.\n"
+    "\n"
     "Options:\n"
     "  --dim D   coordinates per point, 1 to " CLI_STR(MCS_SPACING_MAX_DIM) " (default: as many as the\n"
     "            first point line has; every line must then have as many)\n"
+    "            (KIND: required)\n"
+    "  --k K     KIND: points per set, 2.." CLI_STR(CLI_MAX_K) "\n"
+    "  --sets T  KIND: sets, 1..1000000 (default 64)\n"
+    "  --seed S  KIND: the PCG32 seed (default 1)\n"
     "  --freq F  the periodogram's cutoff (default: ceil(5 sqrt(K)) in 2D, 5 K in\n"
     "            1D, K of the first set)\n"
     "  --wrap    take coordinates modulo 1 (default: outside [0,1) is an error)\n"
@@ -69,9 +88,10 @@ static const char help[] =
     "Exit status: 0 on success, 2 on bad usage or input (one line on stderr).\n";
 
 typedef struct {
-    size_t dim, freq;
-    int wrap, csv;
-    const char *path;
+    size_t dim, freq, k, sets;
+    uint64_t seed;
+    int wrap, csv, kind_mode;
+    const char *path; /* the file, or KIND */
 } stats_opts;
 
 /* The spectral rows: per-set values, and the values of the mean spectrum. */
@@ -109,10 +129,28 @@ static int parse(int argc, char **argv, stats_opts *o)
         {"freq", CLI_OPT_SIZE, &o->freq, 1, MCS_POINTSET2D_MAX_FREQ, 0},
         {"wrap", CLI_OPT_FLAG, &o->wrap, 0, 0, 0},
         {"csv", CLI_OPT_FLAG, &o->csv, 0, 0, 0},
+        {"k", CLI_OPT_SIZE, &o->k, 2, CLI_MAX_K, 0},
+        {"sets", CLI_OPT_SIZE, &o->sets, 1, 1000000, 0},
+        {"seed", CLI_OPT_U64, &o->seed, 0, UINT64_MAX, 0},
     };
     int rc = cli_parse_one(CMD, help, NULL, opts, CLI_COUNT(opts), argc, argv, &o->path);
     if (rc != CLI_PARSED)
         return rc;
+    const size_t nopts = CLI_COUNT(opts);
+    o->kind_mode = cli_opt_given(opts, nopts, "k");
+    if (o->kind_mode) {
+        if (o->path == NULL || strcmp(o->path, "-") == 0)
+            return cli_fail(CMD, "--k draws sets of a KIND: give KIND (see mcspec sample --help)");
+        if (!cli_opt_given(opts, nopts, "dim"))
+            return cli_fail(CMD, "give --dim D with KIND %s", o->path);
+        if (cli_opt_given(opts, nopts, "wrap"))
+            return cli_fail(CMD, "--wrap goes with a point file, not KIND --k K");
+        return 0;
+    }
+    if (cli_opt_given(opts, nopts, "sets") || cli_opt_given(opts, nopts, "seed"))
+        return cli_fail(CMD, "--sets and --seed go with KIND --k K, not a point file");
+    if (o->path != NULL && cli_kind_known(o->path) && access(o->path, F_OK) != 0)
+        return cli_fail(CMD, "KIND %s draws sets with --dim D --k K: give --k K", o->path);
     if (o->path == NULL && isatty(STDIN_FILENO))
         return cli_fail(CMD, "no input: give a point file, or '-' to read standard input");
     return 0;
@@ -219,15 +257,45 @@ static int add_set(void *ctx, size_t k, const double *coords, const double *weig
     return rc != 0 ? rc : spectral_add(&c->spec, dim, k, coords);
 }
 
+/* The spacing rows' exact expectations (NaN: not known) and the source line. */
+typedef struct {
+    const char *source; /* "random (seed 1)", or NULL for the input's name */
+    double exact[MCS_SPACING_STATISTICS];
+} stats_exact;
+
+/* A row: value, stderr, exact, and in the table z = (value - exact) / stderr. */
+static void print_row(int csv, const char *name, const double *v)
+{
+    printf(csv ? "%s" : "%-25s", name);
+    if (csv) {
+        cli_print_values(1, v, 3);
+        return;
+    }
+    for (int i = 0; i < 3; ++i) {
+        char buf[40];
+        cli_table_double(buf, sizeof buf, 13, v[i]);
+        printf(" %s", buf);
+    }
+    const double z = cli_z(v[0], v[2], v[1], 1e-12 * fabs(v[2]));
+    if (isnan(z))
+        printf(" %8s\n", "-");
+    else
+        printf(" %8.2f\n", z);
+}
+
 static void report(const stats_opts *o, const mcs_spacing *acc, const cli_pointset_stats *stats,
-                   spectral_ctx *spec)
+                   spectral_ctx *spec, const stats_exact *ex)
 {
     if (o->csv) {
         puts(CSV_HEADER);
     } else {
-        printf("%s: %s, %llu point sets in %zuD, K = %zu to %zu points per set (%lu lines read)\n",
-               CMD, cli_input_name(o->path), (unsigned long long)stats->sets, stats->dim,
-               stats->k_min, stats->k_max, stats->lines);
+        if (ex->source != NULL)
+            printf("%s: %s, %llu point sets in %zuD, K = %zu points per set\n", CMD, ex->source,
+                   (unsigned long long)stats->sets, stats->dim, stats->k_min);
+        else
+            printf("%s: %s, %llu point sets in %zuD, K = %zu to %zu points per set (%lu lines "
+                   "read)\n", CMD, cli_input_name(o->path), (unsigned long long)stats->sets,
+                   stats->dim, stats->k_min, stats->k_max, stats->lines);
         printf("toroidal distances as fractions of the maximal packing distance d_max = %s; "
                "value: mean over the sets\n", stats->dim == 1u   ? "1/K"
                                               : stats->dim == 2u ? "sqrt(2 / (sqrt(3) K))"
@@ -237,32 +305,32 @@ static void report(const stats_opts *o, const mcs_spacing *acc, const cli_points
             printf("spectral rows: the periodogram up to F = %zu (radial average over annuli of "
                    "width 1 in 2D); effective_nyquist over %s\n", spec->freq,
                    stats->dim == 1u ? "K" : "sqrt(K)");
-        printf("\n%-25s %13s %13s\n", "statistic", "value", "stderr");
+        printf("exact: the expectation for independent uniform points (- where not known); "
+               "z = (value - exact) / stderr\n");
+        printf("\n%-25s %13s %13s %13s %8s\n", "statistic", "value", "stderr", "exact", "z");
     }
     for (int i = 0; i < MCS_SPACING_STATISTICS; ++i) {
         const mcs_spacing_statistic s = (mcs_spacing_statistic)i;
-        double v[2] = {(double)NAN, (double)NAN};
+        double v[3] = {(double)NAN, (double)NAN, ex->exact[i]};
         if (mcs_spacing_mean(acc, s, &v[0]) != MCS_OK)
             v[0] = (double)NAN;
         if (mcs_spacing_stderr(acc, s, &v[1]) != MCS_OK)
             v[1] = (double)NAN;
-        printf(o->csv ? "%s" : "%-25s", mcs_spacing_statistic_str(s));
-        cli_print_values(o->csv, v, 2);
+        print_row(o->csv, mcs_spacing_statistic_str(s), v);
     }
     if (stats->dim > 2u || spec->freq == 0u)
         return;
     for (int r = 0; r < SPEC_ROWS; ++r) {
-        double v[2] = {(double)NAN, (double)NAN};
+        double v[3] = {(double)NAN, (double)NAN, (double)NAN};
         if (mcs_welford_mean(&spec->stat[r], &v[0]) != MCS_OK)
             v[0] = (double)NAN;
         if (mcs_welford_stderr(&spec->stat[r], &v[1]) != MCS_OK)
             v[1] = (double)NAN;
-        printf(o->csv ? "%s" : "%-25s", spec_names[r]);
-        cli_print_values(o->csv, v, 2);
+        print_row(o->csv, spec_names[r], v);
     }
     /* psa's way: the metrics of the mean spectrum (one K only). */
     for (int r = 0; r < SPEC_ROWS; ++r) {
-        double v[2] = {(double)NAN, (double)NAN};
+        double v[3] = {(double)NAN, (double)NAN, (double)NAN};
         const size_t n = spec->freq + 1u;
         for (size_t i = 0; i <= spec->freq; ++i)
             spec->power[i] = spec->sum[i] / (double)stats->sets;
@@ -275,28 +343,57 @@ static void report(const stats_opts *o, const mcs_spacing *acc, const cli_points
             v[0] = (double)NAN;
         char name[40];
         snprintf(name, sizeof name, "%s_of_mean", spec_names[r]);
-        printf(o->csv ? "%s" : "%-25s", name);
-        cli_print_values(o->csv, v, 2);
+        print_row(o->csv, name, v);
     }
+}
+
+/* T sets of KIND into ctx, as the file's sets would go; the exact column
+ * for random points. */
+static int run_kind(const stats_opts *o, stats_ctx *ctx, cli_pointset_stats *stats,
+                    stats_exact *ex, char *source, size_t source_size)
+{
+    cli_sample_source src;
+    int rc = cli_sample_init(CMD, o->path, o->dim, o->k, MCS_MAX_N, &src);
+    if (rc != 0)
+        return rc;
+    for (int i = 0; i < MCS_SPACING_STATISTICS && strcmp(o->path, "random") == 0; ++i) {
+        double v = NAN;
+        if (mcs_spacing_exact_random((mcs_spacing_statistic)i, o->dim, o->k, &v) == MCS_OK)
+            ex->exact[i] = v;
+    }
+    snprintf(source, source_size, "%s (seed %llu)", o->path, (unsigned long long)o->seed);
+    ex->source = source;
+    cli_progress progress;
+    cli_progress_init(&progress, !o->csv, CMD, "sets drawn", o->sets);
+    rc = cli_kind_feed(CMD, &src, o->sets, o->seed, add_set, ctx, stats, &progress);
+    cli_progress_end(&progress);
+    cli_sample_free(&src);
+    return rc;
 }
 
 int cli_cmd_stats(int argc, char **argv)
 {
-    stats_opts o = {0, 0, 0, 0, NULL};
+    stats_opts o = {0, 0, 0, 64, 1, 0, 0, 0, NULL};
     int rc = parse(argc, argv, &o);
     if (rc != 0)
         return rc < 0 ? CLI_EXIT_OK : rc;
+    stats_exact ex = {.source = NULL, .exact = {(double)NAN, (double)NAN}};
+    char source[160];
     cli_pointset_stats stats;
-    stats_ctx ctx = {.name = cli_input_name(o.path), .sets = 0, .work = NULL, .work_bytes = 0,
-                     .stats = &stats, .freq_opt = o.freq};
+    stats_ctx ctx = {.name = o.kind_mode ? o.path : cli_input_name(o.path), .sets = 0,
+                     .work = NULL, .work_bytes = 0, .stats = &stats, .freq_opt = o.freq};
     ctx.acc.dim = 0; /* initialised at the first set, when the dimension is known */
-    cli_pointset_format fmt = {.dim = o.dim, .weights = 0, .wrap = o.wrap};
-    cli_progress progress;
-    cli_progress_init(&progress, !o.csv, CMD, "sets read", 0);
-    rc = cli_read_pointsets(CMD, o.path, &fmt, add_set, &ctx, &stats, &progress);
-    cli_progress_end(&progress);
+    if (o.kind_mode) {
+        rc = run_kind(&o, &ctx, &stats, &ex, source, sizeof source);
+    } else {
+        cli_pointset_format fmt = {.dim = o.dim, .weights = 0, .wrap = o.wrap};
+        cli_progress progress;
+        cli_progress_init(&progress, !o.csv, CMD, "sets read", 0);
+        rc = cli_read_pointsets(CMD, o.path, &fmt, add_set, &ctx, &stats, &progress);
+        cli_progress_end(&progress);
+    }
     if (rc == 0)
-        report(&o, &ctx.acc, &stats, &ctx.spec);
+        report(&o, &ctx.acc, &stats, &ctx.spec, &ex);
     free(ctx.work);
     free(ctx.spec.mem);
     free(ctx.spec.power);

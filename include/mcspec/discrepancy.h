@@ -41,6 +41,8 @@
  *   symmetric    (2^d - (4/3)^d) / K
  *   generalized  ((3/2)^d - (4/3)^d) / K             (E(2 - x) = 3/2)
  *   unanchored   (6^-d - 12^-d) / K                  (E x (1 - x) = 1/6)
+ * and over jittered points (one per cell of a grid) as
+ * mcs_discrepancy_l2_exact_jittered says.
  *
  * Cost O(d K^2): one pass over the K (K - 1)/2 pairs gives all six. The pair
  * sums add blocks of 64 terms, then Kahan-sum the blocks, so their rounding
@@ -112,6 +114,28 @@ mcs_status mcs_discrepancy_l2_f(size_t k, size_t dim, const float *points, doubl
  * error. */
 mcs_status mcs_discrepancy_l2_exact_random(mcs_discrepancy_measure measure, size_t k, size_t dim,
                                            double *out);
+
+/* E[D^2] of an L2 measure over a jittered grid: n^dim cells of side 1/n, one
+ * independent uniform point in each, K = n^dim (dim = 1: the stratified
+ * pattern u_j = (j + xi_j) / K with n = K). With e = E h1(x, x) of the table
+ * above and per axis Delta(n) = 1/6 (L2 star, centred, generalized), 2/3
+ * (symmetric), 1/3 - 1/(6n) (wrap-around), 1/6 - 1/(12n) (unanchored),
+ *     E[D^2] = (e^d - (e - Delta(n) / n)^d) / K,
+ * e.g. ((1/2)^d - (1/2 - 1/(6n))^d) / K for the L2 star (1D: 1/(6 K^2));
+ * the derivation is in discrepancy.c. The exact star discrepancy has no such
+ * form. MCS_ERR_NULL, MCS_ERR_KIND (not a measure), MCS_ERR_DOMAIN
+ * (MCS_DISCREPANCY_STAR; dim not in 1..MCS_DISCREPANCY_MAX_DIM),
+ * MCS_ERR_K_RANGE (n = 0, or n^dim past SIZE_MAX). *out untouched on error. */
+mcs_status mcs_discrepancy_l2_exact_jittered(mcs_discrepancy_measure measure, size_t n, size_t dim,
+                                             double *out);
+
+/* The same for a 2D grid of nx columns by ny rows of cells (1/nx by 1/ny,
+ * K = nx ny, mcs_pattern2d's jittered kind with strata_x = nx, strata_y =
+ * ny): (e^2 - (e - Delta(nx) / nx) (e - Delta(ny) / ny)) / K. Statuses as
+ * mcs_discrepancy_l2_exact_jittered (MCS_ERR_K_RANGE: nx or ny 0, or nx ny
+ * past SIZE_MAX). *out untouched on error. */
+mcs_status mcs_discrepancy_l2_exact_jittered2d(mcs_discrepancy_measure measure, size_t nx,
+                                               size_t ny, double *out);
 
 /* ---- The exact star discrepancy in 2D ----------------------------------------
  * D* = sup over boxes B = [0, a) x [0, b) of | #(P in B) / K - a b |. The sup

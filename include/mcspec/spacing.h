@@ -98,6 +98,30 @@ mcs_status mcs_spacing_distances(size_t k, size_t dim, const double *points, voi
 mcs_status mcs_spacing_distances_f(size_t k, size_t dim, const float *points, void *work,
                                    size_t work_bytes, double *out);
 
+/* The exact expectation of a statistic (divided by d_max, as
+ * mcs_spacing_distances gives it) for k independent uniform points on the
+ * torus in dim dimensions, where theory gives it in closed form:
+ *   avg_min_distance, 1D: 1/2 (E = 1/(2k), d_max = 1/k);
+ *   avg_min_distance, 2D: E = int_0^{sqrt(2)/2} (1 - A(r))^(k-1) dr, A(r) the
+ *     area of the toroidal disk (pi r^2 up to 1/2, less four segments
+ *     beyond), = Gamma(k) / (2 Gamma(k + 1/2)) plus two integrals below
+ *     (1 - pi/4)^(k-1) / 4 by quadrature (spacing_exact.c), within 1e-15
+ *     relative of a 40-digit evaluation (k = 2 to 1e5); over d_max, it tends
+ *     to sqrt(sqrt(3) / 8) = 0.4653 from above as k grows;
+ *   avg_min_distance, 3D to 8D: the ball's V_d^(-1/d) Gamma(1 + 1/d)
+ *     Gamma(k) / Gamma(k + 1/d) (V_d the unit ball's volume), for k large
+ *     enough that the part past r = 1/2, where the ball meets the cube's
+ *     faces and has no short closed form, is below 2^-53 of it: its bound
+ *     (sqrt(d)/2 - 1/2) (1 - V_d / 2^d)^(k-1) is, from k = 52 in 3D, 104,
+ *     212, 450, 1007 and 2370 in 4D to 8D;
+ *   min_distance, 1D: 1/k (E = 1/k^2, the least of k Dirichlet gaps).
+ * MCS_ERR_NULL, MCS_ERR_KIND (not a statistic), MCS_ERR_DOMAIN (dim not in
+ * 1..MCS_SPACING_MAX_DIM, or a case not listed: min_distance beyond 1D, the
+ * average in 3D to 8D below those k),
+ * MCS_ERR_K_RANGE (k < 2). *out untouched on error. */
+mcs_status mcs_spacing_exact_random(mcs_spacing_statistic statistic, size_t dim, size_t k,
+                                    double *out);
+
 /* ---- Accumulator over sets ----------------------------------------------------
  * A Welford accumulator (welford.h) per statistic of the per-set values, so
  * the mean over sets, its standard error and the merge come from

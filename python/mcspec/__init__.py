@@ -9,7 +9,8 @@ from ._lib import Error, library_path, library_source, version as __version__
 from ._lib import status_name
 from .pointsets import PointSet, Estimate, periodogram, anisotropy, wave_vectors
 from .sampling import sample, kinds, base_points, exact_power, lattice_generator
-from .measures import discrepancy, discrepancy_exact_random, spacing
+from .measures import (discrepancy, discrepancy_exact_random, discrepancy_exact_jittered, spacing,
+                       spacing_exact_random)
 from .binned import Importance, Pattern, Spectrum, Moment, Autocorr, Theory, TheorySpectrum
 from .records import save, load, save_file, load_file, merge
 from .analysis import (Pcf, PairCorrelation, pcf, effective_nyquist, oscillations, spectral_stats,
@@ -19,7 +20,8 @@ __all__ = [
     "Error", "library_path", "library_source", "__version__", "status_name",
     "PointSet", "Estimate", "periodogram", "anisotropy", "wave_vectors",
     "sample", "kinds", "base_points", "exact_power", "lattice_generator",
-    "discrepancy", "discrepancy_exact_random", "spacing",
+    "discrepancy", "discrepancy_exact_random", "discrepancy_exact_jittered", "spacing",
+    "spacing_exact_random",
     "Importance", "Pattern", "Spectrum", "Moment", "Autocorr", "Theory", "TheorySpectrum",
     "save", "load", "save_file", "load_file", "merge",
     "Pcf", "PairCorrelation", "pcf", "effective_nyquist", "oscillations", "spectral_stats",

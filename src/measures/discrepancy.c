@@ -202,6 +202,99 @@ mcs_status mcs_discrepancy_l2_exact_random(mcs_discrepancy_measure measure, size
     return MCS_OK;
 }
 
+/* ---- Jittered points ----------------------------------------------------------
+ * One point uniform in each cell of a grid of n_1 x ... x n_d cells, K =
+ * prod n_l. With mu_c the uniform measure on cell c, the uniform measure is
+ * (1/K) sum_c mu_c and the points are independent, each unbiased for its
+ * cell, so the cross terms of E||(1/K) sum_c (h(x_c, .) - mu_c h)||^2 vanish:
+ *     E[D^2] = (1/K^2) sum_c (E h(x, x) - E h(x, y)),  x, y iid in cell c.
+ * Both terms factor over the axes: sum_c E h(x, x) = prod_l A_l and
+ * sum_c E h(x, y) = prod_l B_l, with, over the n strata s of an axis,
+ * A = sum_s E h1(u, u) = n e (e = E h1(x, x) of a uniform x, as for random
+ * points) and A - B = Delta = sum_s (E h1(u, u) - E h1(u, v)), u, v iid on
+ * [s/n, (s + 1)/n) of width w = 1/n. Per measure (E t = w/3, E t^2 = w^2/6,
+ * t = |u - v|; E max(u, v) - E u = E u - E min(u, v) = w/6; Var u = w^2/12):
+ *   L2 star, generalized  E max - E u, summed:                       1/6
+ *   centred   E (cu + cv - t)/2 - ... : the c terms cancel, E t / 2:  1/6
+ *     (so the kink of c = |x - 1/2| does not enter, even for odd n)
+ *   wrap-around  E t (1 - t), summed: n (w/3 - w^2/6) =      1/3 - 1/(6n)
+ *   symmetric    2 E t, summed:                                        2/3
+ *   unanchored   E u(1-u) - E min (1 - max) = (E u - E min) - Var u,
+ *                summed: n (w/6 - w^2/12) =                   1/6 - 1/(12n)
+ * Then E[D^2] = (prod_l A_l - prod_l B_l) / K^2 = (e^d - prod_l b_l) / K with
+ * b_l = e - Delta(n_l) / n_l, summed without cancellation as
+ * sum_l (prod_{i<l} b_i) (e - b_l) e^(d-1-l). One stratum (n = 1) gives
+ * b = C0^(1/d): the random expectation of one point. */
+
+/* Delta of measure m for an axis of n strata (the table above). */
+static double jitter_delta(int m, double n)
+{
+    switch (m) {
+    case MCS_DISCREPANCY_L2_WRAPAROUND: return 1.0 / 3.0 - 1.0 / (6.0 * n);
+    case MCS_DISCREPANCY_L2_SYMMETRIC: return 2.0 / 3.0;
+    case MCS_DISCREPANCY_L2_UNANCHORED: return 1.0 / 6.0 - 1.0 / (12.0 * n);
+    default: return 1.0 / 6.0; /* star, centred, generalized */
+    }
+}
+
+/* E[D^2] of measure m for a grid whose first axis has n_first strata and the
+ * dim - 1 others n_rest each (checked: dim in range, K = n_first n_rest^(dim-1)). */
+static double jittered_value(int m, size_t dim, size_t n_first, size_t n_rest)
+{
+    double e1[L2N];
+    diagonal_means(1u, e1);
+    const double e = e1[m];
+    double k = 1.0, prefix = 1.0, sum = 0.0;
+    for (size_t l = 0; l < dim; ++l) {
+        const double n = (double)(l == 0u ? n_first : n_rest), gap = jitter_delta(m, n) / n;
+        sum += prefix * gap * pow(e, (double)(dim - 1u - l));
+        prefix *= e - gap;
+        k *= n;
+    }
+    return sum / k;
+}
+
+/* Whether n_first n_rest^(dim - 1) points, each n at least 1, fit a size_t. */
+static int grid_ok(size_t dim, size_t n_first, size_t n_rest)
+{
+    if (n_first == 0u || n_rest == 0u)
+        return 0;
+    size_t k = n_first;
+    for (size_t l = 1; l < dim; ++l) {
+        if (k > SIZE_MAX / n_rest)
+            return 0;
+        k *= n_rest;
+    }
+    return 1;
+}
+
+static mcs_status exact_jittered(mcs_discrepancy_measure measure, size_t dim, size_t n_first,
+                                 size_t n_rest, double *out)
+{
+    if (out == NULL)
+        return MCS_ERR_NULL;
+    if (!measure_ok(measure))
+        return MCS_ERR_KIND;
+    if (measure == MCS_DISCREPANCY_STAR || !dim_ok(dim))
+        return MCS_ERR_DOMAIN;
+    if (!grid_ok(dim, n_first, n_rest))
+        return MCS_ERR_K_RANGE;
+    *out = jittered_value((int)measure, dim, n_first, n_rest);
+    return MCS_OK;
+}
+
+mcs_status mcs_discrepancy_l2_exact_jittered(mcs_discrepancy_measure measure, size_t n, size_t dim,
+                                             double *out)
+{
+    return exact_jittered(measure, dim, n, n, out);
+}
+
+mcs_status mcs_discrepancy_l2_exact_jittered2d(mcs_discrepancy_measure measure, size_t nx,
+                                               size_t ny, double *out)
+{
+    return exact_jittered(measure, 2u, nx, ny, out);
+}
+
 /* ---- The accumulator ------------------------------------------------------------- */
 
 /* MCS_ERR_NULL, MCS_ERR_UNINIT, MCS_ERR_INVARIANT as the header says. */

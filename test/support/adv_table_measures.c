@@ -195,6 +195,16 @@ static int t_discrepancy_l2_exact_random(const adv_val *a)
     int st = mcs_discrepancy_l2_exact_random((mcs_discrepancy_measure)a[0].e, a[1].z, a[2].z, a[3].p);
     return st == MCS_OK && !(*(double *)a[3].p > 0.0) ? broken("E[D^2] not > 0") : st;
 }
+static int t_discrepancy_l2_exact_jittered(const adv_val *a)
+{
+    int st = mcs_discrepancy_l2_exact_jittered((mcs_discrepancy_measure)a[0].e, a[1].z, a[2].z, a[3].p);
+    return st == MCS_OK && !(*(double *)a[3].p > 0.0) ? broken("E[D^2] not > 0") : st;
+}
+static int t_discrepancy_l2_exact_jittered2d(const adv_val *a)
+{
+    int st = mcs_discrepancy_l2_exact_jittered2d((mcs_discrepancy_measure)a[0].e, a[1].z, a[2].z, a[3].p);
+    return st == MCS_OK && !(*(double *)a[3].p > 0.0) ? broken("E[D^2] not > 0") : st;
+}
 static int t_discrepancy_star_work_size(const adv_val *a)
 {
     int st = mcs_discrepancy_star_work_size(a[0].z, a[1].p);
@@ -259,6 +269,11 @@ static int t_spacing_packing_distance(const adv_val *a)
 {
     int st = mcs_spacing_packing_distance(a[0].z, a[1].z, a[2].p);
     return st == MCS_OK && !(*(double *)a[2].p > 0.0) ? broken("d_max not > 0") : st;
+}
+static int t_spacing_exact_random(const adv_val *a)
+{
+    int st = mcs_spacing_exact_random((mcs_spacing_statistic)a[0].e, a[1].z, a[2].z, a[3].p);
+    return st == MCS_OK && !(*(double *)a[3].p > 0.0) ? broken("E not > 0") : st;
 }
 static int t_spacing_work_size(const adv_val *a)
 {
@@ -433,6 +448,12 @@ const adv_fn adv_fns_measures[] = {
        AIN("points", E_D, R_POINT, LEN2(L_PROD, 0, 1), 0), AOUT("d2", E_D, O_VAL, CONST_LEN(6), 0)),
     FN(discrepancy_l2_exact_random, EF_NONE, 1, 0, MEASURE(5), K_ANY("k", BK, 1, F_OKIN), DIM_D,
        OUT_NN("out")),
+    /* n from 1: n^dim fits a size_t for every dim; n^2 up to the largest n */
+    FN(discrepancy_l2_exact_jittered, EF_NONE, 1, 0, MEASURE(5),
+       SZ_DEF("n", 1, 1, ((size_t)1 << (4u * sizeof(size_t))) - 1u, F_OKIN), DIM_D, OUT_NN("out")),
+    FN(discrepancy_l2_exact_jittered2d, EF_NONE, 1, 0, MEASURE(5),
+       SZ_DEF("nx", 4, 1, SIZE_MAX / 4u, F_OKIN), SZ_DEF("ny", 4, 1, SIZE_MAX / 4u, F_OKIN),
+       OUT_NN("out")),
     FN(discrepancy_star_work_size, EF_NONE, 1, 0, STAR_K, OUT("bytes", E_Z, O_RAW, 0)),
     FN(discrepancy_star, EF_NONE, 1, 0, STAR_K, AIN("points", E_D, R_POINT, LEN(L_2SLOT, 0), 0),
        WORK("work", 3, 0), K_LEN("work_bytes", STAR_WORK, 1, 0), OUT_NN("out")),
@@ -453,6 +474,9 @@ const adv_fn adv_fns_measures[] = {
 
     FN(spacing_statistic_str, EF_NONE, 1, 0, ENM("statistic", 0, 0, 1, F_FREE)),
     FN(spacing_packing_distance, EF_NONE, 1, 0, DIM_S, K_ANY("k", 64, 1, F_OKIN), OUT_NN("out")),
+    /* 1D: both statistics have a value; 3D to 8D none (MCS_ERR_DOMAIN) */
+    FN(spacing_exact_random, EF_NONE, 1, 0, STATISTIC, SZ_DEF("dim", 1, 1, MCS_SPACING_MAX_DIM, 0),
+       K_ANY("k", 64, 2, F_OKIN), OUT_NN("out")),
     FN(spacing_work_size, EF_NONE, 1, 0, DIM_S, K_ANY("k", 64, 2, 0), OUT("bytes", E_Z, O_RAW, 0)),
     FN(spacing_distances, EF_NONE, 1, 0, K_LEN("k", 64, 2, F_OKIN), DIM_S,
        AIN("points", E_D, R_POINT, LEN2(L_PROD, 0, 1), 0), WORK("work", 4, 0),

@@ -1,0 +1,53 @@
+/* Point sets of a named kind fed like a file's sets (kindsets.h). */
+#include "kindsets.h"
+#include "cli.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+int cli_opt_given(const cli_opt *opts, size_t nopts, const char *name)
+{
+    for (size_t i = 0; i < nopts; ++i)
+        if (strcmp(opts[i].name, name) == 0)
+            return opts[i].given;
+    return 0;
+}
+
+int cli_kind_known(const char *name)
+{
+    char names[1024];
+    cli_sample_names(names, sizeof names);
+    const size_t len = strlen(name);
+    for (const char *p = names; len > 0u && (p = strstr(p, name)) != NULL; p += len) {
+        const int starts = p == names || p[-1] == ' ';
+        const int ends = p[len] == '\0' || p[len] == ',';
+        if (starts && ends)
+            return 1;
+    }
+    return 0;
+}
+
+int cli_kind_feed(const char *cmd, const cli_sample_source *src, uint64_t sets, uint64_t seed,
+                  cli_pointset_fn fn, void *ctx, cli_pointset_stats *stats, cli_progress *progress)
+{
+    memset(stats, 0, sizeof *stats);
+    stats->dim = src->dim;
+    double *pts = cli_alloc(cmd, src->k * src->dim, sizeof *pts);
+    if (pts == NULL)
+        return CLI_EXIT_FAIL;
+    mcs_rng rng;
+    int rc = mcs_rng_seed(&rng, seed, 0u) == MCS_OK ? 0 : cli_internal(cmd, "mcs_rng_seed failed");
+    for (uint64_t t = 0; rc == 0 && t < sets; ++t) {
+        rc = cli_sample_draw(cmd, src, &rng, pts);
+        if (rc == 0)
+            rc = fn(ctx, src->k, pts, NULL);
+        if (rc == 0) {
+            stats->sets = t + 1u;
+            stats->k_min = stats->k_max = src->k;
+        }
+        if (progress != NULL)
+            cli_progress_update(progress, t + 1u);
+    }
+    free(pts);
+    return rc;
+}
