@@ -12,36 +12,36 @@ static size_t blocks_of(size_t fmax)
     return fmax / B + 1u;
 }
 
-/* Offsets of the buffer's arrays from its first 64-byte boundary (the
- * head's), the end of the statistics, and the bytes asked of the caller. */
-typedef struct {
-    size_t mean, m2, stats, re, im, low, high, stage, stage_len, nufft, nufft_bytes, total;
-} layout;
+/* The arrays of the buffer, by their names in the layout: the statistics,
+ * then the scratch. */
+enum { MEAN, M2, RE, IM, LOW, HIGH, STAGE };
 
-static mcs_status layout_of(size_t fmax, unsigned flags, layout *lay)
+static mcs_status layout_of(size_t fmax, size_t flags, mcs_ps_layout *lay)
 {
     memset(lay, 0, sizeof *lay);
     if (fmax == 0u || fmax > (size_t)MCS_POINTSET_MAX_FREQ)
         return MCS_ERR_FREQ_RANGE;
-    if ((flags & ~(unsigned)MCS_POINTSET_DIRECT_ONLY) != 0u)
+    if ((flags & ~(size_t)MCS_POINTSET_DIRECT_ONLY) != 0u)
         return MCS_ERR_DOMAIN;
     const size_t blocks = blocks_of(fmax), d = sizeof(double);
+    lay->arg[0] = lay->shape[0] = fmax;
+    lay->arg[1] = flags;
     mcs_ps_carve c = {0u, 0};
     (void)mcs_ps_take(&c, 1u, sizeof(mcs_ps_head));
-    lay->mean = mcs_ps_take(&c, fmax + 1u, d);
-    lay->m2 = mcs_ps_take(&c, fmax + 1u, d);
+    lay->at[MEAN] = mcs_ps_take(&c, fmax + 1u, d);
+    lay->at[M2] = mcs_ps_take(&c, fmax + 1u, d);
     lay->stats = c.at;
-    lay->re = mcs_ps_take(&c, blocks * B, d);
-    lay->im = mcs_ps_take(&c, blocks * B, d);
-    lay->low = mcs_ps_take(&c, 8u * B, d);
-    lay->high = mcs_ps_take(&c, 8u * blocks, d);
+    lay->at[RE] = mcs_ps_take(&c, blocks * B, d);
+    lay->at[IM] = mcs_ps_take(&c, blocks * B, d);
+    lay->at[LOW] = mcs_ps_take(&c, 8u * B, d);
+    lay->at[HIGH] = mcs_ps_take(&c, 8u * blocks, d);
     if ((flags & MCS_POINTSET_DIRECT_ONLY) == 0u) {
         const size_t modes = 2u * (2u * fmax + 1u);
-        lay->stage_len = modes > MCS_POINTSET_STAGE_MIN ? modes : (size_t)MCS_POINTSET_STAGE_MIN;
-        lay->stage = mcs_ps_take(&c, lay->stage_len, d);
-        if (mcs_nufft_size(1u, fmax, MCS_POINTSET_NUFFT_TOL, &lay->nufft_bytes) != MCS_OK)
+        const size_t stage_len = modes > MCS_POINTSET_STAGE_MIN ? modes : (size_t)MCS_POINTSET_STAGE_MIN;
+        lay->at[STAGE] = mcs_ps_take(&c, stage_len, d);
+        if (mcs_nufft_size(1u, fmax, MCS_POINTSET_NUFFT_TOL, &lay->plan_bytes) != MCS_OK)
             return MCS_ERR_FREQ_RANGE;
-        lay->nufft = mcs_ps_take(&c, lay->nufft_bytes, 1u);
+        lay->plan = mcs_ps_take(&c, lay->plan_bytes, 1u);
     }
     lay->total = mcs_ps_total(&c);
     return lay->total == SIZE_MAX ? MCS_ERR_FREQ_RANGE : MCS_OK;
@@ -77,89 +77,65 @@ static mcs_status check_acc(const mcs_pointset *acc)
     return head->shape[0] == acc->freq_max ? MCS_OK : MCS_ERR_INVARIANT;
 }
 
-mcs_status mcs_pointset_size(size_t freq_max, unsigned flags, size_t *bytes)
+static mcs_status view_of(const void *obj, mcs_ps_view *v)
 {
-    if (bytes == NULL)
-        return MCS_ERR_NULL;
-    layout lay;
-    mcs_status st = layout_of(freq_max, flags, &lay);
-    if (st == MCS_OK)
-        *bytes = lay.total;
+    const mcs_pointset *a = obj;
+    mcs_status st = check_acc(a);
+    if (st == MCS_OK) {
+        const mcs_ps_view view = {{a->freq_max, a->flags}, a->mem, a->bytes, a->state};
+        *v = view;
+    }
     return st;
 }
 
-/* The header over mem for checked arguments (pointset2d.c's set_up). */
-static void set_up(mcs_pointset *h, size_t fmax, unsigned flags, void *mem, const layout *lay)
+/* The header over mem for a checked layout (mcs_ps_kind's set_up). */
+static void set_up(void *obj, void *mem, const mcs_ps_layout *lay, const void *like)
 {
+    mcs_pointset *h = obj;
+    const mcs_pointset *src = like;
     unsigned char *base = mcs_ps_aligned(mem);
-    memset(h, 0, sizeof *h);
+    const size_t fmax = lay->arg[0];
+    const unsigned flags = (unsigned)lay->arg[1];
     h->freq_max = fmax;
     h->flags = flags;
-    h->path = (flags & MCS_POINTSET_DIRECT_ONLY) != 0u ? MCS_POINTSET_PATH_DIRECT
-                                                        : MCS_POINTSET_PATH_AUTO;
+    h->path = src != NULL ? src->path
+              : (flags & MCS_POINTSET_DIRECT_ONLY) != 0u ? MCS_POINTSET_PATH_DIRECT
+                                                         : MCS_POINTSET_PATH_AUTO;
+    h->wrap = src != NULL ? src->wrap : 0;
     h->mem = mem;
     h->bytes = lay->total;
     h->state = (void *)base;
-    h->mean = (double *)(void *)(base + lay->mean);
-    h->m2 = (double *)(void *)(base + lay->m2);
-    h->re = (double *)(void *)(base + lay->re);
-    h->im = (double *)(void *)(base + lay->im);
-    h->low = (double *)(void *)(base + lay->low);
-    h->high = (double *)(void *)(base + lay->high);
-    memset(base, 0, lay->stats);
-    ((mcs_ps_head *)(void *)base)->shape[0] = fmax;
+    h->mean = mcs_ps_array(base, lay, MEAN);
+    h->m2 = mcs_ps_array(base, lay, M2);
+    h->re = mcs_ps_array(base, lay, RE);
+    h->im = mcs_ps_array(base, lay, IM);
+    h->low = mcs_ps_array(base, lay, LOW);
+    h->high = mcs_ps_array(base, lay, HIGH);
     if ((flags & MCS_POINTSET_DIRECT_ONLY) == 0u) {
-        h->stage = (double *)(void *)(base + lay->stage);
-        /* cannot fail: the size query above took the same arguments */
-        (void)mcs_nufft_init(&h->plan, 1u, fmax, MCS_POINTSET_NUFFT_TOL, base + lay->nufft,
-                             lay->nufft_bytes);
+        h->stage = mcs_ps_array(base, lay, STAGE);
+        /* cannot fail: the size query took the same arguments */
+        (void)mcs_nufft_init(&h->plan, 1u, fmax, MCS_POINTSET_NUFFT_TOL, base + lay->plan,
+                             lay->plan_bytes);
     }
     h->key = key_of(h);
+}
+
+static const mcs_ps_kind KIND = {sizeof(mcs_pointset), layout_of, view_of, set_up};
+
+mcs_status mcs_pointset_size(size_t freq_max, unsigned flags, size_t *bytes)
+{
+    return mcs_ps_size_(&KIND, freq_max, flags, bytes);
 }
 
 mcs_status mcs_pointset_init(mcs_pointset *acc, size_t freq_max, unsigned flags, void *mem,
                              size_t bytes)
 {
-    if (acc == NULL || mem == NULL)
-        return MCS_ERR_NULL;
-    layout lay;
-    mcs_status st = layout_of(freq_max, flags, &lay);
-    if (st != MCS_OK)
-        return st;
-    if (bytes < lay.total)
-        return MCS_ERR_SPACE;
-    if (mcs_overlap_(mem, lay.total, acc, sizeof *acc))
-        return MCS_ERR_ALIAS;
-    mcs_pointset h;
-    set_up(&h, freq_max, flags, mem, &lay);
-    *acc = h;
-    return MCS_OK;
+    return mcs_ps_init_(&KIND, acc, freq_max, flags, mem, bytes);
 }
 
 mcs_status mcs_pointset_copy(mcs_pointset *dst, void *mem, size_t bytes, const mcs_pointset *src)
 {
-    if (dst == NULL || mem == NULL)
-        return MCS_ERR_NULL;
-    mcs_status st = check_acc(src);
-    if (st != MCS_OK)
-        return st;
-    layout lay;
-    (void)layout_of(src->freq_max, src->flags, &lay); /* cannot fail: src passed init */
-    if (bytes < lay.total)
-        return MCS_ERR_SPACE;
-    if (mcs_overlap_(mem, lay.total, dst, sizeof *dst) ||
-        mcs_overlap_(mem, lay.total, src, sizeof *src) ||
-        mcs_overlap_(mem, lay.total, src->mem, src->bytes) ||
-        (dst != src && mcs_overlap_(dst, sizeof *dst, src, sizeof *src)))
-        return MCS_ERR_ALIAS;
-    mcs_pointset h;
-    set_up(&h, src->freq_max, src->flags, mem, &lay);
-    memcpy(h.state, src->state, lay.stats);
-    h.path = src->path;
-    h.wrap = src->wrap;
-    h.key = key_of(&h);
-    *dst = h;
-    return MCS_OK;
+    return mcs_ps_copy_(&KIND, dst, mem, bytes, src);
 }
 
 mcs_status mcs_pointset_set_path(mcs_pointset *acc, mcs_pointset_path path)

@@ -15,6 +15,7 @@
 
 #include "accumulators/acc_internal.h"
 #include "mcspec/pointset.h"
+#include "mcspec/pointset2d.h"
 #include "mcspec/spectrum2d.h"
 #include "mcspec/status.h"
 
@@ -69,6 +70,66 @@ static inline size_t mcs_ps_take(mcs_ps_carve *c, size_t count, size_t elem)
 static inline size_t mcs_ps_total(const mcs_ps_carve *c)
 {
     return c->overflow ? SIZE_MAX : c->at + (MCS_PS_ALIGN - 1u);
+}
+
+/* ---- an object's life cycle over the caller's buffer (pointset_common.c) ----
+ * mcs_pointset, mcs_pointset2d and mcs_spectrum2d share their size query,
+ * init and copy: each describes itself by an mcs_ps_kind, whose layout
+ * gives the offsets of its arrays for its two arguments (F and flags, or
+ * N1 and N2), and whose set_up fills its header over a buffer. */
+#define MCS_PS_MAX_ARRAYS 12 /* spectrum2d's twelve */
+
+typedef struct {
+    size_t arg[2];                /* F and flags, or N1 and N2 */
+    size_t shape[2];              /* the head's shape words: F and 0, or N1 and N2 */
+    size_t at[MCS_PS_MAX_ARRAYS]; /* the arrays' offsets from the head, by the kind's names */
+    size_t plan, plan_bytes;      /* the NUFFT plan's memory (0 bytes: no plan) */
+    size_t stats;                 /* the end of the head and the statistics: a copy's bytes */
+    size_t total;                 /* bytes to ask of the caller (SIZE_MAX: too large) */
+} mcs_ps_layout;
+
+/* What a copy reads of an object that passed its own check. */
+typedef struct {
+    size_t arg[2];     /* its layout's arguments */
+    const void *mem;   /* its buffer, as given */
+    size_t bytes;      /* bytes of it in use */
+    const void *state; /* its head, then its statistics */
+} mcs_ps_view;
+
+typedef struct {
+    size_t hdr; /* sizeof the header */
+    /* The layout for (a, b), or the size query's error (lay then partial). */
+    mcs_status (*layout)(size_t a, size_t b, mcs_ps_layout *lay);
+    /* The object's own check (MCS_ERR_NULL, _UNINIT, _INVARIANT) and, if
+     * it passes, *v. */
+    mcs_status (*view)(const void *obj, mcs_ps_view *v);
+    /* The zeroed header h over mem for the checked layout lay: its fields
+     * and arrays, the NUFFT plan or the twiddles built, the settings (path,
+     * wrap) init's or like's (a copy's source; NULL for init), the key. */
+    void (*set_up)(void *h, void *mem, const mcs_ps_layout *lay, const void *like);
+} mcs_ps_kind;
+
+/* The size query: *bytes = the layout's total. MCS_ERR_NULL, or the
+ * layout's error; *bytes untouched on error. */
+mcs_status mcs_ps_size_(const mcs_ps_kind *kind, size_t a, size_t b, size_t *bytes);
+
+/* init: the header over mem[bytes] for (a, b), its statistics zeroed.
+ * MCS_ERR_NULL (acc, mem), the layout's error, MCS_ERR_SPACE, MCS_ERR_ALIAS
+ * (mem overlaps *acc); *acc and mem untouched on error. */
+mcs_status mcs_ps_init_(const mcs_ps_kind *kind, void *acc, size_t a, size_t b, void *mem,
+                        size_t bytes);
+
+/* copy: *dst <- src over mem[bytes], src's statistics and settings.
+ * MCS_ERR_NULL (dst, mem), src's own check, MCS_ERR_SPACE, MCS_ERR_ALIAS (mem
+ * overlaps *dst, *src or src's buffer; *dst overlaps *src unless dst == src);
+ * *dst and mem untouched on error. */
+mcs_status mcs_ps_copy_(const mcs_ps_kind *kind, void *dst, void *mem, size_t bytes,
+                        const void *src);
+
+/* A pointer to array `name` of lay in the buffer whose head is at base. */
+static inline double *mcs_ps_array(unsigned char *base, const mcs_ps_layout *lay, int name)
+{
+    return (double *)(void *)(base + lay->at[name]);
 }
 
 /* A hash of an object header's words (its key): a header that init did not
