@@ -98,9 +98,7 @@ static void set_up(void *obj, void *mem, const mcs_ps_layout *lay, const void *l
     const unsigned flags = (unsigned)lay->arg[1];
     h->freq_max = fmax;
     h->flags = flags;
-    h->path = src != NULL ? src->path
-              : (flags & MCS_POINTSET_DIRECT_ONLY) != 0u ? MCS_POINTSET_PATH_DIRECT
-                                                         : MCS_POINTSET_PATH_AUTO;
+    h->path = src != NULL ? src->path : mcs_ps_first_path(flags);
     h->wrap = src != NULL ? src->wrap : 0;
     h->mem = mem;
     h->bytes = lay->total;

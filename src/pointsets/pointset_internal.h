@@ -126,6 +126,14 @@ mcs_status mcs_ps_init_(const mcs_ps_kind *kind, void *acc, size_t a, size_t b, 
 mcs_status mcs_ps_copy_(const mcs_ps_kind *kind, void *dst, void *mem, size_t bytes,
                         const void *src);
 
+/* A point-set accumulator's path after init: DIRECT with
+ * MCS_POINTSET_DIRECT_ONLY among the flags, else AUTO. */
+static inline mcs_pointset_path mcs_ps_first_path(unsigned flags)
+{
+    return (flags & MCS_POINTSET_DIRECT_ONLY) != 0u ? MCS_POINTSET_PATH_DIRECT
+                                                    : MCS_POINTSET_PATH_AUTO;
+}
+
 /* A pointer to array `name` of lay in the buffer whose head is at base. */
 static inline double *mcs_ps_array(unsigned char *base, const mcs_ps_layout *lay, int name)
 {
