@@ -16,16 +16,15 @@ static size_t blocks_of(size_t fmax)
  * then the scratch. */
 enum { MEAN, M2, RE, IM, LOW, HIGH, STAGE };
 
-static mcs_status layout_of(size_t fmax, size_t flags, mcs_ps_layout *lay)
+static mcs_status layout_of(size_t fmax, unsigned flags, mcs_ps_layout *lay)
 {
     memset(lay, 0, sizeof *lay);
     if (fmax == 0u || fmax > (size_t)MCS_POINTSET_MAX_FREQ)
         return MCS_ERR_FREQ_RANGE;
-    if ((flags & ~(size_t)MCS_POINTSET_DIRECT_ONLY) != 0u)
+    if ((flags & ~(unsigned)MCS_POINTSET_DIRECT_ONLY) != 0u)
         return MCS_ERR_DOMAIN;
     const size_t blocks = blocks_of(fmax), d = sizeof(double);
-    lay->arg[0] = lay->shape[0] = fmax;
-    lay->arg[1] = flags;
+    lay->shape[0] = fmax;
     mcs_ps_carve c = {0u, 0};
     (void)mcs_ps_take(&c, 1u, sizeof(mcs_ps_head));
     lay->at[MEAN] = mcs_ps_take(&c, fmax + 1u, d);
@@ -77,63 +76,70 @@ static mcs_status check_acc(const mcs_pointset *acc)
     return head->shape[0] == acc->freq_max ? MCS_OK : MCS_ERR_INVARIANT;
 }
 
-static mcs_status view_of(const void *obj, mcs_ps_view *v)
+/* *acc <- the header over mem for the checked layout lay of (fmax, flags),
+ * the statistics zeroed (src NULL) or src's, with src's path and wrap. */
+static void set_up(mcs_pointset *acc, size_t fmax, unsigned flags, void *mem,
+                   const mcs_ps_layout *lay, const mcs_pointset *src)
 {
-    const mcs_pointset *a = obj;
-    mcs_status st = check_acc(a);
-    if (st == MCS_OK) {
-        const mcs_ps_view view = {{a->freq_max, a->flags}, a->mem, a->bytes, a->state};
-        *v = view;
-    }
-    return st;
-}
-
-/* The header over mem for a checked layout (mcs_ps_kind's set_up). */
-static void set_up(void *obj, void *mem, const mcs_ps_layout *lay, const void *like)
-{
-    mcs_pointset *h = obj;
-    const mcs_pointset *src = like;
-    unsigned char *base = mcs_ps_aligned(mem);
-    const size_t fmax = lay->arg[0];
-    const unsigned flags = (unsigned)lay->arg[1];
-    h->freq_max = fmax;
-    h->flags = flags;
-    h->path = src != NULL ? src->path : mcs_ps_first_path(flags);
-    h->wrap = src != NULL ? src->wrap : 0;
-    h->mem = mem;
-    h->bytes = lay->total;
-    h->state = (void *)base;
-    h->mean = mcs_ps_array(base, lay, MEAN);
-    h->m2 = mcs_ps_array(base, lay, M2);
-    h->re = mcs_ps_array(base, lay, RE);
-    h->im = mcs_ps_array(base, lay, IM);
-    h->low = mcs_ps_array(base, lay, LOW);
-    h->high = mcs_ps_array(base, lay, HIGH);
+    /* src may be acc: what it says is read before acc is written */
+    const mcs_pointset_path path = src != NULL ? src->path : mcs_ps_first_path(flags);
+    const int wrap = src != NULL ? src->wrap : 0;
+    unsigned char *base = mcs_ps_set_up_stats_(mem, lay, src != NULL ? src->state : NULL);
+    memset(acc, 0, sizeof *acc);
+    acc->freq_max = fmax;
+    acc->flags = flags;
+    acc->path = path;
+    acc->wrap = wrap;
+    acc->mem = mem;
+    acc->bytes = lay->total;
+    acc->state = (void *)base;
+    acc->mean = mcs_ps_array(base, lay, MEAN);
+    acc->m2 = mcs_ps_array(base, lay, M2);
+    acc->re = mcs_ps_array(base, lay, RE);
+    acc->im = mcs_ps_array(base, lay, IM);
+    acc->low = mcs_ps_array(base, lay, LOW);
+    acc->high = mcs_ps_array(base, lay, HIGH);
     if ((flags & MCS_POINTSET_DIRECT_ONLY) == 0u) {
-        h->stage = mcs_ps_array(base, lay, STAGE);
+        acc->stage = mcs_ps_array(base, lay, STAGE);
         /* cannot fail: the size query took the same arguments */
-        (void)mcs_nufft_init(&h->plan, 1u, fmax, MCS_POINTSET_NUFFT_TOL, base + lay->plan,
+        (void)mcs_nufft_init(&acc->plan, 1u, fmax, MCS_POINTSET_NUFFT_TOL, base + lay->plan,
                              lay->plan_bytes);
     }
-    h->key = key_of(h);
+    acc->key = key_of(acc);
 }
-
-static const mcs_ps_kind KIND = {sizeof(mcs_pointset), layout_of, view_of, set_up};
 
 mcs_status mcs_pointset_size(size_t freq_max, unsigned flags, size_t *bytes)
 {
-    return mcs_ps_size_(&KIND, freq_max, flags, bytes);
+    mcs_ps_layout lay;
+    return mcs_ps_size_(layout_of(freq_max, flags, &lay), &lay, bytes);
 }
 
 mcs_status mcs_pointset_init(mcs_pointset *acc, size_t freq_max, unsigned flags, void *mem,
                              size_t bytes)
 {
-    return mcs_ps_init_(&KIND, acc, freq_max, flags, mem, bytes);
+    const mcs_ps_span to = {acc, sizeof *acc, mem, bytes};
+    mcs_ps_layout lay;
+    mcs_status st = mcs_ps_check_init_(&to, layout_of(freq_max, flags, &lay), &lay);
+    if (st == MCS_OK)
+        set_up(acc, freq_max, flags, mem, &lay, NULL);
+    return st;
 }
 
 mcs_status mcs_pointset_copy(mcs_pointset *dst, void *mem, size_t bytes, const mcs_pointset *src)
 {
-    return mcs_ps_copy_(&KIND, dst, mem, bytes, src);
+    const mcs_ps_span to = {dst, sizeof *dst, mem, bytes};
+    mcs_ps_span from = {src, sizeof *src, NULL, 0u};
+    mcs_ps_layout lay;
+    mcs_status st = check_acc(src);
+    if (st == MCS_OK) {
+        from.mem = src->mem;
+        from.bytes = src->bytes;
+        st = layout_of(src->freq_max, src->flags, &lay); /* MCS_OK: src passed init */
+    }
+    st = mcs_ps_check_copy_(&to, &from, st, &lay);
+    if (st == MCS_OK)
+        set_up(dst, src->freq_max, src->flags, mem, &lay, src);
+    return st;
 }
 
 mcs_status mcs_pointset_set_path(mcs_pointset *acc, mcs_pointset_path path)

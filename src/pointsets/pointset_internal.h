@@ -73,58 +73,51 @@ static inline size_t mcs_ps_total(const mcs_ps_carve *c)
 }
 
 /* ---- an object's life cycle over the caller's buffer (pointset_common.c) ----
- * mcs_pointset, mcs_pointset2d and mcs_spectrum2d share their size query,
- * init and copy: each describes itself by an mcs_ps_kind, whose layout
- * gives the offsets of its arrays for its two arguments (F and flags, or
- * N1 and N2), and whose set_up fills its header over a buffer. */
+ * mcs_pointset, mcs_pointset2d and mcs_spectrum2d share the checks of their
+ * size query, init and copy, and the set-up of the statistics in the
+ * buffer. Each object's file keeps its layout (the offsets of its arrays
+ * for its two arguments: F and flags, or N1 and N2) and the set-up of its
+ * header, and calls these directly: no call goes through a function
+ * pointer, so make stack follows every chain. */
 #define MCS_PS_MAX_ARRAYS 12 /* spectrum2d's twelve */
 
 typedef struct {
-    size_t arg[2];                /* F and flags, or N1 and N2 */
     size_t shape[2];              /* the head's shape words: F and 0, or N1 and N2 */
-    size_t at[MCS_PS_MAX_ARRAYS]; /* the arrays' offsets from the head, by the kind's names */
+    size_t at[MCS_PS_MAX_ARRAYS]; /* the arrays' offsets from the head, by the file's names */
     size_t plan, plan_bytes;      /* the NUFFT plan's memory (0 bytes: no plan) */
     size_t stats;                 /* the end of the head and the statistics: a copy's bytes */
     size_t total;                 /* bytes to ask of the caller (SIZE_MAX: too large) */
 } mcs_ps_layout;
 
-/* What a copy reads of an object that passed its own check. */
+/* An object header and the buffer it is, or is to be, over. */
 typedef struct {
-    size_t arg[2];     /* its layout's arguments */
-    const void *mem;   /* its buffer, as given */
-    size_t bytes;      /* bytes of it in use */
-    const void *state; /* its head, then its statistics */
-} mcs_ps_view;
+    const void *obj; /* the header */
+    size_t hdr;      /* sizeof the header */
+    const void *mem; /* the buffer, as given */
+    size_t bytes;    /* its length */
+} mcs_ps_span;
 
-typedef struct {
-    size_t hdr; /* sizeof the header */
-    /* The layout for (a, b), or the size query's error (lay then partial). */
-    mcs_status (*layout)(size_t a, size_t b, mcs_ps_layout *lay);
-    /* The object's own check (MCS_ERR_NULL, _UNINIT, _INVARIANT) and, if
-     * it passes, *v. */
-    mcs_status (*view)(const void *obj, mcs_ps_view *v);
-    /* The zeroed header h over mem for the checked layout lay: its fields
-     * and arrays, the NUFFT plan or the twiddles built, the settings (path,
-     * wrap) init's or like's (a copy's source; NULL for init), the key. */
-    void (*set_up)(void *h, void *mem, const mcs_ps_layout *lay, const void *like);
-} mcs_ps_kind;
+/* The size query once the layout gave st: *bytes = lay's total.
+ * MCS_ERR_NULL before st; *bytes untouched on error. */
+mcs_status mcs_ps_size_(mcs_status st, const mcs_ps_layout *lay, size_t *bytes);
 
-/* The size query: *bytes = the layout's total. MCS_ERR_NULL, or the
- * layout's error; *bytes untouched on error. */
-mcs_status mcs_ps_size_(const mcs_ps_kind *kind, size_t a, size_t b, size_t *bytes);
+/* The checks of an init of header to.obj over buffer to.mem[to.bytes] once
+ * the layout gave st: MCS_ERR_NULL (no header or buffer), st, MCS_ERR_SPACE,
+ * MCS_ERR_ALIAS (the buffer overlaps the header), in that order. */
+mcs_status mcs_ps_check_init_(const mcs_ps_span *to, mcs_status st, const mcs_ps_layout *lay);
 
-/* init: the header over mem[bytes] for (a, b), its statistics zeroed.
- * MCS_ERR_NULL (acc, mem), the layout's error, MCS_ERR_SPACE, MCS_ERR_ALIAS
- * (mem overlaps *acc); *acc and mem untouched on error. */
-mcs_status mcs_ps_init_(const mcs_ps_kind *kind, void *acc, size_t a, size_t b, void *mem,
-                        size_t bytes);
+/* The checks of a copy of from (its own check and layout gave st, lay; from
+ * read only if st is MCS_OK) to header to.obj over to.mem[to.bytes]:
+ * MCS_ERR_NULL (no header or buffer), st, MCS_ERR_SPACE, MCS_ERR_ALIAS (the
+ * buffer overlaps either header or from's buffer, or the headers overlap
+ * and are not one), in that order. */
+mcs_status mcs_ps_check_copy_(const mcs_ps_span *to, const mcs_ps_span *from, mcs_status st,
+                              const mcs_ps_layout *lay);
 
-/* copy: *dst <- src over mem[bytes], src's statistics and settings.
- * MCS_ERR_NULL (dst, mem), src's own check, MCS_ERR_SPACE, MCS_ERR_ALIAS (mem
- * overlaps *dst, *src or src's buffer; *dst overlaps *src unless dst == src);
- * *dst and mem untouched on error. */
-mcs_status mcs_ps_copy_(const mcs_ps_kind *kind, void *dst, void *mem, size_t bytes,
-                        const void *src);
+/* The head of a checked buffer mem for lay, its statistics zeroed under
+ * the shape words (stats NULL: init) or copied from stats (a copy's source
+ * head). */
+unsigned char *mcs_ps_set_up_stats_(void *mem, const mcs_ps_layout *lay, const void *stats);
 
 /* A point-set accumulator's path after init: DIRECT with
  * MCS_POINTSET_DIRECT_ONLY among the flags, else AUTO. */

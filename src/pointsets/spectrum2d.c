@@ -50,8 +50,8 @@ static mcs_status layout_of(size_t n_x, size_t n_y, mcs_ps_layout *lay)
     if (!side_ok(n_x) || !side_ok(n_y))
         return MCS_ERR_N_RANGE;
     const size_t cells = cells_for(n_x, n_y), d = sizeof(double);
-    lay->arg[0] = lay->shape[0] = n_x;
-    lay->arg[1] = lay->shape[1] = n_y;
+    lay->shape[0] = n_x;
+    lay->shape[1] = n_y;
     mcs_ps_carve c = {0u, 0};
     (void)mcs_ps_take(&c, 1u, sizeof(mcs_ps_head));
     lay->at[MEAN_RE] = mcs_ps_take(&c, cells, d);
@@ -168,66 +168,73 @@ static mcs_status check_body(const mcs_spectrum2d *acc)
     return sound ? MCS_OK : MCS_ERR_INVARIANT;
 }
 
-static mcs_status view_of(const void *obj, mcs_ps_view *v)
+/* *acc <- the header over mem for the checked layout lay of N1 x N2:
+ * arrays at their offsets, the twiddles built, the statistics zeroed (src
+ * NULL) or src's, with src's wrap. */
+static void set_up(mcs_spectrum2d *acc, size_t n_x, size_t n_y, void *mem,
+                   const mcs_ps_layout *lay, const mcs_spectrum2d *src)
 {
-    const mcs_spectrum2d *a = obj;
-    mcs_status st = check_acc(a);
-    if (st == MCS_OK) {
-        const mcs_ps_view view = {{a->n_x, a->n_y}, a->mem, a->bytes, a->state};
-        *v = view;
-    }
-    return st;
-}
-
-/* The header over mem for a checked layout (mcs_ps_kind's set_up): arrays
- * at their offsets, the twiddles built. */
-static void set_up(void *obj, void *mem, const mcs_ps_layout *lay, const void *like)
-{
-    mcs_spectrum2d *h = obj;
-    const mcs_spectrum2d *src = like;
-    unsigned char *base = mcs_ps_aligned(mem);
-    h->n_x = lay->arg[0];
-    h->n_y = lay->arg[1];
-    h->wrap = src != NULL ? src->wrap : 0;
-    h->mem = mem;
-    h->bytes = lay->total;
-    h->state = (void *)base;
+    const int wrap = src != NULL ? src->wrap : 0; /* src may be acc */
+    unsigned char *base = mcs_ps_set_up_stats_(mem, lay, src != NULL ? src->state : NULL);
+    memset(acc, 0, sizeof *acc);
+    acc->n_x = n_x;
+    acc->n_y = n_y;
+    acc->wrap = wrap;
+    acc->mem = mem;
+    acc->bytes = lay->total;
+    acc->state = (void *)base;
 #define AT_(name) mcs_ps_array(base, lay, name)
-    h->mean_re = AT_(MEAN_RE);
-    h->mean_im = AT_(MEAN_IM);
-    h->m2_s = AT_(M2_S);
-    h->mean_pow = AT_(MEAN_POW);
-    h->m2_pow = AT_(M2_POW);
-    h->cos_x = AT_(COS_X);
-    h->sin_x = AT_(SIN_X);
-    h->cos_y = AT_(COS_Y);
-    h->sin_y = AT_(SIN_Y);
-    h->re = AT_(RE);
-    h->im = AT_(IM);
-    h->rows = AT_(ROWS);
+    acc->mean_re = AT_(MEAN_RE);
+    acc->mean_im = AT_(MEAN_IM);
+    acc->m2_s = AT_(M2_S);
+    acc->mean_pow = AT_(MEAN_POW);
+    acc->m2_pow = AT_(M2_POW);
+    acc->cos_x = AT_(COS_X);
+    acc->sin_x = AT_(SIN_X);
+    acc->cos_y = AT_(COS_Y);
+    acc->sin_y = AT_(SIN_Y);
+    acc->re = AT_(RE);
+    acc->im = AT_(IM);
+    acc->rows = AT_(ROWS);
 #undef AT_
-    mcs_twiddles_(h->n_x, h->cos_x, h->sin_x);
-    mcs_twiddles_(h->n_y, h->cos_y, h->sin_y);
-    h->key = key_of(h);
+    mcs_twiddles_(n_x, acc->cos_x, acc->sin_x);
+    mcs_twiddles_(n_y, acc->cos_y, acc->sin_y);
+    acc->key = key_of(acc);
 }
-
-static const mcs_ps_kind KIND = {sizeof(mcs_spectrum2d), layout_of, view_of, set_up};
 
 mcs_status mcs_spectrum2d_size(size_t n_x, size_t n_y, size_t *bytes)
 {
-    return mcs_ps_size_(&KIND, n_x, n_y, bytes);
+    mcs_ps_layout lay;
+    return mcs_ps_size_(layout_of(n_x, n_y, &lay), &lay, bytes);
 }
 
 mcs_status mcs_spectrum2d_init(mcs_spectrum2d *acc, size_t n_x, size_t n_y, void *mem,
                                size_t bytes)
 {
-    return mcs_ps_init_(&KIND, acc, n_x, n_y, mem, bytes);
+    const mcs_ps_span to = {acc, sizeof *acc, mem, bytes};
+    mcs_ps_layout lay;
+    mcs_status st = mcs_ps_check_init_(&to, layout_of(n_x, n_y, &lay), &lay);
+    if (st == MCS_OK)
+        set_up(acc, n_x, n_y, mem, &lay, NULL);
+    return st;
 }
 
 mcs_status mcs_spectrum2d_copy(mcs_spectrum2d *dst, void *mem, size_t bytes,
                                const mcs_spectrum2d *src)
 {
-    return mcs_ps_copy_(&KIND, dst, mem, bytes, src);
+    const mcs_ps_span to = {dst, sizeof *dst, mem, bytes};
+    mcs_ps_span from = {src, sizeof *src, NULL, 0u};
+    mcs_ps_layout lay;
+    mcs_status st = check_acc(src);
+    if (st == MCS_OK) {
+        from.mem = src->mem;
+        from.bytes = src->bytes;
+        st = layout_of(src->n_x, src->n_y, &lay); /* MCS_OK: src passed init */
+    }
+    st = mcs_ps_check_copy_(&to, &from, st, &lay);
+    if (st == MCS_OK)
+        set_up(dst, src->n_x, src->n_y, mem, &lay, src);
+    return st;
 }
 
 mcs_status mcs_spectrum2d_set_wrap(mcs_spectrum2d *acc, int wrap)
