@@ -249,12 +249,21 @@ static int emit_set(const reader *r, const cli_pointset_format *fmt, point_buf *
     return 0;
 }
 
-/* The line from its first non-blank character on ("" for a blank line). */
-static char *skip_blanks(char *line)
+/* The next line that is not blank, from its first non-blank character on:
+ * 1, or 0 at the end of the input, or -1 (reported) as reader_next. */
+static int next_text(reader *r, char **text)
 {
-    while (is_blank(*line))
-        ++line;
-    return line;
+    char *line = NULL;
+    int got;
+    while ((got = reader_next(r, &line)) > 0) {
+        while (is_blank(*line))
+            ++line;
+        if (*line != '\0') {
+            *text = line;
+            return 1;
+        }
+    }
+    return got;
 }
 
 /* A point line s of either format (not blank, not '#'): its columns (the
@@ -289,12 +298,9 @@ static int read_sets(reader *r, const cli_pointset_format *fmt, point_buf *b,
 {
     cli_pointset_stats *stats = out->stats;
     unsigned long sep_line = 0;
-    char *line = NULL;
+    char *s = NULL;
     int got;
-    while ((got = reader_next(r, &line)) > 0) {
-        char *s = skip_blanks(line);
-        if (*s == '\0')
-            continue;
+    while ((got = next_text(r, &s)) > 0) {
         if (*s == '#') {
             if (b->k > 0u) {
                 int rc = emit_set(r, fmt, b, out);
@@ -460,12 +466,9 @@ static int read_psa_lines(reader *r, const cli_pointset_format *fmt, point_buf *
 {
     size_t want = 0u;
     unsigned long count_line = 0;
-    char *line = NULL;
+    char *s = NULL;
     int got;
-    while ((got = reader_next(r, &line)) > 0) {
-        char *s = skip_blanks(line);
-        if (*s == '\0')
-            continue;
+    while ((got = next_text(r, &s)) > 0) {
         if (*s == '#')
             return cli_fail(r->cmd, "%s: line %lu: a '#' line: psa's files hold one set, its "
                             "count on the first line, and no comments (a utk file? drop --format "
