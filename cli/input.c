@@ -292,7 +292,8 @@ static int point_line(const reader *r, const cli_pointset_format *fmt, point_buf
     return rc;
 }
 
-/* utk's line loop: rc 0 at the end of the input with every set emitted. */
+/* utk's line loop: rc 0 at the end of the input with every set emitted, one at
+ * least. */
 static int read_sets(reader *r, const cli_pointset_format *fmt, point_buf *b,
                      const set_sink *out)
 {

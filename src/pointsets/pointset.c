@@ -36,7 +36,8 @@ static mcs_status layout_of(size_t fmax, unsigned flags, mcs_ps_layout *lay)
     lay->at[HIGH] = mcs_ps_take(&c, 8u * blocks, d);
     if ((flags & MCS_POINTSET_DIRECT_ONLY) == 0u) {
         const size_t modes = 2u * (2u * fmax + 1u);
-        const size_t stage_len = modes > MCS_POINTSET_STAGE_MIN ? modes : (size_t)MCS_POINTSET_STAGE_MIN;
+        const size_t stage_len =
+            modes > MCS_POINTSET_STAGE_MIN ? modes : (size_t)MCS_POINTSET_STAGE_MIN;
         lay->at[STAGE] = mcs_ps_take(&c, stage_len, d);
         if (mcs_nufft_size(1u, fmax, MCS_POINTSET_NUFFT_TOL, &lay->plan_bytes) != MCS_OK)
             return MCS_ERR_FREQ_RANGE;

@@ -48,7 +48,8 @@ static mcs_status layout_of(size_t fmax, unsigned flags, mcs_ps_layout *lay)
     lay->at[PHASE] = mcs_ps_take(&c, 16u * (side + 1u), d);
     if ((flags & MCS_POINTSET_DIRECT_ONLY) == 0u) {
         const size_t modes = 2u * side * side; /* within the caps: no overflow */
-        const size_t stage_len = modes > MCS_POINTSET_STAGE_MIN ? modes : (size_t)MCS_POINTSET_STAGE_MIN;
+        const size_t stage_len =
+            modes > MCS_POINTSET_STAGE_MIN ? modes : (size_t)MCS_POINTSET_STAGE_MIN;
         lay->at[STAGE] = mcs_ps_take(&c, stage_len, d);
         mcs_status st = mcs_nufft_size(2u, fmax, MCS_POINTSET_NUFFT_TOL, &lay->plan_bytes);
         if (st != MCS_OK)

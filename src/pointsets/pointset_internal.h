@@ -1,7 +1,8 @@
 /* Helpers shared by the point-set periodogram accumulators (pointset.c,
  * pointset2d.c, pointset_exact.c) and the binned 2D spectrum (spectrum2d.c,
  * spectrum2d_exact.c), and by their records (io/io_points.c): the layout of
- * the caller's buffer, the caller's points (interleaved or planar, double or
+ * the caller's buffer, the checks of the size query, init and copy
+ * (pointset_common.c), the caller's points (interleaved or planar, double or
  * float, wrapped or not), the outer-product kernel of a trial, the per-cell
  * Welford and Chan updates, the read-out of a mean or its standard error,
  * and the annulus arithmetic; private header. */
@@ -15,7 +16,6 @@
 
 #include "accumulators/acc_internal.h"
 #include "mcspec/pointset.h"
-#include "mcspec/pointset2d.h"
 #include "mcspec/spectrum2d.h"
 #include "mcspec/status.h"
 
