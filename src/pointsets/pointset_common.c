@@ -28,16 +28,12 @@ mcs_status mcs_ps_check_init_(const mcs_ps_span *to, mcs_status st, const mcs_ps
 mcs_status mcs_ps_check_copy_(const mcs_ps_span *to, const mcs_ps_span *from, mcs_status st,
                               const mcs_ps_layout *lay)
 {
-    if (to->obj == NULL || to->mem == NULL)
-        return MCS_ERR_NULL;
+    st = mcs_ps_check_init_(to, st, lay);
     if (st != MCS_OK)
         return st;
-    if (to->bytes < lay->total)
-        return MCS_ERR_SPACE;
     const void *mem = to->mem;
     const size_t need = lay->total, hdr = to->hdr;
-    if (mcs_overlap_(mem, need, to->obj, hdr) || mcs_overlap_(mem, need, from->obj, hdr) ||
-        mcs_overlap_(mem, need, from->mem, from->bytes) ||
+    if (mcs_overlap_(mem, need, from->obj, hdr) || mcs_overlap_(mem, need, from->mem, from->bytes) ||
         (to->obj != from->obj && mcs_overlap_(to->obj, hdr, from->obj, hdr)))
         return MCS_ERR_ALIAS;
     return MCS_OK;

@@ -107,10 +107,9 @@ mcs_status mcs_ps_size_(mcs_status st, const mcs_ps_layout *lay, size_t *bytes);
 mcs_status mcs_ps_check_init_(const mcs_ps_span *to, mcs_status st, const mcs_ps_layout *lay);
 
 /* The checks of a copy of from (its own check and layout gave st, lay; from
- * read only if st is MCS_OK) to header to.obj over to.mem[to.bytes]:
- * MCS_ERR_NULL (no header or buffer), st, MCS_ERR_SPACE, MCS_ERR_ALIAS (the
- * buffer overlaps either header or from's buffer, or the headers overlap
- * and are not one), in that order. */
+ * read only if st is MCS_OK) to header to.obj over to.mem[to.bytes]: those
+ * of an init, then MCS_ERR_ALIAS also where the buffer overlaps from's
+ * header or buffer, or the headers overlap and are not one. */
 mcs_status mcs_ps_check_copy_(const mcs_ps_span *to, const mcs_ps_span *from, mcs_status st,
                               const mcs_ps_layout *lay);
 
