@@ -143,6 +143,14 @@ typedef struct {
     double weight_sum; /* of the set so far, summed in the order the library sums */
 } point_buf;
 
+/* Where complete sets go, and the counts kept of them. */
+typedef struct {
+    cli_pointset_fn fn;
+    void *ctx;
+    cli_pointset_stats *stats;
+    cli_progress *progress;
+} set_sink;
+
 static int buf_push(const char *cmd, point_buf *b, const double *coord, double weight)
 {
     if (b->k == b->cap) {
@@ -224,11 +232,11 @@ static int parse_point(const reader *r, const cli_pointset_format *fmt, size_t d
 }
 
 static int emit_set(const reader *r, const cli_pointset_format *fmt, point_buf *b,
-                    cli_pointset_fn fn, void *ctx, cli_pointset_stats *stats,
-                    cli_progress *progress)
+                    const set_sink *out)
 {
+    cli_pointset_stats *stats = out->stats;
     stats->lines = r->line;
-    int rc = fn(ctx, b->k, b->coords, fmt->weights ? b->weights : NULL);
+    int rc = out->fn(out->ctx, b->k, b->coords, fmt->weights ? b->weights : NULL);
     if (rc != 0)
         return rc;
     ++stats->sets;
@@ -236,27 +244,67 @@ static int emit_set(const reader *r, const cli_pointset_format *fmt, point_buf *
     stats->k_max = b->k > stats->k_max ? b->k : stats->k_max;
     b->k = 0;
     b->weight_sum = 0.0;
-    if (progress != NULL)
-        cli_progress_update(progress, stats->sets);
+    if (out->progress != NULL)
+        cli_progress_update(out->progress, stats->sets);
     return 0;
 }
 
-/* The line loop: rc 0 at the end of the input with every set emitted. */
-static int read_sets(reader *r, const cli_pointset_format *fmt, point_buf *b, cli_pointset_fn fn,
-                     void *ctx, cli_pointset_stats *stats, cli_progress *progress)
+/* The next line that is not blank, from its first non-blank character on:
+ * 1, or 0 at the end of the input, or -1 (reported) as reader_next. */
+static int next_text(reader *r, char **text)
 {
-    unsigned long sep_line = 0;
     char *line = NULL;
     int got;
     while ((got = reader_next(r, &line)) > 0) {
-        char *s = line;
-        while (is_blank(*s))
-            ++s;
-        if (*s == '\0')
-            continue;
+        while (is_blank(*line))
+            ++line;
+        if (*line != '\0') {
+            *text = line;
+            return 1;
+        }
+    }
+    return got;
+}
+
+/* A point line s of either format (not blank, not '#'): its columns (the
+ * first point line fixes the dimension when fmt leaves it open), the point
+ * into b, and the set's weights against fmt's limit. */
+static int point_line(const reader *r, const cli_pointset_format *fmt, point_buf *b, char *s,
+                      cli_pointset_stats *stats)
+{
+    char *tok[MAX_COLUMNS];
+    double coord[MAX_COLUMNS] = {0.0}, weight = 1.0;
+    const size_t ntok = split(s, tok, MAX_COLUMNS);
+    if (b->dim == 0u) {
+        const size_t cols = ntok - (fmt->weights ? 1u : 0u);
+        if (ntok == 0u || cols == 0u || cols > CLI_MAX_DIM)
+            return cli_fail(r->cmd, "%s: line %lu: %zu column%s: a point has 1 to %u "
+                            "coordinates%s", r->name, r->line, ntok, ntok == 1u ? "" : "s",
+                            CLI_MAX_DIM, fmt->weights ? ", then its weight" : "");
+        b->dim = cols;
+        stats->dim = cols;
+    }
+    int rc = parse_point(r, fmt, b->dim, tok, ntok, coord, &weight);
+    if (rc == 0)
+        rc = buf_push(r->cmd, b, coord, weight);
+    if (rc == 0)
+        rc = check_weight_sum(r, fmt, b);
+    return rc;
+}
+
+/* utk's line loop: rc 0 at the end of the input with every set emitted, one at
+ * least. */
+static int read_sets(reader *r, const cli_pointset_format *fmt, point_buf *b,
+                     const set_sink *out)
+{
+    cli_pointset_stats *stats = out->stats;
+    unsigned long sep_line = 0;
+    char *s = NULL;
+    int got;
+    while ((got = next_text(r, &s)) > 0) {
         if (*s == '#') {
             if (b->k > 0u) {
-                int rc = emit_set(r, fmt, b, fn, ctx, stats, progress);
+                int rc = emit_set(r, fmt, b, out);
                 if (rc != 0)
                     return rc;
             } else if (stats->sets > 0u) {
@@ -266,60 +314,61 @@ static int read_sets(reader *r, const cli_pointset_format *fmt, point_buf *b, cl
             sep_line = r->line;
             continue;
         }
-        char *tok[MAX_COLUMNS];
-        double coord[MAX_COLUMNS] = {0.0}, weight = 1.0;
-        size_t ntok = split(s, tok, MAX_COLUMNS);
-        if (b->dim == 0u) { /* the first point line fixes the dimension */
-            size_t cols = ntok - (fmt->weights ? 1u : 0u);
-            if (ntok == 0u || cols == 0u || cols > CLI_MAX_DIM)
-                return cli_fail(r->cmd, "%s: line %lu: %zu column%s: a point has 1 to %u "
-                                "coordinates%s", r->name, r->line, ntok, ntok == 1u ? "" : "s",
-                                CLI_MAX_DIM, fmt->weights ? ", then its weight" : "");
-            b->dim = cols;
-            stats->dim = cols;
-        }
-        int rc = parse_point(r, fmt, b->dim, tok, ntok, coord, &weight);
-        if (rc == 0)
-            rc = buf_push(r->cmd, b, coord, weight);
-        if (rc == 0)
-            rc = check_weight_sum(r, fmt, b);
+        int rc = point_line(r, fmt, b, s, stats);
         if (rc != 0)
             return rc;
     }
     if (got < 0)
         return CLI_EXIT_USAGE;
     if (b->k > 0u)
-        return emit_set(r, fmt, b, fn, ctx, stats, progress);
-    return 0;
+        return emit_set(r, fmt, b, out);
+    if (stats->sets > 0u)
+        return 0;
+    if (r->line == 0u)
+        return cli_fail(r->cmd, "%s: the input is empty (no lines, so no point sets)", r->name);
+    return cli_fail(r->cmd, "%s: line %lu: end of input and no point read (one point per line; "
+                    "see %s --help)", r->name, r->line, r->cmd);
 }
 
-int cli_read_pointsets(const char *cmd, const char *path, const cli_pointset_format *fmt,
-                       cli_pointset_fn fn, void *ctx, cli_pointset_stats *stats,
-                       cli_progress *progress)
+/* The line loop of one file's format. */
+typedef int (*line_loop)(reader *r, const cli_pointset_format *fmt, point_buf *b,
+                         const set_sink *out);
+
+static void stats_start(cli_pointset_stats *stats, const cli_pointset_format *fmt)
 {
     stats->sets = 0;
     stats->dim = fmt->dim;
     stats->k_min = (size_t)-1;
     stats->k_max = 0;
     stats->lines = 0;
+}
+
+/* Opens path, runs loop over its lines, closes it (k_min 0 without a set). */
+static int read_file(const char *cmd, const char *path, const cli_pointset_format *fmt,
+                     line_loop loop, const set_sink *out)
+{
     reader r;
     int rc = reader_open(&r, cmd, path);
     if (rc != 0)
         return rc;
     point_buf b = {NULL, NULL, 0, 0, fmt->dim, 0.0};
-    rc = read_sets(&r, fmt, &b, fn, ctx, stats, progress);
-    stats->lines = r.line;
-    if (rc == 0 && stats->sets == 0u && r.line == 0u)
-        rc = cli_fail(cmd, "%s: the input is empty (no lines, so no point sets)", r.name);
-    else if (rc == 0 && stats->sets == 0u)
-        rc = cli_fail(cmd, "%s: line %lu: end of input and no point read (one point per line; "
-                      "see %s --help)", r.name, r.line, cmd);
-    if (stats->sets == 0u)
-        stats->k_min = 0;
+    rc = loop(&r, fmt, &b, out);
+    out->stats->lines = r.line;
+    if (out->stats->sets == 0u)
+        out->stats->k_min = 0;
     reader_close(&r);
     free(b.coords);
     free(b.weights);
     return rc;
+}
+
+int cli_read_pointsets(const char *cmd, const char *path, const cli_pointset_format *fmt,
+                       cli_pointset_fn fn, void *ctx, cli_pointset_stats *stats,
+                       cli_progress *progress)
+{
+    const set_sink out = {fn, ctx, stats, progress};
+    stats_start(stats, fmt);
+    return read_file(cmd, path, fmt, read_sets, &out);
 }
 
 /* ---- Value lists ------------------------------------------------------------- */
@@ -412,21 +461,15 @@ static int psa_count(const reader *r, char *line, size_t *count)
     return 0;
 }
 
-/* The lines of one psa file: the count, then exactly that many points. */
+/* psa's line loop over one file: the count, then exactly that many points. */
 static int read_psa_lines(reader *r, const cli_pointset_format *fmt, point_buf *b,
-                          cli_pointset_fn fn, void *ctx, cli_pointset_stats *stats,
-                          cli_progress *progress)
+                          const set_sink *out)
 {
     size_t want = 0u;
     unsigned long count_line = 0;
-    char *line = NULL;
+    char *s = NULL;
     int got;
-    while ((got = reader_next(r, &line)) > 0) {
-        char *s = line;
-        while (is_blank(*s))
-            ++s;
-        if (*s == '\0')
-            continue;
+    while ((got = next_text(r, &s)) > 0) {
         if (*s == '#')
             return cli_fail(r->cmd, "%s: line %lu: a '#' line: psa's files hold one set, its "
                             "count on the first line, and no comments (a utk file? drop --format "
@@ -442,19 +485,7 @@ static int read_psa_lines(reader *r, const cli_pointset_format *fmt, point_buf *
             return cli_fail(r->cmd, "%s: line %lu: more points than the %zu of line %lu (psa: "
                             "one set per file, its count first)", r->name, r->line, want,
                             count_line);
-        char *tok[MAX_COLUMNS];
-        double coord[MAX_COLUMNS] = {0.0}, weight = 1.0;
-        const size_t ntok = split(s, tok, MAX_COLUMNS);
-        if (b->dim == 0u) {
-            if (ntok > CLI_MAX_DIM)
-                return cli_fail(r->cmd, "%s: line %lu: %zu columns: a point has 1 to %u "
-                                "coordinates", r->name, r->line, ntok, CLI_MAX_DIM);
-            b->dim = ntok;
-            stats->dim = ntok;
-        }
-        int rc = parse_point(r, fmt, b->dim, tok, ntok, coord, &weight);
-        if (rc == 0)
-            rc = buf_push(r->cmd, b, coord, weight);
+        int rc = point_line(r, fmt, b, s, out->stats);
         if (rc != 0)
             return rc;
     }
@@ -466,31 +497,16 @@ static int read_psa_lines(reader *r, const cli_pointset_format *fmt, point_buf *
     if (b->k < want)
         return cli_fail(r->cmd, "%s: line %lu: the file ends after %zu of the %zu points line "
                         "%lu announces", r->name, r->line, b->k, want, count_line);
-    return emit_set(r, fmt, b, fn, ctx, stats, progress);
+    return emit_set(r, fmt, b, out);
 }
 
 int cli_read_psa(const char *cmd, const char *path, const cli_pointset_format *fmt,
                  cli_pointset_fn fn, void *ctx, cli_pointset_stats *stats,
                  cli_progress *progress)
 {
-    stats->sets = 0;
-    stats->dim = fmt->dim;
-    stats->k_min = (size_t)-1;
-    stats->k_max = 0;
-    stats->lines = 0;
+    const set_sink out = {fn, ctx, stats, progress};
+    stats_start(stats, fmt);
     if (fmt->weights)
         return cli_internal(cmd, "psa's point files carry no weights");
-    reader r;
-    int rc = reader_open(&r, cmd, path);
-    if (rc != 0)
-        return rc;
-    point_buf b = {NULL, NULL, 0, 0, fmt->dim, 0.0};
-    rc = read_psa_lines(&r, fmt, &b, fn, ctx, stats, progress);
-    stats->lines = r.line;
-    if (stats->sets == 0u)
-        stats->k_min = 0;
-    reader_close(&r);
-    free(b.coords);
-    free(b.weights);
-    return rc;
+    return read_file(cmd, path, fmt, read_psa_lines, &out);
 }

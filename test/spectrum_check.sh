@@ -193,6 +193,21 @@ usage_error "psa: a point outside" 'line 2: coordinate 1.5 is outside' "$MCSPEC"
 : >"$tmp/empty.psa"
 usage_error "psa: empty file" 'empty.psa: the input is empty' "$MCSPEC" spectrum --format psa "$tmp/empty.psa"
 usage_error "psa: second file bad" 'short.psa: line 3' "$MCSPEC" spectrum --format psa "$tmp/psa0.txt" "$tmp/short.psa"
+# Malformed point lines of a psa file: the point handling utk's reader shares.
+printf '2\n0.1 0.2\n0.3 x\n' >"$tmp/nan.psa"
+usage_error "psa: a coordinate not a number" "^mcspec spectrum: $tmp/nan.psa: line 3: coordinate 'x' is not a number\$" \
+    "$MCSPEC" spectrum --format psa "$tmp/nan.psa"
+printf '2\n0.1 0.2\n0.3 0.4 0.5\n' >"$tmp/cols.psa"
+usage_error "psa: a third column" "^mcspec spectrum: $tmp/cols.psa: line 3: expected 2 columns, found 3 \\(a weight column needs --weights\\)\$" \
+    "$MCSPEC" spectrum --format psa "$tmp/cols.psa"
+usage_error "psa --dims: a point wider than the first" "^mcspec spectrum: $tmp/cols.psa: line 3: expected 2 columns, found 3 \\(every point has as many coordinates as the first\\)\$" \
+    "$MCSPEC" spectrum --format psa --dims 0,1 --freq 4 "$tmp/cols.psa"
+awk 'BEGIN { print 1; for (i = 0; i < 65; ++i) printf "0.5 "; print "" }' >"$tmp/wide.psa"
+usage_error "psa --dims: 65 columns" "^mcspec spectrum: $tmp/wide.psa: line 2: 65 columns: a point has 1 to 64 coordinates\$" \
+    "$MCSPEC" spectrum --format psa --dims 0,1 --freq 4 "$tmp/wide.psa"
+printf '\n \n' >"$tmp/blank.psa"
+usage_error "psa: only blank lines" "^mcspec spectrum: $tmp/blank.psa: no count line, only blank lines \\(a psa file starts with its point count\\)\$" \
+    "$MCSPEC" spectrum --format psa "$tmp/blank.psa"
 usage_error "--format unknown" "--format expects utk or psa, not 'pbrt'" "$MCSPEC" spectrum --format pbrt "$tmp/psa0.txt"
 usage_error "--format psa binned" '--format psa is for point sets' "$MCSPEC" spectrum --format psa --dim 1 "$tmp/psa0.txt"
 

@@ -21,15 +21,12 @@ static size_t cells_of(size_t fmax)
     return (2u * fmax + 2u) * (fmax + 1u);
 }
 
-/* Offsets of the buffer's arrays from its first 64-byte boundary (the
- * head's), the end of the statistics, and the bytes asked of the caller. */
-typedef struct {
-    size_t mean, m2, ring_mean, ring_m2, stats;
-    size_t re, im, phase, stage, stage_len, nufft, nufft_bytes, total;
-} layout;
+/* The arrays of the buffer, by their names in the layout: the statistics,
+ * then the scratch. */
+enum { MEAN, M2, RING_MEAN, RING_M2, RE, IM, PHASE, STAGE };
 
 /* The checks of a size query and the layout for (fmax, flags). */
-static mcs_status layout_of(size_t fmax, unsigned flags, layout *lay)
+static mcs_status layout_of(size_t fmax, unsigned flags, mcs_ps_layout *lay)
 {
     memset(lay, 0, sizeof *lay);
     if (fmax == 0u || fmax > (size_t)MCS_POINTSET2D_MAX_FREQ)
@@ -38,24 +35,26 @@ static mcs_status layout_of(size_t fmax, unsigned flags, layout *lay)
         return MCS_ERR_DOMAIN;
     const size_t cells = cells_of(fmax), radii = fmax + 1u, side = 2u * fmax + 1u;
     const size_t d = sizeof(double);
+    lay->shape[0] = fmax;
     mcs_ps_carve c = {0u, 0};
     (void)mcs_ps_take(&c, 1u, sizeof(mcs_ps_head));
-    lay->mean = mcs_ps_take(&c, cells, d);
-    lay->m2 = mcs_ps_take(&c, cells, d);
-    lay->ring_mean = mcs_ps_take(&c, radii, d);
-    lay->ring_m2 = mcs_ps_take(&c, radii, d);
+    lay->at[MEAN] = mcs_ps_take(&c, cells, d);
+    lay->at[M2] = mcs_ps_take(&c, cells, d);
+    lay->at[RING_MEAN] = mcs_ps_take(&c, radii, d);
+    lay->at[RING_M2] = mcs_ps_take(&c, radii, d);
     lay->stats = c.at;
-    lay->re = mcs_ps_take(&c, cells, d);
-    lay->im = mcs_ps_take(&c, cells, d);
-    lay->phase = mcs_ps_take(&c, 16u * (side + 1u), d);
+    lay->at[RE] = mcs_ps_take(&c, cells, d);
+    lay->at[IM] = mcs_ps_take(&c, cells, d);
+    lay->at[PHASE] = mcs_ps_take(&c, 16u * (side + 1u), d);
     if ((flags & MCS_POINTSET_DIRECT_ONLY) == 0u) {
         const size_t modes = 2u * side * side; /* within the caps: no overflow */
-        lay->stage_len = modes > MCS_POINTSET_STAGE_MIN ? modes : (size_t)MCS_POINTSET_STAGE_MIN;
-        lay->stage = mcs_ps_take(&c, lay->stage_len, d);
-        mcs_status st = mcs_nufft_size(2u, fmax, MCS_POINTSET_NUFFT_TOL, &lay->nufft_bytes);
+        const size_t stage_len =
+            modes > MCS_POINTSET_STAGE_MIN ? modes : (size_t)MCS_POINTSET_STAGE_MIN;
+        lay->at[STAGE] = mcs_ps_take(&c, stage_len, d);
+        mcs_status st = mcs_nufft_size(2u, fmax, MCS_POINTSET_NUFFT_TOL, &lay->plan_bytes);
         if (st != MCS_OK)
             return MCS_ERR_FREQ_RANGE;
-        lay->nufft = mcs_ps_take(&c, lay->nufft_bytes, 1u);
+        lay->plan = mcs_ps_take(&c, lay->plan_bytes, 1u);
     }
     lay->total = mcs_ps_total(&c);
     return lay->total == SIZE_MAX ? MCS_ERR_FREQ_RANGE : MCS_OK;
@@ -96,92 +95,73 @@ static mcs_status check_acc(const mcs_pointset2d *acc)
     return head_of(acc)->shape[0] == acc->freq_max ? MCS_OK : MCS_ERR_INVARIANT;
 }
 
-mcs_status mcs_pointset2d_size(size_t freq_max, unsigned flags, size_t *bytes)
+/* *acc <- the header over mem for the checked layout lay of (fmax, flags):
+ * arrays at their offsets, the NUFFT plan built, the statistics zeroed
+ * (src NULL) or src's, with src's path and wrap. */
+static void set_up(mcs_pointset2d *acc, size_t fmax, unsigned flags, void *mem,
+                   const mcs_ps_layout *lay, const mcs_pointset2d *src)
 {
-    if (bytes == NULL)
-        return MCS_ERR_NULL;
-    layout lay;
-    mcs_status st = layout_of(freq_max, flags, &lay);
-    if (st == MCS_OK)
-        *bytes = lay.total;
-    return st;
+    /* src may be acc: what it says is read before acc is written */
+    const mcs_pointset_path path = src != NULL ? src->path : mcs_ps_first_path(flags);
+    const int wrap = src != NULL ? src->wrap : 0;
+    unsigned char *base = mcs_ps_set_up_stats_(mem, lay, src != NULL ? src->state : NULL);
+    memset(acc, 0, sizeof *acc);
+    acc->freq_max = fmax;
+    acc->flags = flags;
+    acc->path = path;
+    acc->wrap = wrap;
+    acc->mem = mem;
+    acc->bytes = lay->total;
+    acc->state = (void *)base;
+    acc->mean = mcs_ps_array(base, lay, MEAN);
+    acc->m2 = mcs_ps_array(base, lay, M2);
+    acc->ring_mean = mcs_ps_array(base, lay, RING_MEAN);
+    acc->ring_m2 = mcs_ps_array(base, lay, RING_M2);
+    acc->re = mcs_ps_array(base, lay, RE);
+    acc->im = mcs_ps_array(base, lay, IM);
+    acc->phase = mcs_ps_array(base, lay, PHASE);
+    if ((flags & MCS_POINTSET_DIRECT_ONLY) == 0u) {
+        acc->stage = mcs_ps_array(base, lay, STAGE);
+        /* cannot fail: the size query took the same arguments */
+        (void)mcs_nufft_init(&acc->plan, 2u, fmax, MCS_POINTSET_NUFFT_TOL, base + lay->plan,
+                             lay->plan_bytes);
+    }
+    acc->key = key_of(acc);
 }
 
-/* The header over mem for checked arguments: arrays at their offsets, the
- * statistics zeroed, the NUFFT plan built. */
-static void set_up(mcs_pointset2d *h, size_t fmax, unsigned flags, void *mem, const layout *lay)
+mcs_status mcs_pointset2d_size(size_t freq_max, unsigned flags, size_t *bytes)
 {
-    unsigned char *base = mcs_ps_aligned(mem);
-    memset(h, 0, sizeof *h);
-    h->freq_max = fmax;
-    h->flags = flags;
-    h->path = (flags & MCS_POINTSET_DIRECT_ONLY) != 0u ? MCS_POINTSET_PATH_DIRECT
-                                                        : MCS_POINTSET_PATH_AUTO;
-    h->mem = mem;
-    h->bytes = lay->total;
-    h->state = (void *)base;
-    h->mean = (double *)(void *)(base + lay->mean);
-    h->m2 = (double *)(void *)(base + lay->m2);
-    h->ring_mean = (double *)(void *)(base + lay->ring_mean);
-    h->ring_m2 = (double *)(void *)(base + lay->ring_m2);
-    h->re = (double *)(void *)(base + lay->re);
-    h->im = (double *)(void *)(base + lay->im);
-    h->phase = (double *)(void *)(base + lay->phase);
-    memset(base, 0, lay->stats);
-    ((mcs_ps_head *)(void *)base)->shape[0] = fmax;
-    if ((flags & MCS_POINTSET_DIRECT_ONLY) == 0u) {
-        h->stage = (double *)(void *)(base + lay->stage);
-        /* cannot fail: the size query above took the same arguments */
-        (void)mcs_nufft_init(&h->plan, 2u, fmax, MCS_POINTSET_NUFFT_TOL, base + lay->nufft,
-                             lay->nufft_bytes);
-    }
-    h->key = key_of(h);
+    mcs_ps_layout lay;
+    return mcs_ps_size_(layout_of(freq_max, flags, &lay), &lay, bytes);
 }
 
 mcs_status mcs_pointset2d_init(mcs_pointset2d *acc, size_t freq_max, unsigned flags, void *mem,
                                size_t bytes)
 {
-    if (acc == NULL || mem == NULL)
-        return MCS_ERR_NULL;
-    layout lay;
-    mcs_status st = layout_of(freq_max, flags, &lay);
-    if (st != MCS_OK)
-        return st;
-    if (bytes < lay.total)
-        return MCS_ERR_SPACE;
-    if (mcs_overlap_(mem, lay.total, acc, sizeof *acc))
-        return MCS_ERR_ALIAS;
-    mcs_pointset2d h;
-    set_up(&h, freq_max, flags, mem, &lay);
-    *acc = h;
-    return MCS_OK;
+    const mcs_ps_span to = {acc, sizeof *acc, mem, bytes};
+    mcs_ps_layout lay;
+    mcs_status st = mcs_ps_check_init_(&to, layout_of(freq_max, flags, &lay), &lay);
+    if (st == MCS_OK)
+        set_up(acc, freq_max, flags, mem, &lay, NULL);
+    return st;
 }
 
 mcs_status mcs_pointset2d_copy(mcs_pointset2d *dst, void *mem, size_t bytes,
                                const mcs_pointset2d *src)
 {
-    if (dst == NULL || mem == NULL)
-        return MCS_ERR_NULL;
+    const mcs_ps_span to = {dst, sizeof *dst, mem, bytes};
+    mcs_ps_span from = {src, sizeof *src, NULL, 0u};
+    mcs_ps_layout lay;
     mcs_status st = check_acc(src);
-    if (st != MCS_OK)
-        return st;
-    layout lay;
-    (void)layout_of(src->freq_max, src->flags, &lay); /* cannot fail: src passed init */
-    if (bytes < lay.total)
-        return MCS_ERR_SPACE;
-    if (mcs_overlap_(mem, lay.total, dst, sizeof *dst) ||
-        mcs_overlap_(mem, lay.total, src, sizeof *src) ||
-        mcs_overlap_(mem, lay.total, src->mem, src->bytes) ||
-        (dst != src && mcs_overlap_(dst, sizeof *dst, src, sizeof *src)))
-        return MCS_ERR_ALIAS;
-    mcs_pointset2d h;
-    set_up(&h, src->freq_max, src->flags, mem, &lay);
-    memcpy(h.state, src->state, lay.stats);
-    h.path = src->path;
-    h.wrap = src->wrap;
-    h.key = key_of(&h);
-    *dst = h;
-    return MCS_OK;
+    if (st == MCS_OK) {
+        from.mem = src->mem;
+        from.bytes = src->bytes;
+        st = layout_of(src->freq_max, src->flags, &lay); /* MCS_OK: src passed init */
+    }
+    st = mcs_ps_check_copy_(&to, &from, st, &lay);
+    if (st == MCS_OK)
+        set_up(dst, src->freq_max, src->flags, mem, &lay, src);
+    return st;
 }
 
 mcs_status mcs_pointset2d_set_path(mcs_pointset2d *acc, mcs_pointset_path path)

@@ -1,7 +1,8 @@
 /* Helpers shared by the point-set periodogram accumulators (pointset.c,
  * pointset2d.c, pointset_exact.c) and the binned 2D spectrum (spectrum2d.c,
  * spectrum2d_exact.c), and by their records (io/io_points.c): the layout of
- * the caller's buffer, the caller's points (interleaved or planar, double or
+ * the caller's buffer, the checks of the size query, init and copy
+ * (pointset_common.c), the caller's points (interleaved or planar, double or
  * float, wrapped or not), the outer-product kernel of a trial, the per-cell
  * Welford and Chan updates, the read-out of a mean or its standard error,
  * and the annulus arithmetic; private header. */
@@ -69,6 +70,66 @@ static inline size_t mcs_ps_take(mcs_ps_carve *c, size_t count, size_t elem)
 static inline size_t mcs_ps_total(const mcs_ps_carve *c)
 {
     return c->overflow ? SIZE_MAX : c->at + (MCS_PS_ALIGN - 1u);
+}
+
+/* ---- an object's life cycle over the caller's buffer (pointset_common.c) ----
+ * mcs_pointset, mcs_pointset2d and mcs_spectrum2d share the checks of their
+ * size query, init and copy, and the set-up of the statistics in the
+ * buffer. Each object's file keeps its layout (the offsets of its arrays
+ * for its two arguments: F and flags, or N1 and N2) and the set-up of its
+ * header, and calls these directly: no call goes through a function
+ * pointer, so make stack follows every chain. */
+#define MCS_PS_MAX_ARRAYS 12 /* spectrum2d's twelve */
+
+typedef struct {
+    size_t shape[2];              /* the head's shape words: F and 0, or N1 and N2 */
+    size_t at[MCS_PS_MAX_ARRAYS]; /* the arrays' offsets from the head, by the file's names */
+    size_t plan, plan_bytes;      /* the NUFFT plan's memory (0 bytes: no plan) */
+    size_t stats;                 /* the end of the head and the statistics: a copy's bytes */
+    size_t total;                 /* bytes to ask of the caller (SIZE_MAX: too large) */
+} mcs_ps_layout;
+
+/* An object header and the buffer it is, or is to be, over. */
+typedef struct {
+    const void *obj; /* the header */
+    size_t hdr;      /* sizeof the header */
+    const void *mem; /* the buffer, as given */
+    size_t bytes;    /* its length */
+} mcs_ps_span;
+
+/* The size query once the layout gave st: *bytes = lay's total.
+ * MCS_ERR_NULL before st; *bytes untouched on error. */
+mcs_status mcs_ps_size_(mcs_status st, const mcs_ps_layout *lay, size_t *bytes);
+
+/* The checks of an init of header to.obj over buffer to.mem[to.bytes] once
+ * the layout gave st: MCS_ERR_NULL (no header or buffer), st, MCS_ERR_SPACE,
+ * MCS_ERR_ALIAS (the buffer overlaps the header), in that order. */
+mcs_status mcs_ps_check_init_(const mcs_ps_span *to, mcs_status st, const mcs_ps_layout *lay);
+
+/* The checks of a copy of from (its own check and layout gave st, lay; from
+ * read only if st is MCS_OK) to header to.obj over to.mem[to.bytes]: those
+ * of an init, then MCS_ERR_ALIAS also where the buffer overlaps from's
+ * header or buffer, or the headers overlap and are not one. */
+mcs_status mcs_ps_check_copy_(const mcs_ps_span *to, const mcs_ps_span *from, mcs_status st,
+                              const mcs_ps_layout *lay);
+
+/* The head of a checked buffer mem for lay, its statistics zeroed under
+ * the shape words (stats NULL: init) or copied from stats (a copy's source
+ * head). */
+unsigned char *mcs_ps_set_up_stats_(void *mem, const mcs_ps_layout *lay, const void *stats);
+
+/* A point-set accumulator's path after init: DIRECT with
+ * MCS_POINTSET_DIRECT_ONLY among the flags, else AUTO. */
+static inline mcs_pointset_path mcs_ps_first_path(unsigned flags)
+{
+    return (flags & MCS_POINTSET_DIRECT_ONLY) != 0u ? MCS_POINTSET_PATH_DIRECT
+                                                    : MCS_POINTSET_PATH_AUTO;
+}
+
+/* A pointer to array `name` of lay in the buffer whose head is at base. */
+static inline double *mcs_ps_array(unsigned char *base, const mcs_ps_layout *lay, int name)
+{
+    return (double *)(void *)(base + lay->at[name]);
 }
 
 /* A hash of an object header's words (its key): a header that init did not

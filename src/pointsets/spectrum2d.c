@@ -40,34 +40,33 @@ static int side_ok(size_t n)
     return n >= 1u && n <= (size_t)MCS_SPECTRUM2D_MAX_SIDE;
 }
 
-/* Offsets of the buffer's arrays from its first 64-byte boundary (the
- * head's), the end of the statistics, and the bytes asked of the caller. */
-typedef struct {
-    size_t mean_re, mean_im, m2_s, mean_pow, m2_pow, stats;
-    size_t cos_x, sin_x, cos_y, sin_y, re, im, rows, total;
-} layout;
+/* The arrays of the buffer, by their names in the layout: the statistics,
+ * then the twiddles and the scratch. */
+enum { MEAN_RE, MEAN_IM, M2_S, MEAN_POW, M2_POW, COS_X, SIN_X, COS_Y, SIN_Y, RE, IM, ROWS };
 
-static mcs_status layout_of(size_t n_x, size_t n_y, layout *lay)
+static mcs_status layout_of(size_t n_x, size_t n_y, mcs_ps_layout *lay)
 {
     memset(lay, 0, sizeof *lay);
     if (!side_ok(n_x) || !side_ok(n_y))
         return MCS_ERR_N_RANGE;
     const size_t cells = cells_for(n_x, n_y), d = sizeof(double);
+    lay->shape[0] = n_x;
+    lay->shape[1] = n_y;
     mcs_ps_carve c = {0u, 0};
     (void)mcs_ps_take(&c, 1u, sizeof(mcs_ps_head));
-    lay->mean_re = mcs_ps_take(&c, cells, d);
-    lay->mean_im = mcs_ps_take(&c, cells, d);
-    lay->m2_s = mcs_ps_take(&c, cells, d);
-    lay->mean_pow = mcs_ps_take(&c, cells, d);
-    lay->m2_pow = mcs_ps_take(&c, cells, d);
+    lay->at[MEAN_RE] = mcs_ps_take(&c, cells, d);
+    lay->at[MEAN_IM] = mcs_ps_take(&c, cells, d);
+    lay->at[M2_S] = mcs_ps_take(&c, cells, d);
+    lay->at[MEAN_POW] = mcs_ps_take(&c, cells, d);
+    lay->at[M2_POW] = mcs_ps_take(&c, cells, d);
     lay->stats = c.at;
-    lay->cos_x = mcs_ps_take(&c, n_x, d);
-    lay->sin_x = mcs_ps_take(&c, n_x, d);
-    lay->cos_y = mcs_ps_take(&c, n_y, d);
-    lay->sin_y = mcs_ps_take(&c, n_y, d);
-    lay->re = mcs_ps_take(&c, cells, d);
-    lay->im = mcs_ps_take(&c, cells, d);
-    lay->rows = mcs_ps_take(&c, 16u * row_len_for(n_x, n_y), d);
+    lay->at[COS_X] = mcs_ps_take(&c, n_x, d);
+    lay->at[SIN_X] = mcs_ps_take(&c, n_x, d);
+    lay->at[COS_Y] = mcs_ps_take(&c, n_y, d);
+    lay->at[SIN_Y] = mcs_ps_take(&c, n_y, d);
+    lay->at[RE] = mcs_ps_take(&c, cells, d);
+    lay->at[IM] = mcs_ps_take(&c, cells, d);
+    lay->at[ROWS] = mcs_ps_take(&c, 16u * row_len_for(n_x, n_y), d);
     lay->total = mcs_ps_total(&c);
     return lay->total == SIZE_MAX ? MCS_ERR_N_RANGE : MCS_OK;
 }
@@ -169,94 +168,73 @@ static mcs_status check_body(const mcs_spectrum2d *acc)
     return sound ? MCS_OK : MCS_ERR_INVARIANT;
 }
 
-mcs_status mcs_spectrum2d_size(size_t n_x, size_t n_y, size_t *bytes)
+/* *acc <- the header over mem for the checked layout lay of N1 x N2:
+ * arrays at their offsets, the twiddles built, the statistics zeroed (src
+ * NULL) or src's, with src's wrap. */
+static void set_up(mcs_spectrum2d *acc, size_t n_x, size_t n_y, void *mem,
+                   const mcs_ps_layout *lay, const mcs_spectrum2d *src)
 {
-    if (bytes == NULL)
-        return MCS_ERR_NULL;
-    layout lay;
-    mcs_status st = layout_of(n_x, n_y, &lay);
-    if (st == MCS_OK)
-        *bytes = lay.total;
-    return st;
+    const int wrap = src != NULL ? src->wrap : 0; /* src may be acc */
+    unsigned char *base = mcs_ps_set_up_stats_(mem, lay, src != NULL ? src->state : NULL);
+    memset(acc, 0, sizeof *acc);
+    acc->n_x = n_x;
+    acc->n_y = n_y;
+    acc->wrap = wrap;
+    acc->mem = mem;
+    acc->bytes = lay->total;
+    acc->state = (void *)base;
+#define AT_(name) mcs_ps_array(base, lay, name)
+    acc->mean_re = AT_(MEAN_RE);
+    acc->mean_im = AT_(MEAN_IM);
+    acc->m2_s = AT_(M2_S);
+    acc->mean_pow = AT_(MEAN_POW);
+    acc->m2_pow = AT_(M2_POW);
+    acc->cos_x = AT_(COS_X);
+    acc->sin_x = AT_(SIN_X);
+    acc->cos_y = AT_(COS_Y);
+    acc->sin_y = AT_(SIN_Y);
+    acc->re = AT_(RE);
+    acc->im = AT_(IM);
+    acc->rows = AT_(ROWS);
+#undef AT_
+    mcs_twiddles_(n_x, acc->cos_x, acc->sin_x);
+    mcs_twiddles_(n_y, acc->cos_y, acc->sin_y);
+    acc->key = key_of(acc);
 }
 
-/* The header over mem for checked arguments: arrays at their offsets, the
- * statistics zeroed, the twiddles built. */
-static void set_up(mcs_spectrum2d *h, size_t n_x, size_t n_y, void *mem, const layout *lay)
+mcs_status mcs_spectrum2d_size(size_t n_x, size_t n_y, size_t *bytes)
 {
-    unsigned char *base = mcs_ps_aligned(mem);
-    memset(h, 0, sizeof *h);
-    h->n_x = n_x;
-    h->n_y = n_y;
-    h->mem = mem;
-    h->bytes = lay->total;
-    h->state = (void *)base;
-#define AT_(field) ((double *)(void *)(base + lay->field))
-    h->mean_re = AT_(mean_re);
-    h->mean_im = AT_(mean_im);
-    h->m2_s = AT_(m2_s);
-    h->mean_pow = AT_(mean_pow);
-    h->m2_pow = AT_(m2_pow);
-    h->cos_x = AT_(cos_x);
-    h->sin_x = AT_(sin_x);
-    h->cos_y = AT_(cos_y);
-    h->sin_y = AT_(sin_y);
-    h->re = AT_(re);
-    h->im = AT_(im);
-    h->rows = AT_(rows);
-#undef AT_
-    memset(base, 0, lay->stats);
-    mcs_ps_head *head = (mcs_ps_head *)(void *)base;
-    head->shape[0] = n_x;
-    head->shape[1] = n_y;
-    mcs_twiddles_(n_x, h->cos_x, h->sin_x);
-    mcs_twiddles_(n_y, h->cos_y, h->sin_y);
-    h->key = key_of(h);
+    mcs_ps_layout lay;
+    return mcs_ps_size_(layout_of(n_x, n_y, &lay), &lay, bytes);
 }
 
 mcs_status mcs_spectrum2d_init(mcs_spectrum2d *acc, size_t n_x, size_t n_y, void *mem,
                                size_t bytes)
 {
-    if (acc == NULL || mem == NULL)
-        return MCS_ERR_NULL;
-    layout lay;
-    mcs_status st = layout_of(n_x, n_y, &lay);
-    if (st != MCS_OK)
-        return st;
-    if (bytes < lay.total)
-        return MCS_ERR_SPACE;
-    if (mcs_overlap_(mem, lay.total, acc, sizeof *acc))
-        return MCS_ERR_ALIAS;
-    mcs_spectrum2d h;
-    set_up(&h, n_x, n_y, mem, &lay);
-    *acc = h;
-    return MCS_OK;
+    const mcs_ps_span to = {acc, sizeof *acc, mem, bytes};
+    mcs_ps_layout lay;
+    mcs_status st = mcs_ps_check_init_(&to, layout_of(n_x, n_y, &lay), &lay);
+    if (st == MCS_OK)
+        set_up(acc, n_x, n_y, mem, &lay, NULL);
+    return st;
 }
 
 mcs_status mcs_spectrum2d_copy(mcs_spectrum2d *dst, void *mem, size_t bytes,
                                const mcs_spectrum2d *src)
 {
-    if (dst == NULL || mem == NULL)
-        return MCS_ERR_NULL;
+    const mcs_ps_span to = {dst, sizeof *dst, mem, bytes};
+    mcs_ps_span from = {src, sizeof *src, NULL, 0u};
+    mcs_ps_layout lay;
     mcs_status st = check_acc(src);
-    if (st != MCS_OK)
-        return st;
-    layout lay;
-    (void)layout_of(src->n_x, src->n_y, &lay); /* cannot fail: src passed init */
-    if (bytes < lay.total)
-        return MCS_ERR_SPACE;
-    if (mcs_overlap_(mem, lay.total, dst, sizeof *dst) ||
-        mcs_overlap_(mem, lay.total, src, sizeof *src) ||
-        mcs_overlap_(mem, lay.total, src->mem, src->bytes) ||
-        (dst != src && mcs_overlap_(dst, sizeof *dst, src, sizeof *src)))
-        return MCS_ERR_ALIAS;
-    mcs_spectrum2d h;
-    set_up(&h, src->n_x, src->n_y, mem, &lay);
-    memcpy(h.state, src->state, lay.stats);
-    h.wrap = src->wrap;
-    h.key = key_of(&h);
-    *dst = h;
-    return MCS_OK;
+    if (st == MCS_OK) {
+        from.mem = src->mem;
+        from.bytes = src->bytes;
+        st = layout_of(src->n_x, src->n_y, &lay); /* MCS_OK: src passed init */
+    }
+    st = mcs_ps_check_copy_(&to, &from, st, &lay);
+    if (st == MCS_OK)
+        set_up(dst, src->n_x, src->n_y, mem, &lay, src);
+    return st;
 }
 
 mcs_status mcs_spectrum2d_set_wrap(mcs_spectrum2d *acc, int wrap)

@@ -584,12 +584,19 @@ static const uint8_t tiny_lags_record[] = {
     0x00, 0x00, 0x00, 0x00, 0x71, 0xd3, 0x34, 0x70,
 };
 
+/* A fuzz record as it was found, copied into rec2 with its CRC rewritten
+ * (io_recrc): its length. */
+static size_t fuzz_record(const uint8_t *found, size_t len)
+{
+    memcpy(rec2, found, len);
+    io_recrc(rec2, len);
+    return len;
+}
+
 static void test_an_autocorr_record_of_subnormal_lags_reads_out(void)
 {
     static mcs_autocorr ac;
-    const size_t len = sizeof tiny_lags_record;
-    memcpy(rec2, tiny_lags_record, len);
-    io_recrc(rec2, len);
+    const size_t len = fuzz_record(tiny_lags_record, sizeof tiny_lags_record);
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_io_load_autocorr(&ac, len, rec2));
     double power[7];
     mcs_dft plan;
@@ -629,9 +636,7 @@ static void test_a_moment_record_of_subnormal_sums_reads_out(void)
 {
     static mcs_moment mo;
     static double cre[4], cim[4];
-    const size_t len = sizeof tiny_moment_record;
-    memcpy(rec2, tiny_moment_record, len);
-    io_recrc(rec2, len);
+    const size_t len = fuzz_record(tiny_moment_record, sizeof tiny_moment_record);
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_io_load_moment(&mo, len, rec2));
     TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_moment_covariance_matrix(&mo, 2u, cre, cim));
     TEST_ASSERT_TRUE(cre[0] >= 0.0 && cre[3] >= 0.0);
