@@ -45,6 +45,9 @@ static inline uint64_t io_get_le(const uint8_t *p, size_t bytes)
 #define IO_AS_COUNT 1u /* one uint64_t, stored as a double (exact: at most 2^53) */
 #define IO_AS_UPPER 2u /* upper triangle of a len x len array, row by row; the
                         * load mirrors it into the lower one (exactly symmetric) */
+#define IO_AS_SIZE 3u  /* one size_t, stored as a double (exact: at most 2^53 is allowed) */
+#define IO_AS_POINTED 4u /* rows as IO_AS_ROWS, at the double * member the offset
+                          * locates (an array in the caller's buffer: mcs_pcf) */
 
 #define IO_MAX_FIELDS 10u
 
@@ -61,12 +64,17 @@ typedef struct {
 #define IO_GRID(t, member, rows, len, stride, rules) \
     {offsetof(t, member), IO_AS_ROWS, rows, len, stride, rules}
 #define IO_UPPER(t, member, n, rules) {offsetof(t, member), IO_AS_UPPER, IO_ONE, n, n, rules}
+#define IO_SIZE(t, member, rules) {offsetof(t, member), IO_AS_SIZE, IO_ONE, IO_ONE, IO_ONE, rules}
+#define IO_POINTED(t, member, len, rules) \
+    {offsetof(t, member), IO_AS_POINTED, IO_ONE, len, IO_ONE, rules}
 
 struct io_values;
 
 /* A kind: its number and shape words, how its sizes follow from the shape
  * (MCS_ERR_N_RANGE or MCS_ERR_FREQ_RANGE for a shape beyond this build's
- * capacities), where the shape words sit in the object (size_t members), the
+ * capacities, MCS_ERR_DOMAIN for a shape word no init takes), where the shape
+ * words sit in the object (size_t members; or, when shape_of is not NULL,
+ * what it reads from the object: shape words of other types), the
  * object's count (MCS_ERR_UNINIT), init and count member, an optional check of invariants
  * beyond the rules (nonzero when they hold), and the fields. */
 typedef struct {
@@ -80,6 +88,7 @@ typedef struct {
     int (*valid)(const struct io_values *values, uint64_t count);
     size_t nfields;
     io_field fields[IO_MAX_FIELDS];
+    void (*shape_of)(const void *obj, uint64_t *shape);
 } io_kind;
 
 /* The payload values of one record, read from the object being saved
@@ -89,10 +98,16 @@ typedef struct io_values {
     size_t size[IO_MAX_DIMS];
     const void *obj;
     const uint8_t *payload;
+    const uint64_t *shape; /* the record's shape words (kind->shape_len of them) */
 } io_values;
 
 /* Payload value i. */
 double mcs_io_value(const io_values *values, size_t i);
+
+/* Stores every payload value of values into obj, an object of its kind (as
+ * its init left it), and count into its count member: how a kind's check
+ * reads a payload back as an object, to run the object's own state check. */
+void mcs_io_store(const io_values *values, uint64_t count, void *obj);
 
 /* The mcs_io_save_* and mcs_io_load_* calls for a kind: the NULL checks,
  * the object's count, the rules and the kind's invariants, framing. */
