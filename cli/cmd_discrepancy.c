@@ -5,6 +5,7 @@
 #include "input.h"
 #include "output.h"
 #include "progress.h"
+#include "record.h"
 
 #include "mcspec.h"
 
@@ -24,7 +25,7 @@
 _Static_assert(CLI_MAX_DIM <= MCS_DISCREPANCY_MAX_DIM, "the reader takes what the library takes");
 
 static const char help[] =
-    "usage: mcspec discrepancy [--dim D] [--wrap] [--csv] [FILE|-]\n"
+    "usage: mcspec discrepancy [--dim D] [--wrap] [--csv] [--save FILE] [FILE|-]\n"
     "\n"
     "The L2 discrepancies of point sets read from FILE (or standard input, given\n"
     "as '-' or by giving no FILE), one set per trial: per set the squared\n"
@@ -59,6 +60,9 @@ static const char help[] =
     "  --csv     print CSV only: the header, exactly\n"
     "            " CSV_HEADER "\n"
     "            and one row per measure (an empty field: no value)\n"
+    "  --save FILE  also save the accumulator (a discrepancy record, docs/format.md)\n"
+    "            for mcspec merge and mcspec show, written atomically (as\n"
+    "            mcspec spectrum --save)\n"
     "  --help    this text\n"
     "\n"
     "Exit status: 0 on success, 2 on bad usage or input (one line on stderr).\n";
@@ -67,6 +71,7 @@ typedef struct {
     size_t dim;
     int wrap, csv;
     const char *path;
+    const char *save; /* --save FILE */
 } disc_opts;
 
 typedef struct {
@@ -82,6 +87,7 @@ static int parse(int argc, char **argv, disc_opts *o)
         {"dim", CLI_OPT_SIZE, &o->dim, 1, MAX_DIM, 0},
         {"wrap", CLI_OPT_FLAG, &o->wrap, 0, 0, 0},
         {"csv", CLI_OPT_FLAG, &o->csv, 0, 0, 0},
+        {"save", CLI_OPT_STRING, &o->save, 0, 0, 0},
     };
     int rc = cli_parse_one(CMD, help, NULL, opts, CLI_COUNT(opts), argc, argv, &o->path);
     if (rc != CLI_PARSED)
@@ -173,7 +179,7 @@ static void report(const disc_opts *o, const mcs_discrepancy *acc,
 
 int cli_cmd_discrepancy(int argc, char **argv)
 {
-    disc_opts o = {0, 0, 0, NULL};
+    disc_opts o = {0, 0, 0, NULL, NULL};
     int rc = parse(argc, argv, &o);
     if (rc != 0)
         return rc < 0 ? CLI_EXIT_OK : rc;
@@ -186,12 +192,17 @@ int cli_cmd_discrepancy(int argc, char **argv)
     ctx->work_bytes = 0;
     ctx->stats = &stats;
     cli_pointset_format fmt = {.dim = o.dim, .weights = 0, .wrap = o.wrap};
+    cli_save_target save = {o.save, o.path, 0u, 0u};
+    rc = cli_save_begin(CMD, &save);
     cli_progress progress;
     cli_progress_init(&progress, !o.csv, CMD, "sets read", 0);
-    rc = cli_read_pointsets(CMD, o.path, &fmt, add_set, ctx, &stats, &progress);
+    if (rc == 0)
+        rc = cli_read_pointsets(CMD, o.path, &fmt, add_set, ctx, &stats, &progress);
     cli_progress_end(&progress);
     if (rc == 0)
         report(&o, &ctx->acc, &stats);
+    if (rc == 0)
+        rc = cli_save_points(CMD, &save, MCS_IO_KIND_DISCREPANCY, &ctx->acc);
     free(ctx->work);
     free(ctx);
     return rc;

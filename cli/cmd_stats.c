@@ -6,6 +6,7 @@
 #include "input.h"
 #include "output.h"
 #include "progress.h"
+#include "record.h"
 
 #include "mcspec.h"
 
@@ -24,7 +25,7 @@
 #define MAX_DIM MCS_SPACING_MAX_DIM
 
 static const char help[] =
-    "usage: mcspec stats [--dim D] [--freq F] [--wrap] [--csv] [FILE|-]\n"
+    "usage: mcspec stats [--dim D] [--freq F] [--wrap] [--csv] [--save FILE] [FILE|-]\n"
     "\n"
     "The spatial statistics of point sets read from FILE (or standard input,\n"
     "given as '-' or by giving no FILE), one set per trial, with distances taken\n"
@@ -64,6 +65,9 @@ static const char help[] =
     "  --csv     print CSV only: the header, exactly\n"
     "            " CSV_HEADER "\n"
     "            and one row per statistic (an empty field: no value)\n"
+    "  --save FILE  also save the accumulator of min_distance and avg_min_distance\n"
+    "            (a spacing record, docs/format.md; the spectral rows are not in\n"
+    "            it) for mcspec merge and mcspec show, written atomically\n"
     "  --help    this text\n"
     "\n"
     "Exit status: 0 on success, 2 on bad usage or input (one line on stderr).\n";
@@ -72,6 +76,7 @@ typedef struct {
     size_t dim, freq;
     int wrap, csv;
     const char *path;
+    const char *save; /* --save FILE */
 } stats_opts;
 
 /* The spectral rows: per-set values, and the values of the mean spectrum. */
@@ -109,6 +114,7 @@ static int parse(int argc, char **argv, stats_opts *o)
         {"freq", CLI_OPT_SIZE, &o->freq, 1, MCS_POINTSET2D_MAX_FREQ, 0},
         {"wrap", CLI_OPT_FLAG, &o->wrap, 0, 0, 0},
         {"csv", CLI_OPT_FLAG, &o->csv, 0, 0, 0},
+        {"save", CLI_OPT_STRING, &o->save, 0, 0, 0},
     };
     int rc = cli_parse_one(CMD, help, NULL, opts, CLI_COUNT(opts), argc, argv, &o->path);
     if (rc != CLI_PARSED)
@@ -282,7 +288,7 @@ static void report(const stats_opts *o, const mcs_spacing *acc, const cli_points
 
 int cli_cmd_stats(int argc, char **argv)
 {
-    stats_opts o = {0, 0, 0, 0, NULL};
+    stats_opts o = {0, 0, 0, 0, NULL, NULL};
     int rc = parse(argc, argv, &o);
     if (rc != 0)
         return rc < 0 ? CLI_EXIT_OK : rc;
@@ -291,12 +297,17 @@ int cli_cmd_stats(int argc, char **argv)
                      .stats = &stats, .freq_opt = o.freq};
     ctx.acc.dim = 0; /* initialised at the first set, when the dimension is known */
     cli_pointset_format fmt = {.dim = o.dim, .weights = 0, .wrap = o.wrap};
+    cli_save_target save = {o.save, o.path, 0u, 0u};
+    rc = cli_save_begin(CMD, &save);
     cli_progress progress;
     cli_progress_init(&progress, !o.csv, CMD, "sets read", 0);
-    rc = cli_read_pointsets(CMD, o.path, &fmt, add_set, &ctx, &stats, &progress);
+    if (rc == 0)
+        rc = cli_read_pointsets(CMD, o.path, &fmt, add_set, &ctx, &stats, &progress);
     cli_progress_end(&progress);
     if (rc == 0)
         report(&o, &ctx.acc, &stats, &ctx.spec);
+    if (rc == 0)
+        rc = cli_save_points(CMD, &save, MCS_IO_KIND_SPACING, &ctx.acc);
     free(ctx.work);
     free(ctx.spec.mem);
     free(ctx.spec.power);

@@ -46,6 +46,19 @@ static mcs_status load_pointset(void *o, void *m, size_t b, size_t l, const void
 static mcs_status load_pointset2d(void *o, void *m, size_t b, size_t l, const void *r) { return mcs_io_load_pointset2d(o, 0u, m, b, l, r); }
 static mcs_status load_spectrum2d(void *o, void *m, size_t b, size_t l, const void *r) { return mcs_io_load_spectrum2d(o, m, b, l, r); }
 
+static mcs_status save_pcf(const void *o, size_t c, void *b, size_t *l) { return mcs_io_save_pcf(o, c, b, l); }
+static mcs_status save_integrate(const void *o, size_t c, void *b, size_t *l) { return mcs_io_save_integrate(o, c, b, l); }
+static mcs_status save_discrepancy(const void *o, size_t c, void *b, size_t *l) { return mcs_io_save_discrepancy(o, c, b, l); }
+static mcs_status save_spacing(const void *o, size_t c, void *b, size_t *l) { return mcs_io_save_spacing(o, c, b, l); }
+static mcs_status load_integrate(void *o, size_t l, const void *b) { return mcs_io_load_integrate(o, l, b); }
+static mcs_status load_discrepancy(void *o, size_t l, const void *b) { return mcs_io_load_discrepancy(o, l, b); }
+static mcs_status load_spacing(void *o, size_t l, const void *b) { return mcs_io_load_spacing(o, l, b); }
+static mcs_status load_pcf(void *o, void *m, size_t b, size_t l, const void *r) { return mcs_io_load_pcf(o, m, b, l, r); }
+static mcs_status merge_pcf(void *d, const void *s) { return mcs_pcf_merge(d, s); }
+static mcs_status merge_integrate(void *d, const void *s) { return mcs_integrate_merge(d, s); }
+static mcs_status merge_discrepancy(void *d, const void *s) { return mcs_discrepancy_merge(d, s); }
+static mcs_status merge_spacing(void *d, const void *s) { return mcs_spacing_merge(d, s); }
+
 static const kind_ops kinds[] = {
     {MCS_IO_KIND_SPECTRUM, sizeof(mcs_spectrum), init_spectrum, load_spectrum, save_spectrum,
      merge_spectrum, NULL, NULL, NULL},
@@ -61,6 +74,14 @@ static const kind_ops kinds[] = {
      merge_pointset2d, size_pointset2d, init_pointset2d, load_pointset2d},
     {MCS_IO_KIND_SPECTRUM2D, sizeof(mcs_spectrum2d), NULL, NULL, save_spectrum2d,
      merge_spectrum2d, size_spectrum2d, init_spectrum2d, load_spectrum2d},
+    /* The measures: made by their commands, read and merged here. */
+    {MCS_IO_KIND_PCF, sizeof(mcs_pcf), NULL, NULL, save_pcf, merge_pcf, NULL, NULL, load_pcf},
+    {MCS_IO_KIND_INTEGRATE, sizeof(mcs_integrate), NULL, load_integrate, save_integrate,
+     merge_integrate, NULL, NULL, NULL},
+    {MCS_IO_KIND_DISCREPANCY, sizeof(mcs_discrepancy), NULL, load_discrepancy, save_discrepancy,
+     merge_discrepancy, NULL, NULL, NULL},
+    {MCS_IO_KIND_SPACING, sizeof(mcs_spacing), NULL, load_spacing, save_spacing, merge_spacing,
+     NULL, NULL, NULL},
 };
 
 const kind_ops *cli_ops_of(uint32_t kind)
@@ -172,6 +193,20 @@ void cli_acc_copy_to(const cli_acc *acc, void *obj)
         (void)mcs_spectrum2d_copy(d, d->mem, d->bytes, acc->obj);
         break;
     }
+    case MCS_IO_KIND_PCF: { /* the header's fields, the arrays into obj's own buffer */
+        mcs_pcf *d = obj;
+        const mcs_pcf *s = acc->obj;
+        double *mean = d->mean, *m2 = d->m2, *value = d->value;
+        void *mem = d->mem;
+        memcpy(mean, s->mean, s->bins * sizeof *mean);
+        memcpy(m2, s->m2, s->bins * sizeof *m2);
+        *d = *s;
+        d->mem = mem;
+        d->mean = mean;
+        d->m2 = m2;
+        d->value = value;
+        break;
+    }
     default: memcpy(obj, acc->obj, cli_ops_of(acc->kind)->size); break;
     }
 }
@@ -191,6 +226,10 @@ uint64_t cli_acc_count(const cli_acc *acc)
     case MCS_IO_KIND_POINTSET: return ((const mcs_pointset *)acc->obj)->state->count;
     case MCS_IO_KIND_POINTSET2D: return ((const mcs_pointset2d *)acc->obj)->state->count;
     case MCS_IO_KIND_SPECTRUM2D: return ((const mcs_spectrum2d *)acc->obj)->state->count;
+    case MCS_IO_KIND_PCF: return ((const mcs_pcf *)acc->obj)->count;
+    case MCS_IO_KIND_INTEGRATE: return ((const mcs_integrate *)acc->obj)->sq.count;
+    case MCS_IO_KIND_DISCREPANCY: return ((const mcs_discrepancy *)acc->obj)->inv_k.count;
+    case MCS_IO_KIND_SPACING: return ((const mcs_spacing *)acc->obj)->stat[0].count;
     default: return ((const mcs_welford *)acc->obj)->count;
     }
 }
@@ -212,12 +251,64 @@ void cli_acc_shape(const cli_acc *acc, size_t shape[2])
     }
 }
 
-static const char *describe(uint32_t kind_number, const uint64_t shape[2], char *buf, size_t size)
+/* The measures' shape words as their records hold them (docs/format.md). */
+static void measure_words(const cli_acc *acc, uint64_t *w)
+{
+    switch (acc->kind) {
+    case MCS_IO_KIND_PCF: {
+        const mcs_pcf *p = acc->obj;
+        w[0] = p->dim;
+        w[1] = p->estimator == MCS_PCF_GAUSSIAN ? 1u : 0u;
+        w[2] = p->bins;
+        memcpy(&w[3], &p->radius, sizeof w[3]);
+        memcpy(&w[4], &p->sigma, sizeof w[4]);
+        break;
+    }
+    case MCS_IO_KIND_INTEGRATE:
+        w[0] = (uint64_t)((const mcs_integrate *)acc->obj)->family;
+        w[1] = ((const mcs_integrate *)acc->obj)->dim;
+        break;
+    case MCS_IO_KIND_DISCREPANCY: w[0] = ((const mcs_discrepancy *)acc->obj)->dim; break;
+    case MCS_IO_KIND_SPACING: w[0] = ((const mcs_spacing *)acc->obj)->dim; break;
+    default: break;
+    }
+}
+
+static int is_measure(uint32_t kind)
+{
+    return kind == MCS_IO_KIND_PCF || kind == MCS_IO_KIND_INTEGRATE ||
+           kind == MCS_IO_KIND_DISCREPANCY || kind == MCS_IO_KIND_SPACING;
+}
+
+/* "a pcf record (psa's RDF, 2D, 8 bins over [0, 2) mean spacings)" and the like. */
+static void describe_measure(uint32_t kind, const uint64_t *w, char *buf, size_t size)
+{
+    double radius, sigma;
+    memcpy(&radius, &w[3], sizeof radius);
+    memcpy(&sigma, &w[4], sizeof sigma);
+    const unsigned long long d = kind == MCS_IO_KIND_INTEGRATE ? w[1] : w[0];
+    if (kind == MCS_IO_KIND_PCF && w[1] == 0u)
+        snprintf(buf, size, "a pcf record (psa's RDF, %lluD, %llu bins over [0, %g) mean "
+                 "spacings)", d, (unsigned long long)w[2], radius);
+    else if (kind == MCS_IO_KIND_PCF)
+        snprintf(buf, size, "a pcf record (Gaussian kernel, sigma %g, %lluD, %llu bins over "
+                 "[0, %g) mean spacings)", sigma, d, (unsigned long long)w[2], radius);
+    else if (kind == MCS_IO_KIND_INTEGRATE)
+        snprintf(buf, size, "an integrate record (%s, %lluD)",
+                 w[0] < (uint64_t)MCS_INTEGRAND_FAMILIES
+                     ? mcs_integrand_family_str((mcs_integrand_family)w[0]) : "unknown", d);
+    else
+        snprintf(buf, size, "a %s record (%lluD)", mcs_io_kind_str(kind), d);
+}
+
+static const char *describe(uint32_t kind_number, const uint64_t *shape, char *buf, size_t size)
 {
     const char *kind = mcs_io_kind_str(kind_number);
     const char *a = kind[0] == 'a' ? "an" : "a"; /* "an autocorr record" */
     const unsigned long long s0 = shape[0], s1 = shape[1];
-    if (kind_number == MCS_IO_KIND_WELFORD)
+    if (is_measure(kind_number))
+        describe_measure(kind_number, shape, buf, size);
+    else if (kind_number == MCS_IO_KIND_WELFORD)
         snprintf(buf, size, "%s %s record", a, kind);
     else if (kind_number == MCS_IO_KIND_POINTSET || kind_number == MCS_IO_KIND_POINTSET2D)
         snprintf(buf, size, "%s %s record of F = %llu", a, kind, s0);
@@ -228,26 +319,35 @@ static const char *describe(uint32_t kind_number, const uint64_t shape[2], char 
     return buf;
 }
 
-const char *cli_acc_describe(const cli_acc *acc, char *buf, size_t size)
+/* acc's shape as its record's words (the rest 0). */
+static void acc_words(const cli_acc *acc, uint64_t *words)
 {
     size_t shape[2];
+    memset(words, 0, MCS_IO_MAX_SHAPE * sizeof *words);
     cli_acc_shape(acc, shape);
-    const uint64_t words[2] = {shape[0], shape[1]};
+    words[0] = shape[0];
+    words[1] = shape[1];
+    measure_words(acc, words);
+}
+
+const char *cli_acc_describe(const cli_acc *acc, char *buf, size_t size)
+{
+    uint64_t words[MCS_IO_MAX_SHAPE];
+    acc_words(acc, words);
     return describe(acc->kind, words, buf, size);
 }
 
 const char *cli_record_describe(const mcs_io_info *info, char *buf, size_t size)
 {
-    const uint64_t words[2] = {info->shape[0], info->shape_len > 1u ? info->shape[1] : 0u};
-    return describe(info->kind, words, buf, size);
+    return describe(info->kind, info->shape, buf, size);
 }
 
 int cli_acc_same(const cli_acc *a, const cli_acc *b)
 {
-    size_t sa[2], sb[2];
-    cli_acc_shape(a, sa);
-    cli_acc_shape(b, sb);
-    return a->kind == b->kind && sa[0] == sb[0] && sa[1] == sb[1];
+    uint64_t wa[MCS_IO_MAX_SHAPE], wb[MCS_IO_MAX_SHAPE];
+    acc_words(a, wa);
+    acc_words(b, wb);
+    return a->kind == b->kind && memcmp(wa, wb, sizeof wa) == 0;
 }
 
 int cli_acc_merge(const char *cmd, cli_acc *dst, const cli_acc *src, const char *what)

@@ -4,6 +4,8 @@
 #include "record.h"
 #include "atomic.h"
 #include "cli.h"
+#include "input.h"
+#include "psets.h"
 #include "record_ops.h"
 #include "streams.h"
 
@@ -145,13 +147,8 @@ int cli_acc_read_with(const char *cmd, const char *path, cli_acc *acc, mcs_io_pr
     mcs_status st = rc == 0 && ops->load_mem != NULL ? mcs_io_load_size(len, buf, 0u, &bytes)
                                                       : MCS_OK;
     if (rc == 0 && ops->load_mem != NULL && st == MCS_OK) {
-        char what[320];
-        if (info.kind == MCS_IO_KIND_SPECTRUM2D)
-            snprintf(what, sizeof what, "%s: a spectrum2d record of %llu x %llu bins", path,
-                     (unsigned long long)info.shape[0], (unsigned long long)info.shape[1]);
-        else
-            snprintf(what, sizeof what, "%s: a %s record of F = %llu", path,
-                     mcs_io_kind_str(info.kind), (unsigned long long)info.shape[0]);
+        char what[480], rec[160];
+        snprintf(what, sizeof what, "%s: %s", path, cli_record_describe(&info, rec, sizeof rec));
         obj = cli_alloc_with_buffer(cmd, what, ops->size, bytes, MCS_OK, &mem);
         if (obj == NULL)
             rc = CLI_EXIT_USAGE;
@@ -230,6 +227,57 @@ int cli_acc_write_with(const char *cmd, const char *path, const cli_acc *acc,
     if (rc == 0)
         rc = cli_write_atomic(cmd, path, buf, len);
     free(buf);
+    return rc;
+}
+
+/* ---- --save of the measure commands ---- */
+
+static int from_stdin(const cli_save_target *t)
+{
+    return t->input == NULL || strcmp(t->input, "-") == 0;
+}
+
+int cli_save_begin(const char *cmd, cli_save_target *t)
+{
+    if (t->save == NULL)
+        return 0;
+    int rc = cli_write_check(cmd, t->save);
+    if (rc == 0 && from_stdin(t))
+        rc = cli_ps_checksum_stdin(cmd, &t->crc, &t->bytes);
+    return rc;
+}
+
+int cli_save_points(const char *cmd, const cli_save_target *t, mcs_io_kind kind, void *obj)
+{
+    if (t->save == NULL)
+        return 0;
+    uint32_t crc = t->crc;
+    uint64_t bytes = t->bytes;
+    int rc = from_stdin(t) ? 0 : cli_ps_checksum_path(cmd, t->input, &crc, &bytes);
+    mcs_io_provenance *prov = rc == 0 ? cli_alloc(cmd, 1, sizeof *prov) : NULL;
+    if (rc == 0 && prov == NULL)
+        rc = CLI_EXIT_FAIL;
+    if (rc == 0) {
+        const cli_acc acc = {kind, obj};
+        cli_input_provenance(cli_input_name(t->input), crc, bytes, prov);
+        rc = cli_acc_write_with(cmd, t->save, &acc, prov);
+    }
+    free(prov);
+    return rc;
+}
+
+int cli_save_drawn(const char *cmd, const char *save, const cli_run *run, mcs_io_kind kind,
+                   void *obj)
+{
+    if (save == NULL)
+        return 0;
+    mcs_io_provenance *prov = cli_alloc(cmd, 1, sizeof *prov);
+    if (prov == NULL)
+        return CLI_EXIT_FAIL;
+    const cli_acc acc = {kind, obj};
+    cli_run_provenance(run, 0u, 1u, prov);
+    const int rc = cli_acc_write_with(cmd, save, &acc, prov);
+    free(prov);
     return rc;
 }
 

@@ -171,15 +171,15 @@ static int measure_case(const char *dir, size_t dim, size_t bins, size_t k, size
     }
     char name[96];
     size_t len = 0u;
-    (void)snprintf(name, sizeof name, "pcf-d%zu-b%zu-k%zu-s%zu.rec", dim, bins, k, sets);
+    (void)snprintf(name, sizeof name, "pcf-d%zu-b%zu-k%zu-t%zu.rec", dim, bins, k, sets);
     bad |= check(mcs_io_save_pcf(&pcf, sizeof buf, buf, &len), name) || write_file(dir, name, len);
-    (void)snprintf(name, sizeof name, "integrate-k%zu-s%zu.rec", k, sets);
+    (void)snprintf(name, sizeof name, "integrate-k%zu-t%zu.rec", k, sets);
     bad |= check(mcs_io_save_integrate(&in, sizeof buf, buf, &len), name) ||
            write_file(dir, name, len);
-    (void)snprintf(name, sizeof name, "discrepancy-k%zu-s%zu.rec", k, sets);
+    (void)snprintf(name, sizeof name, "discrepancy-k%zu-t%zu.rec", k, sets);
     bad |= check(mcs_io_save_discrepancy(&di, sizeof buf, buf, &len), name) ||
            write_file(dir, name, len);
-    (void)snprintf(name, sizeof name, "spacing-k%zu-s%zu.rec", k, sets);
+    (void)snprintf(name, sizeof name, "spacing-k%zu-t%zu.rec", k, sets);
     bad |= check(mcs_io_save_spacing(&sp, sizeof buf, buf, &len), name) ||
            write_file(dir, name, len);
     return bad;
