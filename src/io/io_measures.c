@@ -31,9 +31,10 @@ enum { AT_K_MIN = 0, AT_K_MAX = 1, AT_COUNTS = 2 };
  * 2^53 values stays far inside it, as spectrum_within_limits' does. */
 #define SLACK 0x1p-20
 
-/* The run of Welfords starting at member w of t, in the order above. */
+/* The run of Welfords starting at member w of t, in the order above (w.member
+ * is a member designator, which parentheses would break). */
 #define IO_WELFORD_RUN(t, w, member, as, rules) \
-    {offsetof(t, w.member), as, W_ROWS, IO_ONE, W_STRIDE, rules}
+    {offsetof(t, w.member), as, W_ROWS, IO_ONE, W_STRIDE, rules} /* NOLINT(bugprone-macro-parentheses) */
 #define IO_WELFORDS(t, w)                                                  \
     IO_WELFORD_RUN(t, w, count, IO_AS_COUNT, IO_RULE_NONNEG),              \
         IO_WELFORD_RUN(t, w, mean, IO_AS_ROWS, 0u),                        \
