@@ -114,6 +114,50 @@ void mcs_io_store(const io_values *values, uint64_t count, void *obj);
 mcs_status mcs_io_save(const io_kind *kind, const void *obj, size_t cap, void *buf, size_t *len);
 mcs_status mcs_io_load(const io_kind *kind, void *obj, size_t len, const void *buf);
 
+/* ---- the objects over caller memory (io_mem.c) ----
+ * A load cannot set such an object up before the record has passed every
+ * check (nothing may change on error), and the walker sets it up only after
+ * them, through the kind's init: so a load walks the record twice, first
+ * with mcs_io_init_checked, which stops the walk once the record passed
+ * (MCS_IO_CHECKED), then, once the caller's buffer is known to hold the
+ * object and the object is set up over it, with mcs_io_init_ready, to store
+ * the values. */
+
+/* The dry walk's verdict: every check passed. mcs_io_load returns no such
+ * status of its own before it calls init. */
+#define MCS_IO_CHECKED MCS_ERR_ALIAS
+
+/* The inits of the two walks. */
+mcs_status mcs_io_init_checked(void *obj, const uint64_t *shape);
+mcs_status mcs_io_init_ready(void *obj, const uint64_t *shape);
+
+/* What the kinds over caller memory differ by. */
+typedef struct {
+    void (*table)(io_kind *k, const void *acc); /* acc NULL: the checking walk's */
+    void *(*state)(const void *acc);            /* the head the arrays follow (NULL: acc) */
+    size_t acc_size;
+    mcs_status (*count)(const void *acc, uint64_t *count);
+    /* the object's size query and init for a shape (and flags) */
+    mcs_status (*size)(const uint64_t *shape, unsigned flags, size_t *need);
+    mcs_status (*init)(void *acc, const uint64_t *shape, unsigned flags, void *mem,
+                       size_t bytes);
+} io_mem_kind;
+
+/* Their save: the object's checks, then buf against the object and its
+ * buffer (mem[bytes], read off acc by the caller), then the walk. */
+mcs_status mcs_io_save_mem(const io_mem_kind *m, const void *acc, const void *mem, size_t bytes,
+                           size_t cap, void *buf, size_t *len);
+
+/* Their load: the record checked by a dry walk, then the caller's buffer
+ * (MCS_ERR_SPACE, MCS_ERR_ALIAS), then the object set up over it and the
+ * values stored. */
+mcs_status mcs_io_load_mem(const io_mem_kind *m, void *acc, unsigned flags, void *mem,
+                           size_t bytes, size_t len, const void *buf);
+
+/* The pcf's sizes for its shape words (io_pcf.c): MCS_ERR_DOMAIN,
+ * MCS_ERR_N_RANGE; *need = MCS_PCF_SIZE(B). For mcs_io_load_size. */
+mcs_status mcs_io_pcf_need(const uint64_t *shape, size_t *need);
+
 /* ---- the provenance block of a version 2 record (io_provenance.c) ----
  * It sits between the payload and the CRC; its first 4 bytes are its length. */
 
