@@ -136,6 +136,7 @@ typedef struct {
     void (*table)(io_kind *k, const void *acc); /* acc NULL: the checking walk's */
     void *(*state)(const void *acc);            /* the head the arrays follow (NULL: acc) */
     size_t acc_size;
+    size_t mem_at, bytes_at; /* offsets of the object's void *mem and size_t bytes */
     mcs_status (*count)(const void *acc, uint64_t *count);
     /* the object's size query and init for a shape (and flags) */
     mcs_status (*size)(const uint64_t *shape, unsigned flags, size_t *need);
@@ -144,15 +145,23 @@ typedef struct {
 } io_mem_kind;
 
 /* Their save: the object's checks, then buf against the object and its
- * buffer (mem[bytes], read off acc by the caller), then the walk. */
-mcs_status mcs_io_save_mem(const io_mem_kind *m, const void *acc, const void *mem, size_t bytes,
-                           size_t cap, void *buf, size_t *len);
+ * buffer, then the walk. (Six arguments: a seventh would be pushed, a frame
+ * gcc calls dynamic, make stack.) */
+mcs_status mcs_io_save_mem(const io_mem_kind *m, const void *acc, size_t cap, void *buf,
+                           size_t *len);
+
+/* The caller's memory of a load: its buffer and the object's flags. */
+typedef struct {
+    void *mem;
+    size_t bytes;
+    unsigned flags; /* 0, or the point sets' MCS_POINTSET_DIRECT_ONLY */
+} io_mem_arg;
 
 /* Their load: the record checked by a dry walk, then the caller's buffer
  * (MCS_ERR_SPACE, MCS_ERR_ALIAS), then the object set up over it and the
  * values stored. */
-mcs_status mcs_io_load_mem(const io_mem_kind *m, void *acc, unsigned flags, void *mem,
-                           size_t bytes, size_t len, const void *buf);
+mcs_status mcs_io_load_mem(const io_mem_kind *m, void *acc, const io_mem_arg *arg, size_t len,
+                           const void *buf);
 
 /* The pcf's sizes for its shape words (io_pcf.c): MCS_ERR_DOMAIN,
  * MCS_ERR_N_RANGE; *need = MCS_PCF_SIZE(B). For mcs_io_load_size. */

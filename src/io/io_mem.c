@@ -49,23 +49,32 @@ static uint64_t shape_word(const void *buf, size_t len, size_t i)
     return info.shape[i];
 }
 
-mcs_status mcs_io_save_mem(const io_mem_kind *m, const void *acc, const void *mem, size_t bytes,
-                           size_t cap, void *buf, size_t *len)
+mcs_status mcs_io_save_mem(const io_mem_kind *m, const void *acc, size_t cap, void *buf,
+                           size_t *len)
 {
     uint64_t count = 0u;
     mcs_status st = acc == NULL || len == NULL ? MCS_ERR_NULL : m->count(acc, &count);
+    const void *mem = NULL;
+    size_t bytes = 0u;
+    if (st == MCS_OK) { /* the object checked: its buffer is its own */
+        memcpy(&mem, (const unsigned char *)acc + m->mem_at, sizeof mem);
+        memcpy(&bytes, (const unsigned char *)acc + m->bytes_at, sizeof bytes);
+    }
     if (st == MCS_OK && save_overlaps(acc, m->acc_size, mem, bytes, buf, cap))
         st = MCS_ERR_ALIAS;
     if (st != MCS_OK)
         return st;
-    io_kind k;
-    m->table(&k, acc);
-    return mcs_io_save(&k, m->state != NULL ? m->state(acc) : acc, cap, buf, len);
+    io_kind kind;
+    m->table(&kind, acc);
+    return mcs_io_save(&kind, m->state != NULL ? m->state(acc) : acc, cap, buf, len);
 }
 
-mcs_status mcs_io_load_mem(const io_mem_kind *m, void *acc, unsigned flags, void *mem, size_t bytes,
-                           size_t len, const void *buf)
+mcs_status mcs_io_load_mem(const io_mem_kind *m, void *acc, const io_mem_arg *arg, size_t len,
+                           const void *buf)
 {
+    void *mem = arg->mem;
+    const size_t bytes = arg->bytes;
+    const unsigned flags = arg->flags;
     if (acc == NULL || mem == NULL || buf == NULL)
         return MCS_ERR_NULL;
     const uint64_t one[MCS_IO_MAX_SHAPE] = {1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u};

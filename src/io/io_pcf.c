@@ -147,18 +147,19 @@ static mcs_status init_pcf(void *acc, const uint64_t *shape, unsigned flags, voi
     return mcs_pcf_init(acc, h.dim, h.estimator, h.bins, h.radius, h.sigma, mem, bytes);
 }
 
-static const io_mem_kind mem_pcf = {table_pcf, NULL, sizeof(mcs_pcf), count_pcf, size_pcf,
-                                 init_pcf};
+static const io_mem_kind mem_pcf = {table_pcf,          NULL,     sizeof(mcs_pcf),
+                                   offsetof(mcs_pcf, mem), offsetof(mcs_pcf, bytes),
+                                   count_pcf,          size_pcf, init_pcf};
 
 mcs_status mcs_io_save_pcf(const mcs_pcf *acc, size_t cap, void *buf, size_t *len)
 {
-    return mcs_io_save_mem(&mem_pcf, acc, acc != NULL ? acc->mem : NULL, acc != NULL ? acc->bytes : 0u,
-                    cap, buf, len);
+    return mcs_io_save_mem(&mem_pcf, acc, cap, buf, len);
 }
 
 mcs_status mcs_io_load_pcf(mcs_pcf *acc, void *mem, size_t bytes, size_t len, const void *buf)
 {
-    return mcs_io_load_mem(&mem_pcf, acc, 0u, mem, bytes, len, buf);
+    const io_mem_arg arg = {mem, bytes, 0u};
+    return mcs_io_load_mem(&mem_pcf, acc, &arg, len, buf);
 }
 
 mcs_status mcs_io_pcf_need(const uint64_t *shape, size_t *need)

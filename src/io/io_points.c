@@ -92,19 +92,20 @@ static mcs_status init_pointset(void *acc, const uint64_t *shape, unsigned flags
     return mcs_pointset_init(acc, (size_t)shape[0], flags, mem, bytes);
 }
 
-static const io_mem_kind mem_pointset = {kind_pointset, state_pointset, sizeof(mcs_pointset),
-                                      count_pointset, size_pointset, init_pointset};
+static const io_mem_kind mem_pointset = {
+    kind_pointset, state_pointset, sizeof(mcs_pointset), offsetof(mcs_pointset, mem),
+    offsetof(mcs_pointset, bytes), count_pointset, size_pointset, init_pointset};
 
 mcs_status mcs_io_save_pointset(const mcs_pointset *acc, size_t cap, void *buf, size_t *len)
 {
-    return mcs_io_save_mem(&mem_pointset, acc, acc != NULL ? acc->mem : NULL,
-                           acc != NULL ? acc->bytes : 0u, cap, buf, len);
+    return mcs_io_save_mem(&mem_pointset, acc, cap, buf, len);
 }
 
 mcs_status mcs_io_load_pointset(mcs_pointset *acc, unsigned flags, void *mem, size_t bytes,
                                 size_t len, const void *buf)
 {
-    return mcs_io_load_mem(&mem_pointset, acc, flags, mem, bytes, len, buf);
+    const io_mem_arg arg = {mem, bytes, flags};
+    return mcs_io_load_mem(&mem_pointset, acc, &arg, len, buf);
 }
 
 /* ---- pointset2d: mean and M2 of P at fy = 0..F, fx = -F..F (row by row:
@@ -155,19 +156,20 @@ static mcs_status init_pointset2d(void *acc, const uint64_t *shape, unsigned fla
     return mcs_pointset2d_init(acc, (size_t)shape[0], flags, mem, bytes);
 }
 
-static const io_mem_kind mem_pointset2d = {kind_pointset2d, state_pointset2d, sizeof(mcs_pointset2d),
-                                        count_pointset2d, size_pointset2d, init_pointset2d};
+static const io_mem_kind mem_pointset2d = {
+    kind_pointset2d, state_pointset2d, sizeof(mcs_pointset2d), offsetof(mcs_pointset2d, mem),
+    offsetof(mcs_pointset2d, bytes), count_pointset2d, size_pointset2d, init_pointset2d};
 
 mcs_status mcs_io_save_pointset2d(const mcs_pointset2d *acc, size_t cap, void *buf, size_t *len)
 {
-    return mcs_io_save_mem(&mem_pointset2d, acc, acc != NULL ? acc->mem : NULL,
-                           acc != NULL ? acc->bytes : 0u, cap, buf, len);
+    return mcs_io_save_mem(&mem_pointset2d, acc, cap, buf, len);
 }
 
 mcs_status mcs_io_load_pointset2d(mcs_pointset2d *acc, unsigned flags, void *mem, size_t bytes,
                                   size_t len, const void *buf)
 {
-    return mcs_io_load_mem(&mem_pointset2d, acc, flags, mem, bytes, len, buf);
+    const io_mem_arg arg = {mem, bytes, flags};
+    return mcs_io_load_mem(&mem_pointset2d, acc, &arg, len, buf);
 }
 
 /* ---- spectrum2d: five arrays over k2 = 0..N2/2, k1 = 0..N1-1 (rows of N1
@@ -221,19 +223,20 @@ static mcs_status init_spectrum2d(void *acc, const uint64_t *shape, unsigned fla
     return mcs_spectrum2d_init(acc, (size_t)shape[0], (size_t)shape[1], mem, bytes);
 }
 
-static const io_mem_kind mem_spectrum2d = {kind_spectrum2d, state_spectrum2d, sizeof(mcs_spectrum2d),
-                                        count_spectrum2d, size_spectrum2d, init_spectrum2d};
+static const io_mem_kind mem_spectrum2d = {
+    kind_spectrum2d, state_spectrum2d, sizeof(mcs_spectrum2d), offsetof(mcs_spectrum2d, mem),
+    offsetof(mcs_spectrum2d, bytes), count_spectrum2d, size_spectrum2d, init_spectrum2d};
 
 mcs_status mcs_io_save_spectrum2d(const mcs_spectrum2d *acc, size_t cap, void *buf, size_t *len)
 {
-    return mcs_io_save_mem(&mem_spectrum2d, acc, acc != NULL ? acc->mem : NULL,
-                           acc != NULL ? acc->bytes : 0u, cap, buf, len);
+    return mcs_io_save_mem(&mem_spectrum2d, acc, cap, buf, len);
 }
 
 mcs_status mcs_io_load_spectrum2d(mcs_spectrum2d *acc, void *mem, size_t bytes, size_t len,
                                   const void *buf)
 {
-    return mcs_io_load_mem(&mem_spectrum2d, acc, 0u, mem, bytes, len, buf);
+    const io_mem_arg arg = {mem, bytes, 0u};
+    return mcs_io_load_mem(&mem_spectrum2d, acc, &arg, len, buf);
 }
 
 /* ---- the memory a load needs ---- */
