@@ -20,7 +20,9 @@
 #   mean and standard error, worked out here;
 #   standard input saves like the file (the same record but its name);
 #   merge refuses (exit 2, one line, OUT not written) records of another
-#   radius, estimator, family or dim, another kind, and the same file twice;
+#   radius, estimator, family or dim, another kind, the same file twice, and
+#   of a drawn KIND the same stream twice and another seed (but with
+#   --mix-seeds);
 #   --save refuses a directory, a symbolic link and a missing directory
 #   before any work; integrate --save without --family or over sets of
 #   several K.
@@ -161,6 +163,13 @@ refused "merge: another kind" "cannot merge" "$tmp/d-b.rec" "$tmp/s-a.rec"
 refused "merge: the same file twice" "twice" "$tmp/d-a.rec" "$tmp/d-a.rec"
 cp "$tmp/d-a.rec" "$tmp/d-a-copy.rec"
 refused "merge: the same point file twice" "same|twice" "$tmp/d-a.rec" "$tmp/d-a-copy.rec"
+# drawn sets carry their run: the same stream twice, another seed (unless --mix-seeds)
+"$MCSPEC" pcf jittered --k 64 --sets 5 --seed 1 --save "$tmp/j1.rec" >/dev/null
+"$MCSPEC" pcf jittered --k 64 --sets 5 --seed 1 --save "$tmp/j1-again.rec" >/dev/null
+"$MCSPEC" pcf jittered --k 64 --sets 5 --seed 2 --save "$tmp/j2.rec" >/dev/null
+refused "merge: the same stream twice" "twice" "$tmp/j1.rec" "$tmp/j1-again.rec"
+refused "merge: another seed" "seed" "$tmp/j1.rec" "$tmp/j2.rec"
+succeeds "merge --mix-seeds" "$MCSPEC" merge "$tmp/j1.rec" "$tmp/j2.rec" --mix-seeds -o "$tmp/j12.rec"
 mkdir "$tmp/dir"
 usage_error "--save into a directory" "directory" "$MCSPEC" discrepancy --save "$tmp/dir" "$tmp/a.txt"
 ln -s "$tmp/d-b.rec" "$tmp/link.rec"
