@@ -254,7 +254,7 @@ test: $(TEST_BIN) $(SECTION_BIN) $(BUILD)/examples/renderer_sampler $(BUILD)/exa
 	    MCSPEC_LIBRARY=$(BUILD)/libmcspec.so SAN=$(SAN) \
 	    EXAMPLES="$(SECTION_BIN) $(BUILD)/examples/renderer_sampler" MCSPEC="$(CLI_BIN)" RENDERER="$(BUILD)/examples/renderer_sampler" \
 	    sh test/run_tests.sh $(TEST_BIN) test/examples_check.sh test/cli_check.sh test/measures_check.sh \
-	    test/record_check.sh test/renderer_check.sh \
+	    test/record_check.sh test/measure_records_check.sh test/renderer_check.sh \
 	    test/spectrum_check.sh test/sample_check.sh \
 	    test/integrate_check.sh test/pcf_check.sh python/tests/run.sh
 

@@ -2,11 +2,14 @@
  * discrepancy) of point sets read from a file or drawn from a named kind,
  * mean over the sets beside the exact expectation for independent uniform
  * points and, for a kind whose expectation is known, the kind's own. */
+#include "atomic.h"
 #include "cli.h"
 #include "input.h"
 #include "kindsets.h"
+#include "measure_rows.h"
 #include "output.h"
 #include "progress.h"
+#include "record.h"
 
 #include "mcspec.h"
 
@@ -27,8 +30,8 @@
 _Static_assert(CLI_MAX_DIM <= MCS_DISCREPANCY_MAX_DIM, "the reader takes what the library takes");
 
 static const char help[] =
-    "usage: mcspec discrepancy [--dim D] [--wrap] [--csv] [FILE|-]\n"
-    "       mcspec discrepancy KIND --dim D --k K [--sets T] [--seed S] [--csv]\n"
+    "usage: mcspec discrepancy [--dim D] [--wrap] [--csv] [--save FILE] [FILE|-]\n"
+    "       mcspec discrepancy KIND --dim D --k K [--sets T] [--seed S] [--csv] [--save FILE]\n"
     "\n"
     "The L2 discrepancies of point sets read from FILE (or standard input, given\n"
     "as '-' or by giving no FILE), one set per trial: per set the squared\n"
@@ -75,6 +78,9 @@ static const char help[] =
     "  --csv     print CSV only: the header, exactly\n"
     "            " CSV_HEADER "\n"
     "            and one row per measure (an empty field: no value)\n"
+    "  --save FILE  also save the accumulator (a discrepancy record, docs/format.md)\n"
+    "            for mcspec merge and mcspec show, written atomically (as\n"
+    "            mcspec spectrum --save)\n"
     "  --help    this text\n"
     "\n"
     "Exit status: 0 on success, 2 on bad usage or input (one line on stderr).\n";
@@ -84,6 +90,7 @@ typedef struct {
     uint64_t seed;
     int wrap, csv, kind_mode;
     const char *path; /* the file, or KIND */
+    const char *save; /* --save FILE */
 } disc_opts;
 
 typedef struct {
@@ -102,6 +109,7 @@ static int parse(int argc, char **argv, disc_opts *o)
         {"k", CLI_OPT_SIZE, &o->k, 1, CLI_MAX_K, 0},
         {"sets", CLI_OPT_SIZE, &o->sets, 1, 1000000, 0},
         {"seed", CLI_OPT_U64, &o->seed, 0, UINT64_MAX, 0},
+        {"save", CLI_OPT_STRING, &o->save, 0, 0, 0},
     };
     int rc = cli_parse_one(CMD, help, NULL, opts, CLI_COUNT(opts), argc, argv, &o->path);
     if (rc != CLI_PARSED)
@@ -115,6 +123,10 @@ static int parse(int argc, char **argv, disc_opts *o)
             return cli_fail(CMD, "give --dim D with KIND %s", o->path);
         if (cli_opt_given(opts, nopts, "wrap"))
             return cli_fail(CMD, "--wrap goes with a point file, not KIND --k K");
+        if (o->save != NULL && o->dim > 2u)
+            return cli_fail(CMD, "--save of a drawn KIND takes --dim 1 or 2 (a record names "
+                                 "a pattern in 1D or 2D): write the sets with mcspec sample "
+                                 "and save from the file");
         return 0;
     }
     if (cli_opt_given(opts, nopts, "sets") || cli_opt_given(opts, nopts, "seed"))
@@ -182,15 +194,37 @@ typedef struct {
     double exact[MCS_DISCREPANCY_MEASURES];
 } disc_exact;
 
+void cli_discrepancy_rows(int csv, const mcs_discrepancy *acc,
+                          const double exact[MCS_DISCREPANCY_MEASURES])
+{
+    uint64_t star = 0u, sets = 0u;
+    (void)mcs_discrepancy_count(acc, MCS_DISCREPANCY_STAR, &star);
+    (void)mcs_discrepancy_count(acc, MCS_DISCREPANCY_L2_STAR, &sets);
+    const int with_star = acc->dim == 2u && star == sets;
+    if (csv)
+        puts(CSV_HEADER);
+    else
+        printf("\n%-15s %13s %13s %13s %13s %13s %8s\n", "measure", "value", "stderr",
+               "exact_random", "root", "exact", "z");
+    for (int i = 0; i < MCS_DISCREPANCY_MEASURES; ++i) {
+        const mcs_discrepancy_measure m = (mcs_discrepancy_measure)i;
+        if (m == MCS_DISCREPANCY_STAR && !with_star)
+            continue;
+        double v[5] = {read_or_nan(mcs_discrepancy_mean, acc, m),
+                       read_or_nan(mcs_discrepancy_stderr, acc, m),
+                       read_or_nan(mcs_discrepancy_exact_random, acc, m), (double)NAN, exact[i]};
+        v[3] = sqrt(fmax(v[0], 0.0)); /* a D^2 within rounding of 0 may be slightly negative */
+        print_row(csv, m, v);
+    }
+}
+
 static void report(const disc_opts *o, const mcs_discrepancy *acc,
                    const cli_pointset_stats *stats, const disc_exact *ex)
 {
     uint64_t star = 0;
     mcs_discrepancy_count(acc, MCS_DISCREPANCY_STAR, &star);
     const int with_star = stats->dim == 2u && star == stats->sets;
-    if (o->csv) {
-        puts(CSV_HEADER);
-    } else {
+    if (!o->csv) {
         if (ex->source != NULL)
             printf("%s: %s, %llu point sets in %zuD, K = %zu points per set\n", CMD, ex->source,
                    (unsigned long long)stats->sets, stats->dim, stats->k_min);
@@ -204,20 +238,8 @@ static void report(const disc_opts *o, const mcs_discrepancy *acc,
         if (stats->dim == 2u && !with_star)
             printf("star: not computed (a set has more than %d points)\n",
                    MCS_DISCREPANCY_STAR_MAX_K);
-        printf("\n%-15s %13s %13s %13s %13s %13s %8s\n", "measure", "value", "stderr",
-               "exact_random", "root", "exact", "z");
     }
-    for (int i = 0; i < MCS_DISCREPANCY_MEASURES; ++i) {
-        const mcs_discrepancy_measure m = (mcs_discrepancy_measure)i;
-        if (m == MCS_DISCREPANCY_STAR && !with_star)
-            continue;
-        double v[5] = {read_or_nan(mcs_discrepancy_mean, acc, m),
-                       read_or_nan(mcs_discrepancy_stderr, acc, m),
-                       read_or_nan(mcs_discrepancy_exact_random, acc, m), (double)NAN,
-                       ex->exact[i]};
-        v[3] = sqrt(fmax(v[0], 0.0)); /* a D^2 within rounding of 0 may be slightly negative */
-        print_row(o->csv, m, v);
-    }
+    cli_discrepancy_rows(o->csv, acc, ex->exact);
 }
 
 /* The exact E[D^2] of KIND's sets where the library has it: random (any
@@ -225,23 +247,27 @@ static void report(const disc_opts *o, const mcs_discrepancy *acc,
  * and the 1D Owen-scrambled base-2 kinds at K = 2^m: a scrambled (0,m,1)-net
  * has the pair laws of the stratified pattern (docs/owen.md, "The 1D
  * identity"), and D^2 depends on the points through pairs only. */
-static void kind_exact(const cli_sample_source *src, disc_exact *ex)
+void cli_discrepancy_exact(const char *name, size_t dim, size_t k,
+                           double exact[MCS_DISCREPANCY_MEASURES])
 {
-    const char *name = src->kind->name;
-    for (int i = 0; i < MCS_DISCREPANCY_L2_COUNT; ++i) {
+    mcs_pattern2d grid;
+    const int jittered = name != NULL && strcmp(name, "jittered") == 0 && dim == 2u &&
+                         mcs_pattern2d_init(&grid, MCS_PATTERN2D_JITTERED, k, 0u, 0u) == MCS_OK;
+    for (int i = 0; i < MCS_DISCREPANCY_MEASURES; ++i) {
         const mcs_discrepancy_measure m = (mcs_discrepancy_measure)i;
         double v = NAN;
         mcs_status st = MCS_ERR_DOMAIN;
-        if (strcmp(name, "random") == 0)
-            st = mcs_discrepancy_l2_exact_random(m, src->k, src->dim, &v);
-        else if (strcmp(name, "jittered") == 0)
-            st = mcs_discrepancy_l2_exact_jittered2d(m, src->pattern2d.strata_x,
-                                                     src->pattern2d.strata_y, &v);
-        else if (strcmp(name, "stratified") == 0 ||
-                 ((strcmp(name, "sobol-owen") == 0 || strcmp(name, "halton-owen") == 0) &&
-                  src->dim == 1u && (src->k & (src->k - 1u)) == 0u))
-            st = mcs_discrepancy_l2_exact_jittered(m, src->k, 1u, &v);
-        ex->exact[i] = st == MCS_OK ? v : (double)NAN;
+        if (name == NULL || m == MCS_DISCREPANCY_STAR)
+            st = MCS_ERR_DOMAIN;
+        else if (strcmp(name, "random") == 0)
+            st = mcs_discrepancy_l2_exact_random(m, k, dim, &v);
+        else if (jittered)
+            st = mcs_discrepancy_l2_exact_jittered2d(m, grid.strata_x, grid.strata_y, &v);
+        else if (dim == 1u && (strcmp(name, "stratified") == 0 ||
+                               ((strcmp(name, "sobol-owen") == 0 || strcmp(name, "halton-owen") == 0) &&
+                                (k & (k - 1u)) == 0u)))
+            st = mcs_discrepancy_l2_exact_jittered(m, k, 1u, &v);
+        exact[i] = st == MCS_OK ? v : (double)NAN;
     }
 }
 
@@ -253,7 +279,7 @@ static int run_kind(const disc_opts *o, disc_ctx *ctx, cli_pointset_stats *stats
     int rc = cli_sample_init(CMD, o->path, o->dim, o->k, MCS_MAX_N, &src);
     if (rc != 0)
         return rc;
-    kind_exact(&src, ex);
+    cli_discrepancy_exact(src.kind->name, src.dim, src.k, ex->exact);
     if (strcmp(o->path, "jittered") == 0)
         snprintf(source, source_size, "jittered %zu x %zu strata (seed %llu)",
                  src.pattern2d.strata_x, src.pattern2d.strata_y, (unsigned long long)o->seed);
@@ -270,7 +296,7 @@ static int run_kind(const disc_opts *o, disc_ctx *ctx, cli_pointset_stats *stats
 
 int cli_cmd_discrepancy(int argc, char **argv)
 {
-    disc_opts o = {0, 0, 64, 1, 0, 0, 0, NULL};
+    disc_opts o = {0, 0, 64, 1, 0, 0, 0, NULL, NULL};
     int rc = parse(argc, argv, &o);
     if (rc != 0)
         return rc < 0 ? CLI_EXIT_OK : rc;
@@ -286,17 +312,29 @@ int cli_cmd_discrepancy(int argc, char **argv)
     ctx->work = NULL;
     ctx->work_bytes = 0;
     ctx->stats = &stats;
+    cli_save_target save = {o.save, o.path, 0u, 0u};
     if (o.kind_mode) {
-        rc = run_kind(&o, ctx, &stats, &ex, source, sizeof source);
+        rc = o.save != NULL ? cli_write_check(CMD, o.save) : 0;
+        if (rc == 0)
+            rc = run_kind(&o, ctx, &stats, &ex, source, sizeof source);
     } else {
         cli_pointset_format fmt = {.dim = o.dim, .weights = 0, .wrap = o.wrap};
+        rc = cli_save_begin(CMD, &save);
         cli_progress progress;
         cli_progress_init(&progress, !o.csv, CMD, "sets read", 0);
-        rc = cli_read_pointsets(CMD, o.path, &fmt, add_set, ctx, &stats, &progress);
+        if (rc == 0)
+            rc = cli_read_pointsets(CMD, o.path, &fmt, add_set, ctx, &stats, &progress);
         cli_progress_end(&progress);
     }
     if (rc == 0)
         report(&o, &ctx->acc, &stats, &ex);
+    if (rc == 0 && o.kind_mode) {
+        const cli_run run = {(unsigned)o.dim, o.path, o.dim == 1u ? (uint64_t)MCS_MAX_N : 0u,
+                             o.k, 0, 0u, o.seed, 1u, o.sets};
+        rc = cli_save_drawn(CMD, o.save, &run, MCS_IO_KIND_DISCREPANCY, &ctx->acc);
+    } else if (rc == 0) {
+        rc = cli_save_points(CMD, &save, MCS_IO_KIND_DISCREPANCY, &ctx->acc);
+    }
     free(ctx->work);
     free(ctx);
     return rc;

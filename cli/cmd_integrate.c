@@ -4,11 +4,13 @@
  * standard error, the exact MSE where it is known, the MSE predicted from
  * the measured spectrum (the point-set eq. 14) and the fitted convergence
  * slope beside the published rates (integrand.h, integrate.h). */
+#include "atomic.h"
 #include "cli.h"
 #include "input.h"
 #include "output.h"
 #include "plot.h"
 #include "progress.h"
+#include "record.h"
 #include "integrate.h"
 #include "source2d.h"
 
@@ -74,6 +76,10 @@ static const char help[] =
     "                   jittered (2D: the most nearly square m x n grid of K cells,\n"
     "                   as mcspec pattern draws it; 1D: K strata, = stratified)\n"
     "  --plot FILE.png  log-log figure of mse against K with the fitted slopes (or .svg)\n"
+    "  --save FILE      also save the accumulator of the one row (an integrate record,\n"
+    "                   docs/format.md: needs --family and one K, one FILE or KIND)\n"
+    "                   for mcspec merge and show, written atomically; show leaves\n"
+    "                   predicted, predicted_tail, freq and slope empty\n"
     "  --csv            print CSV only: the header, exactly\n"
     "                   " CSV_HEADER CSV_EXTRA "\n"
     "                   and one row per family and K (an empty field: no value)\n"
@@ -140,6 +146,7 @@ static int parse(int argc, char **argv, integ_opts *o)
         {"plot", CLI_OPT_STRING, &o->plot, 0, 0, 0},
         {"csv", CLI_OPT_FLAG, &o->csv, 0, 0, 0},
         {"exact", CLI_OPT_STRING, &o->exact, 0, 0, 0},
+        {"save", CLI_OPT_STRING, &o->save, 0, 0, 0},
     };
     cli_parser p = {CMD, help, opts, CLI_COUNT(opts), o->files, CLI_INTEG_MAX_FILES, 0u, NULL};
     rc = cli_parse(&p, argc, argv);
@@ -179,6 +186,9 @@ static int parse(int argc, char **argv, integ_opts *o)
         return cli_fail(CMD, "--exact takes random, jittered or stratified, not '%s'", o->exact);
     if (o->freq_given && o->freq > (size_t)(o->dim == 2u ? MAX_FREQ_2D : MAX_FREQ_1D))
         return cli_fail(CMD, "--freq: at most %d in 2D", MAX_FREQ_2D);
+    /* A record holds one accumulator: one family, one K, one input. */
+    if (o->save != NULL && (o->family == NULL || o->nks > 1u || o->nfiles > 1u))
+        return cli_fail(CMD, "--save holds one row: give --family NAME and one --k (or one FILE)");
     return o->plot != NULL ? cli_plot_check(CMD, o->plot) : 0;
 }
 
@@ -512,6 +522,13 @@ int cli_cmd_integrate(int argc, char **argv)
     cli_pointset_stats stats;
     memset(&stats, 0, sizeof stats);
     c.stats = &stats;
+    cli_save_target save = {o.save, o.nfiles > 0u ? o.files[0] : NULL, 0u, 0u};
+    if (o.kind != NULL)
+        rc = o.save != NULL ? cli_write_check(CMD, o.save) : 0;
+    else
+        rc = cli_save_begin(CMD, &save);
+    if (rc != 0)
+        return rc;
     cli_progress progress;
     cli_progress_init(&progress, !o.csv, CMD, "sets", 0);
     if (o.kind != NULL) {
@@ -535,12 +552,22 @@ int cli_cmd_integrate(int argc, char **argv)
     cli_progress_end(&progress);
     if (rc == 0 && c.ng == 0u)
         rc = cli_fail(CMD, "no point sets in the input");
+    if (rc == 0 && o.save != NULL && c.ng != 1u)
+        rc = cli_fail(CMD, "--save holds one row: the sets have %zu sizes K (give sets of one K)",
+                      c.ng);
     if (rc == 0)
         rc = results(&c);
     if (rc == 0)
         report(&c);
     if (rc == 0 && o.plot != NULL)
         rc = cli_integrate_plot(CMD, o.plot, &c);
+    if (rc == 0 && o.save != NULL) {
+        mcs_integrate *acc = &c.g[0].acc[family_of(o.family)];
+        const cli_run run = {(unsigned)c.dim, o.kind, c.dim == 1u ? (uint64_t)MCS_MAX_N : 0u,
+                             c.g[0].k, 0, 0u, o.seed, 1u, o.sets};
+        rc = o.kind != NULL ? cli_save_drawn(CMD, o.save, &run, MCS_IO_KIND_INTEGRATE, acc)
+                            : cli_save_points(CMD, &save, MCS_IO_KIND_INTEGRATE, acc);
+    }
     free_groups(&c);
     return rc;
 }

@@ -352,8 +352,8 @@ static int survey_inputs(survey *m, const char **files, const char *output)
         char da[96], db[96];
         if (i == 0u)
             m->first_info = info;
-        else if (info.kind != m->first_info.kind || info.shape[0] != m->first_info.shape[0] ||
-                 info.shape[1] != m->first_info.shape[1])
+        else if (info.kind != m->first_info.kind || info.shape_len != m->first_info.shape_len ||
+                 memcmp(info.shape, m->first_info.shape, sizeof info.shape) != 0)
             return cli_fail(CMD, "%s holds %s, %s %s: cannot merge", files[i],
                             cli_record_describe(&info, da, sizeof da), files[0],
                             cli_record_describe(&m->first_info, db, sizeof db));

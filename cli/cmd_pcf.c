@@ -3,11 +3,13 @@
  * standard error per bin over the sets beside the exact value, a figure,
  * and psa's spectral check (the radial power the RDF implies against the
  * measured one). */
+#include "atomic.h"
 #include "cli.h"
 #include "input.h"
 #include "output.h"
 #include "plot.h"
 #include "progress.h"
+#include "record.h"
 
 #include "mcspec.h"
 
@@ -68,6 +70,10 @@ static const char help[] =
     "                   error)\n"
     "  --plot FILE      draw g with its standard-error band and the exact curve\n"
     "                   (FILE.png or FILE.svg, by gnuplot)\n"
+    "  --save FILE      also save the accumulator (a pcf record, docs/format.md)\n"
+    "                   for mcspec merge and mcspec show, written atomically (as\n"
+    "                   mcspec spectrum --save); show rebuilds the exact column of\n"
+    "                   a KIND's record, not --exact random of a FILE's\n"
     "  --csv            print CSV only: the header, exactly\n"
     "                   " CSV_HEADER "\n"
     "                   then one row per bin, r its centre (an empty field: no value)\n"
@@ -80,6 +86,7 @@ typedef struct {
     size_t bins, k, spectral;
     uint64_t sets, seed;
     const char *radius_s, *width_s, *sigma_s, *exact_s, *plot, *arg;
+    const char *save; /* --save FILE */
     double radius, sigma;
     int kind; /* a 2D pattern, or -1 for a file */
     int bins_given, k_given;
@@ -162,6 +169,7 @@ static int parse(int argc, char **argv, pcf_opts *o)
         {"wrap", CLI_OPT_FLAG, &o->wrap, 0, 0, 0},
         {"plot", CLI_OPT_STRING, &o->plot, 0, 0, 0},
         {"csv", CLI_OPT_FLAG, &o->csv, 0, 0, 0},
+        {"save", CLI_OPT_STRING, &o->save, 0, 0, 0},
     };
     int rc = cli_parse_one(CMD, help, NULL, opts, CLI_COUNT(opts), argc, argv, &o->arg);
     if (rc != CLI_PARSED)
@@ -478,9 +486,15 @@ int cli_cmd_pcf(int argc, char **argv)
     c->o = &o;
     c->name = o.kind >= 0 ? o.arg : cli_input_name(o.arg);
     cli_pointset_stats stats;
-    if (o.kind >= 0) {
+    /* --save: checked before any work (a drawn KIND reads no standard input) */
+    cli_save_target save = {o.save, o.arg, 0u, 0u};
+    if (o.kind >= 0)
+        rc = o.save != NULL ? cli_write_check(CMD, o.save) : 0;
+    else
+        rc = cli_save_begin(CMD, &save);
+    if (rc == 0 && o.kind >= 0) {
         rc = draw_sets(c, &o);
-    } else {
+    } else if (rc == 0) {
         c->stats = &stats;
         cli_pointset_format fmt = {.dim = 0, .weights = 0, .wrap = o.wrap};
         cli_progress progress;
@@ -497,6 +511,12 @@ int cli_cmd_pcf(int argc, char **argv)
         describe(c, title, sizeof title, sub, sizeof sub);
         const pcf_figure fig = {c, title, sub};
         rc = cli_plot_render(CMD, o.plot, write_figure, &fig);
+    }
+    if (rc == 0 && o.kind >= 0) {
+        const cli_run run = {2u, o.arg, 0u, o.k, 0, 0u, o.seed, 1u, o.sets};
+        rc = cli_save_drawn(CMD, o.save, &run, MCS_IO_KIND_PCF, &c->acc);
+    } else if (rc == 0) {
+        rc = cli_save_points(CMD, &save, MCS_IO_KIND_PCF, &c->acc);
     }
     free(c->acc.mem);
     free(c->ps_mem);

@@ -42,6 +42,15 @@ static const char help[] =
     "          --radial the annulus averages, their standard errors and psa's\n"
     "          anisotropy in dB (empty where it is not defined)\n"
     "spectrum2d  <S_k> and <|S_k|^2> with standard errors at every (k1, k2)\n"
+    "pcf, integrate, discrepancy, spacing  the table and CSV of mcspec pcf,\n"
+    "          integrate, discrepancy and stats (the same header and columns),\n"
+    "          but what a record cannot rebuild, left empty: the pcf's exact\n"
+    "          column unless the record is of a drawn pattern (mcspec pcf KIND;\n"
+    "          discrepancy and stats rebuild theirs from a drawn KIND too),\n"
+    "          integrate's predicted, predicted_tail, freq and slope (they need\n"
+    "          the sets' spectrum and integrands; k is empty for a merge of\n"
+    "          records of different K), and for spacing the spectral rows of\n"
+    "          mcspec stats (only min_distance and avg_min_distance are in it)\n"
     "\n"
     "Options:\n"
     "  --csv        print CSV only: for spectra the header\n"
@@ -377,10 +386,13 @@ int cli_cmd_show(int argc, char **argv)
              (unsigned long long)cli_acc_count(&acc));
     const int spectrum_like = acc.kind == MCS_IO_KIND_SPECTRUM || acc.kind == MCS_IO_KIND_MOMENT ||
                               acc.kind == MCS_IO_KIND_AUTOCORR;
+    const int measure = acc.kind == MCS_IO_KIND_PCF || acc.kind == MCS_IO_KIND_INTEGRATE ||
+                        acc.kind == MCS_IO_KIND_DISCREPANCY || acc.kind == MCS_IO_KIND_SPACING;
     if (o.importance != NULL && !spectrum_like)
         rc = cli_fail(CMD, "%s holds no pattern run: --importance is for records of mcspec "
                       "pattern", o.path);
-    else if (o.plot != NULL && (acc.kind == MCS_IO_KIND_WELFORD || acc.kind == MCS_IO_KIND_SPECTRUM2D))
+    else if (o.plot != NULL && (acc.kind == MCS_IO_KIND_WELFORD ||
+                                acc.kind == MCS_IO_KIND_SPECTRUM2D || measure))
         rc = cli_fail(CMD, "%s holds %s: no plot for it (drop --plot)", o.path, what);
     else if (o.radial && acc.kind != MCS_IO_KIND_POINTSET2D)
         rc = cli_fail(CMD, "%s holds %s: --radial is for pointset2d records", o.path, what);
@@ -390,6 +402,8 @@ int cli_cmd_show(int argc, char **argv)
         rc = CLI_EXIT_USAGE;
     else if (acc.kind == MCS_IO_KIND_WELFORD)
         rc = show_welford(&o, acc.obj, origin);
+    else if (measure)
+        rc = cli_show_measure(o.csv, &acc, prov, title, origin);
     else if (acc.kind == MCS_IO_KIND_POINTSET || acc.kind == MCS_IO_KIND_POINTSET2D)
         rc = show_pointset(&o, &acc, title, origin);
     else if (acc.kind == MCS_IO_KIND_SPECTRUM2D) {

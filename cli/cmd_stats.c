@@ -4,11 +4,14 @@
  * set's radial power spectrum (1D and 2D), of point sets read from a file
  * or drawn from a named kind, with the exact expectation for independent
  * uniform points where theory gives it. */
+#include "atomic.h"
 #include "cli.h"
 #include "input.h"
 #include "kindsets.h"
+#include "measure_rows.h"
 #include "output.h"
 #include "progress.h"
+#include "record.h"
 
 #include "mcspec.h"
 
@@ -28,8 +31,8 @@
 #define MAX_DIM MCS_SPACING_MAX_DIM
 
 static const char help[] =
-    "usage: mcspec stats [--dim D] [--freq F] [--wrap] [--csv] [FILE|-]\n"
-    "       mcspec stats KIND --dim D --k K [--sets T] [--seed S] [--freq F] [--csv]\n"
+    "usage: mcspec stats [--dim D] [--freq F] [--wrap] [--csv] [--save FILE] [FILE|-]\n"
+    "       mcspec stats KIND --dim D --k K [--sets T] [--seed S] [--freq F] [--csv] [--save FILE]\n"
     "\n"
     "The spatial statistics of point sets read from FILE (or standard input,\n"
     "given as '-' or by giving no FILE), one set per trial, with distances taken\n"
@@ -83,6 +86,9 @@ static const char help[] =
     "  --csv     print CSV only: the header, exactly\n"
     "            " CSV_HEADER "\n"
     "            and one row per statistic (an empty field: no value)\n"
+    "  --save FILE  also save the accumulator of min_distance and avg_min_distance\n"
+    "            (a spacing record, docs/format.md; the spectral rows are not in\n"
+    "            it) for mcspec merge and mcspec show, written atomically\n"
     "  --help    this text\n"
     "\n"
     "Exit status: 0 on success, 2 on bad usage or input (one line on stderr).\n";
@@ -92,6 +98,7 @@ typedef struct {
     uint64_t seed;
     int wrap, csv, kind_mode;
     const char *path; /* the file, or KIND */
+    const char *save; /* --save FILE */
 } stats_opts;
 
 /* The spectral rows: per-set values, and the values of the mean spectrum. */
@@ -132,6 +139,7 @@ static int parse(int argc, char **argv, stats_opts *o)
         {"k", CLI_OPT_SIZE, &o->k, 2, CLI_MAX_K, 0},
         {"sets", CLI_OPT_SIZE, &o->sets, 1, 1000000, 0},
         {"seed", CLI_OPT_U64, &o->seed, 0, UINT64_MAX, 0},
+        {"save", CLI_OPT_STRING, &o->save, 0, 0, 0},
     };
     int rc = cli_parse_one(CMD, help, NULL, opts, CLI_COUNT(opts), argc, argv, &o->path);
     if (rc != CLI_PARSED)
@@ -145,6 +153,10 @@ static int parse(int argc, char **argv, stats_opts *o)
             return cli_fail(CMD, "give --dim D with KIND %s", o->path);
         if (cli_opt_given(opts, nopts, "wrap"))
             return cli_fail(CMD, "--wrap goes with a point file, not KIND --k K");
+        if (o->save != NULL && o->dim > 2u)
+            return cli_fail(CMD, "--save of a drawn KIND takes --dim 1 or 2 (a record names "
+                                 "a pattern in 1D or 2D): write the sets with mcspec sample "
+                                 "and save from the file");
         return 0;
     }
     if (cli_opt_given(opts, nopts, "sets") || cli_opt_given(opts, nopts, "seed"))
@@ -264,7 +276,7 @@ typedef struct {
 } stats_exact;
 
 /* A row: value, stderr, exact, and in the table z = (value - exact) / stderr. */
-static void print_row(int csv, const char *name, const double *v)
+void cli_stats_row(int csv, const char *name, const double *v)
 {
     printf(csv ? "%s" : "%-25s", name);
     if (csv) {
@@ -283,12 +295,39 @@ static void print_row(int csv, const char *name, const double *v)
         printf(" %8.2f\n", z);
 }
 
+void cli_spacing_rows(int csv, const mcs_spacing *acc, const double exact[MCS_SPACING_STATISTICS])
+{
+    if (csv)
+        puts(CSV_HEADER);
+    else
+        printf("\n%-25s %13s %13s %13s %8s\n", "statistic", "value", "stderr", "exact", "z");
+    for (int i = 0; i < MCS_SPACING_STATISTICS; ++i) {
+        const mcs_spacing_statistic s = (mcs_spacing_statistic)i;
+        double v[3] = {(double)NAN, (double)NAN, exact[i]};
+        if (mcs_spacing_mean(acc, s, &v[0]) != MCS_OK)
+            v[0] = (double)NAN;
+        if (mcs_spacing_stderr(acc, s, &v[1]) != MCS_OK)
+            v[1] = (double)NAN;
+        cli_stats_row(csv, mcs_spacing_statistic_str(s), v);
+    }
+}
+
+void cli_spacing_exact(const char *name, size_t dim, size_t k,
+                       double exact[MCS_SPACING_STATISTICS])
+{
+    for (int i = 0; i < MCS_SPACING_STATISTICS; ++i) {
+        double v = NAN;
+        exact[i] = name != NULL && strcmp(name, "random") == 0 &&
+                           mcs_spacing_exact_random((mcs_spacing_statistic)i, dim, k, &v) == MCS_OK
+                       ? v
+                       : (double)NAN;
+    }
+}
+
 static void report(const stats_opts *o, const mcs_spacing *acc, const cli_pointset_stats *stats,
                    spectral_ctx *spec, const stats_exact *ex)
 {
-    if (o->csv) {
-        puts(CSV_HEADER);
-    } else {
+    if (!o->csv) {
         if (ex->source != NULL)
             printf("%s: %s, %llu point sets in %zuD, K = %zu points per set\n", CMD, ex->source,
                    (unsigned long long)stats->sets, stats->dim, stats->k_min);
@@ -307,17 +346,8 @@ static void report(const stats_opts *o, const mcs_spacing *acc, const cli_points
                    stats->dim == 1u ? "K" : "sqrt(K)");
         printf("exact: the expectation for independent uniform points (- where not known); "
                "z = (value - exact) / stderr\n");
-        printf("\n%-25s %13s %13s %13s %8s\n", "statistic", "value", "stderr", "exact", "z");
     }
-    for (int i = 0; i < MCS_SPACING_STATISTICS; ++i) {
-        const mcs_spacing_statistic s = (mcs_spacing_statistic)i;
-        double v[3] = {(double)NAN, (double)NAN, ex->exact[i]};
-        if (mcs_spacing_mean(acc, s, &v[0]) != MCS_OK)
-            v[0] = (double)NAN;
-        if (mcs_spacing_stderr(acc, s, &v[1]) != MCS_OK)
-            v[1] = (double)NAN;
-        print_row(o->csv, mcs_spacing_statistic_str(s), v);
-    }
+    cli_spacing_rows(o->csv, acc, ex->exact);
     if (stats->dim > 2u || spec->freq == 0u)
         return;
     for (int r = 0; r < SPEC_ROWS; ++r) {
@@ -326,7 +356,7 @@ static void report(const stats_opts *o, const mcs_spacing *acc, const cli_points
             v[0] = (double)NAN;
         if (mcs_welford_stderr(&spec->stat[r], &v[1]) != MCS_OK)
             v[1] = (double)NAN;
-        print_row(o->csv, spec_names[r], v);
+        cli_stats_row(o->csv, spec_names[r], v);
     }
     /* psa's way: the metrics of the mean spectrum (one K only). */
     for (int r = 0; r < SPEC_ROWS; ++r) {
@@ -343,7 +373,7 @@ static void report(const stats_opts *o, const mcs_spacing *acc, const cli_points
             v[0] = (double)NAN;
         char name[40];
         snprintf(name, sizeof name, "%s_of_mean", spec_names[r]);
-        print_row(o->csv, name, v);
+        cli_stats_row(o->csv, name, v);
     }
 }
 
@@ -356,11 +386,7 @@ static int run_kind(const stats_opts *o, stats_ctx *ctx, cli_pointset_stats *sta
     int rc = cli_sample_init(CMD, o->path, o->dim, o->k, MCS_MAX_N, &src);
     if (rc != 0)
         return rc;
-    for (int i = 0; i < MCS_SPACING_STATISTICS && strcmp(o->path, "random") == 0; ++i) {
-        double v = NAN;
-        if (mcs_spacing_exact_random((mcs_spacing_statistic)i, o->dim, o->k, &v) == MCS_OK)
-            ex->exact[i] = v;
-    }
+    cli_spacing_exact(o->path, o->dim, o->k, ex->exact);
     snprintf(source, source_size, "%s (seed %llu)", o->path, (unsigned long long)o->seed);
     ex->source = source;
     cli_progress progress;
@@ -373,7 +399,7 @@ static int run_kind(const stats_opts *o, stats_ctx *ctx, cli_pointset_stats *sta
 
 int cli_cmd_stats(int argc, char **argv)
 {
-    stats_opts o = {0, 0, 0, 64, 1, 0, 0, 0, NULL};
+    stats_opts o = {0, 0, 0, 64, 1, 0, 0, 0, NULL, NULL};
     int rc = parse(argc, argv, &o);
     if (rc != 0)
         return rc < 0 ? CLI_EXIT_OK : rc;
@@ -383,17 +409,29 @@ int cli_cmd_stats(int argc, char **argv)
     stats_ctx ctx = {.name = o.kind_mode ? o.path : cli_input_name(o.path), .sets = 0,
                      .work = NULL, .work_bytes = 0, .stats = &stats, .freq_opt = o.freq};
     ctx.acc.dim = 0; /* initialised at the first set, when the dimension is known */
+    cli_save_target save = {o.save, o.path, 0u, 0u};
     if (o.kind_mode) {
-        rc = run_kind(&o, &ctx, &stats, &ex, source, sizeof source);
+        rc = o.save != NULL ? cli_write_check(CMD, o.save) : 0;
+        if (rc == 0)
+            rc = run_kind(&o, &ctx, &stats, &ex, source, sizeof source);
     } else {
         cli_pointset_format fmt = {.dim = o.dim, .weights = 0, .wrap = o.wrap};
+        rc = cli_save_begin(CMD, &save);
         cli_progress progress;
         cli_progress_init(&progress, !o.csv, CMD, "sets read", 0);
-        rc = cli_read_pointsets(CMD, o.path, &fmt, add_set, &ctx, &stats, &progress);
+        if (rc == 0)
+            rc = cli_read_pointsets(CMD, o.path, &fmt, add_set, &ctx, &stats, &progress);
         cli_progress_end(&progress);
     }
     if (rc == 0)
         report(&o, &ctx.acc, &stats, &ctx.spec, &ex);
+    if (rc == 0 && o.kind_mode) {
+        const cli_run run = {(unsigned)o.dim, o.path, o.dim == 1u ? (uint64_t)MCS_MAX_N : 0u,
+                             o.k, 0, 0u, o.seed, 1u, o.sets};
+        rc = cli_save_drawn(CMD, o.save, &run, MCS_IO_KIND_SPACING, &ctx.acc);
+    } else if (rc == 0) {
+        rc = cli_save_points(CMD, &save, MCS_IO_KIND_SPACING, &ctx.acc);
+    }
     free(ctx.work);
     free(ctx.spec.mem);
     free(ctx.spec.power);

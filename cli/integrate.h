@@ -18,6 +18,7 @@ typedef struct {
     uint64_t seed, sets;
     int wrap, csv, freq_given, dim_given;
     const char *family, *plot, *kind, *exact, *files[CLI_INTEG_MAX_FILES];
+    const char *save; /* --save FILE: the record of the one row (cmd_integrate.c) */
     size_t nfiles;
 } integ_opts;
 

@@ -112,6 +112,33 @@ int cli_tree_push(const char *cmd, cli_merge_tree *tree, cli_acc *acc, const cha
 int cli_tree_push_weighted(const char *cmd, cli_merge_tree *tree, cli_acc *acc, uint64_t weight,
                            const char *what);
 
+/* ---- --save of the measure commands (pcf, integrate, discrepancy, stats) ---- */
+
+/* Where a measure command's record goes and what its sets were read from. */
+typedef struct {
+    const char *save;  /* --save FILE, or NULL: nothing saved (every call below does nothing) */
+    const char *input; /* the point file; NULL or "-": standard input */
+    uint32_t crc;      /* standard input's CRC-32 and length, kept by cli_save_begin */
+    uint64_t bytes;
+} cli_save_target;
+
+/* Before any work: --save FILE must be a regular file or a new name
+ * (cli_write_check, as mcspec spectrum --save); reading standard input, its
+ * bytes are kept in a temporary file that becomes standard input, for the
+ * record's provenance (cli_ps_checksum_stdin). Returns 0 or an exit status. */
+int cli_save_begin(const char *cmd, cli_save_target *t);
+
+/* After the report: the object of kind (mcs_pcf, ...) saved atomically to
+ * t->save, its provenance the input file (name, CRC-32, bytes). */
+int cli_save_points(const char *cmd, const cli_save_target *t, mcs_io_kind kind, void *obj);
+
+/* mcspec show of a pcf, integrate, discrepancy or spacing record: the CSV
+ * (csv) or table its command prints, under title and origin lines (not with
+ * csv); prov is the record's (the pcf's exact column for a pattern run).
+ * Returns 0 or an exit status (record_show.c). */
+int cli_show_measure(int csv, const cli_acc *acc, const mcs_io_provenance *prov,
+                     const char *title, const char *origin);
+
 /* ---- Provenance (docs/format.md) ------------------------------------------ */
 
 /* What identifies a pattern run; with the streams a record holds, its
@@ -124,6 +151,11 @@ typedef struct {
     uint32_t importance_crc; /* ... whose weights have this cli_weights_crc */
     uint64_t seed, streams, trials;
 } cli_run;
+
+/* cli_save_points for sets drawn from a named pattern: the provenance of
+ * run's whole stream range (one stream, P = 1). */
+int cli_save_drawn(const char *cmd, const char *save, const cli_run *run, mcs_io_kind kind,
+                   void *obj);
 
 /* The provenance of streams [first, end) of run into *prov. */
 void cli_run_provenance(const cli_run *run, uint64_t first, uint64_t end,

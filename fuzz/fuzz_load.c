@@ -49,6 +49,18 @@ typedef struct {
     mcs_spectrum2d acc;
     _Alignas(64) unsigned char mem[MCS_SPECTRUM2D_SIZE(FZ_SIDE, FZ_SIDE)];
 } fz_spectrum2d;
+/* The pcf over its buffer: bins up to what a record of max_len holds. */
+#define FZ_PCF_BINS 1024u
+typedef struct {
+    mcs_pcf acc;
+    _Alignas(64) unsigned char mem[MCS_PCF_SIZE(FZ_PCF_BINS)];
+} fz_pcf;
+static fz_pcf pcf_all, pcf_all_pristine;
+static mcs_integrate integ, integ_pristine;
+static mcs_discrepancy disc, disc_pristine;
+static mcs_spacing spc, spc_pristine;
+#define pcf (pcf_all.acc)
+static double pcf_r[FZ_PCF_BINS], pcf_m[FZ_PCF_BINS], pcf_s[FZ_PCF_BINS];
 static fz_pointset ps_all, ps_all_pristine;
 static fz_pointset2d ps2_all, ps2_all_pristine;
 static fz_spectrum2d sp2_all, sp2_all_pristine;
@@ -122,6 +134,25 @@ static void setup_once(void)
     ok_or_die(mcs_spectrum2d_init(&s2->acc, 3u, 4u, s2->mem, sizeof s2->mem), "setup",
               "spectrum2d init");
     ok_or_die(mcs_spectrum2d_add_points(&s2->acc, 2u, pts, NULL), "setup", "spectrum2d add");
+    /* The measures: two sets of 2 points in 2D (the pcf's cutoff 0.5 / sqrt(2)). */
+    static unsigned char work[MCS_DISCREPANCY_STAR_WORK_SIZE(2) + MCS_PCF_WORK_SIZE(2)];
+    mcs_integrand f;
+    mcs_rng rng;
+    ok_or_die(mcs_rng_seed(&rng, 3u, 4u), "setup", "rng");
+    ok_or_die(mcs_pcf_init(&pcf_all_pristine.acc, 2u, MCS_PCF_RDF, 3u, 0.5, 0.0,
+                           pcf_all_pristine.mem, sizeof pcf_all_pristine.mem), "setup", "pcf init");
+    ok_or_die(mcs_integrate_init(&integ_pristine, MCS_INTEGRAND_DISK, 2u), "setup", "integrate init");
+    ok_or_die(mcs_integrand_draw(&f, MCS_INTEGRAND_DISK, 2u, &rng), "setup", "integrand");
+    ok_or_die(mcs_discrepancy_init(&disc_pristine, 2u), "setup", "discrepancy init");
+    ok_or_die(mcs_spacing_init(&spc_pristine, 2u), "setup", "spacing init");
+    for (size_t t = 0; t < 2u; ++t) {
+        ok_or_die(mcs_pcf_add(&pcf_all_pristine.acc, 2u, pts, work, sizeof work), "setup", "pcf add");
+        ok_or_die(mcs_integrate_add(&integ_pristine, 1u, &f, 2u, pts, MCS_INTEGRATE_RANDOM, 0u, 0u),
+                  "setup", "integrate add");
+        ok_or_die(mcs_discrepancy_add(&disc_pristine, 2u, pts, work, sizeof work), "setup",
+                  "discrepancy add");
+        ok_or_die(mcs_spacing_add(&spc_pristine, 2u, pts, NULL, 0u), "setup", "spacing add");
+    }
     ready = 1;
 }
 
@@ -132,7 +163,8 @@ static int is_record_status(mcs_status st)
     return st == MCS_ERR_MAGIC || st == MCS_ERR_TRUNCATED || st == MCS_ERR_VERSION ||
            st == MCS_ERR_FORMAT || st == MCS_ERR_CHECKSUM || st == MCS_ERR_KIND ||
            st == MCS_ERR_N_RANGE || st == MCS_ERR_FREQ_RANGE || st == MCS_ERR_NOT_FINITE ||
-           st == MCS_ERR_INVARIANT || st == MCS_ERR_SPACE;
+           st == MCS_ERR_INVARIANT || st == MCS_ERR_SPACE ||
+           st == MCS_ERR_DOMAIN; /* a measure's shape word no init takes */
 }
 
 /* The common half of every kind's check: the status, the untouched
@@ -306,6 +338,60 @@ static void read_spectrum2d(void)
         }
 }
 
+/* The measures: every read-out that succeeds is finite, and the spreads and
+ * exact values >= 0. */
+static void nonneg_if_ok(mcs_status st, const double *v, const char *kind, const char *what)
+{
+    if (st == MCS_OK)
+        nonneg_or_die(*v, kind, what);
+}
+
+static void read_pcf(void)
+{
+    const size_t b = pcf.bins;
+    const mcs_status st = mcs_pcf_read_all(&pcf, b, pcf_r, pcf_m, NULL);
+    for (size_t i = 0; st == MCS_OK && i < b; ++i)
+        nonneg_or_die(pcf_m[i], "pcf", "mean");
+    if (mcs_pcf_read_all(&pcf, b, NULL, NULL, pcf_s) == MCS_OK)
+        for (size_t i = 0; i < b; ++i)
+            nonneg_or_die(pcf_s[i], "pcf", "stderr");
+    for (size_t i = 0; i < b && i < 64u; ++i) {
+        double v = 0.0;
+        nonneg_if_ok(mcs_pcf_exact(&pcf, NULL, i, &v), &v, "pcf", "exact");
+    }
+    double v = 0.0;
+    finite_if_ok(mcs_pcf_power(&pcf, 1.0, &v), &v, "pcf", "power");
+}
+
+static void read_integrate(void)
+{
+    double v = 0.0;
+    nonneg_if_ok(mcs_integrate_mse(&integ, &v), &v, "integrate", "mse");
+    nonneg_if_ok(mcs_integrate_mse_stderr(&integ, &v), &v, "integrate", "mse stderr");
+    nonneg_if_ok(mcs_integrate_exact(&integ, &v), &v, "integrate", "exact");
+}
+
+static void read_discrepancy(void)
+{
+    for (int m = 0; m < MCS_DISCREPANCY_MEASURES; ++m) {
+        double v = 0.0;
+        const mcs_discrepancy_measure d = (mcs_discrepancy_measure)m;
+        finite_if_ok(mcs_discrepancy_mean(&disc, d, &v), &v, "discrepancy", "mean");
+        nonneg_if_ok(mcs_discrepancy_stderr(&disc, d, &v), &v, "discrepancy", "stderr");
+        nonneg_if_ok(mcs_discrepancy_exact_random(&disc, d, &v), &v, "discrepancy", "exact");
+    }
+}
+
+static void read_spacing(void)
+{
+    for (int m = 0; m < MCS_SPACING_STATISTICS; ++m) {
+        double v = 0.0;
+        const mcs_spacing_statistic d = (mcs_spacing_statistic)m;
+        nonneg_if_ok(mcs_spacing_mean(&spc, d, &v), &v, "spacing", "mean");
+        nonneg_if_ok(mcs_spacing_stderr(&spc, d, &v), &v, "spacing", "stderr");
+    }
+}
+
 /* Each kind's load and save through one signature (a call through a cast
  * function pointer would be undefined, and UBSan's -fsanitize=function says so). */
 #define IO_CALLS(name, type)                                                              \
@@ -321,6 +407,9 @@ IO_CALLS(spectrum, mcs_spectrum)
 IO_CALLS(moment, mcs_moment)
 IO_CALLS(autocorr, mcs_autocorr)
 IO_CALLS(welford, mcs_welford)
+IO_CALLS(integrate, mcs_integrate)
+IO_CALLS(discrepancy, mcs_discrepancy)
+IO_CALLS(spacing, mcs_spacing)
 
 /* The objects over caller memory load over their own buffer; MCS_ERR_SPACE
  * must be what mcs_io_load_size says of the record. */
@@ -349,6 +438,16 @@ static mcs_status load_spectrum2d(void *obj, size_t len, const void *buf)
     return space_checked(mcs_io_load_spectrum2d(&o->acc, o->mem, sizeof o->mem, len, buf), len,
                          buf, sizeof o->mem);
 }
+static mcs_status load_pcf(void *obj, size_t len, const void *buf)
+{
+    fz_pcf *o = obj;
+    return space_checked(mcs_io_load_pcf(&o->acc, o->mem, sizeof o->mem, len, buf), len, buf,
+                         sizeof o->mem);
+}
+static mcs_status save_pcf(const void *obj, size_t cap, void *buf, size_t *len)
+{
+    return mcs_io_save_pcf(obj, cap, buf, len);
+}
 static mcs_status save_pointset(const void *obj, size_t cap, void *buf, size_t *len)
 {
     return mcs_io_save_pointset(obj, cap, buf, len);
@@ -374,6 +473,10 @@ static mcs_status merge_spectrum(void *obj) { return mcs_spectrum_merge(obj, obj
 static mcs_status merge_moment(void *obj) { return mcs_moment_merge(obj, obj); }
 static mcs_status merge_autocorr(void *obj) { return mcs_autocorr_merge(obj, obj); }
 static mcs_status merge_welford(void *obj) { return mcs_welford_merge(obj, obj); }
+static mcs_status merge_pcf(void *obj) { return mcs_pcf_merge(obj, obj); }
+static mcs_status merge_integrate(void *obj) { return mcs_integrate_merge(obj, obj); }
+static mcs_status merge_discrepancy(void *obj) { return mcs_discrepancy_merge(obj, obj); }
+static mcs_status merge_spacing(void *obj) { return mcs_spacing_merge(obj, obj); }
 
 typedef struct {
     const char *name;
@@ -394,6 +497,8 @@ static const kind_case kinds[] = {
     KIND(autocorr, ac, merge_autocorr),   KIND(welford, wf, merge_welford),
     KIND(pointset, ps_all, NULL),         KIND(pointset2d, ps2_all, NULL),
     KIND(spectrum2d, sp2_all, NULL),
+    KIND(pcf, pcf_all, merge_pcf),        KIND(integrate, integ, merge_integrate),
+    KIND(discrepancy, disc, merge_discrepancy), KIND(spacing, spc, merge_spacing),
 };
 
 /* The load into a destination holding another accumulator; when it

@@ -135,6 +135,56 @@ static int provenance_cases(const char *dir)
     return bad;
 }
 
+/* The measure accumulators (kinds 8 to 11): `sets` sets of k random 2D
+ * points (the pcf in dim dimensions, of `bins` bins; the Gaussian kernel
+ * for odd seeds), empty when sets is 0. */
+static int measure_case(const char *dir, size_t dim, size_t bins, size_t k, size_t sets,
+                        uint64_t seed)
+{
+    static mcs_pcf pcf;
+    static _Alignas(64) unsigned char pcf_mem[MCS_PCF_SIZE(16u)];
+    static mcs_integrate in;
+    static mcs_discrepancy di;
+    static mcs_spacing sp;
+    static double pts[2u * 64u];
+    static unsigned char work[MCS_DISCREPANCY_STAR_WORK_SIZE(64) + MCS_PCF_WORK_SIZE(64)];
+    mcs_rng rng;
+    mcs_integrand fs[2];
+    const mcs_pcf_estimator est = seed % 2u ? MCS_PCF_GAUSSIAN : MCS_PCF_RDF;
+    int bad = check(mcs_rng_seed(&rng, seed, 11u), "rng") ||
+              check(mcs_pcf_init(&pcf, dim, est, bins, 1.5, 0.125, pcf_mem, sizeof pcf_mem), "pcf") ||
+              check(mcs_integrate_init(&in, MCS_INTEGRAND_GAUSSIAN, 2u), "integrate") ||
+              check(mcs_discrepancy_init(&di, 2u), "discrepancy") ||
+              check(mcs_spacing_init(&sp, 2u), "spacing");
+    for (size_t t = 0; t < sets && !bad; ++t) {
+        for (size_t i = 0; i < 2u * k; ++i)
+            bad |= check(mcs_rng_double(&rng, &pts[i]), "rng");
+        for (size_t i = 0; i < 2u; ++i)
+            bad |= check(mcs_integrand_draw(&fs[i], MCS_INTEGRAND_GAUSSIAN, 2u, &rng), "draw");
+        bad |= check(mcs_pcf_add(&pcf, k, pts, work, sizeof work), "pcf add") ||
+               check(mcs_integrate_add(&in, 2u, fs, k, pts, t % 2u ? MCS_INTEGRATE_RANDOM
+                                                                  : MCS_INTEGRATE_NONE, 0u, 0u),
+                     "integrate add") ||
+               check(mcs_discrepancy_add(&di, k, pts, t % 2u ? work : NULL, sizeof work),
+                     "discrepancy add") ||
+               check(mcs_spacing_add(&sp, k, pts, work, sizeof work), "spacing add");
+    }
+    char name[96];
+    size_t len = 0u;
+    (void)snprintf(name, sizeof name, "pcf-d%zu-b%zu-k%zu-t%zu.rec", dim, bins, k, sets);
+    bad |= check(mcs_io_save_pcf(&pcf, sizeof buf, buf, &len), name) || write_file(dir, name, len);
+    (void)snprintf(name, sizeof name, "integrate-k%zu-t%zu.rec", k, sets);
+    bad |= check(mcs_io_save_integrate(&in, sizeof buf, buf, &len), name) ||
+           write_file(dir, name, len);
+    (void)snprintf(name, sizeof name, "discrepancy-k%zu-t%zu.rec", k, sets);
+    bad |= check(mcs_io_save_discrepancy(&di, sizeof buf, buf, &len), name) ||
+           write_file(dir, name, len);
+    (void)snprintf(name, sizeof name, "spacing-k%zu-t%zu.rec", k, sets);
+    bad |= check(mcs_io_save_spacing(&sp, sizeof buf, buf, &len), name) ||
+           write_file(dir, name, len);
+    return bad;
+}
+
 int main(int argc, char **argv)
 {
     if (argc != 2) {
@@ -150,5 +200,8 @@ int main(int argc, char **argv)
     /* AUTO takes the PAIR path here: 2 closed batches of 16 and an open one
      * of 8, so the spectrum record has units with spread and open sums. */
     bad |= one_case(argv[1], 16u, 6u, 40u, 5u);
+    bad |= measure_case(argv[1], 2u, 4u, 16u, 0u, 6u);
+    bad |= measure_case(argv[1], 2u, 8u, 64u, 3u, 8u);
+    bad |= measure_case(argv[1], 1u, 16u, 32u, 5u, 7u);
     return bad;
 }

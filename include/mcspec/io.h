@@ -39,6 +39,10 @@
 #include "pointset.h"
 #include "pointset2d.h"
 #include "spectrum2d.h"
+#include "pcf.h"
+#include "integrate.h"
+#include "discrepancy.h"
+#include "spacing.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -77,7 +81,12 @@ typedef enum {
     MCS_IO_KIND_WELFORD = 4,   /* mcs_welford, shape [] */
     MCS_IO_KIND_POINTSET = 5,  /* mcs_pointset, shape [F] */
     MCS_IO_KIND_POINTSET2D = 6, /* mcs_pointset2d, shape [F] */
-    MCS_IO_KIND_SPECTRUM2D = 7 /* mcs_spectrum2d, shape [N1, N2] */
+    MCS_IO_KIND_SPECTRUM2D = 7, /* mcs_spectrum2d, shape [N1, N2] */
+    MCS_IO_KIND_PCF = 8,        /* mcs_pcf, shape [dim, estimator, B, radius, sigma]
+                                 * (radius and sigma as the bits of their binary64) */
+    MCS_IO_KIND_INTEGRATE = 9,  /* mcs_integrate, shape [family, dim] */
+    MCS_IO_KIND_DISCREPANCY = 10, /* mcs_discrepancy, shape [dim] */
+    MCS_IO_KIND_SPACING = 11    /* mcs_spacing, shape [dim] */
 } mcs_io_kind;
 
 /* What mcs_io_peek reads from a header. */
@@ -102,7 +111,8 @@ typedef struct {
 mcs_status mcs_io_peek(size_t len, const void *buf, mcs_io_info *info);
 
 /* Name of a kind ("spectrum", "moment", "autocorr", "welford", "pointset",
- * "pointset2d", "spectrum2d"), or "unknown". */
+ * "pointset2d", "spectrum2d", "pcf", "integrate", "discrepancy", "spacing"),
+ * or "unknown". */
 const char *mcs_io_kind_str(uint32_t kind);
 
 /* CRC-32 (IEEE 802.3, reflected, as zlib's crc32) of data[len]; data may be
@@ -122,7 +132,12 @@ mcs_status mcs_io_save_welford(const mcs_welford *acc, size_t cap, void *buf, si
 mcs_status mcs_io_save_pointset(const mcs_pointset *acc, size_t cap, void *buf, size_t *len);
 mcs_status mcs_io_save_pointset2d(const mcs_pointset2d *acc, size_t cap, void *buf, size_t *len);
 mcs_status mcs_io_save_spectrum2d(const mcs_spectrum2d *acc, size_t cap, void *buf, size_t *len);
-/* The point-set and 2D saves also return MCS_ERR_ALIAS for a buf that
+mcs_status mcs_io_save_pcf(const mcs_pcf *acc, size_t cap, void *buf, size_t *len);
+mcs_status mcs_io_save_integrate(const mcs_integrate *acc, size_t cap, void *buf, size_t *len);
+mcs_status mcs_io_save_discrepancy(const mcs_discrepancy *acc, size_t cap, void *buf,
+                                   size_t *len);
+mcs_status mcs_io_save_spacing(const mcs_spacing *acc, size_t cap, void *buf, size_t *len);
+/* The point-set, 2D and pcf saves also return MCS_ERR_ALIAS for a buf that
  * overlaps the object's header or buffer (they read it while writing buf). */
 
 /* Loading, one call per kind: buf[len] must hold exactly one record of that
@@ -143,6 +158,16 @@ mcs_status mcs_io_load_moment(mcs_moment *acc, size_t len, const void *buf);
 mcs_status mcs_io_load_autocorr(mcs_autocorr *acc, size_t len, const void *buf);
 mcs_status mcs_io_load_welford(mcs_welford *acc, size_t len, const void *buf);
 
+/* The fixed-size measure accumulators (integrate.h, discrepancy.h,
+ * spacing.h), as above, and MCS_ERR_DOMAIN (a family, or a dim, that no
+ * init takes) before the values are read. MCS_ERR_INVARIANT also for what
+ * the measure's own state check refuses (Welford states no adds give, counts
+ * that differ where they must agree, k_min above k_max) and for values out
+ * of the measure's range (docs/format.md lists them per kind). */
+mcs_status mcs_io_load_integrate(mcs_integrate *acc, size_t len, const void *buf);
+mcs_status mcs_io_load_discrepancy(mcs_discrepancy *acc, size_t len, const void *buf);
+mcs_status mcs_io_load_spacing(mcs_spacing *acc, size_t len, const void *buf);
+
 /* The objects that live over caller memory (pointset.h, pointset2d.h,
  * spectrum2d.h) are loaded over a buffer mem[bytes] the caller passes, as
  * their init takes it: *acc is then as the init for the record's shape
@@ -161,15 +186,26 @@ mcs_status mcs_io_load_pointset2d(mcs_pointset2d *acc, unsigned flags, void *mem
 mcs_status mcs_io_load_spectrum2d(mcs_spectrum2d *acc, void *mem, size_t bytes, size_t len,
                                   const void *buf);
 
+/* The pair correlation (pcf.h) over mem[bytes] as mcs_pcf_init takes it:
+ * *acc is then as mcs_pcf_init for the record's dim, estimator, bins, radius
+ * and sigma left it over mem, plus the record's statistics. Statuses as the
+ * loads above, with MCS_ERR_DOMAIN (a dim, estimator, radius or sigma no
+ * init takes) beside MCS_ERR_N_RANGE (B), and MCS_ERR_INVARIANT also for a
+ * k_min below 2, a set size whose cutoff passes 1/2 (no add takes it) and an
+ * RDF mean above what K (K - 1) / 2 pairs in one ring give. */
+mcs_status mcs_io_load_pcf(mcs_pcf *acc, void *mem, size_t bytes, size_t len, const void *buf);
+
 /* Bytes of caller memory the load of the record in buf[len] needs for its
  * object, into *bytes: the object's size query for the record's shape (and
  * flags, for the point sets; ignored by the other kinds), 0 for the kinds
  * whose objects hold their own arrays (spectrum, moment, autocorr,
- * welford). Reads the framing (mcs_io_peek) and the shape, not the values.
- * MCS_ERR_NULL, MCS_ERR_DOMAIN (an unknown flag), the framing errors of
- * mcs_io_peek, MCS_ERR_KIND (a kind this build does not know),
- * MCS_ERR_FORMAT (a shape of the wrong length), MCS_ERR_FREQ_RANGE and
- * MCS_ERR_N_RANGE (a shape beyond the caps). *bytes untouched on error. */
+ * welford, integrate, discrepancy, spacing). Reads the framing
+ * (mcs_io_peek) and the shape, not the values.
+ * MCS_ERR_NULL, MCS_ERR_DOMAIN (an unknown flag; a pcf shape word no init
+ * takes), the framing errors of mcs_io_peek, MCS_ERR_KIND (a kind this
+ * build does not know), MCS_ERR_FORMAT (a shape of the wrong length),
+ * MCS_ERR_FREQ_RANGE and MCS_ERR_N_RANGE (a shape beyond the caps). *bytes
+ * untouched on error. */
 mcs_status mcs_io_load_size(size_t len, const void *buf, unsigned flags, size_t *bytes);
 
 /* ---- Provenance (docs/format.md, "Provenance") ---------------------------- */

@@ -178,6 +178,8 @@ _PROTOS = {
     "mcs_io_load_autocorr": (_I, [_P, _Z, _P]),
     "mcs_io_load_pointset": (_I, [_P, _U, _P, _Z, _Z, _P]),
     "mcs_io_load_pointset2d": (_I, [_P, _U, _P, _Z, _Z, _P]),
+    "mcs_io_save_pcf": (_I, [_P, _Z, _P, _P]),
+    "mcs_io_load_pcf": (_I, [_P, _P, _Z, _Z, _P]),
     # the modules wrapped by issue 27's second round
     "mcs_rng_double": (_I, [_P, _P]),
     "mcs_sampler_init_padded": (_I, [_P, _I, _Z, _Z]),

@@ -6,14 +6,17 @@ import numpy as np
 from . import _lib
 from ._lib import Buffer, Error, check, fn, struct
 
-_KINDS = {1: "spectrum", 2: "moment", 3: "autocorr", 5: "pointset", 6: "pointset2d"}
+_KINDS = {1: "spectrum", 2: "moment", 3: "autocorr", 5: "pointset", 6: "pointset2d", 8: "pcf"}
 
 
 def _kind_of(obj):
     from .binned import Spectrum, Moment, Autocorr
     from .pointsets import PointSet
+    from .analysis import PairCorrelation
     if isinstance(obj, PointSet):
         return obj._p, obj._hdr
+    if isinstance(obj, PairCorrelation):
+        return "pcf", obj._acc
     for cls, name in ((Spectrum, "spectrum"), (Moment, "moment"), (Autocorr, "autocorr")):
         if isinstance(obj, cls):
             return name, obj._obj
@@ -38,12 +41,39 @@ def _first_size(buf):
     return ctypes.cast(buf.addr, ctypes.POINTER(ctypes.c_size_t))[0]
 
 
+def _load_pcf(raw):
+    """A PairCorrelation from a pcf record (kind 8), or None for another
+    kind. Its settings are the record's shape words (docs/format.md: dim,
+    estimator, B, radius and sigma as binary64 bits, from byte 32), read once
+    the library has loaded the record, so they are checked."""
+    from .analysis import PairCorrelation
+    size = ctypes.c_size_t()
+    st = fn.io_load_size(raw.size, raw.ctypes.data, 0, ctypes.addressof(size))
+    if st != 0:
+        check(st, "mcs_io_load_size")
+    acc, mem = struct("pcf"), Buffer(max(size.value, 1))
+    st = fn.io_load_pcf(acc.addr, mem.addr, mem.size, raw.size, raw.ctypes.data)
+    if st == _lib.ERR_KIND:
+        return None
+    check(st, "mcs_io_load_pcf")
+    words = raw[32:72].view("<u8")
+    obj = PairCorrelation.__new__(PairCorrelation)
+    obj._acc, obj._mem, obj._work = acc, mem, Buffer(1)
+    obj.dim, obj.rdf, obj.bins = int(words[0]), int(words[1]) == 0, int(words[2])
+    obj.radius, obj.sigma = (float(v) for v in words[3:5].view("<f8"))
+    return obj
+
+
 def load(data):
-    """The object saved in data (bytes): a Spectrum, Moment, Autocorr or
-    PointSet (mcs_io_load_*); MCS_ERR_* on a damaged or foreign record."""
+    """The object saved in data (bytes): a Spectrum, Moment, Autocorr,
+    PointSet or PairCorrelation (mcs_io_load_*); MCS_ERR_* on a damaged or
+    foreign record."""
     from .binned import Spectrum, Moment, Autocorr
     from .pointsets import PointSet
     raw = np.frombuffer(bytes(data), dtype=np.uint8)
+    pcf = _load_pcf(raw)
+    if pcf is not None:
+        return pcf
     # The kind by the loaders themselves: each refuses another kind with
     # MCS_ERR_KIND before it writes anything.
     for name in ("spectrum", "moment", "autocorr", "pointset", "pointset2d"):
@@ -69,7 +99,7 @@ def load(data):
         if st != _lib.ERR_KIND:
             check(st, "mcs_io_load_" + name)
     raise Error(_lib.ERR_KIND, "a record of a kind this package does not wrap (welford, "
-                "spectrum2d)")
+                "spectrum2d, integrate, discrepancy, spacing)")
 
 
 def save_file(obj, path):
@@ -94,7 +124,7 @@ def merge(*objs):
     if not objs:
         raise Error(_lib.ERR_EMPTY, "nothing to merge")
     items = [load(o) if isinstance(o, (bytes, bytearray)) else o for o in objs]
-    out = items[0].copy()
+    out = items[0].copy() if hasattr(items[0], "copy") else load(save(items[0]))
     for o in items[1:]:
         out.merge(o)
     return out

@@ -111,6 +111,10 @@ const char *mcs_io_kind_str(uint32_t kind)
     case MCS_IO_KIND_POINTSET: return "pointset";
     case MCS_IO_KIND_POINTSET2D: return "pointset2d";
     case MCS_IO_KIND_SPECTRUM2D: return "spectrum2d";
+    case MCS_IO_KIND_PCF: return "pcf";
+    case MCS_IO_KIND_INTEGRATE: return "integrate";
+    case MCS_IO_KIND_DISCREPANCY: return "discrepancy";
+    case MCS_IO_KIND_SPACING: return "spacing";
     default: return "unknown";
     }
 }
@@ -249,13 +253,40 @@ typedef struct {
     int not_finite, broken;
 } io_pass;
 
+/* The place of the value at byte offset at of a field: in the object, or,
+ * for IO_AS_POINTED, as far into the array its pointer member points to. */
+static const unsigned char *place_of(const void *obj, const io_field *field, size_t at)
+{
+    const unsigned char *p = (const unsigned char *)obj;
+    if (field->as != IO_AS_POINTED)
+        return p + at;
+    const double *array;
+    memcpy(&array, p + field->offset, sizeof array);
+    return (const unsigned char *)(const void *)array + (at - field->offset);
+}
+
+static unsigned char *place_in(void *obj, const io_field *field, size_t at)
+{
+    unsigned char *p = (unsigned char *)obj;
+    if (field->as != IO_AS_POINTED)
+        return p + at;
+    double *array;
+    memcpy(&array, p + field->offset, sizeof array);
+    return (unsigned char *)(void *)array + (at - field->offset);
+}
+
 static double read_value(const void *obj, const io_field *field, size_t at)
 {
-    const unsigned char *p = (const unsigned char *)obj + at;
+    const unsigned char *p = place_of(obj, field, at);
     if (field->as == IO_AS_COUNT) {
         uint64_t u;
         memcpy(&u, p, sizeof u);
         return (double)u;
+    }
+    if (field->as == IO_AS_SIZE) {
+        size_t z;
+        memcpy(&z, p, sizeof z);
+        return (double)z;
     }
     double v;
     memcpy(&v, p, sizeof v);
@@ -272,7 +303,12 @@ static void store_value(void *obj, const io_field *field, size_t n, size_t at, d
         memcpy(p + at, &u, sizeof u);
         return;
     }
-    memcpy(p + at, &v, sizeof v);
+    if (field->as == IO_AS_SIZE) {
+        const size_t z = (size_t)v; /* exact: the check refused values above SIZE_MAX */
+        memcpy(p + at, &z, sizeof z);
+        return;
+    }
+    memcpy(place_in(obj, field, at), &v, sizeof v);
     if (field->as == IO_AS_UPPER) {
         const size_t mc = (at - field->offset) / sizeof(double), m = mc / n, c = mc % n;
         memcpy(p + field->offset + sizeof(double) * (c * n + m), &v, sizeof v);
@@ -287,6 +323,12 @@ static int bad_count(double v)
     return signbit(v) || v != floor(v) || v > (double)MCS_MAX_COUNT;
 }
 
+/* A size field is a count that also fits a size_t (a 32-bit build's). */
+static int bad_size(double v)
+{
+    return bad_count(v) || v > (double)SIZE_MAX;
+}
+
 static void check_value(io_pass *pass, double v, const io_field *field)
 {
     const unsigned rules = field->rules;
@@ -295,7 +337,7 @@ static void check_value(io_pass *pass, double v, const io_field *field)
     else if (fabs(v) > MCS_IO_MAX_MAGNITUDE || (pass->count == 0u && v != 0.0) ||
              ((rules & IO_RULE_NONNEG) && v < 0.0) ||
              ((rules & IO_RULE_SPREAD) && pass->count < 2u && v != 0.0) ||
-             (field->as == IO_AS_COUNT && bad_count(v)))
+             (field->as == IO_AS_COUNT && bad_count(v)) || (field->as == IO_AS_SIZE && bad_size(v)))
         pass->broken = 1;
 }
 
@@ -402,17 +444,19 @@ static void write_header(const io_kind *kind, const uint64_t *shape, uint64_t co
 mcs_status mcs_io_save(const io_kind *kind, const void *obj, size_t cap, void *buf, size_t *len)
 {
     uint64_t count, shape[MCS_IO_MAX_SHAPE] = {0u};
-    io_values values = {kind, {1u}, obj, NULL};
+    io_values values = {kind, {1u}, obj, NULL, shape};
     if (obj == NULL || len == NULL)
         return MCS_ERR_NULL;
     mcs_status st = kind->count(obj, &count); /* MCS_ERR_UNINIT */
     if (st != MCS_OK)
         return st;
-    for (size_t i = 0; i < kind->shape_len; ++i) {
+    for (size_t i = 0; i < kind->shape_len && kind->shape_of == NULL; ++i) {
         size_t word;
         memcpy(&word, (const unsigned char *)obj + kind->shape_at[i], sizeof word);
         shape[i] = word;
     }
+    if (kind->shape_of != NULL)
+        kind->shape_of(obj, shape);
     (void)kind->sizes(shape, values.size); /* cannot fail: an initialised object's shape */
     st = check_values(&values, count);
     if (st != MCS_OK)
@@ -438,7 +482,7 @@ mcs_status mcs_io_load(const io_kind *kind, void *obj, size_t len, const void *b
 {
     io_frame f;
     const mcs_io_info *info = &f.info;
-    io_values values = {kind, {1u}, NULL, NULL};
+    io_values values = {kind, {1u}, NULL, NULL, info->shape};
     if (obj == NULL || buf == NULL)
         return MCS_ERR_NULL;
     mcs_status st = frame(len, (const uint8_t *)buf, &f);
@@ -460,8 +504,13 @@ mcs_status mcs_io_load(const io_kind *kind, void *obj, size_t len, const void *b
     st = kind->init(obj, info->shape); /* leaves obj as it was on error */
     if (st != MCS_OK)
         return st;
-    io_pass store = {&values, info->count, NULL, obj, 0u, 0, 0};
-    walk(&store);
-    memcpy((unsigned char *)obj + kind->count_at, &info->count, sizeof info->count);
+    mcs_io_store(&values, info->count, obj);
     return MCS_OK;
+}
+
+void mcs_io_store(const io_values *values, uint64_t count, void *obj)
+{
+    io_pass store = {values, count, NULL, obj, 0u, 0, 0};
+    walk(&store);
+    memcpy((unsigned char *)obj + values->kind->count_at, &count, sizeof count);
 }

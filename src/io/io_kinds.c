@@ -132,7 +132,8 @@ static const io_kind kind_spectrum = {
      IO_ARRAY(mcs_spectrum, mean_pow, SZ_HALF, IO_RULE_NONNEG),
      IO_ARRAY(mcs_spectrum, m2_pow, SZ_HALF, IO_RULE_M2),
      IO_ARRAY(mcs_spectrum, open_sum, SZ_N, IO_RULE_NONNEG),
-     IO_ARRAY(mcs_spectrum, open_pairs[1], SZ_PAIRS, IO_RULE_NONNEG)}};
+     IO_ARRAY(mcs_spectrum, open_pairs[1], SZ_PAIRS, IO_RULE_NONNEG)},
+    NULL};
 
 mcs_status mcs_io_save_spectrum(const mcs_spectrum *acc, size_t cap, void *buf, size_t *len)
 {
@@ -233,7 +234,8 @@ static const io_kind kind_moment = {
      IO_UPPER(mcs_moment, lo_dd, SZ_N, IO_RULE_SPREAD),
      IO_ARRAY(mcs_moment, batch_s, SZ_N, IO_RULE_M2),
      IO_ARRAY(mcs_moment, batch_d, SZ_N, IO_RULE_SPREAD),
-     IO_GRID(mcs_moment, batch_w, SZ_N, SZ_N, SZ_N, IO_RULE_SPREAD)}};
+     IO_GRID(mcs_moment, batch_w, SZ_N, SZ_N, SZ_N, IO_RULE_SPREAD)},
+    NULL};
 
 mcs_status mcs_io_save_moment(const mcs_moment *acc, size_t cap, void *buf, size_t *len)
 {
@@ -296,7 +298,8 @@ static const io_kind kind_autocorr = {
      IO_ARRAY(mcs_autocorr, lo_s, SZ_N, 0u),
      IO_ARRAY(mcs_autocorr, sum_lag, SZ_HALF, 0u),
      IO_ARRAY(mcs_autocorr, lo_lag, SZ_HALF, 0u),
-     IO_ARRAY(mcs_autocorr, lo_dc, IO_ONE, 0u)}};
+     IO_ARRAY(mcs_autocorr, lo_dc, IO_ONE, 0u)},
+    NULL};
 
 mcs_status mcs_io_save_autocorr(const mcs_autocorr *acc, size_t cap, void *buf, size_t *len)
 {
@@ -352,7 +355,8 @@ static const io_kind kind_welford = {
     {IO_ARRAY(mcs_welford, mean, IO_ONE, 0u),
      IO_ARRAY(mcs_welford, m2, IO_ONE, IO_RULE_M2),
      IO_ARRAY(mcs_welford, m3, IO_ONE, IO_RULE_SPREAD),
-     IO_ARRAY(mcs_welford, m4, IO_ONE, IO_RULE_M2)}};
+     IO_ARRAY(mcs_welford, m4, IO_ONE, IO_RULE_M2)},
+    NULL};
 
 mcs_status mcs_io_save_welford(const mcs_welford *acc, size_t cap, void *buf, size_t *len)
 {

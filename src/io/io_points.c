@@ -7,40 +7,19 @@
  * These objects keep their statistics in a caller buffer behind a head
  * (pointsets/pointset_internal.h: the shape words, then the trial count),
  * so the walker's object is that head and each table is made per call with
- * the offsets of the object's arrays from it. A load cannot set the object
- * up before the record has passed every check (nothing may change on
- * error), and the walker sets it up only after them, through the kind's
- * init: so a load walks the record twice, first with an init that stops
- * the walk once the record passed (CHECKED), then, once the caller's buffer
- * is known to hold the object and the object is set up over it, to store
- * the values. */
+ * the offsets of the object's arrays from it; io_mem.c saves and loads
+ * them (a load walks the record twice, io_internal.h says why). */
 #include "io_internal.h"
+#include "measures/pcf_internal.h"
 #include "pointsets/pointset_internal.h"
 
+#include <math.h>
 #include <string.h>
-
-/* The dry walk's init: every check passed. mcs_io_load returns no such
- * status of its own before it calls init. */
-#define CHECKED MCS_ERR_ALIAS
 
 static mcs_status count_of_head(const void *obj, uint64_t *count)
 {
     memcpy(count, (const unsigned char *)obj + offsetof(mcs_ps_head, count), sizeof *count);
     return MCS_OK;
-}
-
-static mcs_status init_checked(void *obj, const uint64_t *shape)
-{
-    (void)obj;
-    (void)shape;
-    return CHECKED;
-}
-
-static mcs_status init_ready(void *obj, const uint64_t *shape)
-{
-    (void)obj;
-    (void)shape;
-    return MCS_OK; /* set up by the object's own init already */
 }
 
 /* Byte offset of an array from the head it follows. */
@@ -67,35 +46,8 @@ static void kind_base(io_kind *k, uint32_t kind, uint32_t shape_len,
     k->shape_at[0] = offsetof(mcs_ps_head, shape);
     k->shape_at[1] = offsetof(mcs_ps_head, shape) + sizeof(size_t);
     k->count = count_of_head;
-    k->init = init_checked;
+    k->init = mcs_io_init_checked;
     k->count_at = offsetof(mcs_ps_head, count);
-}
-
-/* The memory checks of a load once the record passed: the caller's buffer
- * (need bytes of it) against the object and the record, and those two
- * against each other. Six arguments: a seventh would be pushed, a frame gcc
- * calls dynamic (make stack). */
-static mcs_status check_load_alias(const void *acc, size_t acc_bytes, const void *mem,
-                                   size_t need, const void *buf, size_t len)
-{
-    if (mcs_overlap_(mem, need, acc, acc_bytes) || mcs_overlap_(mem, need, buf, len) ||
-        mcs_overlap_(acc, acc_bytes, buf, len))
-        return MCS_ERR_ALIAS;
-    return MCS_OK;
-}
-
-/* A save's record buffer must not overlap the object it reads. */
-static int save_overlaps(const void *acc, size_t acc_bytes, const void *mem, size_t bytes,
-                         const void *buf, size_t cap)
-{
-    return buf != NULL && (mcs_overlap_(buf, cap, acc, acc_bytes) || mcs_overlap_(buf, cap, mem, bytes));
-}
-
-static uint64_t shape_word(const void *buf, size_t len, size_t i)
-{
-    mcs_io_info info;
-    (void)mcs_io_peek(len, buf, &info); /* cannot fail: the record passed */
-    return info.shape[i];
 }
 
 /* ---- pointset: mean P(f) (a periodogram is >= 0), then its M2, f = 0..F ---- */
@@ -112,8 +64,9 @@ static mcs_status sizes_pointset(const uint64_t *shape, size_t *size)
 
 /* The table of a pointset record; the offsets are acc's (acc NULL: 0, for
  * the checking walk, which reads the payload only). */
-static void kind_pointset(io_kind *k, const mcs_pointset *acc)
+static void kind_pointset(io_kind *k, const void *obj)
 {
+    const mcs_pointset *acc = obj;
     kind_base(k, MCS_IO_KIND_POINTSET, 1u, sizes_pointset);
     k->nfields = 2u;
     k->fields[0] = rows_of(0u, IO_ONE, PS_FREQS, IO_ONE, IO_RULE_NONNEG);
@@ -124,41 +77,35 @@ static void kind_pointset(io_kind *k, const mcs_pointset *acc)
     }
 }
 
+static void *state_pointset(const void *acc) { return ((const mcs_pointset *)acc)->state; }
+static mcs_status count_pointset(const void *acc, uint64_t *count)
+{
+    return mcs_pointset_count(acc, count);
+}
+static mcs_status size_pointset(const uint64_t *shape, unsigned flags, size_t *need)
+{
+    return mcs_pointset_size((size_t)shape[0], flags, need);
+}
+static mcs_status init_pointset(void *acc, const uint64_t *shape, unsigned flags, void *mem,
+                                size_t bytes)
+{
+    return mcs_pointset_init(acc, (size_t)shape[0], flags, mem, bytes);
+}
+
+static const io_mem_kind mem_pointset = {
+    kind_pointset, state_pointset, sizeof(mcs_pointset), offsetof(mcs_pointset, mem),
+    offsetof(mcs_pointset, bytes), count_pointset, size_pointset, init_pointset};
+
 mcs_status mcs_io_save_pointset(const mcs_pointset *acc, size_t cap, void *buf, size_t *len)
 {
-    uint64_t count = 0u;
-    mcs_status st = acc == NULL || len == NULL ? MCS_ERR_NULL : mcs_pointset_count(acc, &count);
-    if (st == MCS_OK && save_overlaps(acc, sizeof *acc, acc->mem, acc->bytes, buf, cap))
-        st = MCS_ERR_ALIAS;
-    if (st != MCS_OK)
-        return st;
-    io_kind k;
-    kind_pointset(&k, acc);
-    return mcs_io_save(&k, acc->state, cap, buf, len);
+    return mcs_io_save_mem(&mem_pointset, acc, cap, buf, len);
 }
 
 mcs_status mcs_io_load_pointset(mcs_pointset *acc, unsigned flags, void *mem, size_t bytes,
                                 size_t len, const void *buf)
 {
-    if (acc == NULL || mem == NULL || buf == NULL)
-        return MCS_ERR_NULL;
-    size_t need = 0u;
-    if (mcs_pointset_size(1u, flags, &need) == MCS_ERR_DOMAIN)
-        return MCS_ERR_DOMAIN;
-    io_kind k;
-    kind_pointset(&k, NULL);
-    mcs_status st = mcs_io_load(&k, mem, len, buf); /* checks only */
-    if (st != CHECKED)
-        return st;
-    const size_t f = (size_t)shape_word(buf, len, 0u);
-    (void)mcs_pointset_size(f, flags, &need); /* cannot fail: F passed sizes_pointset */
-    st = bytes < need ? MCS_ERR_SPACE : check_load_alias(acc, sizeof *acc, mem, need, buf, len);
-    if (st != MCS_OK)
-        return st;
-    (void)mcs_pointset_init(acc, f, flags, mem, bytes); /* cannot fail: checked above */
-    kind_pointset(&k, acc);
-    k.init = init_ready;
-    return mcs_io_load(&k, acc->state, len, buf);
+    const io_mem_arg arg = {mem, bytes, flags};
+    return mcs_io_load_mem(&mem_pointset, acc, &arg, len, buf);
 }
 
 /* ---- pointset2d: mean and M2 of P at fy = 0..F, fx = -F..F (row by row:
@@ -178,8 +125,9 @@ static mcs_status sizes_pointset2d(const uint64_t *shape, size_t *size)
     return MCS_OK;
 }
 
-static void kind_pointset2d(io_kind *k, const mcs_pointset2d *acc)
+static void kind_pointset2d(io_kind *k, const void *obj)
 {
+    const mcs_pointset2d *acc = obj;
     kind_base(k, MCS_IO_KIND_POINTSET2D, 1u, sizes_pointset2d);
     k->nfields = 4u;
     k->fields[0] = rows_of(0u, P2_RADII, P2_WIDTH, P2_STRIDE, IO_RULE_NONNEG);
@@ -193,41 +141,35 @@ static void kind_pointset2d(io_kind *k, const mcs_pointset2d *acc)
     }
 }
 
+static void *state_pointset2d(const void *acc) { return ((const mcs_pointset2d *)acc)->state; }
+static mcs_status count_pointset2d(const void *acc, uint64_t *count)
+{
+    return mcs_pointset2d_count(acc, count);
+}
+static mcs_status size_pointset2d(const uint64_t *shape, unsigned flags, size_t *need)
+{
+    return mcs_pointset2d_size((size_t)shape[0], flags, need);
+}
+static mcs_status init_pointset2d(void *acc, const uint64_t *shape, unsigned flags, void *mem,
+                                  size_t bytes)
+{
+    return mcs_pointset2d_init(acc, (size_t)shape[0], flags, mem, bytes);
+}
+
+static const io_mem_kind mem_pointset2d = {
+    kind_pointset2d, state_pointset2d, sizeof(mcs_pointset2d), offsetof(mcs_pointset2d, mem),
+    offsetof(mcs_pointset2d, bytes), count_pointset2d, size_pointset2d, init_pointset2d};
+
 mcs_status mcs_io_save_pointset2d(const mcs_pointset2d *acc, size_t cap, void *buf, size_t *len)
 {
-    uint64_t count = 0u;
-    mcs_status st = acc == NULL || len == NULL ? MCS_ERR_NULL : mcs_pointset2d_count(acc, &count);
-    if (st == MCS_OK && save_overlaps(acc, sizeof *acc, acc->mem, acc->bytes, buf, cap))
-        st = MCS_ERR_ALIAS;
-    if (st != MCS_OK)
-        return st;
-    io_kind k;
-    kind_pointset2d(&k, acc);
-    return mcs_io_save(&k, acc->state, cap, buf, len);
+    return mcs_io_save_mem(&mem_pointset2d, acc, cap, buf, len);
 }
 
 mcs_status mcs_io_load_pointset2d(mcs_pointset2d *acc, unsigned flags, void *mem, size_t bytes,
                                   size_t len, const void *buf)
 {
-    if (acc == NULL || mem == NULL || buf == NULL)
-        return MCS_ERR_NULL;
-    size_t need = 0u;
-    if (mcs_pointset2d_size(1u, flags, &need) == MCS_ERR_DOMAIN)
-        return MCS_ERR_DOMAIN;
-    io_kind k;
-    kind_pointset2d(&k, NULL);
-    mcs_status st = mcs_io_load(&k, mem, len, buf); /* checks only */
-    if (st != CHECKED)
-        return st;
-    const size_t f = (size_t)shape_word(buf, len, 0u);
-    (void)mcs_pointset2d_size(f, flags, &need); /* cannot fail: F passed sizes_pointset2d */
-    st = bytes < need ? MCS_ERR_SPACE : check_load_alias(acc, sizeof *acc, mem, need, buf, len);
-    if (st != MCS_OK)
-        return st;
-    (void)mcs_pointset2d_init(acc, f, flags, mem, bytes); /* cannot fail: checked above */
-    kind_pointset2d(&k, acc);
-    k.init = init_ready;
-    return mcs_io_load(&k, acc->state, len, buf);
+    const io_mem_arg arg = {mem, bytes, flags};
+    return mcs_io_load_mem(&mem_pointset2d, acc, &arg, len, buf);
 }
 
 /* ---- spectrum2d: five arrays over k2 = 0..N2/2, k1 = 0..N1-1 (rows of N1
@@ -247,9 +189,10 @@ static mcs_status sizes_spectrum2d(const uint64_t *shape, size_t *size)
     return MCS_OK;
 }
 
-static void kind_spectrum2d(io_kind *k, const mcs_spectrum2d *acc)
+static void kind_spectrum2d(io_kind *k, const void *obj)
 {
     static const unsigned rules[5] = {0u, 0u, IO_RULE_M2, IO_RULE_NONNEG, IO_RULE_M2};
+    const mcs_spectrum2d *acc = obj;
     kind_base(k, MCS_IO_KIND_SPECTRUM2D, 2u, sizes_spectrum2d);
     k->nfields = 5u;
     for (size_t i = 0; i < 5u; ++i)
@@ -262,39 +205,38 @@ static void kind_spectrum2d(io_kind *k, const mcs_spectrum2d *acc)
     }
 }
 
+static void *state_spectrum2d(const void *acc) { return ((const mcs_spectrum2d *)acc)->state; }
+static mcs_status count_spectrum2d(const void *acc, uint64_t *count)
+{
+    return mcs_spectrum2d_count(acc, count);
+}
+/* No flags: the load passes 0. */
+static mcs_status size_spectrum2d(const uint64_t *shape, unsigned flags, size_t *need)
+{
+    (void)flags;
+    return mcs_spectrum2d_size((size_t)shape[0], (size_t)shape[1], need);
+}
+static mcs_status init_spectrum2d(void *acc, const uint64_t *shape, unsigned flags, void *mem,
+                                  size_t bytes)
+{
+    (void)flags;
+    return mcs_spectrum2d_init(acc, (size_t)shape[0], (size_t)shape[1], mem, bytes);
+}
+
+static const io_mem_kind mem_spectrum2d = {
+    kind_spectrum2d, state_spectrum2d, sizeof(mcs_spectrum2d), offsetof(mcs_spectrum2d, mem),
+    offsetof(mcs_spectrum2d, bytes), count_spectrum2d, size_spectrum2d, init_spectrum2d};
+
 mcs_status mcs_io_save_spectrum2d(const mcs_spectrum2d *acc, size_t cap, void *buf, size_t *len)
 {
-    uint64_t count = 0u;
-    mcs_status st = acc == NULL || len == NULL ? MCS_ERR_NULL : mcs_spectrum2d_count(acc, &count);
-    if (st == MCS_OK && save_overlaps(acc, sizeof *acc, acc->mem, acc->bytes, buf, cap))
-        st = MCS_ERR_ALIAS;
-    if (st != MCS_OK)
-        return st;
-    io_kind k;
-    kind_spectrum2d(&k, acc);
-    return mcs_io_save(&k, acc->state, cap, buf, len);
+    return mcs_io_save_mem(&mem_spectrum2d, acc, cap, buf, len);
 }
 
 mcs_status mcs_io_load_spectrum2d(mcs_spectrum2d *acc, void *mem, size_t bytes, size_t len,
                                   const void *buf)
 {
-    if (acc == NULL || mem == NULL || buf == NULL)
-        return MCS_ERR_NULL;
-    io_kind k;
-    kind_spectrum2d(&k, NULL);
-    mcs_status st = mcs_io_load(&k, mem, len, buf); /* checks only */
-    if (st != CHECKED)
-        return st;
-    const size_t n_x = (size_t)shape_word(buf, len, 0u), n_y = (size_t)shape_word(buf, len, 1u);
-    size_t need = 0u;
-    (void)mcs_spectrum2d_size(n_x, n_y, &need); /* cannot fail: the sides passed */
-    st = bytes < need ? MCS_ERR_SPACE : check_load_alias(acc, sizeof *acc, mem, need, buf, len);
-    if (st != MCS_OK)
-        return st;
-    (void)mcs_spectrum2d_init(acc, n_x, n_y, mem, bytes); /* cannot fail: checked above */
-    kind_spectrum2d(&k, acc);
-    k.init = init_ready;
-    return mcs_io_load(&k, acc->state, len, buf);
+    const io_mem_arg arg = {mem, bytes, 0u};
+    return mcs_io_load_mem(&mem_spectrum2d, acc, &arg, len, buf);
 }
 
 /* ---- the memory a load needs ---- */
@@ -315,7 +257,15 @@ mcs_status mcs_io_load_size(size_t len, const void *buf, unsigned flags, size_t 
     case MCS_IO_KIND_SPECTRUM:
     case MCS_IO_KIND_MOMENT:
     case MCS_IO_KIND_AUTOCORR:
-    case MCS_IO_KIND_WELFORD: need = 0u; break;
+    case MCS_IO_KIND_WELFORD:
+    case MCS_IO_KIND_INTEGRATE:
+    case MCS_IO_KIND_DISCREPANCY:
+    case MCS_IO_KIND_SPACING: need = 0u; break;
+    case MCS_IO_KIND_PCF:
+        if (info.shape_len != 5u)
+            return MCS_ERR_FORMAT;
+        st = mcs_io_pcf_need(shape, &need);
+        break;
     case MCS_IO_KIND_POINTSET:
     case MCS_IO_KIND_POINTSET2D: {
         if (info.shape_len != 1u)

@@ -758,6 +758,10 @@ static mcs_status save(int type, const void *o, size_t cap, void *buf, size_t *l
     case T_AUTOCORR: return mcs_io_save_autocorr(o, cap, buf, len);
     case T_POINTSET: return mcs_io_save_pointset(o, cap, buf, len);
     case T_POINTSET2D: return mcs_io_save_pointset2d(o, cap, buf, len);
+    case T_PCF: return mcs_io_save_pcf(o, cap, buf, len);
+    case T_INTEGRATE: return mcs_io_save_integrate(o, cap, buf, len);
+    case T_DISC: return mcs_io_save_discrepancy(o, cap, buf, len);
+    case T_SPACING: return mcs_io_save_spacing(o, cap, buf, len);
     default: return mcs_io_save_spectrum2d(o, cap, buf, len);
     }
 }

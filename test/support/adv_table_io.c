@@ -13,6 +13,10 @@ static int loads_back(int st, int type, const void *buf, const size_t *len)
     static adv_pointset ps;
     static adv_pointset2d ps2;
     static adv_spectrum2d s2;
+    static struct {
+        mcs_pcf acc;
+        _Alignas(64) unsigned char mem[MCS_PCF_SIZE(8)];
+    } pcf;
     if (st != MCS_OK || buf == NULL)
         return st;
     int back;
@@ -27,6 +31,10 @@ static int loads_back(int st, int type, const void *buf, const size_t *len)
     case T_POINTSET2D:
         back = mcs_io_load_pointset2d(&ps2.acc, 0u, ps2.mem, sizeof ps2.mem, *len, buf);
         break;
+    case T_PCF: back = mcs_io_load_pcf(&pcf.acc, pcf.mem, sizeof pcf.mem, *len, buf); break;
+    case T_INTEGRATE: back = mcs_io_load_integrate((void *)scratch, *len, buf); break;
+    case T_DISC: back = mcs_io_load_discrepancy((void *)scratch, *len, buf); break;
+    case T_SPACING: back = mcs_io_load_spacing((void *)scratch, *len, buf); break;
     default: back = mcs_io_load_spectrum2d(&s2.acc, s2.mem, sizeof s2.mem, *len, buf); break;
     }
     if (back == MCS_OK)
@@ -46,7 +54,14 @@ static int loads_back(int st, int type, const void *buf, const size_t *len)
 SAVE_THUNK(spectrum, T_SPECTRUM) SAVE_THUNK(moment, T_MOMENT) SAVE_THUNK(autocorr, T_AUTOCORR)
 SAVE_THUNK(welford, T_WELFORD) SAVE_THUNK(pointset, T_POINTSET)
 SAVE_THUNK(pointset2d, T_POINTSET2D) SAVE_THUNK(spectrum2d, T_SPECTRUM2D)
+SAVE_THUNK(pcf, T_PCF) SAVE_THUNK(integrate, T_INTEGRATE) SAVE_THUNK(discrepancy, T_DISC)
+SAVE_THUNK(spacing, T_SPACING)
 LOAD_THUNK(spectrum) LOAD_THUNK(moment) LOAD_THUNK(autocorr) LOAD_THUNK(welford)
+LOAD_THUNK(integrate) LOAD_THUNK(discrepancy) LOAD_THUNK(spacing)
+static int t_io_load_pcf(const adv_val *a)
+{
+    return mcs_io_load_pcf(a[0].p, a[1].p, a[2].z, a[3].z, a[4].p);
+}
 static int t_io_load_pointset(const adv_val *a)
 {
     return mcs_io_load_pointset(a[0].p, a[1].u32, a[2].p, a[3].z, a[4].z, a[5].p);
@@ -66,7 +81,7 @@ static int t_io_crc32(const adv_val *a) { return mcs_io_crc32(a[0].z, a[1].p, a[
 static int t_io_kind_str(const adv_val *a)
 {
     const char *s = mcs_io_kind_str(a[0].u32);
-    int known = a[0].u32 >= MCS_IO_KIND_SPECTRUM && a[0].u32 <= MCS_IO_KIND_SPECTRUM2D;
+    int known = a[0].u32 >= MCS_IO_KIND_SPECTRUM && a[0].u32 <= MCS_IO_KIND_SPACING;
     return s != NULL && known == (strcmp(s, "unknown") != 0) ? MCS_OK : ADV_BROKEN;
 }
 static int t_theory_spectrum_init(const adv_val *a) { return mcs_theory_spectrum_init(a[0].p, a[1].p); }
@@ -177,6 +192,11 @@ const adv_fn adv_fns_io[] = {
        SZ_LEN("bytes", S2_MEM), REC_LEN(T_SPECTRUM2D), REC_BUF(T_SPECTRUM2D)),
     FN(io_load_size, EF_NONE, 1, 0, REC_LEN(T_POINTSET2D), REC_BUF(T_POINTSET2D), FLAGS,
        OUT("bytes", E_Z, O_RAW, 0)),
+    SAVE(pcf, T_PCF), SAVE(integrate, T_INTEGRATE), SAVE(discrepancy, T_DISC),
+    SAVE(spacing, T_SPACING),
+    LOAD(integrate, T_INTEGRATE), LOAD(discrepancy, T_DISC), LOAD(spacing, T_SPACING),
+    FN(io_load_pcf, EF_NONE, 1, 0, OBJ_OUT("acc", T_PCF), MEM(2), SZ_LEN("bytes", MCS_PCF_SIZE(8)),
+       REC_LEN(T_PCF), REC_BUF(T_PCF)),
     FN(io_peek, EF_NONE, 1, 0, {.name = "len", .kind = K_SIZE, .role = Z_REC, .type = T_SPECTRUM},
        AIN("buf", E_U8, R_RECORD, LEN(L_REC, T_SPECTRUM), 0),
        AOUT("info", E_U8, O_RAW, INFO_LEN, 0)),
