@@ -183,8 +183,8 @@ for f in "$CORPUS"/*.rec; do
     spectrum2d-*) header=k1,k2,mean_re,mean_im,mean_stderr,power,power_stderr ;;
     pcf-*) header=r,pcf,pcf_stderr,exact ;;
     integrate-*) header=family,k,mse,mse_stderr,exact,predicted,predicted_tail,freq,sets,slope,rate_random,rate_jittered ;;
-    discrepancy-*) header=measure,value,stderr,exact_random,root ;;
-    spacing-*) header=statistic,value,stderr ;;
+    discrepancy-*) header=measure,value,stderr,exact_random,root,exact ;;
+    spacing-*) header=statistic,value,stderr,exact ;;
     *) bad "unexpected seed $name"; continue ;;
     esac
     if succeeds "show $name" "$MCSPEC" show "$f" --csv && [ "$(head -n 1 "$tmp/out")" = "$header" ]
