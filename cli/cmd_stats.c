@@ -19,7 +19,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 /* The entry point, declared here until cli.h lists it with the others. */
 
@@ -144,28 +143,8 @@ static int parse(int argc, char **argv, stats_opts *o)
     int rc = cli_parse_one(CMD, help, NULL, opts, CLI_COUNT(opts), argc, argv, &o->path);
     if (rc != CLI_PARSED)
         return rc;
-    const size_t nopts = CLI_COUNT(opts);
-    o->kind_mode = cli_opt_given(opts, nopts, "k");
-    if (o->kind_mode) {
-        if (o->path == NULL || strcmp(o->path, "-") == 0)
-            return cli_fail(CMD, "--k draws sets of a KIND: give KIND (see mcspec sample --help)");
-        if (!cli_opt_given(opts, nopts, "dim"))
-            return cli_fail(CMD, "give --dim D with KIND %s", o->path);
-        if (cli_opt_given(opts, nopts, "wrap"))
-            return cli_fail(CMD, "--wrap goes with a point file, not KIND --k K");
-        if (o->save != NULL && o->dim > 2u)
-            return cli_fail(CMD, "--save of a drawn KIND takes --dim 1 or 2 (a record names "
-                                 "a pattern in 1D or 2D): write the sets with mcspec sample "
-                                 "and save from the file");
-        return 0;
-    }
-    if (cli_opt_given(opts, nopts, "sets") || cli_opt_given(opts, nopts, "seed"))
-        return cli_fail(CMD, "--sets and --seed go with KIND --k K, not a point file");
-    if (o->path != NULL && cli_kind_known(o->path) && access(o->path, F_OK) != 0)
-        return cli_fail(CMD, "KIND %s draws sets with --dim D --k K: give --k K", o->path);
-    if (o->path == NULL && isatty(STDIN_FILENO))
-        return cli_fail(CMD, "no input: give a point file, or '-' to read standard input");
-    return 0;
+    const cli_kind_args args = {o->path, o->dim, o->save};
+    return cli_kind_or_file(CMD, opts, CLI_COUNT(opts), &args, &o->kind_mode);
 }
 
 /* The periodogram's accumulators over one buffer, for cutoff F. */

@@ -4,6 +4,7 @@
 
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 int cli_opt_given(const cli_opt *opts, size_t nopts, const char *name)
 {
@@ -24,6 +25,32 @@ int cli_kind_known(const char *name)
         if (starts && ends)
             return 1;
     }
+    return 0;
+}
+
+int cli_kind_or_file(const char *cmd, const cli_opt *opts, size_t nopts, const cli_kind_args *a,
+                     int *kind_mode)
+{
+    *kind_mode = cli_opt_given(opts, nopts, "k");
+    if (*kind_mode) {
+        if (a->path == NULL || strcmp(a->path, "-") == 0)
+            return cli_fail(cmd, "--k draws sets of a KIND: give KIND (see mcspec sample --help)");
+        if (!cli_opt_given(opts, nopts, "dim"))
+            return cli_fail(cmd, "give --dim D with KIND %s", a->path);
+        if (cli_opt_given(opts, nopts, "wrap"))
+            return cli_fail(cmd, "--wrap goes with a point file, not KIND --k K");
+        if (a->save != NULL && a->dim > 2u)
+            return cli_fail(cmd, "--save of a drawn KIND takes --dim 1 or 2 (a record names "
+                                 "a pattern in 1D or 2D): write the sets with mcspec sample "
+                                 "and save from the file");
+        return 0;
+    }
+    if (cli_opt_given(opts, nopts, "sets") || cli_opt_given(opts, nopts, "seed"))
+        return cli_fail(cmd, "--sets and --seed go with KIND --k K, not a point file");
+    if (a->path != NULL && cli_kind_known(a->path) && access(a->path, F_OK) != 0)
+        return cli_fail(cmd, "KIND %s draws sets with --dim D --k K: give --k K", a->path);
+    if (a->path == NULL && isatty(STDIN_FILENO))
+        return cli_fail(cmd, "no input: give a point file, or '-' to read standard input");
     return 0;
 }
 

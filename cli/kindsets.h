@@ -20,6 +20,23 @@ int cli_opt_given(const cli_opt *opts, size_t nopts, const char *name);
 /* Whether name is one of the kinds of mcspec sample. */
 int cli_kind_known(const char *name);
 
+/* What cli_kind_or_file checks: the operand, --dim and --save as parsed. */
+typedef struct {
+    const char *path; /* the operand: a point file, '-', KIND, or NULL */
+    size_t dim;       /* --dim (0: not given) */
+    const char *save; /* --save FILE, or NULL */
+} cli_kind_args;
+
+/* The usage checks of a command that takes a point file or KIND --dim D --k
+ * K [--sets T] [--seed S] (mcspec discrepancy, mcspec stats), after
+ * cli_parse_one filled opts[nopts]: *kind_mode = whether --k was given; then
+ * KIND needs --dim and no --wrap, and --save only in 1D or 2D (a pattern
+ * provenance); a file takes no --sets or --seed, a KIND name that is not a
+ * file needs --k, and no operand needs standard input not to be a
+ * terminal. Returns 0, or exit 2 after one line. */
+int cli_kind_or_file(const char *cmd, const cli_opt *opts, size_t nopts, const cli_kind_args *a,
+                     int *kind_mode);
+
 /* Draws sets sets of src (set up by cli_sample_init) from PCG32 seeded with
  * (seed, 0), as mcspec sample --seed does, into fn, filling stats as the
  * reader does (dim before the first call, lines 0). Returns 0, or an exit
