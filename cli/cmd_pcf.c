@@ -6,6 +6,7 @@
 #include "atomic.h"
 #include "cli.h"
 #include "input.h"
+#include "measure_rows.h"
 #include "output.h"
 #include "plot.h"
 #include "progress.h"
@@ -370,6 +371,29 @@ static void describe(const pcf_ctx *c, char *title, size_t tsize, char *sub, siz
                  acc->sigma, acc->bins, acc->radius);
 }
 
+/* A pcf row: v = r, pcf, pcf_stderr, exact; the table adds z. */
+void cli_pcf_row(int csv, const double *v)
+{
+    if (csv) {
+        char buf[40];
+        cli_csv_double(buf, sizeof buf, v[0]);
+        printf("%s", buf);
+        cli_print_values(1, v + 1, 3);
+        return;
+    }
+    printf("%9.4f", v[0]);
+    for (int i = 1; i < 4; ++i) {
+        char buf[40];
+        cli_table_double(buf, sizeof buf, 13, v[i]);
+        printf(" %s", buf);
+    }
+    const double z = cli_z(v[1], v[3], v[2], 1e-12);
+    if (isnan(z))
+        printf(" %8s\n", "-");
+    else
+        printf(" %8.2f\n", z);
+}
+
 static void report(const pcf_ctx *c)
 {
     const pcf_opts *o = c->o;
@@ -387,24 +411,7 @@ static void report(const pcf_ctx *c)
         (void)mcs_pcf_mean(&c->acc, b, &v[1]);
         (void)mcs_pcf_stderr(&c->acc, b, &v[2]);
         v[3] = exact_of(c, b);
-        if (o->csv) {
-            char buf[40];
-            cli_csv_double(buf, sizeof buf, v[0]);
-            printf("%s", buf);
-            cli_print_values(1, v + 1, 3);
-            continue;
-        }
-        printf("%9.4f", v[0]);
-        for (int i = 1; i < 4; ++i) {
-            char buf[40];
-            cli_table_double(buf, sizeof buf, 13, v[i]);
-            printf(" %s", buf);
-        }
-        const double z = cli_z(v[1], v[3], v[2], 1e-12);
-        if (isnan(z))
-            printf(" %8s\n", "-");
-        else
-            printf(" %8.2f\n", z);
+        cli_pcf_row(o->csv, v);
     }
 }
 

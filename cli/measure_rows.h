@@ -1,4 +1,4 @@
-/* The rows of mcspec discrepancy and mcspec stats, shared with mcspec show
+/* The rows of mcspec pcf, discrepancy and stats, shared with mcspec show
  * of their records (record_show.c), so a record prints what its run did. */
 #ifndef MCSPEC_CLI_MEASURE_ROWS_H
 #define MCSPEC_CLI_MEASURE_ROWS_H
@@ -31,5 +31,8 @@ void cli_spacing_rows(int csv, const mcs_spacing *acc, const double exact[MCS_SP
 
 /* A stats row: v = value, stderr, exact; the table adds z. */
 void cli_stats_row(int csv, const char *name, const double *v);
+
+/* A pcf row: v = r, pcf, pcf_stderr, exact; the table adds z (cmd_pcf.c). */
+void cli_pcf_row(int csv, const double *v);
 
 #endif /* MCSPEC_CLI_MEASURE_ROWS_H */

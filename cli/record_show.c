@@ -50,24 +50,7 @@ static void show_pcf(int csv, const mcs_pcf *acc, const mcs_io_provenance *prov)
         (void)mcs_pcf_stderr(acc, b, &v[2]);
         if (exact && mcs_pcf_exact(acc, &pat, b, &v[3]) != MCS_OK)
             v[3] = NAN;
-        if (csv) {
-            char buf[40];
-            cli_csv_double(buf, sizeof buf, v[0]);
-            printf("%s", buf);
-            cli_print_values(1, v + 1, 3);
-            continue;
-        }
-        printf("%9.4f", v[0]);
-        for (int i = 1; i < 4; ++i) {
-            char buf[40];
-            cli_table_double(buf, sizeof buf, 13, v[i]);
-            printf(" %s", buf);
-        }
-        const double z = cli_z(v[1], v[3], v[2], 1e-12);
-        if (isnan(z))
-            printf(" %8s\n", "-");
-        else
-            printf(" %8.2f\n", z);
+        cli_pcf_row(csv, v);
     }
 }
 
