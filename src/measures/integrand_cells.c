@@ -287,6 +287,11 @@ static double disk_sum(const mcs_integrand *f, size_t mx, size_t my)
     return sum;
 }
 
+int mcs_integ_has_jittered_(const mcs_integrand *f)
+{
+    return f->family != MCS_INTEGRAND_BLINN_PHONG && f->family != MCS_INTEGRAND_GAUSSIAN_MIXTURE;
+}
+
 double mcs_integ_jittered_(const mcs_integrand *f, size_t mx, size_t my)
 {
     const double k = (double)mx * (double)my;
@@ -304,6 +309,8 @@ double mcs_integ_jittered_(const mcs_integrand *f, size_t mx, size_t my)
     }
     case MCS_INTEGRAND_HEAVISIDE: return heaviside_sum(f, mx, my) / (k * k);
     case MCS_INTEGRAND_DISK: return disk_sum(f, mx, my) / (k * k);
+    case MCS_INTEGRAND_BLINN_PHONG:
+    case MCS_INTEGRAND_GAUSSIAN_MIXTURE:
     case MCS_INTEGRAND_FAMILIES: break;
     }
     return 0.0;
