@@ -17,7 +17,7 @@
  *                      on the torus; 1D: an arc of length 2 r)
  *   cosine             prod_d (1 + a_d cos(2 pi m_d x_d + phi_d))  a_d in [0,1), m_d in 1..4,
  *                                                                  phi_d in [0, 2 pi)
- *   blinn_phong        utk's BlinnPhong (2D only): the estimate    p on the unit sphere, p_y < 0;
+ *   blinn_phong        utk's BlinnPhong (2D only): the estimate    p on the unit sphere, p_y <= -0.01;
  *                      S fr(o, l) cos(l) of the light a quad       o in the octant x, z >= 0, y <= 0;
  *                      sends to p, l(x) the direction that the     alpha in [10, 100]
  *                      area-preserving map of spherical
@@ -115,6 +115,7 @@ extern "C" {
 #define MCS_INTEGRAND_COSINE_MAX_FREQ 4
 #define MCS_INTEGRAND_BLINN_PHONG_MIN_EXPONENT 10.0
 #define MCS_INTEGRAND_BLINN_PHONG_MAX_EXPONENT 100.0
+#define MCS_INTEGRAND_BLINN_PHONG_MIN_DEPTH 0.01 /* -p_y, the point's distance to the light's plane */
 #define MCS_INTEGRAND_MIXTURE_MIN_VARIANCE 0.01
 #define MCS_INTEGRAND_MIXTURE_MAX_VARIANCE 1.0
 
@@ -157,6 +158,8 @@ typedef struct {
     double precision[MCS_INTEGRAND_MAX_BOXES][3]; /* A_i = [[a, b], [b, c]] as (a, b, c); 1D: a */
     double integral;  /* blinn_phong, gaussian_mixture: I, by the draw */
     double square;    /* blinn_phong, gaussian_mixture: Q, by the draw */
+    double error;     /* blinn_phong, gaussian_mixture: the quadrature's relative error
+                         estimate for I and Q (0: by erf alone) */
 } mcs_integrand;
 
 /* Name of a family as the command prints it ("gaussian",

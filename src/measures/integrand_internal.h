@@ -16,14 +16,14 @@
 
 /* The adaptive Gauss-Kronrod quadrature (integrand_quad.c): MCS_INTEG_QUAD_N
  * integrals at once of fn(ctx, x, out[MCS_INTEG_QUAD_N]) over [a, b] into
- * out[], bisecting until each one's summed |K15 - G7| is at most rel of its
- * value or MCS_INTEG_QUAD_PANELS panels are in use. Returns the largest
- * relative error estimate reached. */
-#define MCS_INTEG_QUAD_N 2
-#define MCS_INTEG_QUAD_PANELS 64
+ * out[], their error estimates (QUADPACK's) into err[]: bisected until
+ * each panel's estimate is within its share of the larger of rel times a
+ * first estimate of the integral and floors[n] (+inf: that component never
+ * asks for a bisection), or at its rounding floor. */
+#define MCS_INTEG_QUAD_N 4
 typedef void (*mcs_integ_quad_fn)(void *ctx, double x, double *out);
-double mcs_integ_quad_(mcs_integ_quad_fn fn, void *ctx, double a, double b, double rel,
-                       double *out);
+void mcs_integ_quad_(mcs_integ_quad_fn fn, void *ctx, double a, double b, double rel,
+                     const double *floors, double *out, double *err);
 
 /* The families from utk (integrand_utk.c): blinn_phong and
  * gaussian_mixture. 1 if family is one of them. */

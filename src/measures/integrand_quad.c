@@ -1,12 +1,21 @@
 /* Adaptive Gauss-Kronrod quadrature for the integrands without a closed
- * form (integrand_utk.c): the (7, 15) pair on panels of [a, b], the panel of
- * largest error estimate |K15 - G7| bisected until the sum of the estimates
- * is below the tolerance or the panels run out. Fixed storage on the stack
- * (MCS_INTEG_QUAD_PANELS panels), so it nests once without allocating. */
+ * form (integrand_utk.c): the (7, 15) pair on a panel, bisected depth first
+ * until the panel's error estimate is within its share (its length over
+ * b - a) of the tolerance, or at the rounding floor, or 30 bisections deep,
+ * or MAX_PANELS computed;
+ * the estimates of the panels kept add up to the error returned. The
+ * estimate per panel is QUADPACK's (Piessens et al. 1983, qk15): with
+ * D = |K15 - G7| and R the integral of |f - mean| by the Kronrod rule,
+ * R min(1, (200 D / R)^1.5), and at least 50 eps times the integral of |f|.
+ * Each frame stays small (make stack), so it nests without allocating. */
 #include "integrand_internal.h"
 
+#include <float.h>
 #include <math.h>
 #include <stddef.h>
+
+#define MAX_DEPTH 30
+#define MAX_PANELS 2048 /* per call: a guard that the tolerances above never meet */
 
 /* Kronrod nodes on [-1, 1] (the odd ones are Gauss's), and the weights. */
 static const double xk[8] = {
@@ -24,75 +33,77 @@ static const double wg[4] = {0.129484966168869693270611432679082,
                              0.381830050505118944950369775488975,
                              0.417959183673469387755102040816327};
 
+/* One panel: its integrals, error estimates and rounding floors. */
 typedef struct {
-    double a, b, v[MCS_INTEG_QUAD_N], e[MCS_INTEG_QUAD_N];
+    double v[MCS_INTEG_QUAD_N], e[MCS_INTEG_QUAD_N], round[MCS_INTEG_QUAD_N];
 } panel;
 
-static void gk15(mcs_integ_quad_fn fn, void *ctx, panel *p)
+static panel gk15(mcs_integ_quad_fn fn, void *ctx, double a, double b)
 {
-    const double h = 0.5 * (p->b - p->a), c = 0.5 * (p->a + p->b);
-    double k[MCS_INTEG_QUAD_N] = {0.0}, g[MCS_INTEG_QUAD_N] = {0.0}, y1[MCS_INTEG_QUAD_N],
-           y2[MCS_INTEG_QUAD_N];
-    for (int i = 0; i < 8; ++i) {
-        fn(ctx, c - h * xk[i], y1);
-        if (i < 7)
-            fn(ctx, c + h * xk[i], y2);
-        for (int n = 0; n < MCS_INTEG_QUAD_N; ++n) {
-            const double s = i < 7 ? y1[n] + y2[n] : y1[n];
-            k[n] += wk[i] * s;
-            if (i & 1)
-                g[n] += wg[i / 2] * s;
-        }
+    const double h = 0.5 * (b - a), c = 0.5 * (a + b);
+    double y[15][MCS_INTEG_QUAD_N];
+    for (int i = 0; i < 7; ++i) {
+        fn(ctx, c - h * xk[i], y[i]);
+        fn(ctx, c + h * xk[i], y[14 - i]);
     }
+    fn(ctx, c, y[7]);
+    panel p;
     for (int n = 0; n < MCS_INTEG_QUAD_N; ++n) {
-        p->v[n] = h * k[n];
-        p->e[n] = fabs(h * (k[n] - g[n]));
+        double k = wk[7] * y[7][n], g = wg[3] * y[7][n], ab = wk[7] * fabs(y[7][n]);
+        for (int i = 0; i < 7; ++i) {
+            const double s = y[i][n] + y[14 - i][n];
+            k += wk[i] * s;
+            ab += wk[i] * (fabs(y[i][n]) + fabs(y[14 - i][n]));
+            if (i & 1)
+                g += wg[i / 2] * s;
+        }
+        const double mean = 0.5 * k;
+        double asc = wk[7] * fabs(y[7][n] - mean);
+        for (int i = 0; i < 7; ++i)
+            asc += wk[i] * (fabs(y[i][n] - mean) + fabs(y[14 - i][n] - mean));
+        const double d = fabs(h * (k - g)), r = fabs(h) * asc;
+        const double e = r > 0.0 && d > 0.0 ? r * fmin(1.0, pow(200.0 * d / r, 1.5)) : d;
+        p.v[n] = h * k;
+        p.round[n] = 50.0 * DBL_EPSILON * fabs(h) * ab;
+        p.e[n] = fmax(e, p.round[n]);
     }
+    return p;
 }
 
-double mcs_integ_quad_(mcs_integ_quad_fn fn, void *ctx, double a, double b, double rel,
-                       double *out)
+/* Adds the integrals of [a, b] (whose panel is p) into out[] and their
+ * error estimates into err[]; tol[] is the tolerance per unit length,
+ * *left the panels the call may still compute. A panel at its rounding
+ * floor, or below DBL_MIN (subnormal values), is kept. */
+static void refine(mcs_integ_quad_fn fn, void *ctx, double a, double b, const panel *p,
+                   const double *tol, int depth, int *left, double *out, double *err)
 {
-    panel ps[MCS_INTEG_QUAD_PANELS];
-    size_t np = 1;
-    ps[0].a = a;
-    ps[0].b = b;
-    gk15(fn, ctx, &ps[0]);
-    double worst = 0.0;
-    for (;;) {
-        double v[MCS_INTEG_QUAD_N] = {0.0}, e[MCS_INTEG_QUAD_N] = {0.0};
-        for (size_t i = 0; i < np; ++i)
-            for (int n = 0; n < MCS_INTEG_QUAD_N; ++n) {
-                v[n] += ps[i].v[n];
-                e[n] += ps[i].e[n];
-            }
-        int done = 1;
-        worst = 0.0;
+    int ok = 1;
+    for (int n = 0; n < MCS_INTEG_QUAD_N; ++n)
+        ok = ok && (p->e[n] <= tol[n] * (b - a) || p->e[n] <= 2.0 * p->round[n] + DBL_MIN);
+    if (ok || depth == MAX_DEPTH || *left < 2) {
         for (int n = 0; n < MCS_INTEG_QUAD_N; ++n) {
-            out[n] = v[n];
-            const double r = v[n] != 0.0 ? e[n] / fabs(v[n]) : (e[n] > 0.0 ? 1.0 : 0.0);
-            worst = r > worst ? r : worst;
-            done = done && r <= rel;
+            out[n] += p->v[n];
+            err[n] += p->e[n];
         }
-        if (done || np == (size_t)MCS_INTEG_QUAD_PANELS)
-            return worst;
-        size_t w = 0; /* the panel with the largest share of the relative error */
-        double big = -1.0;
-        for (size_t i = 0; i < np; ++i) {
-            double s = 0.0;
-            for (int n = 0; n < MCS_INTEG_QUAD_N; ++n)
-                s += v[n] != 0.0 ? ps[i].e[n] / fabs(v[n]) : ps[i].e[n];
-            if (s > big) {
-                big = s;
-                w = i;
-            }
-        }
-        const double mid = 0.5 * (ps[w].a + ps[w].b);
-        ps[np].a = mid;
-        ps[np].b = ps[w].b;
-        ps[w].b = mid;
-        gk15(fn, ctx, &ps[w]);
-        gk15(fn, ctx, &ps[np]);
-        ++np;
+        return;
     }
+    const double m = 0.5 * (a + b);
+    *left -= 2;
+    const panel l = gk15(fn, ctx, a, m);
+    refine(fn, ctx, a, m, &l, tol, depth + 1, left, out, err);
+    const panel r = gk15(fn, ctx, m, b);
+    refine(fn, ctx, m, b, &r, tol, depth + 1, left, out, err);
+}
+
+void mcs_integ_quad_(mcs_integ_quad_fn fn, void *ctx, double a, double b, double rel,
+                     const double *floors, double *out, double *err)
+{
+    const panel p = gk15(fn, ctx, a, b);
+    double tol[MCS_INTEG_QUAD_N];
+    for (int n = 0; n < MCS_INTEG_QUAD_N; ++n) {
+        tol[n] = fmax(rel * fabs(p.v[n]), floors[n]) / (b - a);
+        out[n] = err[n] = 0.0;
+    }
+    int left = MAX_PANELS - 1;
+    refine(fn, ctx, a, b, &p, tol, 0, &left, out, err);
 }

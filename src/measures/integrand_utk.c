@@ -9,14 +9,14 @@
 #include <stddef.h>
 
 /* Relative tolerance of every quadrature (integrand.h). */
-#define QUAD_REL 1e-13
+#define QUAD_REL 3e-13
 
 int mcs_integ_is_utk_(mcs_integrand_family family)
 {
     return family == MCS_INTEGRAND_BLINN_PHONG || family == MCS_INTEGRAND_GAUSSIAN_MIXTURE;
 }
 
-static int finite(double x)
+static int real_ok(double x)
 {
     return x - x == 0.0; /* NaN and inf fail */
 }
@@ -103,26 +103,79 @@ static void bp_inner(void *ctx, double u2, double *out)
     const double v = bp_point(ctx, u2);
     out[0] = v;
     out[1] = v * v;
+    out[2] = out[3] = 0.0;
 }
 
-/* The column's integrals of f and f^2 over u2, from the horizon up. */
+/* The outer quadrature's context: the integrand and the inner quadratures'
+ * absolute floors (1e-14 of a first estimate of I and Q: a column far below
+ * the lobe needs no relative accuracy of its own; +inf for the error
+ * components, which never drive the bisection). */
+typedef struct {
+    const mcs_integrand *f;
+    double floors[MCS_INTEG_QUAD_N];
+} bp_ctx;
+
+/* The column's integrals of f and f^2 over u2, from the horizon up, and
+ * their error estimates (components 2 and 3, integrated over u1 beside
+ * them, bound what the inner quadratures leave out). */
 static void bp_outer(void *ctx, double u1, double *out)
 {
-    bp_col c = bp_column(ctx, u1);
-    out[0] = out[1] = 0.0;
+    const bp_ctx *b = ctx;
+    bp_col c = bp_column(b->f, u1);
+    out[0] = out[1] = out[2] = out[3] = 0.0;
     if (!(c.h1 > 0.0))
         return;
     const double lo = c.h0 < 0.0 ? c.h0 / (c.h0 - c.h1) : 0.0; /* hv = 0 */
-    if (lo < 1.0)
-        (void)mcs_integ_quad_(bp_inner, &c, lo, 1.0, QUAD_REL, out);
+    if (!(lo < 1.0))
+        return;
+    double e[MCS_INTEG_QUAD_N];
+    mcs_integ_quad_(bp_inner, &c, lo, 1.0, QUAD_REL, b->floors, out, e);
+    out[2] = e[0];
+    out[3] = e[1];
+}
+
+/* The relative error estimate of v[0], v[1] from the absolute ones e[]. */
+static double rel_error(const double *v, const double *e)
+{
+    double r = 0.0;
+    for (int n = 0; n < 2; ++n)
+        r = fmax(r, v[n] > 0.0 ? e[n] / v[n] : (e[n] > 0.0 ? 1.0 : 0.0));
+    return r;
+}
+
+/* I and Q of a drawn blinn_phong: a midpoint sum on 8 x 8 cells for the
+ * floors, then the nested quadrature; the error is the outer one's plus
+ * the integral over u1 of the inner ones'. */
+static void bp_moments(mcs_integrand *g)
+{
+    bp_ctx b = {g, {0.0, 0.0, INFINITY, INFINITY}};
+    for (int i = 0; i < 8; ++i) {
+        const bp_col c = bp_column(g, (i + 0.5) / 8.0);
+        for (int j = 0; j < 8; ++j) {
+            const double v = bp_point(&c, (j + 0.5) / 8.0);
+            b.floors[0] += 1e-14 / 64.0 * v;
+            b.floors[1] += 1e-14 / 64.0 * v * v;
+        }
+    }
+    const double none[MCS_INTEG_QUAD_N] = {0.0, 0.0, INFINITY, INFINITY};
+    double v[MCS_INTEG_QUAD_N], e[MCS_INTEG_QUAD_N];
+    mcs_integ_quad_(bp_outer, &b, 0.0, 1.0, QUAD_REL, none, v, e);
+    e[0] += v[2];
+    e[1] += v[3];
+    g->integral = v[0];
+    g->square = v[1];
+    g->error = rel_error(v, e);
 }
 
 static void bp_draw(mcs_integrand *g, mcs_rng *rng)
 {
     /* p uniform on the half sphere y < 0: p_y uniform (Archimedes), as
      * utk's normalised Gaussian with y = -|y| (its radius pow(r, 1 / 3) is
-     * pow(r, 0) = 1 in C++ integer division) */
-    const double py = -(1.0 - mcs_rng_double_(rng)), phi = MCS_INTEG_TWO_PI * mcs_rng_double_(rng);
+     * pow(r, 0) = 1 in C++ integer division); p_y <= -0.01 here, off the
+     * light's plane, where the map degenerates (docs/measures.md) */
+    const double py = -(MCS_INTEGRAND_BLINN_PHONG_MIN_DEPTH +
+                        (1.0 - MCS_INTEGRAND_BLINN_PHONG_MIN_DEPTH) * mcs_rng_double_(rng));
+    const double phi = MCS_INTEG_TWO_PI * mcs_rng_double_(rng);
     const double rho = sqrt(fmax(1.0 - py * py, 0.0));
     g->shading[0] = rho * cos(phi);
     g->shading[1] = py;
@@ -136,10 +189,7 @@ static void bp_draw(mcs_integrand *g, mcs_rng *rng)
     g->view[1] = -sp * st;
     g->view[2] = ct;
     bp_frame(g->shading, g->frame);
-    double v[MCS_INTEG_QUAD_N];
-    (void)mcs_integ_quad_(bp_outer, g, 0.0, 1.0, QUAD_REL, v);
-    g->integral = v[0];
-    g->square = v[1];
+    bp_moments(g);
 }
 
 static int bp_valid(const mcs_integrand *f)
@@ -147,7 +197,8 @@ static int bp_valid(const mcs_integrand *f)
     const double *p = f->shading, *o = f->view;
     const double p2 = p[0] * p[0] + p[1] * p[1] + p[2] * p[2];
     const double o2 = o[0] * o[0] + o[1] * o[1] + o[2] * o[2];
-    if (f->dim != 2u || !(fabs(p2 - 1.0) <= 1e-12) || !(p[1] < 0.0) ||
+    if (f->dim != 2u || !(fabs(p2 - 1.0) <= 1e-12) ||
+        !(p[1] <= -MCS_INTEGRAND_BLINN_PHONG_MIN_DEPTH) ||
         !(fabs(o2 - 1.0) <= 1e-12) || !(o[0] >= 0.0) || !(o[1] <= 0.0) || !(o[2] >= 0.0) ||
         !(f->exponent >= MCS_INTEGRAND_BLINN_PHONG_MIN_EXPONENT &&
           f->exponent <= MCS_INTEGRAND_BLINN_PHONG_MAX_EXPONENT))
@@ -195,23 +246,29 @@ static void gm_column(void *ctx, double x, double *out)
     const double shift = a12 * t / a22, det = a11 * a22 - a12 * a12;
     out[0] = exp(-0.5 * det / a22 * t * t) *
              gauss_seg(a22, 0.0, r->ylo - r->m[1] + shift, r->yhi - r->m[1] + shift);
-    out[1] = 0.0;
+    out[1] = out[2] = out[3] = 0.0;
 }
 
+/* The integral into *v; returns its relative error estimate (0 by erf). */
 static double gm_box(const double *a, const double *m, size_t dim, const double *lo,
-                     const double *hi)
+                     const double *hi, double *v)
 {
-    if (dim == 1u)
-        return gauss_seg(a[0], m[0], lo[0], hi[0]);
+    if (dim == 1u) {
+        *v = gauss_seg(a[0], m[0], lo[0], hi[0]);
+        return 0.0;
+    }
     gm_rect r = {{a[0], a[1], a[2]}, {m[0], m[1]}, lo[1], hi[1]};
-    double v[MCS_INTEG_QUAD_N];
-    (void)mcs_integ_quad_(gm_column, &r, lo[0], hi[0], QUAD_REL, v);
-    return v[0];
+    const double none[MCS_INTEG_QUAD_N] = {0.0, 0.0, 0.0, 0.0};
+    double w[MCS_INTEG_QUAD_N], e[MCS_INTEG_QUAD_N];
+    mcs_integ_quad_(gm_column, &r, lo[0], hi[0], QUAD_REL, none, w, e);
+    *v = w[0];
+    return rel_error(w, e);
 }
 
-/* int over B_i cap B_j of g_i g_j. */
-static double gm_pair(const mcs_integrand *f, size_t i, size_t j)
+/* int over B_i cap B_j of g_i g_j into *v; returns its relative error estimate. */
+static double gm_pair(const mcs_integrand *f, size_t i, size_t j, double *v)
 {
+    *v = 0.0;
     const size_t d = f->dim;
     double lo[2], hi[2];
     for (size_t k = 0; k < d; ++k) {
@@ -238,7 +295,9 @@ static double gm_pair(const mcs_integrand *f, size_t i, size_t j)
         const double qj = aj[0] * mj[0] * mj[0] + 2.0 * aj[1] * mj[0] * mj[1] + aj[2] * mj[1] * mj[1];
         c = qi + qj - (m[0] * b0 + m[1] * b1);
     }
-    return (i == j || c <= 0.0 ? 1.0 : exp(-0.5 * c)) * gm_box(a, m, d, lo, hi);
+    const double e = gm_box(a, m, d, lo, hi, v);
+    *v *= i == j || c <= 0.0 ? 1.0 : exp(-0.5 * c);
+    return e;
 }
 
 static void gm_precision(double angle, double v0, double v1, double *a)
@@ -272,14 +331,19 @@ static void gm_draw(mcs_integrand *g, mcs_rng *rng)
         const double v1 = vmin + mcs_rng_double_(rng) * (vmax - vmin);
         gm_precision(angle, v0, v1, g->precision[i]);
     }
-    double i1 = 0.0, q = 0.0;
+    /* every term is positive: the sums' relative errors are at most the terms' */
+    double i1 = 0.0, q = 0.0, err = 0.0, v;
     for (size_t i = 0; i < g->boxes; ++i) {
-        i1 += gm_box(g->precision[i], g->mean[i], d, g->box_lo[i], g->box_hi[i]);
-        for (size_t j = i; j < g->boxes; ++j)
-            q += (j == i ? 1.0 : 2.0) * gm_pair(g, i, j);
+        err = fmax(err, gm_box(g->precision[i], g->mean[i], d, g->box_lo[i], g->box_hi[i], &v));
+        i1 += v;
+        for (size_t j = i; j < g->boxes; ++j) {
+            err = fmax(err, gm_pair(g, i, j, &v));
+            q += (j == i ? 1.0 : 2.0) * v;
+        }
     }
     g->integral = i1;
     g->square = q;
+    g->error = err;
 }
 
 /* A_i symmetric with eigenvalues in [1 / vmax, 1 / vmin] (1e-12 slack). */
@@ -336,7 +400,8 @@ static double gm_eval(const mcs_integrand *f, const double *x)
 int mcs_integ_utk_valid_(const mcs_integrand *f)
 {
     const double i1 = f->integral, q = f->square;
-    if (!finite(i1) || !finite(q) || !(i1 >= 0.0) || !(q >= i1 * i1 * (1.0 - 1e-9)))
+    if (!real_ok(i1) || !real_ok(q) || !(i1 >= 0.0) || !(q >= i1 * i1 * (1.0 - 1e-9)) ||
+        !(f->error >= 0.0 && f->error < 1.0))
         return 0; /* Cauchy-Schwarz on the unit square: Q >= I^2 */
     return f->family == MCS_INTEGRAND_BLINN_PHONG ? bp_valid(f) : gm_valid(f);
 }

@@ -255,9 +255,9 @@ static void test_blinn_phong_midpoint_sum_of_the_estimate_is_its_integral(void)
             }
         s /= (double)G * G;
         s2 /= (double)G * G;
-        /* O(h^2) with h = 1/600: a few 1e-5 */
-        TEST_ASSERT_DOUBLE_WITHIN(1e-4 * i1, i1, s);
-        TEST_ASSERT_DOUBLE_WITHIN(1e-4 * q, q, s2);
+        /* O(h^2) with h = 1/600: 1e-5 to 1e-4 (the lobe can be sharp) */
+        TEST_ASSERT_DOUBLE_WITHIN(5e-4 * i1, i1, s);
+        TEST_ASSERT_DOUBLE_WITHIN(5e-4 * q, q, s2);
     }
 }
 
@@ -327,8 +327,9 @@ static void test_draws_are_reproducible_in_range_and_blinn_phong_is_2d_only(void
         const size_t d = t & 1 ? 2u : 1u + (size_t)(t & 2) / 2u;
         const mcs_integrand x = draw(fam, d, &a), y = draw(fam, d, &b);
         TEST_ASSERT_EQUAL_MEMORY(&x, &y, sizeof x);
+        TEST_ASSERT_TRUE(x.error < 1e-12); /* the quadrature's estimate */
         if (fam == MCS_INTEGRAND_BLINN_PHONG) {
-            TEST_ASSERT_TRUE(x.shading[1] < 0.0 && x.view[0] >= 0.0 && x.view[1] <= 0.0);
+            TEST_ASSERT_TRUE(x.shading[1] <= -0.01 && x.view[0] >= 0.0 && x.view[1] <= 0.0);
             TEST_ASSERT_TRUE(x.exponent >= 10.0 && x.exponent <= 100.0);
             TEST_ASSERT_TRUE(x.integral > 0.0);
         } else {
