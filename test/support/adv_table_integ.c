@@ -57,6 +57,13 @@ static int t_integrand_is_periodic(const adv_val *a)
                      a[0].e == MCS_INTEGRAND_COSINE;
     return p == want ? MCS_OK : broken("is_periodic(%d) = %d", a[0].e, p);
 }
+static int t_integrand_has_dim(const adv_val *a)
+{
+    const int h = mcs_integrand_has_dim((mcs_integrand_family)a[0].e, a[1].z);
+    const int want = a[0].e >= 0 && a[0].e < MCS_INTEGRAND_FAMILIES &&
+                     (a[1].z == 2u || (a[1].z == 1u && a[0].e != MCS_INTEGRAND_BLINN_PHONG));
+    return h == want ? MCS_OK : broken("has_dim(%d, %zu) = %d", a[0].e, a[1].z, h);
+}
 static int t_integrand_draw(const adv_val *a)
 {
     const int st = mcs_integrand_draw(a[0].p, (mcs_integrand_family)a[1].e, a[2].z, a[3].p);
@@ -121,8 +128,11 @@ static int t_integrate_exact(const adv_val *a) { return mcs_integrate_exact(a[0]
 static const uint8_t one_d[1] = {1};
 
 const adv_fn adv_fns_integ[] = {
-    FN(integrand_family_str, EF_NONE, 1, 0, ENM("family", 0, 0, 4, F_FREE)),
-    FN(integrand_is_periodic, EF_NONE, 1, 0, ENM("family", 0, 0, 4, F_FREE)),
+    FN(integrand_family_str, EF_NONE, 1, 0, ENM("family", 0, 0, MCS_INTEGRAND_FAMILIES - 1, F_FREE)),
+    FN(integrand_is_periodic, EF_NONE, 1, 0, ENM("family", 0, 0, MCS_INTEGRAND_FAMILIES - 1, F_FREE)),
+    FN(integrand_has_dim, EF_NONE, 1, 0,
+       ENM("family", MCS_INTEGRAND_BLINN_PHONG, 0, MCS_INTEGRAND_FAMILIES - 1, F_FREE),
+       SZ_FREE("dim", 2)),
     FN(integrand_draw, EF_NONE, 1, 0, OBJ_OUT("f", T_INTEGRAND), FAMILY, DIM,
        OBJ_IO("rng", T_RNG, 0)),
     FN(integrand_eval, EF_NONE, 1, 0, F_IN, AIN("x", E_D, R_POINT, CONST_LEN(2), 0),
