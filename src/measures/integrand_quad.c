@@ -1,7 +1,7 @@
 /* Adaptive Gauss-Kronrod quadrature for the integrands without a closed
  * form (integrand_utk.c): the (7, 15) pair on a panel, bisected depth first
  * until the panel's error estimate is within its share (its length over
- * b - a) of the tolerance, or at the rounding floor, or 30 bisections deep,
+ * b - a) of the tolerance, or at the rounding floor, or 24 bisections deep,
  * or MAX_PANELS computed;
  * the estimates of the panels kept add up to the error returned. The
  * estimate per panel is QUADPACK's (Piessens et al. 1983, qk15): with
@@ -14,7 +14,7 @@
 #include <math.h>
 #include <stddef.h>
 
-#define MAX_DEPTH 30
+#define MAX_DEPTH 24
 #define MAX_PANELS 2048 /* per call: a guard that the tolerances above never meet */
 
 /* Kronrod nodes on [-1, 1] (the odd ones are Gauss's), and the weights. */
@@ -70,40 +70,53 @@ static panel gk15(mcs_integ_quad_fn fn, void *ctx, double a, double b)
     return p;
 }
 
-/* Adds the integrals of [a, b] (whose panel is p) into out[] and their
- * error estimates into err[]; tol[] is the tolerance per unit length,
- * *left the panels the call may still compute. A panel at its rounding
- * floor, or below DBL_MIN (subnormal values), is kept. */
-static void refine(mcs_integ_quad_fn fn, void *ctx, double a, double b, const panel *p,
-                   const double *tol, int depth, int *left, double *out, double *err)
+/* 1 if panel p of [a, b] is kept: within its share of tol[] (per unit
+ * length) or at its rounding floor, or below DBL_MIN (subnormal values). */
+static int kept(const panel *p, double a, double b, const double *tol)
 {
-    int ok = 1;
     for (int n = 0; n < MCS_INTEG_QUAD_N; ++n)
-        ok = ok && (p->e[n] <= tol[n] * (b - a) || p->e[n] <= 2.0 * p->round[n] + DBL_MIN);
-    if (ok || depth == MAX_DEPTH || *left < 2) {
-        for (int n = 0; n < MCS_INTEG_QUAD_N; ++n) {
-            out[n] += p->v[n];
-            err[n] += p->e[n];
-        }
-        return;
-    }
-    const double m = 0.5 * (a + b);
-    *left -= 2;
-    const panel l = gk15(fn, ctx, a, m);
-    refine(fn, ctx, a, m, &l, tol, depth + 1, left, out, err);
-    const panel r = gk15(fn, ctx, m, b);
-    refine(fn, ctx, m, b, &r, tol, depth + 1, left, out, err);
+        if (!(p->e[n] <= tol[n] * (b - a) || p->e[n] <= 2.0 * p->round[n] + DBL_MIN))
+            return 0;
+    return 1;
 }
 
 void mcs_integ_quad_(mcs_integ_quad_fn fn, void *ctx, double a, double b, double rel,
                      const double *floors, double *out, double *err)
 {
-    const panel p = gk15(fn, ctx, a, b);
+    panel p = gk15(fn, ctx, a, b);
     double tol[MCS_INTEG_QUAD_N];
     for (int n = 0; n < MCS_INTEG_QUAD_N; ++n) {
         tol[n] = fmax(rel * fabs(p.v[n]), floors[n]) / (b - a);
         out[n] = err[n] = 0.0;
     }
-    int left = MAX_PANELS - 1;
-    refine(fn, ctx, a, b, &p, tol, 0, &left, out, err);
+    /* depth first: the left half now, the right one's ends on a stack (a
+     * split pushes one, so MAX_DEPTH entries suffice) */
+    double sa[MAX_DEPTH], sb[MAX_DEPTH];
+    unsigned char sd[MAX_DEPTH];
+    int top = 0, depth = 0, left = MAX_PANELS - 1;
+    double ca = a, cb = b;
+    for (;;) {
+        if (kept(&p, ca, cb, tol) || depth == MAX_DEPTH || left < 2) {
+            for (int n = 0; n < MCS_INTEG_QUAD_N; ++n) {
+                out[n] += p.v[n];
+                err[n] += p.e[n];
+            }
+            if (top == 0)
+                return;
+            --top;
+            ca = sa[top];
+            cb = sb[top];
+            depth = sd[top];
+            p = gk15(fn, ctx, ca, cb);
+            continue;
+        }
+        const double m = 0.5 * (ca + cb);
+        sa[top] = m;
+        sb[top] = cb;
+        sd[top++] = (unsigned char)(depth + 1);
+        cb = m;
+        ++depth;
+        left -= 2;
+        p = gk15(fn, ctx, ca, cb);
+    }
 }

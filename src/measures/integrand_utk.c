@@ -270,7 +270,7 @@ static double gm_pair(const mcs_integrand *f, size_t i, size_t j, double *v)
 {
     *v = 0.0;
     const size_t d = f->dim;
-    double lo[2], hi[2];
+    double lo[2] = {0.0, 0.0}, hi[2] = {0.0, 0.0};
     for (size_t k = 0; k < d; ++k) {
         lo[k] = fmax(f->box_lo[i][k], f->box_lo[j][k]);
         hi[k] = fmin(f->box_hi[i][k], f->box_hi[j][k]);
