@@ -175,9 +175,9 @@ for kind in random jittered; do
 done
 
 # -------------------------------------------- reproducible, stdin, files
-"$MCSPEC" integrate jittered --k 16 --sets 8 --seed 9 --csv >"$tmp/a" 2>&1
-"$MCSPEC" integrate jittered --k 16 --sets 8 --seed 9 --csv >"$tmp/b" 2>&1
-"$MCSPEC" integrate jittered --k 16 --sets 8 --seed 10 --csv >"$tmp/c" 2>&1
+"$MCSPEC" integrate jittered --k 16 --sets 8 --integrands 4 --seed 9 --csv >"$tmp/a" 2>&1
+"$MCSPEC" integrate jittered --k 16 --sets 8 --integrands 4 --seed 9 --csv >"$tmp/b" 2>&1
+"$MCSPEC" integrate jittered --k 16 --sets 8 --integrands 4 --seed 10 --csv >"$tmp/c" 2>&1
 if cmp -s "$tmp/a" "$tmp/b"; then ok; else bad "the same seed gave different output"; fi
 if cmp -s "$tmp/a" "$tmp/c"; then bad "another seed gave the same output"; else ok; fi
 awk 'BEGIN { srand(3); for (s = 0; s < 6; ++s) { for (i = 0; i < 4; ++i) print rand(), rand(); print "#" } }' >"$tmp/k4"
@@ -201,12 +201,12 @@ if succeeds "--exact jittered" "$MCSPEC" integrate --exact jittered --csv --fami
     within "a jittered file against exact" "$tmp/out"
     for fam in gaussian gaussian_periodic heaviside disk cosine; do column_is "--exact $fam" "$tmp/out" "$fam" 5 set; done
 fi
-if succeeds "table" "$MCSPEC" integrate jittered --k 16 --k 64 --sets 8 && grep -q '^convergence' "$tmp/out" &&
+if succeeds "table" "$MCSPEC" integrate jittered --k 16 --k 64 --sets 8 --integrands 4 && grep -q '^convergence' "$tmp/out" &&
     grep -q '^family  *K  *mse' "$tmp/out"; then ok; else bad "table: no header or convergence section"; fi
 
 # ---------------------------------------------------------------- figure
 if command -v gnuplot >/dev/null 2>&1; then
-    if succeeds "--plot" "$MCSPEC" integrate jittered --k 16 --k 64 --sets 8 --plot "$tmp/fig.png" &&
+    if succeeds "--plot" "$MCSPEC" integrate jittered --k 16 --k 64 --sets 8 --integrands 4 --plot "$tmp/fig.png" &&
         [ -s "$tmp/fig.png" ]; then ok; else bad "--plot wrote no figure"; fi
 else
     skip "--plot (no gnuplot)"
