@@ -138,7 +138,10 @@ typedef enum {
 } mcs_integrand_family;
 
 /* One integrand: transparent, fixed size, no pointers. Fields a family does
- * not use are 0. */
+ * not use are 0. blinn_phong's frame and the utk families' integral, square
+ * and error are computed by mcs_integrand_draw from the parameters: an
+ * integrand whose parameters are changed by hand keeps stale values (the
+ * frame is checked against p, the others only for range). */
 typedef struct {
     mcs_integrand_family family;
     size_t dim;       /* 1 or 2; 0 before mcs_integrand_draw */
