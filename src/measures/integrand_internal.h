@@ -35,6 +35,10 @@ int mcs_integ_utk_valid_(const mcs_integrand *f);
 /* Fills g (family and dim set, the rest 0) from rng and computes its I and Q. */
 void mcs_integ_utk_draw_(mcs_integrand *g, mcs_rng *rng);
 
+/* A 1D gaussian_mixture's int f and int f^2 over [x0, x1], by erf. */
+void mcs_integ_mixture_cell_(const mcs_integrand *f, double x0, double x1, double *i1,
+                             double *square);
+
 /* f at x (valid f of a utk family): no checks. */
 double mcs_integ_utk_eval_(const mcs_integrand *f, const double *x);
 
@@ -53,8 +57,8 @@ void mcs_integ_moments_(const mcs_integrand *f, double *integral, double *square
 double mcs_integ_halfplane_area_(const mcs_integrand *f, double x0, double x1, double y0,
                                  double y1);
 
-/* 1 if the exact jittered-grid MSE of a valid f is known (not for the utk
- * families). */
+/* 1 if the exact jittered-grid MSE of a valid f is known (not for
+ * blinn_phong and the 2D gaussian_mixture). */
 int mcs_integ_has_jittered_(const mcs_integrand *f);
 
 /* The exact jittered-grid MSE of a valid f over mx x my cells (my = 1 in

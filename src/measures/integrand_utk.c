@@ -300,6 +300,29 @@ static double gm_pair(const mcs_integrand *f, size_t i, size_t j, double *v)
     return e;
 }
 
+void mcs_integ_mixture_cell_(const mcs_integrand *f, double x0, double x1, double *i1,
+                             double *square)
+{
+    double si = 0.0, sq = 0.0;
+    for (size_t i = 0; i < f->boxes; ++i) {
+        const double lo = fmax(x0, f->box_lo[i][0]), hi = fmin(x1, f->box_hi[i][0]);
+        if (!(hi > lo))
+            continue;
+        si += gauss_seg(f->precision[i][0], f->mean[i][0], lo, hi);
+        for (size_t j = i; j < f->boxes; ++j) {
+            const double l2 = fmax(lo, f->box_lo[j][0]), h2 = fmin(hi, f->box_hi[j][0]);
+            if (!(h2 > l2))
+                continue;
+            const double ai = f->precision[i][0], aj = f->precision[j][0], a = ai + aj;
+            const double m = (ai * f->mean[i][0] + aj * f->mean[j][0]) / a;
+            const double dm = f->mean[i][0] - f->mean[j][0], c = ai * aj / a * dm * dm;
+            sq += (j == i ? 1.0 : 2.0) * exp(-0.5 * c) * gauss_seg(a, m, l2, h2);
+        }
+    }
+    *i1 = si;
+    *square = sq;
+}
+
 static void gm_precision(double angle, double v0, double v1, double *a)
 {
     const double c = cos(angle), s = sin(angle), i0 = 1.0 / v0, i1 = 1.0 / v1;

@@ -300,6 +300,89 @@ static void test_random_sets_have_mse_var_over_k_within_5_standard_errors(void)
     random_mse(MCS_INTEGRAND_GAUSSIAN_MIXTURE, 1u, 33u, 6000);
 }
 
+/* ---- The 1D mixture's stratified (jittered) MSE ------------------------------------ */
+
+/* sum over the m cells of K int_C f^2 - (K int_C f)^2, over K^2, each cell's
+ * integrals by 10-point Gauss-Legendre on its pieces between box edges. */
+static double strata_reference(const mcs_integrand *f, size_t m)
+{
+    double sum = 0.0;
+    for (size_t a = 0; a < m; ++a) {
+        double cuts[20] = {(double)a / m, (a + 1.0) / m};
+        size_t n = 2;
+        for (size_t b = 0; b < f->boxes; ++b)
+            for (int e = 0; e < 2; ++e) {
+                const double x = e ? f->box_hi[b][0] : f->box_lo[b][0];
+                if (x > cuts[0] && x < cuts[1])
+                    cuts[n++] = x;
+            }
+        const size_t nx = axis_rule(cuts, n, 2, ax, aw);
+        double i1 = 0.0, j = 0.0;
+        for (size_t i = 0; i < nx; ++i) {
+            const double p[1] = {ax[i]};
+            double v;
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_integrand_eval(f, p, &v));
+            i1 += aw[i] * v;
+            j += aw[i] * v * v;
+        }
+        const double k = (double)m, var = k * j - (k * i1) * (k * i1);
+        sum += var > 0.0 ? var : 0.0;
+    }
+    return sum / ((double)m * (double)m);
+}
+
+static void test_mixture_1d_stratified_mse_matches_cells_and_sets(void)
+{
+    mcs_rng rng;
+    mcs_rng_seed(&rng, 25u, 5u);
+    double worst = 0.0;
+    for (int t = 0; t < 6; ++t) {
+        const mcs_integrand f = draw(MCS_INTEGRAND_GAUSSIAN_MIXTURE, 1u, &rng);
+        const size_t ms[3] = {1u, 7u, 64u};
+        for (int i = 0; i < 3; ++i) {
+            double v;
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_integrand_jittered_mse(&f, ms[i], 1u, &v));
+            const double r = strata_reference(&f, ms[i]);
+            worst = fmax(worst, fabs(v - r) / r);
+            TEST_ASSERT_DOUBLE_WITHIN(1e-10 * r, r, v);
+        }
+        double var;
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_integrand_variance(&f, &var));
+        double one;
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_integrand_jittered_mse(&f, 1u, 1u, &one));
+        TEST_ASSERT_DOUBLE_WITHIN(1e-12 * var, var, one); /* one stratum: random */
+    }
+    /* stratified sets of K = 16 against it, and 10 % off seen */
+    enum { M = 4, K = 16, T = 6000 };
+    mcs_integrand fs[M];
+    for (int i = 0; i < M; ++i)
+        fs[i] = draw(MCS_INTEGRAND_GAUSSIAN_MIXTURE, 1u, &rng);
+    mcs_integrate acc;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_integrate_init(&acc, MCS_INTEGRAND_GAUSSIAN_MIXTURE, 1u));
+    double pts[K];
+    for (int t = 0; t < T; ++t) {
+        for (int j = 0; j < K; ++j) {
+            double u;
+            TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_rng_double(&rng, &u));
+            pts[j] = (j + u) / K;
+            if (pts[j] >= 1.0)
+                pts[j] = nextafter(1.0, 0.0);
+        }
+        TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_integrate_add(&acc, M, fs, K, pts,
+                                                        MCS_INTEGRATE_JITTERED, K, 1u));
+    }
+    double mse, se, ex;
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_integrate_mse(&acc, &mse));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_integrate_mse_stderr(&acc, &se));
+    TEST_ASSERT_EQUAL_INT(MCS_OK, mcs_integrate_exact(&acc, &ex));
+    printf("gaussian_mixture 1D strata: cells against quadrature %.2e; K = %d, %d sets: mse %.5g "
+           "exact %.5g z %.2f; 10 %% off: z %.1f, %.1f\n", worst, K, T, mse, ex, (mse - ex) / se,
+           (mse - 1.1 * ex) / se, (mse - 0.9 * ex) / se);
+    TEST_ASSERT_TRUE(fabs(mse - ex) < 5.0 * se);
+    TEST_ASSERT_TRUE(fabs(mse - 1.1 * ex) > 5.0 * se);
+    TEST_ASSERT_TRUE(fabs(mse - 0.9 * ex) > 5.0 * se);
+}
+
 /* ---- Draws and refusals ---------------------------------------------------------------- */
 
 static void test_draws_are_reproducible_in_range_and_blinn_phong_is_2d_only(void)
@@ -338,7 +421,8 @@ static void test_draws_are_reproducible_in_range_and_blinn_phong_is_2d_only(void
         }
         double v;
         TEST_ASSERT_EQUAL_INT(0, mcs_integrand_is_periodic(fam));
-        TEST_ASSERT_EQUAL_INT(MCS_ERR_DOMAIN, mcs_integrand_jittered_mse(&x, 2u, d == 2u ? 2u : 1u, &v));
+        TEST_ASSERT_EQUAL_INT(d == 2u ? MCS_ERR_DOMAIN : MCS_OK, /* 1D mixture: by erf */
+                              mcs_integrand_jittered_mse(&x, 2u, d == 2u ? 2u : 1u, &v));
         TEST_ASSERT_EQUAL_INT(MCS_ERR_DOMAIN, mcs_integrand_power(&x, 1, 0, &v));
     }
     for (size_t n = 4; n <= 8; ++n)
@@ -404,6 +488,7 @@ int main(void)
     RUN_TEST(test_blinn_phong_integrals_match_the_area_form_over_the_quad);
     RUN_TEST(test_blinn_phong_midpoint_sum_of_the_estimate_is_its_integral);
     RUN_TEST(test_random_sets_have_mse_var_over_k_within_5_standard_errors);
+    RUN_TEST(test_mixture_1d_stratified_mse_matches_cells_and_sets);
     RUN_TEST(test_draws_are_reproducible_in_range_and_blinn_phong_is_2d_only);
     RUN_TEST(test_a_tampered_integrand_is_refused_and_writes_nothing);
     RUN_TEST(test_a_jittered_reference_leaves_the_exact_column_empty);
