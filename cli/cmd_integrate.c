@@ -53,7 +53,7 @@ static const char help[] =
     "pi m x + phi), integral 1), and utk's blinn_phong (a Blinn-Phong lobe lit by\n"
     "a quad light, 2D only) and gaussian_mixture (Gaussians clipped to random\n"
     "boxes), integrated once per integrand by adaptive quadrature (error below\n"
-    "1e-12 relative; no jittered exact value). Definitions: docs/measures.md.\n"
+    "1e-12 relative; no 2D jittered exact value). Definitions: docs/measures.md.\n"
     "\n"
     "Input (FILE, '-' for standard input): one point per line, D coordinates in\n"
     "[0,1); a line starting with '#' ends a set (utk's convention). Sets are\n"

@@ -50,8 +50,9 @@
  * The jittered grid of m x n cells (one uniform point per cell, K = m n;
  * 1D: K = m cells): each cell C holds a point uniform in it, so
  *     MSE = (1/K^2) sum_C (K int_C f^2 - (K int_C f)^2),
- * exact from the integrals over each cell (not for blinn_phong and
- * gaussian_mixture, whose cells would each need a quadrature): per axis by erf for the
+ * exact from the integrals over each cell (not for blinn_phong and the 2D
+ * gaussian_mixture, whose cells would each need a quadrature; the 1D
+ * mixture's by erf per cell): per axis by erf for the
  * Gaussians (the periodised one over its images; a product of two images is
  * a Gaussian of width s / sqrt 2) and by sines for the cosines, where the
  * separable sum over cells factors into sums per axis (O(m + n)); the
@@ -211,8 +212,8 @@ mcs_status mcs_integrand_integral(const mcs_integrand *f, double *out);
 mcs_status mcs_integrand_variance(const mcs_integrand *f, double *out);
 
 /* The exact mean squared error of the jittered grid of strata_x x strata_y
- * cells (1D: strata_x cells, strata_y = 1). MCS_ERR_DOMAIN (blinn_phong,
- * gaussian_mixture: not known), MCS_ERR_K_RANGE (a strata count
+ * cells (1D: strata_x cells, strata_y = 1). MCS_ERR_DOMAIN (blinn_phong
+ * and the 2D gaussian_mixture: not known), MCS_ERR_K_RANGE (a strata count
  * 0, strata_y not 1 in 1D, or strata_x strata_y above
  * MCS_INTEGRAND_JITTERED_MAX_K).
  * *out untouched on error. */
