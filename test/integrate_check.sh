@@ -16,7 +16,13 @@
 #   every family's mse within 5 standard errors of exact, and for the
 #   periodic families predicted - 5 se <= mse <= predicted + tail + 5 se;
 #   convergence slopes over K = 64..4096 within 0.1 of the published rate
-#   (random -1; jittered -2 smooth, -1.5 discontinuous); the same bytes for
+#   (random -1; jittered -2 smooth, -1.5 discontinuous); utk's families
+#   (blinn_phong, 2D only, and gaussian_mixture) on their own, as their
+#   quadratures cost about a millisecond per integrand: random sets and
+#   1D strata within 5 se of exact, no 2D jittered exact and no prediction,
+#   blinn_phong's slopes,
+#   blinn_phong absent on 1D points and refused there by --family, and a
+#   --family list; the same bytes for
 #   the same seed and different ones for another; standard input; files
 #   grouped by K; a figure (when gnuplot is there);
 #   every bad usage and input: exit 2, one line on stderr, nothing on stdout.
@@ -89,6 +95,10 @@ usage_error "--k twice" "--k 16 given twice" "$MCSPEC" integrate random --k 16 -
 usage_error "--k with no value" "--k needs a value" "$MCSPEC" integrate random --k
 usage_error "--k with files" "give one KIND with --k, not files" "$MCSPEC" integrate random jittered --k 16
 usage_error "unknown family" "unknown family 'bump'" "$MCSPEC" integrate random --k 16 --family bump
+usage_error "unknown family in a list" "unknown family 'bump'" "$MCSPEC" integrate random --k 16 --family disk,bump
+usage_error "blinn_phong in 1D" "family blinn_phong has no 1D integrands" "$MCSPEC" integrate random --dim 1 --k 16 --family blinn_phong
+printf '0.5\n#\n' >"$tmp/one1"
+usage_error "blinn_phong on a 1D file" "family blinn_phong has no 1D integrands" "$MCSPEC" integrate --family disk,blinn_phong "$tmp/one1"
 usage_error "--sets with files" "--sets is for a named pattern" "$MCSPEC" integrate --sets 4 "$tmp/one"
 usage_error "--sets 0" "--sets expects" "$MCSPEC" integrate random --k 16 --sets 0
 usage_error "--integrands 0" "--integrands expects" "$MCSPEC" integrate random --k 16 --integrands 0
@@ -124,7 +134,7 @@ fi
 # --------------------------------------------------- named patterns, exact
 for run_ in "random --dim 2" "jittered --dim 2" "random --dim 1" "stratified --dim 1"; do
     # shellcheck disable=SC2086
-    if succeeds "$run_" "$MCSPEC" integrate $run_ --k 64 --k 256 --sets 64 --integrands 8 --seed 5 --csv; then
+    if succeeds "$run_" "$MCSPEC" integrate $run_ --k 64 --k 256 --sets 64 --integrands 8 --seed 5 --csv --family gaussian,gaussian_periodic,heaviside,disk,cosine; then
         csv_shape "$run_ --csv" "$tmp/out" 10
         within "$run_ against exact and predicted" "$tmp/out"
         for fam in gaussian gaussian_periodic heaviside disk cosine; do column_is "$run_ $fam exact" "$tmp/out" "$fam" 5 set; done
@@ -135,46 +145,70 @@ done
 
 # ----------------------------------------------------------- slopes
 for kind in random jittered; do
-    if succeeds "$kind slopes" "$MCSPEC" integrate "$kind" --k 64 --k 256 --k 1024 --k 4096 --sets 16 --integrands 8 --freq 0 --seed 2 --csv; then
+    if succeeds "$kind slopes" "$MCSPEC" integrate "$kind" --k 64 --k 256 --k 1024 --k 4096 --sets 16 --integrands 8 --freq 0 --seed 2 --csv --family gaussian,gaussian_periodic,heaviside,disk,cosine,gaussian_mixture; then
         col=11; [ "$kind" = jittered ] && col=12
         problems=$(awk -F, -v col="$col" 'NR > 1 && $2 == 4096 { d = $10 - $col; if (d < 0) d = -d; if (!(d < 0.1)) printf "%s slope %s rate %s; ", $1, $10, $col }' "$tmp/out")
         if [ -z "$problems" ]; then ok; else bad "$kind slopes: $problems"; fi
     fi
 done
 
+# ------------------------------------------------------ utk's families
+for run_ in "random --dim 2" "jittered --dim 2" "random --dim 1" "stratified --dim 1"; do
+    # shellcheck disable=SC2086
+    if succeeds "utk $run_" "$MCSPEC" integrate $run_ --k 64 --k 256 --sets 32 --integrands 4 --seed 5 --csv; then
+        case $run_ in *"dim 2") rows_=14 utk_="blinn_phong gaussian_mixture" ;; *) rows_=12 utk_=gaussian_mixture ;; esac
+        csv_shape "utk $run_ --csv" "$tmp/out" "$rows_"
+        within "utk $run_ against exact" "$tmp/out"
+        for fam in $utk_; do
+            # exact: random sets, and strata of the 1D mixture (by erf); none for 2D jittered
+            case "$run_ $fam" in random*|stratified*) want_=set ;; *) want_=empty ;; esac
+            column_is "$run_ $fam exact" "$tmp/out" "$fam" 5 "$want_"
+            column_is "$run_ $fam no prediction" "$tmp/out" "$fam" 6 empty
+        done
+        if [ "$rows_" = 12 ] && grep -q '^blinn_phong' "$tmp/out"; then bad "$run_: blinn_phong rows on 1D points"; else ok; fi
+    fi
+done
+for kind in random jittered; do
+    if succeeds "$kind blinn_phong slope" "$MCSPEC" integrate "$kind" --k 64 --k 256 --k 1024 --k 4096 --sets 16 --integrands 4 --seed 2 --csv --family blinn_phong; then
+        col=11; [ "$kind" = jittered ] && col=12
+        problems=$(awk -F, -v col="$col" 'NR > 1 && $2 == 4096 { d = $10 - $col; if (d < 0) d = -d; if (!(d < 0.1)) printf "%s slope %s rate %s; ", $1, $10, $col }' "$tmp/out")
+        if [ -z "$problems" ]; then ok; else bad "$kind blinn_phong slope: $problems"; fi
+    fi
+done
+
 # -------------------------------------------- reproducible, stdin, files
-"$MCSPEC" integrate jittered --k 16 --sets 8 --seed 9 --csv >"$tmp/a" 2>&1
-"$MCSPEC" integrate jittered --k 16 --sets 8 --seed 9 --csv >"$tmp/b" 2>&1
-"$MCSPEC" integrate jittered --k 16 --sets 8 --seed 10 --csv >"$tmp/c" 2>&1
+"$MCSPEC" integrate jittered --k 16 --sets 8 --integrands 4 --seed 9 --csv >"$tmp/a" 2>&1
+"$MCSPEC" integrate jittered --k 16 --sets 8 --integrands 4 --seed 9 --csv >"$tmp/b" 2>&1
+"$MCSPEC" integrate jittered --k 16 --sets 8 --integrands 4 --seed 10 --csv >"$tmp/c" 2>&1
 if cmp -s "$tmp/a" "$tmp/b"; then ok; else bad "the same seed gave different output"; fi
 if cmp -s "$tmp/a" "$tmp/c"; then bad "another seed gave the same output"; else ok; fi
 awk 'BEGIN { srand(3); for (s = 0; s < 6; ++s) { for (i = 0; i < 4; ++i) print rand(), rand(); print "#" } }' >"$tmp/k4"
 awk 'BEGIN { srand(4); for (s = 0; s < 6; ++s) { for (i = 0; i < 16; ++i) print rand(), rand(); print "#" } }' >"$tmp/k16"
-if succeeds "two files" "$MCSPEC" integrate --csv "$tmp/k16" "$tmp/k4"; then
+if succeeds "two files" "$MCSPEC" integrate --csv --family gaussian,gaussian_periodic,heaviside,disk,cosine "$tmp/k16" "$tmp/k4"; then
     csv_shape "two files --csv" "$tmp/out" 10
     for fam in gaussian gaussian_periodic heaviside disk cosine; do column_is "files $fam exact" "$tmp/out" "$fam" 5 empty; done
     if [ "$(awk -F, 'NR > 1 { printf "%s ", $2 }' "$tmp/out")" = "4 16 4 16 4 16 4 16 4 16 " ]; then ok
     else bad "two files: rows not per family and growing K"; fi
     cp "$tmp/out" "$tmp/files.csv"
     cat "$tmp/k16" "$tmp/k4" >"$tmp/in"
-    if succeeds "standard input" "$MCSPEC" integrate --csv - && cmp -s "$tmp/out" "$tmp/files.csv"; then ok
+    if succeeds "standard input" "$MCSPEC" integrate --csv --family gaussian,gaussian_periodic,heaviside,disk,cosine - && cmp -s "$tmp/out" "$tmp/files.csv"; then ok
     else bad "standard input differs from the files read in the same order"; fi
     : >"$tmp/in"
 fi
 # A jittered 8 x 8 file (awk's generator) with --exact jittered: within 5 se.
 awk 'BEGIN { srand(11); for (s = 0; s < 64; ++s) { for (i = 0; i < 8; ++i) for (j = 0; j < 8; ++j)
     printf "%.9f %.9f\n", (j + 0.999 * rand()) / 8, (i + 0.999 * rand()) / 8; print "#" } }' >"$tmp/jit"
-if succeeds "--exact jittered" "$MCSPEC" integrate --exact jittered --csv "$tmp/jit"; then
+if succeeds "--exact jittered" "$MCSPEC" integrate --exact jittered --csv --family gaussian,gaussian_periodic,heaviside,disk,cosine "$tmp/jit"; then
     csv_shape "--exact jittered --csv" "$tmp/out" 5
     within "a jittered file against exact" "$tmp/out"
     for fam in gaussian gaussian_periodic heaviside disk cosine; do column_is "--exact $fam" "$tmp/out" "$fam" 5 set; done
 fi
-if succeeds "table" "$MCSPEC" integrate jittered --k 16 --k 64 --sets 8 && grep -q '^convergence' "$tmp/out" &&
+if succeeds "table" "$MCSPEC" integrate jittered --k 16 --k 64 --sets 8 --integrands 4 && grep -q '^convergence' "$tmp/out" &&
     grep -q '^family  *K  *mse' "$tmp/out"; then ok; else bad "table: no header or convergence section"; fi
 
 # ---------------------------------------------------------------- figure
 if command -v gnuplot >/dev/null 2>&1; then
-    if succeeds "--plot" "$MCSPEC" integrate jittered --k 16 --k 64 --sets 8 --plot "$tmp/fig.png" &&
+    if succeeds "--plot" "$MCSPEC" integrate jittered --k 16 --k 64 --sets 8 --integrands 4 --plot "$tmp/fig.png" &&
         [ -s "$tmp/fig.png" ]; then ok; else bad "--plot wrote no figure"; fi
 else
     skip "--plot (no gnuplot)"

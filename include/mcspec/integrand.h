@@ -17,6 +17,15 @@
  *                      on the torus; 1D: an arc of length 2 r)
  *   cosine             prod_d (1 + a_d cos(2 pi m_d x_d + phi_d))  a_d in [0,1), m_d in 1..4,
  *                                                                  phi_d in [0, 2 pi)
+ *   blinn_phong        utk's BlinnPhong (2D only): the estimate    p on the unit sphere, p_y <= -0.01;
+ *                      S fr(o, l) cos(l) of the light a quad       o in the octant x, z >= 0, y <= 0;
+ *                      sends to p, l(x) the direction that the     alpha in [10, 100]
+ *                      area-preserving map of spherical
+ *                      rectangles (Urena et al. 2013) gives x
+ *   gaussian_mixture   utk's ClippedGaussianMixture: sum over      n boxes, n in 2d..2d^2; per box
+ *                      boxes B_i of 1[x in B_i] exp(-(x - mu_i)^T  corners uniform, mu_i uniform in
+ *                      A_i (x - mu_i) / 2)                         B_i, A_i^-1 of variances in
+ *                                                                  [0.01, 1] on axes at a uniform angle
  *
  * Exact integrals (I) and integrals of f^2 (Q), per axis where separable:
  *   gaussian           I = prod s sqrt(pi/2) [erf((1 - c)/(s sqrt 2)) + erf(c/(s sqrt 2))],
@@ -26,13 +35,24 @@
  *   heaviside          I = Q = the area of the half-plane inside the square (clipped polygon)
  *   disk               I = Q = pi r^2 (2D), 2 r (1D) (r < 1/2: the disk never meets its images)
  *   cosine             I = 1, Q = prod (1 + a^2 / 2)
+ *   blinn_phong        I, Q by nested adaptive Gauss-Kronrod (7, 15) over x_1 and x_2,
+ *                      x_2 split where the light crosses the horizon (f has a kink)
+ *   gaussian_mixture   1D: by erf; 2D: I = sum_i int_{B_i} g_i, Q = sum_{i,j} int_{B_i cap B_j}
+ *                      g_i g_j (a product of Gaussians is one), each by erf over x_2 and
+ *                      adaptive Gauss-Kronrod (7, 15) over x_1
+ * Both quadratures stop when the sum over panels of |K15 - G7| is below 1e-13
+ * of the result (a conservative estimate of the error for these smooth
+ * panels; docs/measures.md gives the measured errors, below 1e-12 relative).
+ * They run once, in mcs_integrand_draw, which keeps I and Q in the integrand.
  * Var[f(U)] = Q - I^2, so K independent uniform points integrate f with mean
  * squared error exactly (Q - I^2) / K.
  *
  * The jittered grid of m x n cells (one uniform point per cell, K = m n;
  * 1D: K = m cells): each cell C holds a point uniform in it, so
  *     MSE = (1/K^2) sum_C (K int_C f^2 - (K int_C f)^2),
- * exact from the integrals over each cell: per axis by erf for the
+ * exact from the integrals over each cell (not for blinn_phong and the 2D
+ * gaussian_mixture, whose cells would each need a quadrature; the 1D
+ * mixture's by erf per cell): per axis by erf for the
  * Gaussians (the periodised one over its images; a product of two images is
  * a Gaussian of width s / sqrt 2) and by sines for the cosines, where the
  * separable sum over cells factors into sums per axis (O(m + n)); the
@@ -94,6 +114,14 @@ extern "C" {
 #define MCS_INTEGRAND_DISK_MIN_RADIUS 0.1
 #define MCS_INTEGRAND_DISK_MAX_RADIUS 0.4
 #define MCS_INTEGRAND_COSINE_MAX_FREQ 4
+#define MCS_INTEGRAND_BLINN_PHONG_MIN_EXPONENT 10.0
+#define MCS_INTEGRAND_BLINN_PHONG_MAX_EXPONENT 100.0
+#define MCS_INTEGRAND_BLINN_PHONG_MIN_DEPTH 0.01 /* -p_y, the point's distance to the light's plane */
+#define MCS_INTEGRAND_MIXTURE_MIN_VARIANCE 0.01
+#define MCS_INTEGRAND_MIXTURE_MAX_VARIANCE 1.0
+
+/* Most boxes of a gaussian_mixture (2 d^2 in 2D). */
+#define MCS_INTEGRAND_MAX_BOXES 8
 
 /* Most cells of mcs_integrand_jittered_mse (2^22: its O(K) loops over the
  * cells of the indicators stay under a second). */
@@ -105,11 +133,16 @@ typedef enum {
     MCS_INTEGRAND_HEAVISIDE,         /* a half-plane across the square (a step in 1D) */
     MCS_INTEGRAND_DISK,              /* a disk on the torus (an arc in 1D) */
     MCS_INTEGRAND_COSINE,            /* a product of 1 + a cos(2 pi m x + phi), integral 1 */
+    MCS_INTEGRAND_BLINN_PHONG,       /* utk's Blinn-Phong lobe lit by a quad (2D only) */
+    MCS_INTEGRAND_GAUSSIAN_MIXTURE,  /* utk's clipped mixture of Gaussians */
     MCS_INTEGRAND_FAMILIES           /* how many there are */
 } mcs_integrand_family;
 
 /* One integrand: transparent, fixed size, no pointers. Fields a family does
- * not use are 0. */
+ * not use are 0. blinn_phong's frame and the utk families' integral, square
+ * and error are computed by mcs_integrand_draw from the parameters: an
+ * integrand whose parameters are changed by hand keeps stale values (the
+ * frame is checked against p, the others only for range). */
 typedef struct {
     mcs_integrand_family family;
     size_t dim;       /* 1 or 2; 0 before mcs_integrand_draw */
@@ -119,11 +152,23 @@ typedef struct {
     double amp[2];    /* cosine: a_d */
     double phase[2];  /* cosine: phi_d */
     long freq[2];     /* cosine: m_d */
+    double shading[3]; /* blinn_phong: p, the shading point */
+    double view[3];    /* blinn_phong: o, the unit view direction */
+    double exponent;   /* blinn_phong: alpha */
+    double frame[7];   /* blinn_phong: the quad seen from p (solid angle, ...), from p */
+    size_t boxes;      /* gaussian_mixture: n */
+    double box_lo[MCS_INTEGRAND_MAX_BOXES][2], box_hi[MCS_INTEGRAND_MAX_BOXES][2];
+    double mean[MCS_INTEGRAND_MAX_BOXES][2];      /* gaussian_mixture: mu_i */
+    double precision[MCS_INTEGRAND_MAX_BOXES][3]; /* A_i = [[a, b], [b, c]] as (a, b, c); 1D: a */
+    double integral;  /* blinn_phong, gaussian_mixture: I, by the draw */
+    double square;    /* blinn_phong, gaussian_mixture: Q, by the draw */
+    double error;     /* blinn_phong, gaussian_mixture: the quadrature's relative error
+                         estimate for I and Q (0: by erf alone) */
 } mcs_integrand;
 
 /* Name of a family as the command prints it ("gaussian",
- * "gaussian_periodic", "heaviside", "disk", "cosine"), or "unknown"; never
- * NULL. */
+ * "gaussian_periodic", "heaviside", "disk", "cosine", "blinn_phong",
+ * "gaussian_mixture"), or "unknown"; never NULL. */
 const char *mcs_integrand_family_str(mcs_integrand_family family);
 
 /* 1 if the family is periodic on the torus and translation invariant (its
@@ -131,10 +176,15 @@ const char *mcs_integrand_family_str(mcs_integrand_family family);
  * else 0 (an unknown family too). */
 int mcs_integrand_is_periodic(mcs_integrand_family family);
 
+/* 1 if family has integrands in dim dimensions (every family in 1 and 2,
+ * but blinn_phong in 2 only), else 0 (an unknown family too). */
+int mcs_integrand_has_dim(mcs_integrand_family family, size_t dim);
+
 /* Draws one integrand of family in dim dimensions from rng (a fixed number
- * of doubles per family and dim, so M draws from one seed are reproducible).
+ * of doubles per family and dim, so M draws from one seed are reproducible;
+ * blinn_phong and gaussian_mixture then integrate it, about a millisecond).
  * MCS_ERR_NULL, MCS_ERR_KIND (not a family), MCS_ERR_DOMAIN (dim not 1 or
- * 2), MCS_ERR_UNINIT (rng never seeded), MCS_ERR_ALIAS (f overlapping rng).
+ * 2, or not one of the family's: mcs_integrand_has_dim), MCS_ERR_UNINIT (rng never seeded), MCS_ERR_ALIAS (f overlapping rng).
  * *f and rng untouched on error. */
 mcs_status mcs_integrand_draw(mcs_integrand *f, mcs_integrand_family family, size_t dim,
                               mcs_rng *rng);
@@ -162,7 +212,8 @@ mcs_status mcs_integrand_integral(const mcs_integrand *f, double *out);
 mcs_status mcs_integrand_variance(const mcs_integrand *f, double *out);
 
 /* The exact mean squared error of the jittered grid of strata_x x strata_y
- * cells (1D: strata_x cells, strata_y = 1). MCS_ERR_K_RANGE (a strata count
+ * cells (1D: strata_x cells, strata_y = 1). MCS_ERR_DOMAIN (blinn_phong
+ * and the 2D gaussian_mixture: not known), MCS_ERR_K_RANGE (a strata count
  * 0, strata_y not 1 in 1D, or strata_x strata_y above
  * MCS_INTEGRAND_JITTERED_MAX_K).
  * *out untouched on error. */

@@ -209,6 +209,7 @@ _PROTOS = {
     "mcs_radial_oscillations": (_I, [_Z, _Z, _Z, _P, _D, _P]),
     "mcs_integrand_family_str": (_S, [_I]),
     "mcs_integrand_is_periodic": (_I, [_I]),
+    "mcs_integrand_has_dim": (_I, [_I, _Z]),
     "mcs_integrand_draw": (_I, [_P, _I, _Z, _P]),
     "mcs_integrand_predict": (_I, [_P, _Z, _P, _Z, _P, _P]),
     "mcs_integrand_predict_1d": (_I, [_P, _Z, _P, _Z, _P, _P]),

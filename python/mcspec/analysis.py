@@ -256,7 +256,8 @@ def spectral_stats(sets, freq=None):
 
 # ---- integration error -------------------------------------------------------
 
-FAMILIES = ("gaussian", "gaussian_periodic", "heaviside", "disk", "cosine")
+FAMILIES = ("gaussian", "gaussian_periodic", "heaviside", "disk", "cosine", "blinn_phong",
+            "gaussian_mixture")
 
 
 def _family_names():
@@ -323,7 +324,10 @@ def _integrate(items, d, integrands, seed, family, freq):
     m = int(integrands)
     if m < 1:
         raise Error(_lib.ERR_K_RANGE, "integrands must be at least 1, not %d" % m)
-    fams = [f for f in range(len(names)) if family is None or names[f] == family]
+    if family is not None and not fn.integrand_has_dim(names.index(family), d):
+        raise Error(_lib.ERR_DOMAIN, "family %s has no %dD integrands" % (family, d))
+    fams = [f for f in range(len(names)) if (family is None or names[f] == family)
+            and fn.integrand_has_dim(f, d)]
     isz = _lib.struct_size("integrand")
     rngs = {}
     for f in range(len(names)):
@@ -395,7 +399,7 @@ def _integrate(items, d, integrands, seed, family, freq):
                 cols["freq"][i] = g["freq"]
         cols["k"] = np.array(ks)
         slope = _slope(ks, cols["mse"])
-        smooth = names[f] not in ("heaviside", "disk")
+        smooth = names[f] not in ("heaviside", "disk", "gaussian_mixture")
         cols["slope"] = np.full(len(ks), slope)
         cols["rate_random"] = np.full(len(ks), -1.0)
         cols["rate_jittered"] = np.full(len(ks), -(1.0 + (2.0 if smooth else 1.0) / d))

@@ -20,6 +20,8 @@ const char *mcs_integrand_family_str(mcs_integrand_family family)
     case MCS_INTEGRAND_HEAVISIDE: return "heaviside";
     case MCS_INTEGRAND_DISK: return "disk";
     case MCS_INTEGRAND_COSINE: return "cosine";
+    case MCS_INTEGRAND_BLINN_PHONG: return "blinn_phong";
+    case MCS_INTEGRAND_GAUSSIAN_MIXTURE: return "gaussian_mixture";
     case MCS_INTEGRAND_FAMILIES: break;
     }
     return "unknown";
@@ -36,6 +38,13 @@ static int family_ok(mcs_integrand_family family)
     return (unsigned)family < (unsigned)MCS_INTEGRAND_FAMILIES; /* an enum may be unsigned (ARM) */
 }
 
+int mcs_integrand_has_dim(mcs_integrand_family family, size_t dim)
+{
+    if (!family_ok(family) || (dim != 1u && dim != 2u))
+        return 0;
+    return family != MCS_INTEGRAND_BLINN_PHONG || dim == 2u; /* utk's BlinnPhong is 2D */
+}
+
 static int unit_ok(double x)
 {
     return x >= 0.0 && x < 1.0;
@@ -48,8 +57,10 @@ static int in_range(double x, double lo, double hi)
 
 int mcs_integ_valid_(const mcs_integrand *f)
 {
-    if (!family_ok(f->family) || (f->dim != 1u && f->dim != 2u))
+    if (!mcs_integrand_has_dim(f->family, f->dim))
         return 0;
+    if (mcs_integ_is_utk_(f->family))
+        return mcs_integ_utk_valid_(f);
     const size_t d = f->dim;
     for (size_t i = 0; i < d; ++i)
         if (f->family != MCS_INTEGRAND_COSINE && !unit_ok(f->centre[i]))
@@ -67,6 +78,9 @@ int mcs_integ_valid_(const mcs_integrand *f)
         const double n2 = f->normal[0] * f->normal[0] + f->normal[1] * f->normal[1];
         return fabs(n2 - 1.0) <= 1e-12; /* NaN fails too */
     }
+    case MCS_INTEGRAND_BLINN_PHONG:
+    case MCS_INTEGRAND_GAUSSIAN_MIXTURE:
+        break;
     case MCS_INTEGRAND_COSINE:
         for (size_t i = 0; i < d; ++i)
             if (!unit_ok(f->amp[i]) || !in_range(f->phase[i], 0.0, MCS_INTEG_TWO_PI) ||
@@ -85,7 +99,7 @@ mcs_status mcs_integrand_draw(mcs_integrand *f, mcs_integrand_family family, siz
         return MCS_ERR_NULL;
     if (!family_ok(family))
         return MCS_ERR_KIND;
-    if (dim != 1u && dim != 2u)
+    if (!mcs_integrand_has_dim(family, dim))
         return MCS_ERR_DOMAIN;
     if (!mcs_rng_is_seeded_(rng))
         return MCS_ERR_UNINIT;
@@ -95,7 +109,9 @@ mcs_status mcs_integrand_draw(mcs_integrand *f, mcs_integrand_family family, siz
     memset(&g, 0, sizeof g);
     g.family = family;
     g.dim = dim;
-    if (family == MCS_INTEGRAND_COSINE) {
+    if (mcs_integ_is_utk_(family)) {
+        mcs_integ_utk_draw_(&g, rng);
+    } else if (family == MCS_INTEGRAND_COSINE) {
         for (size_t i = 0; i < dim; ++i) {
             g.amp[i] = mcs_rng_double_(rng);
             g.freq[i] = 1 + (long)mcs_rng_bounded_(rng, MCS_INTEGRAND_COSINE_MAX_FREQ);
@@ -178,6 +194,8 @@ double mcs_integ_eval_(const mcs_integrand *f, const double *x)
             v *= 1.0 + f->amp[i] * cos(MCS_INTEG_TWO_PI * (double)f->freq[i] * x[i] + f->phase[i]);
         return v;
     }
+    case MCS_INTEGRAND_BLINN_PHONG:
+    case MCS_INTEGRAND_GAUSSIAN_MIXTURE: return mcs_integ_utk_eval_(f, x);
     case MCS_INTEGRAND_FAMILIES: break;
     }
     return 0.0;
@@ -230,6 +248,11 @@ void mcs_integ_moments_(const mcs_integrand *f, double *integral, double *square
     case MCS_INTEGRAND_COSINE:
         for (size_t i = 0; i < d; ++i)
             q *= 1.0 + 0.5 * f->amp[i] * f->amp[i];
+        break;
+    case MCS_INTEGRAND_BLINN_PHONG:
+    case MCS_INTEGRAND_GAUSSIAN_MIXTURE: /* by quadrature, once, in the draw */
+        i1 = f->integral;
+        q = f->square;
         break;
     case MCS_INTEGRAND_FAMILIES: break;
     }
@@ -308,6 +331,8 @@ mcs_status mcs_integrand_jittered_mse(const mcs_integrand *f, size_t strata_x, s
     const mcs_status st = check(f, out);
     if (st != MCS_OK)
         return st;
+    if (!mcs_integ_has_jittered_(f))
+        return MCS_ERR_DOMAIN;
     if (strata_x == 0u || strata_y == 0u || (f->dim == 1u && strata_y != 1u) ||
         strata_x > (size_t)MCS_INTEGRAND_JITTERED_MAX_K / strata_y)
         return MCS_ERR_K_RANGE;

@@ -287,6 +287,27 @@ static double disk_sum(const mcs_integrand *f, size_t mx, size_t my)
     return sum;
 }
 
+int mcs_integ_has_jittered_(const mcs_integrand *f)
+{
+    return f->family != MCS_INTEGRAND_BLINN_PHONG &&
+           (f->family != MCS_INTEGRAND_GAUSSIAN_MIXTURE || f->dim == 1u);
+}
+
+/* The 1D mixture: per cell by erf (integrand_utk.c); a cell's variance
+ * K J - (K I)^2, clamped at 0 (rounding where f is flat on the cell). */
+static double mixture_sum(const mcs_integrand *f, size_t m)
+{
+    const double k = (double)m;
+    double sum = 0.0;
+    for (size_t a = 0; a < m; ++a) {
+        double i1, j;
+        mcs_integ_mixture_cell_(f, (double)a / k, (double)(a + 1u) / k, &i1, &j);
+        const double v = k * j - (k * i1) * (k * i1);
+        sum += v > 0.0 ? v : 0.0;
+    }
+    return sum;
+}
+
 double mcs_integ_jittered_(const mcs_integrand *f, size_t mx, size_t my)
 {
     const double k = (double)mx * (double)my;
@@ -304,6 +325,8 @@ double mcs_integ_jittered_(const mcs_integrand *f, size_t mx, size_t my)
     }
     case MCS_INTEGRAND_HEAVISIDE: return heaviside_sum(f, mx, my) / (k * k);
     case MCS_INTEGRAND_DISK: return disk_sum(f, mx, my) / (k * k);
+    case MCS_INTEGRAND_GAUSSIAN_MIXTURE: return mixture_sum(f, mx) / (k * k); /* 1D only */
+    case MCS_INTEGRAND_BLINN_PHONG:
     case MCS_INTEGRAND_FAMILIES: break;
     }
     return 0.0;

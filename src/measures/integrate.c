@@ -102,6 +102,8 @@ mcs_status mcs_integrate_add(mcs_integrate *acc, size_t m, const mcs_integrand *
             ex += mcs_integ_jittered_(&fs[i], strata_x, strata_y);
         }
     }
+    if (reference == MCS_INTEGRATE_JITTERED && !mcs_integ_has_jittered_(&fs[0]))
+        reference = MCS_INTEGRATE_NONE; /* no exact value (one family for all of fs) */
     mcs_integrate a = *acc;
     st = mcs_welford_add(&a.sq, sq / (double)m);
     if (st == MCS_OK && reference != MCS_INTEGRATE_NONE)

@@ -28,7 +28,8 @@ enum {
     T_PROV,    /* mcs_io_provenance */
     T_RECORD,  /* a caller buffer of ADV_RECORD_CAP bytes holding a saved record */
     T_RECLEN,  /* the size_t holding that record's length (mcs_io_set_provenance) */
-    T_INTEGRAND, /* mcs_integrand: a disk in 2D (variant 1: 1D; small: the other D; max: a Gaussian) */
+    T_INTEGRAND, /* mcs_integrand: a disk in 2D (variant 1: 1D; small: the other D; max: a Gaussian;
+                    variants 2, 3: utk's Blinn-Phong, Gaussian mixture (small: 1D)) */
     T_INTEGRATE, /* mcs_integrate; its N is the dimension (max: another family) */
     T_PCF,     /* mcs_pcf over a buffer inside the object; its N is the dimension */
     T_COUNT

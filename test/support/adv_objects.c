@@ -82,8 +82,14 @@ static void spacing_build(int ov, mcs_spacing *acc)
 static void integrand_build(int ov, int v, mcs_integrand *f)
 {
     mcs_rng rng;
-    const size_t dim = (v == 1) != (ov == OV_SMALL) ? 1u : 2u;
     (void)mcs_rng_seed(&rng, 25u, 1u);
+    if (v >= 2) { /* utk's: 2 a Blinn-Phong lobe (2D), 3 a clipped Gaussian mixture */
+        const size_t d = v == 3 && ov == OV_SMALL ? 1u : 2u;
+        (void)mcs_integrand_draw(f, v == 2 ? MCS_INTEGRAND_BLINN_PHONG : MCS_INTEGRAND_GAUSSIAN_MIXTURE,
+                                 d, &rng);
+        return;
+    }
+    const size_t dim = (v == 1) != (ov == OV_SMALL) ? 1u : 2u;
     (void)mcs_integrand_draw(f, ov == OV_BIG ? MCS_INTEGRAND_GAUSSIAN : MCS_INTEGRAND_DISK, dim,
                              &rng);
 }

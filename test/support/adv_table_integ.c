@@ -57,6 +57,13 @@ static int t_integrand_is_periodic(const adv_val *a)
                      a[0].e == MCS_INTEGRAND_COSINE;
     return p == want ? MCS_OK : broken("is_periodic(%d) = %d", a[0].e, p);
 }
+static int t_integrand_has_dim(const adv_val *a)
+{
+    const int h = mcs_integrand_has_dim((mcs_integrand_family)a[0].e, a[1].z);
+    const int want = a[0].e >= 0 && a[0].e < MCS_INTEGRAND_FAMILIES &&
+                     (a[1].z == 2u || (a[1].z == 1u && a[0].e != MCS_INTEGRAND_BLINN_PHONG));
+    return h == want ? MCS_OK : broken("has_dim(%d, %zu) = %d", a[0].e, a[1].z, h);
+}
 static int t_integrand_draw(const adv_val *a)
 {
     const int st = mcs_integrand_draw(a[0].p, (mcs_integrand_family)a[1].e, a[2].z, a[3].p);
@@ -117,20 +124,25 @@ static int t_integrate_exact(const adv_val *a) { return mcs_integrate_exact(a[0]
 #define FREQ(nm, b) LNG(nm, b, -(long)MCS_POINTSET_MAX_FREQ, (long)MCS_POINTSET_MAX_FREQ, 0)
 #define STRATA(nm, b) SZ_DEF(nm, b, 1, MCS_INTEGRAND_JITTERED_MAX_K, 0)
 
-/* The 1D integrand (adv_objects.c's variant 1). */
+/* The 1D integrand (adv_objects.c's variant 1); the disk and utk's two
+ * (variants 2 and 3). */
 static const uint8_t one_d[1] = {1};
+static const uint8_t with_utk[3] = {0, 2, 3};
 
 const adv_fn adv_fns_integ[] = {
-    FN(integrand_family_str, EF_NONE, 1, 0, ENM("family", 0, 0, 4, F_FREE)),
-    FN(integrand_is_periodic, EF_NONE, 1, 0, ENM("family", 0, 0, 4, F_FREE)),
+    FN(integrand_family_str, EF_NONE, 1, 0, ENM("family", 0, 0, MCS_INTEGRAND_FAMILIES - 1, F_FREE)),
+    FN(integrand_is_periodic, EF_NONE, 1, 0, ENM("family", 0, 0, MCS_INTEGRAND_FAMILIES - 1, F_FREE)),
+    FN(integrand_has_dim, EF_NONE, 1, 0,
+       ENM("family", MCS_INTEGRAND_BLINN_PHONG, 0, MCS_INTEGRAND_FAMILIES - 1, F_FREE),
+       SZ_FREE("dim", 2)),
     FN(integrand_draw, EF_NONE, 1, 0, OBJ_OUT("f", T_INTEGRAND), FAMILY, DIM,
        OBJ_IO("rng", T_RNG, 0)),
-    FN(integrand_eval, EF_NONE, 1, 0, F_IN, AIN("x", E_D, R_POINT, CONST_LEN(2), 0),
+    FNV(integrand_eval, EF_NONE, with_utk, 0, F_IN, AIN("x", E_D, R_POINT, CONST_LEN(2), 0),
        OUT_VAL("out")),
-    FN(integrand_estimate, EF_NONE, 1, 0, F_IN, K_LEN("k", BK, 1, F_OKIN),
+    FNV(integrand_estimate, EF_NONE, with_utk, 0, F_IN, K_LEN("k", BK, 1, F_OKIN),
        AIN("points", E_D, R_POINT, LEN(L_2SLOT, 1), 0), OUT_VAL("out")),
-    FN(integrand_integral, EF_NONE, 1, 0, F_IN, OUT_NN("out")),
-    FN(integrand_variance, EF_NONE, 1, 0, F_IN, OUT_NN("out")),
+    FNV(integrand_integral, EF_NONE, with_utk, 0, F_IN, OUT_NN("out")),
+    FNV(integrand_variance, EF_NONE, with_utk, 0, F_IN, OUT_NN("out")),
     FN(integrand_jittered_mse, EF_NONE, 1, 0, F_IN, STRATA("strata_x", 4), STRATA("strata_y", 3),
        OUT_NN("out")),
     FN(integrand_power, EF_NONE, 1, 0, F_IN, FREQ("freq_x", 2), FREQ("freq_y", 0), OUT_NN("out")),
