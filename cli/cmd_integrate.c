@@ -215,8 +215,10 @@ static int parse(int argc, char **argv, integ_opts *o)
     if (o->freq_given && o->freq > (size_t)(o->dim == 2u ? MAX_FREQ_2D : MAX_FREQ_1D))
         return cli_fail(CMD, "--freq: at most %d in 2D", MAX_FREQ_2D);
     /* A record holds one accumulator: one family, one K, one input. */
-    if (o->save != NULL && (o->family == NULL || o->nks > 1u || o->nfiles > 1u))
-        return cli_fail(CMD, "--save holds one row: give --family NAME and one --k (or one FILE)");
+    if (o->save != NULL &&
+        (o->family == NULL || strchr(o->family, ',') != NULL || o->nks > 1u || o->nfiles > 1u))
+        return cli_fail(CMD, "--save holds one row: give --family NAME (one family) and one --k "
+                             "(or one FILE)");
     return o->plot != NULL ? cli_plot_check(CMD, o->plot) : 0;
 }
 
@@ -613,7 +615,7 @@ int cli_cmd_integrate(int argc, char **argv)
     if (rc == 0 && o.plot != NULL)
         rc = cli_integrate_plot(CMD, o.plot, &c);
     if (rc == 0 && o.save != NULL) {
-        mcs_integrate *acc = &c.g[0].acc[family_of(o.family)];
+        mcs_integrate *acc = &c.g[0].acc[family_of(o.family, strlen(o.family))];
         const cli_run run = {(unsigned)c.dim, o.kind, c.dim == 1u ? (uint64_t)MCS_MAX_N : 0u,
                              c.g[0].k, 0, 0u, o.seed, 1u, o.sets};
         rc = o.kind != NULL ? cli_save_drawn(CMD, o.save, &run, MCS_IO_KIND_INTEGRATE, acc)

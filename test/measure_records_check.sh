@@ -192,6 +192,7 @@ ln -s "$tmp/d-b.rec" "$tmp/link.rec"
 usage_error "--save onto a symbolic link" "symbolic link" "$MCSPEC" stats --save "$tmp/link.rec" "$tmp/a.txt"
 usage_error "--save into a missing directory" "" "$MCSPEC" pcf --save "$tmp/none/x.rec" "$tmp/a.txt"
 usage_error "integrate --save without --family" "--family" "$MCSPEC" integrate --save "$tmp/x.rec" "$tmp/a.txt"
+usage_error "integrate --save over two families" "one family" "$MCSPEC" integrate --family disk,cosine --save "$tmp/x.rec" "$tmp/a.txt"
 printf '0.1 0.2\n0.3 0.4\n#\n0.5 0.6\n#\n' >"$tmp/two-k.txt"
 usage_error "integrate --save over two K" "sizes K" "$MCSPEC" integrate --family disk --save "$tmp/x.rec" "$tmp/two-k.txt"
 if [ -e "$tmp/x.rec" ]; then bad "a refused --save wrote its file"; else ok; fi
