@@ -7,6 +7,7 @@
 #include "atomic.h"
 #include "cli.h"
 #include "input.h"
+#include "measure_rows.h"
 #include "output.h"
 #include "plot.h"
 #include "progress.h"
@@ -407,11 +408,37 @@ static int cmp_group(const void *a, const void *b)
     return x < y ? -1 : x > y;
 }
 
-static double rate(size_t dim, int f, int jittered)
+double cli_integrate_rate(size_t dim, int f, int jittered)
 {
     const int smooth = f != MCS_INTEGRAND_HEAVISIDE && f != MCS_INTEGRAND_DISK &&
                        f != MCS_INTEGRAND_GAUSSIAN_MIXTURE; /* blinn_phong: continuous, a kink */
     return !jittered ? -1.0 : -(1.0 + (smooth ? 2.0 : 1.0) / (double)dim);
+}
+
+void cli_integrate_row(int csv, const char *family, const char *k, const double *v)
+{
+    if (csv) {
+        printf("%s,%s", family, k);
+        cli_print_values(1, v, 10);
+        return;
+    }
+    char b[6][40];
+    cli_table_double(b[0], 40, 12, v[0]);
+    cli_table_double(b[1], 40, 11, v[1]);
+    cli_table_double(b[2], 40, 12, v[2]);
+    cli_table_double(b[3], 40, 12, v[3]);
+    cli_table_double(b[4], 40, 10, v[4]);
+    const double z = cli_z(v[0], v[2], v[1], 1e-12 * fabs(v[2]));
+    if (isnan(z))
+        snprintf(b[5], 40, "%7s", "-");
+    else
+        snprintf(b[5], 40, "%7.2f", z);
+    printf("%-17s %8s %s %s %s %s %s %s ", family, k[0] != '\0' ? k : "-", b[0], b[1], b[2], b[5],
+           b[3], b[4]);
+    if (isnan(v[5]))
+        printf("%6s\n", "-");
+    else
+        printf("%6.0f\n", v[5]);
 }
 
 static int results(integ_ctx *c)
@@ -483,29 +510,10 @@ static void report(const integ_ctx *c)
             const int pr = !isnan(g->pred[f]);
             const double v[10] = {g->mse[f], g->se[f], g->exact[f], g->pred[f], g->tail[f],
                                   pr ? (double)g->freq : (double)NAN, (double)g->sets,
-                                  c->slope[f], rate(c->dim, f, 0), rate(c->dim, f, 1)};
-            if (o->csv) {
-                printf("%s,%zu", mcs_integrand_family_str((mcs_integrand_family)f), g->k);
-                cli_print_values(1, v, 10);
-                continue;
-            }
-            char b[6][40];
-            cli_table_double(b[0], 40, 12, v[0]);
-            cli_table_double(b[1], 40, 11, v[1]);
-            cli_table_double(b[2], 40, 12, v[2]);
-            cli_table_double(b[3], 40, 12, v[3]);
-            cli_table_double(b[4], 40, 10, v[4]);
-            const double z = cli_z(v[0], v[2], v[1], 1e-12 * fabs(v[2]));
-            if (isnan(z))
-                snprintf(b[5], 40, "%7s", "-");
-            else
-                snprintf(b[5], 40, "%7.2f", z);
-            printf("%-17s %8zu %s %s %s %s %s %s ", mcs_integrand_family_str((mcs_integrand_family)f),
-                   g->k, b[0], b[1], b[2], b[5], b[3], b[4]);
-            if (pr)
-                printf("%6zu\n", g->freq);
-            else
-                printf("%6s\n", "-");
+                                  c->slope[f], cli_integrate_rate(c->dim, f, 0), cli_integrate_rate(c->dim, f, 1)};
+            char k[32];
+            snprintf(k, sizeof k, "%zu", g->k);
+            cli_integrate_row(o->csv, mcs_integrand_family_str((mcs_integrand_family)f), k, v);
         }
     }
     if (o->csv)
@@ -518,7 +526,7 @@ static void report(const integ_ctx *c)
         char b[40];
         cli_table_double(b, sizeof b, 8, c->slope[f]);
         printf("%-17s %s %14.3g %16.3g\n", mcs_integrand_family_str((mcs_integrand_family)f), b,
-               rate(c->dim, f, 0), rate(c->dim, f, 1));
+               cli_integrate_rate(c->dim, f, 0), cli_integrate_rate(c->dim, f, 1));
     }
 }
 

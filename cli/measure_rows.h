@@ -1,4 +1,4 @@
-/* The rows of mcspec pcf, discrepancy and stats, shared with mcspec show
+/* The rows of mcspec pcf, integrate, discrepancy and stats, shared with mcspec show
  * of their records (record_show.c), so a record prints what its run did. */
 #ifndef MCSPEC_CLI_MEASURE_ROWS_H
 #define MCSPEC_CLI_MEASURE_ROWS_H
@@ -34,5 +34,15 @@ void cli_stats_row(int csv, const char *name, const double *v);
 
 /* A pcf row: v = r, pcf, pcf_stderr, exact; the table adds z (cmd_pcf.c). */
 void cli_pcf_row(int csv, const double *v);
+
+/* The published convergence rate of integrand family f in dim dimensions:
+ * random points -1; jittered -(1 + 2/dim) smooth, -(1 + 1/dim) for the
+ * discontinuous families (cmd_integrate.c). */
+double cli_integrate_rate(size_t dim, int f, int jittered);
+
+/* An integrate row: family, k ("" for no one K), v = mse, mse_stderr,
+ * exact, predicted, predicted_tail, freq, sets, slope, rate_random,
+ * rate_jittered (NaN: empty); the table adds z after exact. */
+void cli_integrate_row(int csv, const char *family, const char *k, const double *v);
 
 #endif /* MCSPEC_CLI_MEASURE_ROWS_H */

@@ -56,13 +56,6 @@ static void show_pcf(int csv, const mcs_pcf *acc, const mcs_io_provenance *prov)
 
 /* ---- integrate: family,k,mse,mse_stderr,exact,predicted,... ---- */
 
-/* The published rates, as mcspec integrate prints them. */
-static double rate(size_t dim, mcs_integrand_family f, int jittered)
-{
-    const int smooth = f != MCS_INTEGRAND_HEAVISIDE && f != MCS_INTEGRAND_DISK;
-    return !jittered ? -1.0 : -(1.0 + (smooth ? 2.0 : 1.0) / (double)dim);
-}
-
 static void show_integrate(int csv, const mcs_integrate *acc)
 {
     double v[10];
@@ -72,8 +65,8 @@ static void show_integrate(int csv, const mcs_integrate *acc)
     v[1] = cli_or_nan(mcs_integrate_mse_stderr(acc, &v[1]), &v[1]);
     v[2] = cli_or_nan(mcs_integrate_exact(acc, &v[2]), &v[2]);
     v[6] = (double)acc->sq.count;
-    v[8] = rate(acc->dim, acc->family, 0);
-    v[9] = rate(acc->dim, acc->family, 1);
+    v[8] = cli_integrate_rate(acc->dim, (int)acc->family, 0);
+    v[9] = cli_integrate_rate(acc->dim, (int)acc->family, 1);
     const char *family = mcs_integrand_family_str(acc->family);
     char k[32] = "";
     if (acc->k_min == acc->k_max) /* a merge of records of other K: no one K */
@@ -81,27 +74,13 @@ static void show_integrate(int csv, const mcs_integrate *acc)
     if (csv) {
         puts("family,k,mse,mse_stderr,exact,predicted,predicted_tail,freq,sets,slope,rate_random,"
              "rate_jittered");
-        printf("%s,%s", family, k);
-        cli_print_values(1, v, 10);
-        return;
+    } else {
+        printf("mse: mean over sets of the squared error; z = (mse - exact) / stderr; predicted,\n"
+               "tail and F: not in a record (they need the sets' spectrum and integrands)\n\n");
+        printf("%-17s %8s %12s %11s %12s %7s %12s %10s %6s\n", "family", "K", "mse", "stderr",
+               "exact", "z", "predicted", "tail", "F");
     }
-    printf("mse: mean over sets of the squared error; z = (mse - exact) / stderr; predicted,\n"
-           "tail and F: not in a record (they need the sets' spectrum and integrands)\n\n");
-    printf("%-17s %8s %12s %11s %12s %7s %12s %10s %6s\n", "family", "K", "mse", "stderr",
-           "exact", "z", "predicted", "tail", "F");
-    char b[6][40];
-    cli_table_double(b[0], 40, 12, v[0]);
-    cli_table_double(b[1], 40, 11, v[1]);
-    cli_table_double(b[2], 40, 12, v[2]);
-    cli_table_double(b[3], 40, 12, v[3]);
-    cli_table_double(b[4], 40, 10, v[4]);
-    const double z = cli_z(v[0], v[2], v[1], 1e-12 * fabs(v[2]));
-    if (isnan(z))
-        snprintf(b[5], 40, "%7s", "-");
-    else
-        snprintf(b[5], 40, "%7.2f", z);
-    printf("%-17s %8s %s %s %s %s %s %s %6s\n", family, k[0] != '\0' ? k : "-", b[0], b[1], b[2],
-           b[5], b[3], b[4], "-");
+    cli_integrate_row(csv, family, k, v);
 }
 
 /* The kind a pattern record names (mcspec discrepancy KIND --save, mcspec
