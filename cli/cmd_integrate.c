@@ -7,6 +7,7 @@
 #include "atomic.h"
 #include "cli.h"
 #include "input.h"
+#include "kindsets.h"
 #include "measure_rows.h"
 #include "output.h"
 #include "plot.h"
@@ -63,7 +64,9 @@ static const char help[] =
     "grouped by their K, one row per family and K (give files of growing K).\n"
     "KIND: the 2D kinds of mcspec pattern (" CLI_SOURCE2D_NAMES ")\n"
     "or, with --dim 1, its 1D kinds (random, stratified, homogenized, uniform,\n"
-    "jitter).\n"
+    "jitter), and the other kinds of mcspec sample in 1D or 2D (blue noise:\n"
+    "dart-throwing, poisson-disk, lloyd, pmj02, pmj02bn; padded, lattice,\n"
+    "halton-permuted, halton-owen), which have no exact column.\n"
     "\n"
     "Options:\n"
     "  --k K            points per set (KIND; give it again for more sizes)\n"
@@ -353,9 +356,42 @@ static int add_set(void *ctx, size_t k, const double *coords, const double *weig
     return 0;
 }
 
+/* T sets of a kind of mcspec sample that mcspec pattern does not draw (blue
+ * noise, the any-dimension samplers): no exact column. */
+static int draw_sample_kind(integ_ctx *c, size_t k, uint64_t stream)
+{
+    const integ_opts *o = c->o;
+    cli_sample_source src;
+    int rc = cli_sample_init(CMD, o->kind, c->dim, k, MCS_MAX_N, &src);
+    if (rc != 0)
+        return rc;
+    double *pts = cli_alloc(CMD, k * c->dim, sizeof *pts);
+    rc = pts == NULL ? CLI_EXIT_FAIL : 0;
+    c->ref = MCS_INTEGRATE_NONE;
+    mcs_rng rng;
+    mcs_rng_seed(&rng, o->seed, stream);
+    for (uint64_t t = 0; rc == 0 && t < o->sets; ++t) {
+        rc = cli_sample_draw(CMD, &src, &rng, pts);
+        if (rc == 0)
+            rc = add_set(c, k, pts, NULL);
+    }
+    free(pts);
+    cli_sample_free(&src);
+    return rc;
+}
+
+/* Whether mcspec pattern draws kind in dim dimensions (else mcspec sample's
+ * table does). */
+static int pattern_draws(const char *kind, size_t dim)
+{
+    return dim == 2u ? cli_source2d_known(kind) : cli_pattern_kind(kind) >= 0;
+}
+
 /* T sets of a named pattern with k points. */
 static int draw_pattern(integ_ctx *c, size_t k, uint64_t stream)
 {
+    if (!pattern_draws(c->o->kind, c->dim))
+        return draw_sample_kind(c, k, stream);
     const integ_opts *o = c->o;
     double *pts = cli_alloc(CMD, k * c->dim, sizeof *pts);
     size_t *bins = c->dim == 1u ? cli_alloc(CMD, k, sizeof *bins) : NULL;
@@ -544,6 +580,8 @@ static void free_groups(integ_ctx *c)
 
 static int check_kind(const integ_opts *o)
 {
+    if (!cli_source2d_known(o->kind) && cli_pattern_kind(o->kind) < 0 && cli_kind_known(o->kind))
+        return 0; /* mcspec sample's kinds: cli_sample_init says if it lacks the dimension */
     if (o->dim == 2u && !cli_source2d_known(o->kind))
         return cli_fail(CMD, cli_pattern_kind(o->kind) >= 0
                                  ? "'%s' is a 1D pattern: give --dim 1"

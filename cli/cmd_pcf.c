@@ -6,6 +6,7 @@
 #include "atomic.h"
 #include "cli.h"
 #include "input.h"
+#include "kindsets.h"
 #include "measure_rows.h"
 #include "output.h"
 #include "plot.h"
@@ -27,7 +28,7 @@
 
 static const char help[] =
     "usage: mcspec pcf [options] [FILE|-]\n"
-    "       mcspec pcf KIND --k K [--sets T] [--seed S] [options]\n"
+    "       mcspec pcf KIND --k K [--dim D] [--sets T] [--seed S] [options]\n"
     "\n"
     "The pair correlation g(r) of point sets in 1D or 2D (the dimension from the\n"
     "file), one set per trial, with toroidal distances, for r up to a radius in\n"
@@ -40,10 +41,11 @@ static const char help[] =
     "           K (K - 1) / 2 times the ring's area, psa's normalisation\n"
     "Random points give g = 1 (RDF: exactly, every bin).\n"
     "\n"
-    "With KIND (random, jittered, grid, shifted-grid, n-rooks, multi-jittered,\n"
-    "cmj) the sets are drawn from that 2D pattern and the exact column holds\n"
-    "E g, both estimators: random, and jittered, grid, shifted-grid and n-rooks\n"
-    "from their strata (empty for multi-jittered and cmj). For\n"
+    "With KIND (every kind of mcspec sample: the 2D patterns random, jittered,\n"
+    "grid, shifted-grid, n-rooks, multi-jittered, cmj, the samplers, blue noise\n"
+    "such as poisson-disk; 2D unless --dim 1) the sets are drawn from it and the\n"
+    "exact column holds E g, both estimators: random, and jittered, grid,\n"
+    "shifted-grid and n-rooks from their strata (empty for the other kinds). For\n"
     "a FILE the exact column is empty unless --exact random says the points are\n"
     "independent and uniform.\n"
     "\n"
@@ -65,6 +67,7 @@ static const char help[] =
     "                   (frequencies 1..F in 1D), and their difference; CSV header\n"
     "                   " CSV_SPECTRAL "\n"
     "  --k K            points per set of KIND (required with KIND)\n"
+    "  --dim D          dimension of KIND's sets, 1 or 2 (default 2)\n"
     "  --sets T         sets of KIND (default 100)\n"
     "  --seed S         PCG32 seed of KIND's sets (default 1)\n"
     "  --wrap           take coordinates modulo 1 (default: outside [0,1) is an\n"
@@ -89,7 +92,9 @@ typedef struct {
     const char *radius_s, *width_s, *sigma_s, *exact_s, *plot, *arg;
     const char *save; /* --save FILE */
     double radius, sigma;
-    int kind; /* a 2D pattern, or -1 for a file */
+    int kind;  /* a 2D pattern (mcs_pattern2d_kind), or -1: a file or another kind */
+    int drawn; /* sets drawn from KIND (a 2D pattern or any kind of mcspec sample) */
+    size_t dim; /* --dim of a drawn KIND (default 2) */
     int bins_given, k_given;
 } pcf_opts;
 
@@ -171,20 +176,26 @@ static int parse(int argc, char **argv, pcf_opts *o)
         {"plot", CLI_OPT_STRING, &o->plot, 0, 0, 0},
         {"csv", CLI_OPT_FLAG, &o->csv, 0, 0, 0},
         {"save", CLI_OPT_STRING, &o->save, 0, 0, 0},
+        {"dim", CLI_OPT_SIZE, &o->dim, 1, 2, 0},
     };
     int rc = cli_parse_one(CMD, help, NULL, opts, CLI_COUNT(opts), argc, argv, &o->arg);
     if (rc != CLI_PARSED)
         return rc;
     o->bins_given = opts[2].given;
     o->k_given = opts[7].given;
-    if (o->k_given || (o->arg != NULL && pattern_kind(o->arg) >= 0 && access(o->arg, F_OK) != 0)) {
-        if (o->arg == NULL || (o->kind = pattern_kind(o->arg)) < 0)
-            return cli_fail(CMD, "--k is for a named pattern: give KIND (random, jittered, grid, "
-                            "shifted-grid, n-rooks, multi-jittered, cmj) before it");
+    const int dim_given = cli_opt_given(opts, CLI_COUNT(opts), "dim");
+    if (o->k_given || (o->arg != NULL && cli_kind_known(o->arg) && access(o->arg, F_OK) != 0)) {
+        if (o->arg == NULL || !cli_kind_known(o->arg))
+            return cli_fail(CMD, "--k is for a named kind: give KIND (a kind of mcspec sample, "
+                            "such as jittered or poisson-disk) before it");
+        o->drawn = 1;
+        o->kind = o->dim == 2u ? pattern_kind(o->arg) : -1;
         if (!o->k_given)
             return cli_fail(CMD, "%s: --k K is required with a pattern", o->arg);
         if (o->exact_s != NULL)
             return cli_fail(CMD, "--exact is for point files; a pattern's exact column is its own");
+    } else if (dim_given) {
+        return cli_fail(CMD, "--dim is for a named kind (a file's points carry theirs)");
     } else if (opts[8].given || opts[9].given) {
         return cli_fail(CMD, "--sets and --seed are for a named pattern (mcspec pcf KIND --k K)");
     } else if (o->arg == NULL && isatty(STDIN_FILENO)) {
@@ -286,6 +297,24 @@ static int draw_sets(pcf_ctx *c, const pcf_opts *o)
     return rc;
 }
 
+/* T sets of a kind of mcspec sample that is not a 2D pattern (blue noise,
+ * the any-dimension samplers, the 1D kinds), as mcspec sample --seed draws
+ * them. */
+static int draw_sample_kind(pcf_ctx *c, const pcf_opts *o, cli_pointset_stats *stats)
+{
+    cli_sample_source src;
+    int rc = cli_sample_init(CMD, o->arg, o->dim, o->k, MCS_MAX_N, &src);
+    if (rc != 0)
+        return rc;
+    c->stats = stats;
+    cli_progress progress;
+    cli_progress_init(&progress, !o->csv, CMD, "sets drawn", o->sets);
+    rc = cli_kind_feed(CMD, &src, o->sets, o->seed, add_set, c, stats, &progress);
+    cli_progress_end(&progress);
+    cli_sample_free(&src);
+    return rc;
+}
+
 /* The exact column of bin b, or NaN. */
 static double exact_of(const pcf_ctx *c, size_t b)
 {
@@ -295,6 +324,9 @@ static double exact_of(const pcf_ctx *c, size_t b)
     if (o->kind >= 0) {
         if (mcs_pattern2d_init(&pat, (mcs_pattern2d_kind)o->kind, o->k, 0u, 0u) != MCS_OK ||
             mcs_pcf_exact(&c->acc, &pat, b, &v) != MCS_OK)
+            v = NAN;
+    } else if (o->drawn) { /* another kind: random points' g in 1D, else none */
+        if (strcmp(o->arg, "random") != 0 || mcs_pcf_exact(&c->acc, NULL, b, &v) != MCS_OK)
             v = NAN;
     } else if (o->exact_s != NULL && mcs_pcf_exact(&c->acc, NULL, b, &v) != MCS_OK) {
         v = NAN;
@@ -357,7 +389,7 @@ static void describe(const pcf_ctx *c, char *title, size_t tsize, char *sub, siz
 {
     const pcf_opts *o = c->o;
     const mcs_pcf *acc = &c->acc;
-    if (o->kind >= 0)
+    if (o->drawn)
         snprintf(title, tsize, "%s %s: %zuD, K = %zu, %llu sets (seed %llu)", CMD, o->arg,
                  acc->dim, o->k, (unsigned long long)c->sets, (unsigned long long)o->seed);
     else
@@ -483,6 +515,7 @@ int cli_cmd_pcf(int argc, char **argv)
     o.radius_s = "3";
     o.sigma_s = "0.1";
     o.kind = -1;
+    o.dim = 2u;
     int rc = parse(argc, argv, &o);
     if (rc != 0)
         return rc < 0 ? CLI_EXIT_OK : rc;
@@ -491,16 +524,18 @@ int cli_cmd_pcf(int argc, char **argv)
         return CLI_EXIT_FAIL;
     memset(c, 0, sizeof *c);
     c->o = &o;
-    c->name = o.kind >= 0 ? o.arg : cli_input_name(o.arg);
+    c->name = o.drawn ? o.arg : cli_input_name(o.arg);
     cli_pointset_stats stats;
     /* --save: checked before any work (a drawn KIND reads no standard input) */
     cli_save_target save = {o.save, o.arg, 0u, 0u};
-    if (o.kind >= 0)
+    if (o.drawn)
         rc = o.save != NULL ? cli_write_check(CMD, o.save) : 0;
     else
         rc = cli_save_begin(CMD, &save);
     if (rc == 0 && o.kind >= 0) {
         rc = draw_sets(c, &o);
+    } else if (rc == 0 && o.drawn) {
+        rc = draw_sample_kind(c, &o, &stats);
     } else if (rc == 0) {
         c->stats = &stats;
         cli_pointset_format fmt = {.dim = 0, .weights = 0, .wrap = o.wrap};
@@ -519,8 +554,9 @@ int cli_cmd_pcf(int argc, char **argv)
         const pcf_figure fig = {c, title, sub};
         rc = cli_plot_render(CMD, o.plot, write_figure, &fig);
     }
-    if (rc == 0 && o.kind >= 0) {
-        const cli_run run = {2u, o.arg, 0u, o.k, 0, 0u, o.seed, 1u, o.sets};
+    if (rc == 0 && o.drawn) {
+        const cli_run run = {(unsigned)o.dim, o.arg, o.dim == 1u ? (uint64_t)MCS_MAX_N : 0u, o.k,
+                             0, 0u, o.seed, 1u, o.sets};
         rc = cli_save_drawn(CMD, o.save, &run, MCS_IO_KIND_PCF, &c->acc);
     } else if (rc == 0) {
         rc = cli_save_points(CMD, &save, MCS_IO_KIND_PCF, &c->acc);

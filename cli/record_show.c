@@ -33,8 +33,11 @@ static void show_pcf(int csv, const mcs_pcf *acc, const mcs_io_provenance *prov)
 {
     const int kind = pattern2d_of(prov);
     mcs_pattern2d pat;
-    const int exact = kind >= 0 && mcs_pattern2d_init(&pat, (mcs_pattern2d_kind)kind,
-                                                      (size_t)prov->k, 0u, 0u) == MCS_OK;
+    /* a 2D pattern's E g; random points' in 1D too (mcs_pcf_exact with no pattern) */
+    const int random1d = prov->source == MCS_IO_SOURCE_PATTERN && prov->dim == 1u &&
+                         strcmp(prov->pattern, "random") == 0;
+    const int exact = random1d || (kind >= 0 && mcs_pattern2d_init(&pat, (mcs_pattern2d_kind)kind,
+                                                                   (size_t)prov->k, 0u, 0u) == MCS_OK);
     if (csv) {
         puts("r,pcf,pcf_stderr,exact");
     } else {
@@ -48,7 +51,7 @@ static void show_pcf(int csv, const mcs_pcf *acc, const mcs_io_provenance *prov)
         (void)mcs_pcf_radius_at(acc, b, &v[0]);
         (void)mcs_pcf_mean(acc, b, &v[1]);
         (void)mcs_pcf_stderr(acc, b, &v[2]);
-        if (exact && mcs_pcf_exact(acc, &pat, b, &v[3]) != MCS_OK)
+        if (exact && mcs_pcf_exact(acc, random1d ? NULL : &pat, b, &v[3]) != MCS_OK)
             v[3] = NAN;
         cli_pcf_row(csv, v);
     }

@@ -91,6 +91,11 @@ usage_error "a 2D kind in 1D" "'jittered' is a 2D pattern: give --dim 2" "$MCSPE
 usage_error "--k without a kind" "--k needs a KIND" "$MCSPEC" integrate --k 16
 usage_error "a kind without --k" "'random' is a pattern: give --k K" "$MCSPEC" integrate random
 usage_error "--k 0" "--k expects a whole number from 1" "$MCSPEC" integrate random --k 0
+usage_error "a sample kind without 1D" "pmj02 has dimensions 2 only" "$MCSPEC" integrate pmj02 --dim 1 --k 16
+# the kinds of mcspec sample that mcspec pattern does not draw: no exact column
+if succeeds "integrate poisson-disk" "$MCSPEC" integrate poisson-disk --k 64 --sets 4 --family disk --csv &&
+    awk -F, 'NR == 2 && $1 == "disk" && $3 != "" && $5 == "" { g = 1 } END { exit !g || NR != 2 }' "$tmp/out"
+then ok; else bad "integrate poisson-disk: not one disk row with an mse and no exact"; fi
 usage_error "--k twice" "--k 16 given twice" "$MCSPEC" integrate random --k 16 --k 16
 usage_error "--k with no value" "--k needs a value" "$MCSPEC" integrate random --k
 usage_error "--k with files" "give one KIND with --k, not files" "$MCSPEC" integrate random jittered --k 16

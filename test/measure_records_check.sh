@@ -85,6 +85,10 @@ succeeds "pcf KIND --save" "$MCSPEC" pcf jittered --k 64 --sets 30 --bins 10 --c
     cp "$tmp/out" "$tmp/p-j.csv"
 succeeds "show pcf KIND" "$MCSPEC" show "$tmp/p-j.rec" --csv && same_out "show pcf KIND (exact column)" "$tmp/p-j.csv"
 if awk -F, 'NR > 1 && $4 == "" { e = 1 } END { exit e }' "$tmp/out"; then ok; else bad "show pcf KIND: an empty exact"; fi
+succeeds "pcf random --dim 1 --save" "$MCSPEC" pcf random --dim 1 --k 64 --sets 10 --bins 8 --csv \
+    --save "$tmp/p-r1.rec" && cp "$tmp/out" "$tmp/p-r1.csv"
+succeeds "show pcf 1D random" "$MCSPEC" show "$tmp/p-r1.rec" --csv &&
+    same_out "show pcf 1D random (exact column)" "$tmp/p-r1.csv"
 succeeds "stats --save" "$MCSPEC" stats --csv --save "$tmp/s-a.rec" "$tmp/a.txt" &&
     head -n 3 "$tmp/out" >"$tmp/s-a.csv"
 succeeds "show spacing" "$MCSPEC" show "$tmp/s-a.rec" --csv && same_out "show spacing (stats' first rows)" "$tmp/s-a.csv"

@@ -62,9 +62,19 @@ usage_error "--bins and --bin-width" 'give one of them' "$MCSPEC" pcf --bins 4 -
 usage_error "--spectral without --rdf" '--spectral needs --rdf' "$MCSPEC" pcf --spectral 8 "$tmp/two"
 usage_error "--exact grid" "the only model a point file can be said to follow is 'random'" \
     "$MCSPEC" pcf --exact grid "$tmp/two"
-usage_error "--k for a file" '--k is for a named pattern' "$MCSPEC" pcf --k 64 "$tmp/two"
+usage_error "--k for a file" '--k is for a named kind' "$MCSPEC" pcf --k 64 "$tmp/two"
 usage_error "KIND without --k" '^mcspec pcf: jittered: --k K is required' "$MCSPEC" pcf jittered
 usage_error "--sets for a file" '--sets and --seed are for a named pattern' "$MCSPEC" pcf --sets 3 "$tmp/two"
+usage_error "--dim for a file" "--dim is for a named kind" "$MCSPEC" pcf --dim 1 "$tmp/two"
+usage_error "a kind without 1D" "pmj02 has dimensions 2 only" "$MCSPEC" pcf pmj02 --dim 1 --k 64
+# every kind of mcspec sample draws: blue noise with no exact column, 1D
+# random with g = 1 exactly for the RDF
+if succeeds "pcf poisson-disk" "$MCSPEC" pcf poisson-disk --k 256 --sets 4 --bins 6 --csv &&
+    awk -F, 'NR > 1 && ($4 != "" || $2 == "") { e = 1 } END { exit e || NR != 7 }' "$tmp/out"; then ok
+else bad "pcf poisson-disk: not 6 rows with an empty exact column"; fi
+if succeeds "pcf random --dim 1 --rdf" "$MCSPEC" pcf random --dim 1 --rdf --k 64 --sets 4 --bins 6 --csv &&
+    awk -F, 'NR > 1 && $4 != 1 { e = 1 } END { exit e || NR != 7 }' "$tmp/out"; then ok
+else bad "pcf random --dim 1: the exact RDF is not 1 in every bin"; fi
 usage_error "a set too small" "set 1 has 2 points; the radius 3 \+ 8 sigma mean spacings reaches past half the torus" \
     "$MCSPEC" pcf "$tmp/two"
 usage_error "a pattern too small" "set 1 has 16 points; the radius 3 mean spacings" \
