@@ -12,6 +12,7 @@ from .sampling import sample, kinds, base_points, exact_power, lattice_generator
 from .measures import (discrepancy, discrepancy_exact_random, discrepancy_exact_jittered, spacing,
                        spacing_exact_random)
 from .binned import Importance, Pattern, Spectrum, Moment, Autocorr, Theory, TheorySpectrum
+from .accumulators import Discrepancy, Spacing, IntegrationError
 from .records import save, load, save_file, load_file, merge
 from .analysis import (Pcf, PairCorrelation, pcf, effective_nyquist, oscillations, spectral_stats,
                        integration_error, integration_error_of, projections)
@@ -23,6 +24,7 @@ __all__ = [
     "discrepancy", "discrepancy_exact_random", "discrepancy_exact_jittered", "spacing",
     "spacing_exact_random",
     "Importance", "Pattern", "Spectrum", "Moment", "Autocorr", "Theory", "TheorySpectrum",
+    "Discrepancy", "Spacing", "IntegrationError",
     "save", "load", "save_file", "load_file", "merge",
     "Pcf", "PairCorrelation", "pcf", "effective_nyquist", "oscillations", "spectral_stats",
     "integration_error", "integration_error_of",

@@ -6,7 +6,8 @@ import numpy as np
 from . import _lib
 from ._lib import Buffer, Error, check, fn, struct
 
-_KINDS = {1: "spectrum", 2: "moment", 3: "autocorr", 5: "pointset", 6: "pointset2d", 8: "pcf"}
+_KINDS = {1: "spectrum", 2: "moment", 3: "autocorr", 5: "pointset", 6: "pointset2d", 8: "pcf",
+          9: "integrate", 10: "discrepancy", 11: "spacing"}
 
 
 def _kind_of(obj):
@@ -17,6 +18,10 @@ def _kind_of(obj):
         return obj._p, obj._hdr
     if isinstance(obj, PairCorrelation):
         return "pcf", obj._acc
+    from .accumulators import RECORD_CLASSES
+    for name, cls in RECORD_CLASSES.items():
+        if isinstance(obj, cls):
+            return name, obj._acc
     for cls, name in ((Spectrum, "spectrum"), (Moment, "moment"), (Autocorr, "autocorr")):
         if isinstance(obj, cls):
             return name, obj._obj
@@ -66,14 +71,18 @@ def _load_pcf(raw):
 
 def load(data):
     """The object saved in data (bytes): a Spectrum, Moment, Autocorr,
-    PointSet or PairCorrelation (mcs_io_load_*); MCS_ERR_* on a damaged or
-    foreign record."""
+    PointSet, PairCorrelation, IntegrationError, Discrepancy or Spacing
+    (mcs_io_load_*); MCS_ERR_* on a damaged or foreign record."""
     from .binned import Spectrum, Moment, Autocorr
     from .pointsets import PointSet
+    from .accumulators import load_record
     raw = np.frombuffer(bytes(data), dtype=np.uint8)
     pcf = _load_pcf(raw)
     if pcf is not None:
         return pcf
+    acc = load_record(raw)
+    if acc is not None:
+        return acc
     # The kind by the loaders themselves: each refuses another kind with
     # MCS_ERR_KIND before it writes anything.
     for name in ("spectrum", "moment", "autocorr", "pointset", "pointset2d"):
@@ -99,7 +108,7 @@ def load(data):
         if st != _lib.ERR_KIND:
             check(st, "mcs_io_load_" + name)
     raise Error(_lib.ERR_KIND, "a record of a kind this package does not wrap (welford, "
-                "spectrum2d, integrate, discrepancy, spacing)")
+                "spectrum2d)")
 
 
 def save_file(obj, path):
