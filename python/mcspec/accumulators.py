@@ -109,6 +109,16 @@ class _Accumulator:
     def _copy_extra(self, new):
         pass
 
+    def reset(self):
+        """Empties the sums (the init again, same dim and family); an
+        IntegrationError's integrand stream goes on where it was, so sets
+        added after a reset get the integrands one add over all would give."""
+        f = self._fields()
+        args = (f.family, f.dim) if self._name == "integrate" else (f.dim,)
+        del f
+        check(getattr(fn, self._name + "_init")(self._acc.addr, *args), "mcs_%s_init" % self._name)
+        return self
+
     @property
     def k_range(self):
         """(fewest, most) points in a set added, (0, 0) before any."""
