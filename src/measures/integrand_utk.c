@@ -148,7 +148,7 @@ static double rel_error(const double *v, const double *e)
  * the integral over u1 of the inner ones'. */
 static void bp_moments(mcs_integrand *g)
 {
-    bp_ctx b = {g, {0.0, 0.0, INFINITY, INFINITY}};
+    bp_ctx b = {g, {0.0, 0.0, (double)INFINITY, (double)INFINITY}};
     for (int i = 0; i < 8; ++i) {
         const bp_col c = bp_column(g, (i + 0.5) / 8.0);
         for (int j = 0; j < 8; ++j) {
@@ -157,7 +157,7 @@ static void bp_moments(mcs_integrand *g)
             b.floors[1] += 1e-14 / 64.0 * v * v;
         }
     }
-    const double none[MCS_INTEG_QUAD_N] = {0.0, 0.0, INFINITY, INFINITY};
+    const double none[MCS_INTEG_QUAD_N] = {0.0, 0.0, (double)INFINITY, (double)INFINITY};
     double v[MCS_INTEG_QUAD_N], e[MCS_INTEG_QUAD_N];
     mcs_integ_quad_(bp_outer, &b, 0.0, 1.0, QUAD_REL, none, v, e);
     e[0] += v[2];
