@@ -204,13 +204,7 @@ static void report(const disc_opts *o, const mcs_discrepancy *acc,
     mcs_discrepancy_count(acc, MCS_DISCREPANCY_STAR, &star);
     const int with_star = stats->dim == 2u && star == stats->sets;
     if (!o->csv) {
-        if (ex->source != NULL)
-            printf("%s: %s, %llu point sets in %zuD, K = %zu points per set\n", CMD, ex->source,
-                   (unsigned long long)stats->sets, stats->dim, stats->k_min);
-        else
-            printf("%s: %s, %llu point sets in %zuD, K = %zu to %zu points per set (%lu lines "
-                   "read)\n", CMD, cli_input_name(o->path), (unsigned long long)stats->sets,
-                   stats->dim, stats->k_min, stats->k_max, stats->lines);
+        cli_sets_line(CMD, ex->source, o->path, stats);
         printf("value: mean over the sets of D^2; root = sqrt(value); exact_random: E[D^2] of "
                "independent uniform points; exact: E[D^2] of the sets' kind (- where not "
                "known); z = (value - exact, else exact_random) / stderr\n");

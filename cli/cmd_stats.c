@@ -307,13 +307,7 @@ static void report(const stats_opts *o, const mcs_spacing *acc, const cli_points
                    spectral_ctx *spec, const stats_exact *ex)
 {
     if (!o->csv) {
-        if (ex->source != NULL)
-            printf("%s: %s, %llu point sets in %zuD, K = %zu points per set\n", CMD, ex->source,
-                   (unsigned long long)stats->sets, stats->dim, stats->k_min);
-        else
-            printf("%s: %s, %llu point sets in %zuD, K = %zu to %zu points per set (%lu lines "
-                   "read)\n", CMD, cli_input_name(o->path), (unsigned long long)stats->sets,
-                   stats->dim, stats->k_min, stats->k_max, stats->lines);
+        cli_sets_line(CMD, ex->source, o->path, stats);
         printf("toroidal distances as fractions of the maximal packing distance d_max = %s; "
                "value: mean over the sets\n", stats->dim == 1u   ? "1/K"
                                               : stats->dim == 2u ? "sqrt(2 / (sqrt(3) K))"

@@ -2,6 +2,7 @@
 #include "kindsets.h"
 #include "cli.h"
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
@@ -52,6 +53,18 @@ int cli_kind_or_file(const char *cmd, const cli_opt *opts, size_t nopts, const c
     if (a->path == NULL && isatty(STDIN_FILENO))
         return cli_fail(cmd, "no input: give a point file, or '-' to read standard input");
     return 0;
+}
+
+void cli_sets_line(const char *cmd, const char *source, const char *path,
+                   const cli_pointset_stats *stats)
+{
+    if (source != NULL)
+        printf("%s: %s, %llu point sets in %zuD, K = %zu points per set\n", cmd, source,
+               (unsigned long long)stats->sets, stats->dim, stats->k_min);
+    else
+        printf("%s: %s, %llu point sets in %zuD, K = %zu to %zu points per set (%lu lines read)\n",
+               cmd, cli_input_name(path), (unsigned long long)stats->sets, stats->dim,
+               stats->k_min, stats->k_max, stats->lines);
 }
 
 int cli_kind_feed(const char *cmd, const cli_sample_source *src, uint64_t sets, uint64_t seed,

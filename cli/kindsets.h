@@ -37,6 +37,11 @@ typedef struct {
 int cli_kind_or_file(const char *cmd, const cli_opt *opts, size_t nopts, const cli_kind_args *a,
                      int *kind_mode);
 
+/* The first line of a report: cmd, then source (a drawn KIND's description)
+ * or the input's name, the sets, their dimension and sizes. */
+void cli_sets_line(const char *cmd, const char *source, const char *path,
+                   const cli_pointset_stats *stats);
+
 /* Draws sets sets of src (set up by cli_sample_init) from PCG32 seeded with
  * (seed, 0), as mcspec sample --seed does, into fn, filling stats as the
  * reader does (dim before the first call, lines 0). Returns 0, or an exit
