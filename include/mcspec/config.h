@@ -64,9 +64,11 @@
  * their bits), mcs_pointset_set_path and mcs_pointset2d_set_path refuse the
  * NUFFT path with MCS_ERR_DOMAIN, and every mcs_nufft_ call returns
  * MCS_ERR_DOMAIN. Set it with -DMCS_CONFIG_NUFFT=0 for the library (make
- * NUFFT=0, CMake -DMCSPEC_NUFFT=OFF); code that includes mcspec.h may see
- * either value (no struct depends on it; MCS_POINTSET_SIZE and
- * MCS_POINTSET2D_SIZE only shrink to the direct sizes with 0). */
+ * NUFFT=0, CMake -DMCSPEC_NUFFT=OFF; an installed copy records 0 above).
+ * Code that includes mcspec.h may see either value: no struct depends on
+ * it, and MCS_POINTSET_SIZE and MCS_POINTSET2D_SIZE only shrink to the
+ * direct sizes with 0 (a buffer that small is refused with MCS_ERR_SPACE
+ * by a library with the NUFFT, never overrun). */
 #ifndef MCS_CONFIG_NUFFT
 #define MCS_CONFIG_NUFFT 1
 #endif
