@@ -29,6 +29,14 @@ endif
 ifeq ($(FFT),fftw)
 BUILD   := $(BUILD)/fftw
 endif
+# NUFFT=0: the library without the NUFFT (MCS_CONFIG_NUFFT 0 in
+# include/mcspec/config.h), built apart, as are its cross, stack and
+# check-alloc builds (mk/cross.mk, mk/embedded.mk); make test-nonufft tests it.
+ifeq ($(NUFFT),0)
+NUFFT_DEFS := -DMCS_CONFIG_NUFFT=0
+NUFFT_DIR  := /nonufft
+BUILD   := $(BUILD)/nonufft
+endif
 
 OPT      ?= -O2 -g
 WARN     := -std=c11 -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes \
@@ -64,7 +72,7 @@ Q := @
 endif
 
 # The project's preprocessor flags; the user's CPPFLAGS follow them.
-MCS_CPPFLAGS := -Iinclude
+MCS_CPPFLAGS := -Iinclude $(NUFFT_DEFS)
 # The library's own sources also see src/ (a family's private header is
 # included as "family/name.h"; tools/check_layout.sh checks the direction).
 LIB_INC := -Isrc
@@ -137,7 +145,7 @@ LIB_CC  = $(MCS_CC) $(LIB_INC) -isystem src/vendor/kissfft $(KISS_DEFS)
 # instead of mixing objects of two capacities.
 FLAGS_STAMP := $(BUILD)/flags.txt
 FLAGS_TEXT = $(CC) | $(WARN) | $(OPT) | $(SANFLAGS) | $(CPPFLAGS) | $(CFLAGS) | $(LDFLAGS) | \
-             $(KISS_DEFS) | $(AR) | $(LDLIBS)
+             $(KISS_DEFS) | $(AR) | $(LDLIBS) | $(NUFFT_DEFS)
 $(FLAGS_STAMP): FORCE
 	@mkdir -p $(@D)
 	@printf '%s\n' '$(subst ','\'',$(FLAGS_TEXT))' >$@.new

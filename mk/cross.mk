@@ -14,9 +14,14 @@
 # own copy built with FW_DEFS so that its static accumulators fit a small
 # part's RAM: MCS_MAX_N=256 for the mcs_spectrum, and a 2D point-set cutoff
 # of 8, a 1D one of 32 and 8 x 8 bins for the 2D binned spectrum.
+#
+# NUFFT=0 (`make cross NUFFT=0`): the same builds without the NUFFT
+# (MCS_CONFIG_NUFFT 0, the Makefile's NUFFT_DEFS through MCS_CPPFLAGS), under
+# build/nonufft/ instead of build/, so both sets of sizes can be compared.
 
 .PHONY: cross cross-m4 cross-m7 cross-rv sizes cross-m4-lib cross-m7-lib
 
+CROSS_OUT  := build$(NUFFT_DIR)
 ARM_PREFIX ?= arm-none-eabi-
 RV_PREFIX  ?= riscv64-unknown-elf-
 CROSS_OPT  ?= -O2 -g
@@ -79,62 +84,62 @@ endef
 
 # A Cortex-M target $(1) (m4, m7) with arch flags $(2): library, firmware, checks.
 define MCS_CORTEX_M
-$(call MCS_CROSS_LIB,build/cross-$(1),$(ARM_PREFIX),$(2) $(CROSS_COMMON) $(CROSS_OPT))
-$(call MCS_CROSS_LIB,build/cross-$(1)/fw,$(ARM_PREFIX),$(2) $(CROSS_COMMON) $(FW_OPT) $(FW_DEFS) -fstack-usage -fcallgraph-info=su)
+$(call MCS_CROSS_LIB,$(CROSS_OUT)/cross-$(1),$(ARM_PREFIX),$(2) $(CROSS_COMMON) $(CROSS_OPT))
+$(call MCS_CROSS_LIB,$(CROSS_OUT)/cross-$(1)/fw,$(ARM_PREFIX),$(2) $(CROSS_COMMON) $(FW_OPT) $(FW_DEFS) -fstack-usage -fcallgraph-info=su)
 
 # The firmware's own objects share the stamp of its library (same flags).
-build/cross-$(1)/fw/obj/examples/firmware/%.o: examples/firmware/%.c build/cross-$(1)/fw/flags.txt
+$(CROSS_OUT)/cross-$(1)/fw/obj/examples/firmware/%.o: examples/firmware/%.c $(CROSS_OUT)/cross-$(1)/fw/flags.txt
 	@mkdir -p $$(@D)
 	@echo "CC $$@"
 	$$(EMB_Q)$(ARM_PREFIX)gcc $$(WARN) $(2) $(CROSS_COMMON) $(FW_OPT) $(FW_DEFS) -fstack-usage \
 	    -fcallgraph-info=su $$(MCS_CPPFLAGS) $$(CPPFLAGS) -MMD -MP -c $$< -o $$@
 
--include $$(wildcard build/cross-$(1)/fw/obj/examples/firmware/*.d)
+-include $$(wildcard $(CROSS_OUT)/cross-$(1)/fw/obj/examples/firmware/*.d)
 
 # Our own startup replaces crt0 (-nostartfiles); nano.specs and nosys.specs
 # give newlib-nano's libc and libm and stub syscalls. The linker script has no
 # heap, so anything that reached malloc would not link.
-build/cross-$(1)/fw/firmware.elf: build/cross-$(1)/fw/obj/examples/firmware/main.o \
-        build/cross-$(1)/fw/obj/examples/firmware/startup.o build/cross-$(1)/fw/libmcspec.a \
+$(CROSS_OUT)/cross-$(1)/fw/firmware.elf: $(CROSS_OUT)/cross-$(1)/fw/obj/examples/firmware/main.o \
+        $(CROSS_OUT)/cross-$(1)/fw/obj/examples/firmware/startup.o $(CROSS_OUT)/cross-$(1)/fw/libmcspec.a \
         examples/firmware/$(1).ld examples/firmware/sections.ld
 	@echo "LD $$@"
 	$$(EMB_Q)$(ARM_PREFIX)gcc $(2) --specs=nano.specs --specs=nosys.specs -nostartfiles \
-	    -Wl,--gc-sections -Wl,-Map=build/cross-$(1)/fw/firmware.map -Lexamples/firmware \
-	    -T $(1).ld $$(filter %.o,$$^) build/cross-$(1)/fw/libmcspec.a -lm -o $$@
+	    -Wl,--gc-sections -Wl,-Map=$(CROSS_OUT)/cross-$(1)/fw/firmware.map -Lexamples/firmware \
+	    -T $(1).ld $$(filter %.o,$$^) $(CROSS_OUT)/cross-$(1)/fw/libmcspec.a -lm -o $$@
 
 # The allow-list check runs before the firmware link, whose failure on a
 # stray malloc ("undefined reference to `end'") is less telling.
-cross-$(1)-lib: build/cross-$(1)/libmcspec.a
+cross-$(1)-lib: $(CROSS_OUT)/cross-$(1)/libmcspec.a
 	@sh tools/check_alloc.sh -n $(ARM_PREFIX)nm -l "Cortex-$(1) libmcspec.a ($(2))" \
-	    -r "$$$$($(ARM_PREFIX)gcc $(2) -print-libgcc-file-name)" build/cross-$(1)/libmcspec.a
+	    -r "$$$$($(ARM_PREFIX)gcc $(2) -print-libgcc-file-name)" $(CROSS_OUT)/cross-$(1)/libmcspec.a
 
-build/cross-$(1)/fw/firmware.elf: | cross-$(1)-lib
+$(CROSS_OUT)/cross-$(1)/fw/firmware.elf: | cross-$(1)-lib
 
-cross-$(1): cross-$(1)-lib build/cross-$(1)/fw/firmware.elf
-	@bad=$$$$($(ARM_PREFIX)nm build/cross-$(1)/fw/firmware.elf | \
+cross-$(1): cross-$(1)-lib $(CROSS_OUT)/cross-$(1)/fw/firmware.elf
+	@bad=$$$$($(ARM_PREFIX)nm $(CROSS_OUT)/cross-$(1)/fw/firmware.elf | \
 	    grep -E ' ($(strip $(FW_FORBIDDEN)))$$$$' || true); \
 	if [ -n "$$$$bad" ]; then echo "cross-$(1): firmware image contains:"; echo "$$$$bad"; exit 1; fi; \
 	echo "cross-$(1): firmware image has no heap, stdio or exit symbols"
-	@echo "cross-$(1): arm-none-eabi-size build/cross-$(1)/fw/firmware.elf" \
+	@echo "cross-$(1): arm-none-eabi-size $(CROSS_OUT)/cross-$(1)/fw/firmware.elf" \
 	    "(flash = text + data; RAM = data + bss, bss including the 8 KiB stack reservation)"
-	@$(ARM_PREFIX)size build/cross-$(1)/fw/firmware.elf
+	@$(ARM_PREFIX)size $(CROSS_OUT)/cross-$(1)/fw/firmware.elf
 	@echo "cross-$(1): firmware stack from Reset_Handler, against the 8 KiB reservation:"
-	@sh tools/stack_report.sh -n 1 -l 8192 -e Reset_Handler build/cross-$(1)/fw/obj | sed 1,2d
+	@sh tools/stack_report.sh -n 1 -l 8192 -e Reset_Handler $(CROSS_OUT)/cross-$(1)/fw/obj | sed 1,2d
 endef
 
 $(eval $(call MCS_CORTEX_M,m4,$(M4_ARCH)))
 $(eval $(call MCS_CORTEX_M,m7,$(M7_ARCH)))
-$(eval $(call MCS_CROSS_LIB,build/rv,$(RV_PREFIX),$(RV_ARCH) $(CROSS_COMMON) $(CROSS_OPT) -isystem tools/freestanding))
+$(eval $(call MCS_CROSS_LIB,$(CROSS_OUT)/rv,$(RV_PREFIX),$(RV_ARCH) $(CROSS_COMMON) $(CROSS_OPT) -isystem tools/freestanding))
 
-cross-rv: build/rv/libmcspec.a
+cross-rv: $(CROSS_OUT)/rv/libmcspec.a
 	@sh tools/check_alloc.sh -n $(RV_PREFIX)nm -l "RV64 libmcspec.a ($(RV_ARCH), compile only)" \
-	    -r "$$($(RV_PREFIX)gcc $(RV_ARCH) -print-libgcc-file-name)" build/rv/libmcspec.a
+	    -r "$$($(RV_PREFIX)gcc $(RV_ARCH) -print-libgcc-file-name)" $(CROSS_OUT)/rv/libmcspec.a
 
 # sizeof each public struct: on the host, on Cortex-M (32-bit size_t) at the
 # default capacities, at the firmware's, and at a small configuration.
 sizes:
 	@echo "sizeof, bytes (tools/sizes.sh); firmware: $(FW_DEFS); small: $(SMALL_DEFS)"
-	@sh tools/sizes.sh build/sizes "x86-64|$(CC)|$(EMB_NM)|" \
+	@sh tools/sizes.sh $(CROSS_OUT)/sizes "x86-64|$(CC)|$(EMB_NM)|" \
 	    "Cortex-M|$(ARM_PREFIX)gcc|$(ARM_PREFIX)nm|$(M4_ARCH)" \
 	    "Cortex-M firmware|$(ARM_PREFIX)gcc|$(ARM_PREFIX)nm|$(M4_ARCH) $(FW_DEFS)" \
 	    "Cortex-M small|$(ARM_PREFIX)gcc|$(ARM_PREFIX)nm|$(M4_ARCH) $(SMALL_DEFS)"

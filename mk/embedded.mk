@@ -24,7 +24,7 @@ EMB_TOOLS_CFLAGS := -std=c11 -O2 -Wall -Wextra $(WERROR_FLAG)
 embedded-checks: check-alloc cross stack lint
 
 # ---------------------------------------------------------------- check-alloc
-ALLOC_BUILD := build/alloc
+ALLOC_BUILD := build/alloc$(NUFFT_DIR)
 ALLOC_SHIM  := $(ALLOC_BUILD)/tools/malloc_count.o
 ALLOC_LOG   := $(ALLOC_BUILD)/malloc_count.log
 ALLOC_TESTS := $(TEST_SRC:test/%.c=$(ALLOC_BUILD)/test/%)
@@ -58,7 +58,7 @@ $(ALLOC_SHIM): tools/malloc_count.c
 	$(CC) $(EMB_TOOLS_CFLAGS) -c $< -o $@
 
 # -------------------------------------------------------------------- memcheck
-MEMCHECK_BUILD := build/memcheck
+MEMCHECK_BUILD := build/memcheck$(NUFFT_DIR)
 MEMCHECK_TESTS := $(TEST_SRC:test/%.c=$(MEMCHECK_BUILD)/test/%)
 VALGRIND_FLAGS := -q --error-exitcode=99 --leak-check=full --errors-for-leak-kinds=definite,indirect \
                   --track-origins=yes
@@ -76,7 +76,7 @@ memcheck:
 	@sh test/run_tests.sh $(addprefix $(MEMCHECK_BUILD)/vg/,$(notdir $(MEMCHECK_TESTS)))
 
 # ----------------------------------------------------------------------- stack
-STACK_BUILD := build/stack
+STACK_BUILD := build/stack$(NUFFT_DIR)
 STACK_LIMIT ?= 1024
 STACK_DEPTH ?= 8
 STACK_FLAGS := -fstack-usage -fcallgraph-info=su -Wstack-usage=$(STACK_LIMIT) -Walloca -Wvla
@@ -134,7 +134,7 @@ clang-tidy: | $(LINT_BUILD)
 cppcheck:
 	@echo "cppcheck $(LINT_SRC) $(LINT_HEADERS)"
 	@$(CPPCHECK) --quiet --std=c11 --enable=warning,performance,portability --inline-suppr \
-	    --error-exitcode=1 -Iinclude $(LIB_INC) -Isrc/vendor/kissfft $(KISS_DEFS) \
+	    --error-exitcode=1 -Iinclude $(NUFFT_DEFS) $(LIB_INC) -Isrc/vendor/kissfft $(KISS_DEFS) \
 	    -i src/vendor --suppress='*:src/vendor/*' --suppress=missingIncludeSystem \
 	    $(LINT_SRC) $(LINT_HEADERS) && echo "cppcheck OK"
 
@@ -159,3 +159,23 @@ check-headers:
 	        $(CXX) -std=c++11 -Wall -Wextra $(WERROR_FLAG) -pedantic $(MCS_CPPFLAGS) $(CPPFLAGS) -x c++ -fsyntax-only - || \
 	        { echo "check-headers: $$h (C++)"; exit 1; }; \
 	done; echo "check-headers OK: $(words $(LINT_HEADERS)) headers self-contained in C11 and C++11"
+
+# ---------------------------------------------------------------- test-nonufft
+# The library without the NUFFT (NUFFT=0: MCS_CONFIG_NUFFT 0, config.h) in
+# build/nonufft/: the point-set runners and the NUFFT's own (whose tests skip
+# there with a printed reason), then test_pointset_direct_bits from both
+# builds, whose digests must be equal: the build without the NUFFT gives the
+# default build's direct-path bits.
+.PHONY: test-nonufft
+NONUFFT_RUNNERS := $(filter test/pointsets/% test/dft/test_nufft.c,$(TEST_SRC))
+NONUFFT_BITS    := test/pointsets/test_pointset_direct_bits
+
+test-nonufft: build/$(NONUFFT_BITS)
+	@$(MAKE) --no-print-directory NUFFT=0 SAN= $(NONUFFT_RUNNERS:test/%.c=build/nonufft/test/%)
+	@sh test/run_tests.sh $(NONUFFT_RUNNERS:test/%.c=build/nonufft/test/%)
+	@rm -f build/nonufft/digest-default.txt build/nonufft/digest-nonufft.txt
+	@MCS_DIGEST_OUT=build/nonufft/digest-default.txt build/$(NONUFFT_BITS) >/dev/null
+	@MCS_DIGEST_OUT=build/nonufft/digest-nonufft.txt build/nonufft/$(NONUFFT_BITS) >/dev/null
+	@cmp build/nonufft/digest-default.txt build/nonufft/digest-nonufft.txt && \
+	    echo "test-nonufft: direct-path digests equal in both builds:" && \
+	    cat build/nonufft/digest-nonufft.txt

@@ -74,6 +74,8 @@ mcs_subst = sed -f $(GEN_CAPS) -e 's|@VERSION@|$(VERSION)|g' \
 $(GEN_CONFIG_H): include/mcspec/config.h cmake/capacities.h.in $(GEN_CAPS)
 	@mkdir -p $(@D)
 	@$(call mcs_subst,cmake/capacities.h.in) >$(GEN_DIR)/capacities.h
+	@$(if $(NUFFT_DEFS),printf '%s\n' '/* ... and without the NUFFT (make NUFFT=0: config.h below). */' \
+	    '#ifndef MCS_CONFIG_NUFFT' '#define MCS_CONFIG_NUFFT 0' '#endif' >>$(GEN_DIR)/capacities.h,:)
 	@grep -q 'mcspec-install:' include/mcspec/config.h || { echo "install: marker missing in config.h"; exit 1; }
 	@sed '/mcspec-install:/r $(GEN_DIR)/capacities.h' include/mcspec/config.h >$@
 

@@ -55,6 +55,27 @@
 #error "MCS_MAX_SIDE must be at least 1"
 #endif
 
+/* Not a capacity but a feature switch: 1 (the default) builds the type-1
+ * NUFFT (nufft.h) and the point-set accumulators' NUFFT path; 0 leaves them
+ * out, for firmware that never has the large sets the NUFFT is for (about
+ * 12 KiB of flash on Cortex-M: docs/embedded.md). With 0 the accumulators
+ * behave as if every object had MCS_POINTSET_DIRECT_ONLY (size queries give
+ * the direct path's bytes, AUTO takes the direct sum, whose results keep
+ * their bits), mcs_pointset_set_path and mcs_pointset2d_set_path refuse the
+ * NUFFT path with MCS_ERR_DOMAIN, and every mcs_nufft_ call returns
+ * MCS_ERR_DOMAIN. Set it with -DMCS_CONFIG_NUFFT=0 for the library (make
+ * NUFFT=0, CMake -DMCSPEC_NUFFT=OFF; an installed copy records 0 above).
+ * Code that includes mcspec.h may see either value: no struct depends on
+ * it, and MCS_POINTSET_SIZE and MCS_POINTSET2D_SIZE only shrink to the
+ * direct sizes with 0 (a buffer that small is refused with MCS_ERR_SPACE
+ * by a library with the NUFFT, never overrun). */
+#ifndef MCS_CONFIG_NUFFT
+#define MCS_CONFIG_NUFFT 1
+#endif
+#if MCS_CONFIG_NUFFT != 0 && MCS_CONFIG_NUFFT != 1
+#error "MCS_CONFIG_NUFFT must be 0 or 1"
+#endif
+
 /* Not a capacity (it sizes nothing and is not overridable): the largest
  * count (trials, or values for a welford) any accumulator holds, 2^53, the
  * last count a double represents exactly -- every read-out divides by it and

@@ -49,12 +49,17 @@
  * 64 bytes inside it). The header points into the buffer: the buffer must
  * outlive the plan and stay untouched between calls; copies of the header
  * share it, so one transform at a time per buffer. Nothing allocates,
- * prints or keeps global state. */
+ * prints or keeps global state.
+ *
+ * A library built with MCS_CONFIG_NUFFT 0 (config.h, for firmware) has no
+ * NUFFT: every call below then returns MCS_ERR_DOMAIN and writes nothing
+ * (the names stay, so code that links them still links). */
 #ifndef MCSPEC_NUFFT_H
 #define MCSPEC_NUFFT_H
 
 #include <stddef.h>
 #include <stdint.h>
+#include "config.h"
 #include "status.h"
 
 #ifdef __cplusplus

@@ -43,6 +43,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include "config.h"
 #include "status.h"
 #include "pattern.h"
 #include "nufft.h"
@@ -74,7 +75,10 @@ extern "C" {
  * accumulator's): MCS_POINTSET_DIRECT_ONLY leaves the NUFFT's memory out of
  * the buffer (the staging array and the plan, most of it: for firmware,
  * which never has the sets the NUFFT is for); the object then takes the
- * DIRECT path only. */
+ * DIRECT path only. A library built with MCS_CONFIG_NUFFT 0 (config.h)
+ * treats every object so, whatever its flags (which are still checked and
+ * kept): the sizes of DIRECT_ONLY, path AUTO after init with flags 0 but
+ * the DIRECT path taken, the NUFFT path refused. */
 #define MCS_POINTSET_DIRECT_ONLY 1u
 
 /* The path of a trial's sums. */
@@ -110,9 +114,13 @@ typedef enum {
 #define MCS_POINTSET_STAGE_(f)                                                              \
     (2u * (2u * (size_t)(f) + 1u) > MCS_POINTSET_STAGE_MIN ? 2u * (2u * (size_t)(f) + 1u)   \
                                                            : (size_t)MCS_POINTSET_STAGE_MIN)
+#if MCS_CONFIG_NUFFT
 #define MCS_POINTSET_SIZE(f)                                                                \
     (MCS_POINTSET_SIZE_DIRECT(f) + MCS_POINTSET_RUP_(8u * MCS_POINTSET_STAGE_(f)) +          \
      MCS_POINTSET_RUP_(24u * MCS_NUFFT_GRID_BOUND(1, f) + 24u * (size_t)(f) + 1024u))
+#else /* built without the NUFFT (config.h): every object is direct only */
+#define MCS_POINTSET_SIZE(f) MCS_POINTSET_SIZE_DIRECT(f)
+#endif
 
 /* The head of an object's statistics, at the first 64-byte boundary of its
  * buffer (the 2D accumulator's too): F (and 0) and the trials added. */
@@ -165,7 +173,8 @@ mcs_status mcs_pointset_copy(mcs_pointset *dst, void *mem, size_t bytes, const m
 
 /* Forces a path for the trials that follow, or AUTO. MCS_ERR_NULL,
  * MCS_ERR_UNINIT, MCS_ERR_DOMAIN (unknown path, or NUFFT with
- * MCS_POINTSET_DIRECT_ONLY). *acc untouched on error. */
+ * MCS_POINTSET_DIRECT_ONLY or in a library built with MCS_CONFIG_NUFFT 0).
+ * *acc untouched on error. */
 mcs_status mcs_pointset_set_path(mcs_pointset *acc, mcs_pointset_path path);
 
 /* The path an add of k points would take now (DIRECT or NUFFT, never AUTO).

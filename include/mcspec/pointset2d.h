@@ -82,10 +82,14 @@ extern "C" {
     (2u * (2u * (size_t)(f) + 1u) * (2u * (size_t)(f) + 1u) > MCS_POINTSET_STAGE_MIN       \
          ? 2u * (2u * (size_t)(f) + 1u) * (2u * (size_t)(f) + 1u)                          \
          : (size_t)MCS_POINTSET_STAGE_MIN)
+#if MCS_CONFIG_NUFFT
 #define MCS_POINTSET2D_SIZE(f)                                                             \
     (MCS_POINTSET2D_SIZE_DIRECT(f) + MCS_POINTSET_RUP_(8u * MCS_POINTSET2D_STAGE_(f)) +     \
      MCS_POINTSET_RUP_(8u * MCS_NUFFT_GRID_BOUND(1, f) * MCS_NUFFT_GRID_BOUND(1, f) +       \
                        32u * MCS_NUFFT_GRID_BOUND(1, f) + 8u * (size_t)(f) + 1024u))
+#else /* built without the NUFFT (config.h, pointset.h) */
+#define MCS_POINTSET2D_SIZE(f) MCS_POINTSET2D_SIZE_DIRECT(f)
+#endif
 
 /* The header: set by mcs_pointset2d_init, read-only to the caller. The
  * pointers go into the caller's buffer; stored wave vector (fx, fy) sits at

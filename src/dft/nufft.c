@@ -12,6 +12,8 @@
 #include "core/internal.h"
 #include "kiss_fft.h"
 
+#if MCS_CONFIG_NUFFT /* else the four calls refuse at the end of this file */
+
 /* Every array of the work buffer starts at a multiple of this from the first
  * such address in it (a cache line; KissFFT needs 8). */
 #define ALIGN 64u
@@ -339,3 +341,32 @@ mcs_status mcs_nufft_type1_f(mcs_nufft *plan, const float *points, size_t k, dou
     mcs_nufft_modes_(plan, out);
     return MCS_OK;
 }
+
+#else /* MCS_CONFIG_NUFFT 0 (config.h): built without the NUFFT */
+
+mcs_status mcs_nufft_size(size_t dim, size_t freq, double tol, size_t *bytes)
+{
+    (void)dim, (void)freq, (void)tol, (void)bytes;
+    return MCS_ERR_DOMAIN;
+}
+
+mcs_status mcs_nufft_init(mcs_nufft *plan, size_t dim, size_t freq, double tol, void *mem,
+                          size_t bytes)
+{
+    (void)plan, (void)dim, (void)freq, (void)tol, (void)mem, (void)bytes;
+    return MCS_ERR_DOMAIN;
+}
+
+mcs_status mcs_nufft_type1(mcs_nufft *plan, const double *points, size_t k, double *out)
+{
+    (void)plan, (void)points, (void)k, (void)out;
+    return MCS_ERR_DOMAIN;
+}
+
+mcs_status mcs_nufft_type1_f(mcs_nufft *plan, const float *points, size_t k, double *out)
+{
+    (void)plan, (void)points, (void)k, (void)out;
+    return MCS_ERR_DOMAIN;
+}
+
+#endif /* MCS_CONFIG_NUFFT */

@@ -9,6 +9,8 @@
 #include "nufft_internal.h"
 #include "kiss_fft.h"
 
+#if MCS_CONFIG_NUFFT /* else nothing here (config.h) */
+
 static kiss_fft_cfg cfg_of(const mcs_nufft *plan)
 {
     return (kiss_fft_cfg)plan->fft;
@@ -115,3 +117,8 @@ void mcs_nufft_modes_(const mcs_nufft *plan, double *out)
     rows_2d(plan);
     columns_2d(plan, out);
 }
+
+#else
+/* ISO C wants a declaration in every translation unit. */
+typedef int mcs_nufft_left_out_;
+#endif /* MCS_CONFIG_NUFFT */

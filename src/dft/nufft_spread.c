@@ -8,6 +8,8 @@
 
 #include "nufft_internal.h"
 
+#if MCS_CONFIG_NUFFT /* else nothing here (config.h) */
+
 /* One coordinate x of a point: the kernel values phi((l - t) 2/w) at the w
  * grid points l = l0 .. l0 + w - 1, l0 = ceil(t - w/2), t = n x (so every
  * |(l - t) 2/w| <= 1), and those points' indices modulo n. l0 >= -w/2 and
@@ -91,3 +93,8 @@ void mcs_nufft_spread_f_(const mcs_nufft *plan, const float *points, size_t k)
         for (size_t j = 0; j < k; ++j)
             spread_2d(plan, (double)points[2u * j], (double)points[2u * j + 1u]);
 }
+
+#else
+/* ISO C wants a declaration in every translation unit. */
+typedef int mcs_nufft_left_out_;
+#endif /* MCS_CONFIG_NUFFT */

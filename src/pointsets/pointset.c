@@ -34,6 +34,7 @@ static mcs_status layout_of(size_t fmax, unsigned flags, mcs_ps_layout *lay)
     lay->at[IM] = mcs_ps_take(&c, blocks * B, d);
     lay->at[LOW] = mcs_ps_take(&c, 8u * B, d);
     lay->at[HIGH] = mcs_ps_take(&c, 8u * blocks, d);
+#if MCS_CONFIG_NUFFT /* else no NUFFT memory and no plan (config.h) */
     if ((flags & MCS_POINTSET_DIRECT_ONLY) == 0u) {
         const size_t modes = 2u * (2u * fmax + 1u);
         const size_t stage_len =
@@ -43,6 +44,7 @@ static mcs_status layout_of(size_t fmax, unsigned flags, mcs_ps_layout *lay)
             return MCS_ERR_FREQ_RANGE;
         lay->plan = mcs_ps_take(&c, lay->plan_bytes, 1u);
     }
+#endif
     lay->total = mcs_ps_total(&c);
     return lay->total == SIZE_MAX ? MCS_ERR_FREQ_RANGE : MCS_OK;
 }
@@ -100,12 +102,14 @@ static void set_up(mcs_pointset *acc, size_t fmax, unsigned flags, void *mem,
     acc->im = mcs_ps_array(base, lay, IM);
     acc->low = mcs_ps_array(base, lay, LOW);
     acc->high = mcs_ps_array(base, lay, HIGH);
+#if MCS_CONFIG_NUFFT
     if ((flags & MCS_POINTSET_DIRECT_ONLY) == 0u) {
         acc->stage = mcs_ps_array(base, lay, STAGE);
         /* cannot fail: the size query took the same arguments */
         (void)mcs_nufft_init(&acc->plan, 1u, fmax, MCS_POINTSET_NUFFT_TOL, base + lay->plan,
                              lay->plan_bytes);
     }
+#endif
     acc->key = key_of(acc);
 }
 
@@ -151,7 +155,7 @@ mcs_status mcs_pointset_set_path(mcs_pointset *acc, mcs_pointset_path path)
     if (path != MCS_POINTSET_PATH_AUTO && path != MCS_POINTSET_PATH_DIRECT &&
         path != MCS_POINTSET_PATH_NUFFT)
         return MCS_ERR_DOMAIN;
-    if (path == MCS_POINTSET_PATH_NUFFT && (acc->flags & MCS_POINTSET_DIRECT_ONLY) != 0u)
+    if (path == MCS_POINTSET_PATH_NUFFT && mcs_ps_direct_only(acc->flags))
         return MCS_ERR_DOMAIN;
     acc->path = path;
     acc->key = key_of(acc);
@@ -183,7 +187,7 @@ static mcs_status path_of(const mcs_pointset *acc, size_t k, mcs_pointset_path *
     if (k == 0u)
         return MCS_ERR_K_RANGE;
     mcs_pointset_path p = acc->path;
-    if ((acc->flags & MCS_POINTSET_DIRECT_ONLY) != 0u)
+    if (mcs_ps_direct_only(acc->flags))
         p = MCS_POINTSET_PATH_DIRECT;
     else if (p == MCS_POINTSET_PATH_NUFFT && k > (size_t)MCS_POINTSET_NUFFT_MAX_K)
         return MCS_ERR_K_RANGE;
@@ -245,6 +249,7 @@ static void direct_sums(mcs_pointset *acc, size_t k, const mcs_ps_points *pts)
     }
 }
 
+#if MCS_CONFIG_NUFFT /* else the NUFFT path is left out (config.h) */
 /* ---- the NUFFT path ---- */
 
 /* The sums from the NUFFT, chunk_of(acc) points per transform: the caller's
@@ -274,6 +279,7 @@ static void nufft_sums(mcs_pointset *acc, size_t k, const mcs_ps_points *pts, in
         }
     }
 }
+#endif
 
 /* The body of every add: the checks in the order the header gives, then
  * the sums by the trial's path and the Welford update. */
@@ -293,10 +299,16 @@ static mcs_status add_points(mcs_pointset *acc, size_t k, const mcs_ps_points *p
         st = mcs_check_count_(count_of(acc), 1u);
     if (st != MCS_OK)
         return st;
-    if (path == MCS_POINTSET_PATH_NUFFT)
+#if MCS_CONFIG_NUFFT
+    if (path == MCS_POINTSET_PATH_NUFFT) {
         nufft_sums(acc, k, pts, ones);
-    else
+    } else {
         direct_sums(acc, k, pts);
+    }
+#else /* path_of gave DIRECT: every object is direct only */
+    (void)ones;
+    direct_sums(acc, k, pts);
+#endif
     mcs_ps_head *head = (mcs_ps_head *)(void *)acc->state;
     const uint64_t count = ++head->count;
     const double inv_k = 1.0 / (double)k;

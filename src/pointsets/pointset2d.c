@@ -46,6 +46,7 @@ static mcs_status layout_of(size_t fmax, unsigned flags, mcs_ps_layout *lay)
     lay->at[RE] = mcs_ps_take(&c, cells, d);
     lay->at[IM] = mcs_ps_take(&c, cells, d);
     lay->at[PHASE] = mcs_ps_take(&c, 16u * (side + 1u), d);
+#if MCS_CONFIG_NUFFT /* else no NUFFT memory and no plan (config.h) */
     if ((flags & MCS_POINTSET_DIRECT_ONLY) == 0u) {
         const size_t modes = 2u * side * side; /* within the caps: no overflow */
         const size_t stage_len =
@@ -56,6 +57,7 @@ static mcs_status layout_of(size_t fmax, unsigned flags, mcs_ps_layout *lay)
             return MCS_ERR_FREQ_RANGE;
         lay->plan = mcs_ps_take(&c, lay->plan_bytes, 1u);
     }
+#endif
     lay->total = mcs_ps_total(&c);
     return lay->total == SIZE_MAX ? MCS_ERR_FREQ_RANGE : MCS_OK;
 }
@@ -120,12 +122,14 @@ static void set_up(mcs_pointset2d *acc, size_t fmax, unsigned flags, void *mem,
     acc->re = mcs_ps_array(base, lay, RE);
     acc->im = mcs_ps_array(base, lay, IM);
     acc->phase = mcs_ps_array(base, lay, PHASE);
+#if MCS_CONFIG_NUFFT
     if ((flags & MCS_POINTSET_DIRECT_ONLY) == 0u) {
         acc->stage = mcs_ps_array(base, lay, STAGE);
         /* cannot fail: the size query took the same arguments */
         (void)mcs_nufft_init(&acc->plan, 2u, fmax, MCS_POINTSET_NUFFT_TOL, base + lay->plan,
                              lay->plan_bytes);
     }
+#endif
     acc->key = key_of(acc);
 }
 
@@ -169,7 +173,7 @@ mcs_status mcs_pointset2d_set_path(mcs_pointset2d *acc, mcs_pointset_path path)
     mcs_status st = check_acc(acc);
     if (st != MCS_OK)
         return st;
-    const int direct_only = (acc->flags & MCS_POINTSET_DIRECT_ONLY) != 0u;
+    const int direct_only = mcs_ps_direct_only(acc->flags);
     if (path != MCS_POINTSET_PATH_AUTO && path != MCS_POINTSET_PATH_DIRECT &&
         path != MCS_POINTSET_PATH_NUFFT)
         return MCS_ERR_DOMAIN;
@@ -205,7 +209,7 @@ static mcs_status path_of(const mcs_pointset2d *acc, size_t k, mcs_pointset_path
     if (k == 0u)
         return MCS_ERR_K_RANGE;
     mcs_pointset_path p = acc->path;
-    if ((acc->flags & MCS_POINTSET_DIRECT_ONLY) != 0u)
+    if (mcs_ps_direct_only(acc->flags))
         p = MCS_POINTSET_PATH_DIRECT;
     else if (p == MCS_POINTSET_PATH_NUFFT && k > (size_t)MCS_POINTSET_NUFFT_MAX_K)
         return MCS_ERR_K_RANGE;
@@ -275,6 +279,7 @@ static void direct_sums(mcs_pointset2d *acc, size_t k, const mcs_ps_points *pts)
     }
 }
 
+#if MCS_CONFIG_NUFFT /* else the NUFFT path is left out (config.h) */
 /* ---- the NUFFT path ---- */
 
 /* The sums from the NUFFT, chunk_of(acc) points per transform: the caller's
@@ -313,6 +318,7 @@ static void nufft_sums(mcs_pointset2d *acc, size_t k, const mcs_ps_points *pts, 
         }
     }
 }
+#endif
 
 /* ---- the statistics, whichever path gave the sums ---- */
 
@@ -372,10 +378,16 @@ static mcs_status add_points(mcs_pointset2d *acc, size_t k, const mcs_ps_points 
         st = mcs_check_count_(count_of(acc), 1u);
     if (st != MCS_OK)
         return st;
-    if (path == MCS_POINTSET_PATH_NUFFT)
+#if MCS_CONFIG_NUFFT
+    if (path == MCS_POINTSET_PATH_NUFFT) {
         nufft_sums(acc, k, pts, ones);
-    else
+    } else {
         direct_sums(acc, k, pts);
+    }
+#else /* path_of gave DIRECT: every object is direct only */
+    (void)ones;
+    direct_sums(acc, k, pts);
+#endif
     update_statistics(acc, k);
     return MCS_OK;
 }

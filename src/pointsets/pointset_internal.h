@@ -118,6 +118,20 @@ mcs_status mcs_ps_check_copy_(const mcs_ps_span *to, const mcs_ps_span *from, mc
  * head). */
 unsigned char *mcs_ps_set_up_stats_(void *mem, const mcs_ps_layout *lay, const void *stats);
 
+/* Whether an object of these flags leaves the NUFFT out: with
+ * MCS_POINTSET_DIRECT_ONLY, and always in a build with MCS_CONFIG_NUFFT 0
+ * (config.h), where the layout, the path and the checks are then those of
+ * MCS_POINTSET_DIRECT_ONLY and no NUFFT code is referenced. */
+static inline int mcs_ps_direct_only(unsigned flags)
+{
+#if MCS_CONFIG_NUFFT
+    return (flags & MCS_POINTSET_DIRECT_ONLY) != 0u;
+#else
+    (void)flags;
+    return 1;
+#endif
+}
+
 /* A point-set accumulator's path after init: DIRECT with
  * MCS_POINTSET_DIRECT_ONLY among the flags, else AUTO. */
 static inline mcs_pointset_path mcs_ps_first_path(unsigned flags)

@@ -12,7 +12,18 @@
 #include "mcspec.h"
 #include "unity.h"
 
+#if MCS_CONFIG_NUFFT
 void setUp(void) {}
+#else
+/* Built without the NUFFT (config.h, make test-nonufft): every test of it
+ * is skipped with this reason, and only the refusals are tested. */
+static int testing_the_refusals;
+void setUp(void)
+{
+    if (!testing_the_refusals)
+        TEST_IGNORE_MESSAGE("library built with MCS_CONFIG_NUFFT 0: no NUFFT to test");
+}
+#endif
 void tearDown(void) {}
 
 #define MAX_F1 100 /* largest F of the 1D cases */
@@ -543,9 +554,42 @@ static void test_bad_type1_arguments_return_an_error_and_change_nothing(void)
     TEST_ASSERT_EQUAL_MEMORY(out, out2, 2u * 13u * 13u * sizeof(double));
 }
 
+#if !MCS_CONFIG_NUFFT
+/* Without the NUFFT every call returns MCS_ERR_DOMAIN, valid arguments or
+ * not, and writes nothing. */
+static void test_a_build_without_the_nufft_refuses_every_call_and_writes_nothing(void)
+{
+    static mcs_nufft p, snap;
+    static unsigned char mem[4096], mem_snap[4096];
+    static double pts[8] = {0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8}, res[64], res_snap[64];
+    static float ptsf[8] = {0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f, 0.7f, 0.8f};
+    memset(&p, 0x5a, sizeof p);
+    memset(mem, 0xa5, sizeof mem);
+    memset(res, 0x3c, sizeof res);
+    memcpy(&snap, &p, sizeof p);
+    memcpy(mem_snap, mem, sizeof mem);
+    memcpy(res_snap, res, sizeof res);
+    size_t bytes = 7u;
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_DOMAIN, mcs_nufft_size(1u, 4u, 1e-6, &bytes));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_DOMAIN, mcs_nufft_size(2u, 4u, 1e-13, &bytes));
+    TEST_ASSERT_EQUAL_UINT64(7u, (uint64_t)bytes);
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_DOMAIN, mcs_nufft_init(&p, 1u, 4u, 1e-6, mem, sizeof mem));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_DOMAIN, mcs_nufft_type1(&p, pts, 4u, res));
+    TEST_ASSERT_EQUAL_INT(MCS_ERR_DOMAIN, mcs_nufft_type1_f(&p, ptsf, 4u, res));
+    TEST_ASSERT_EQUAL_MEMORY(&snap, &p, sizeof p);
+    TEST_ASSERT_EQUAL_MEMORY(mem_snap, mem, sizeof mem);
+    TEST_ASSERT_EQUAL_MEMORY(res_snap, res, sizeof res);
+}
+#endif
+
 int main(void)
 {
     UNITY_BEGIN();
+#if !MCS_CONFIG_NUFFT
+    testing_the_refusals = 1;
+    RUN_TEST(test_a_build_without_the_nufft_refuses_every_call_and_writes_nothing);
+    testing_the_refusals = 0;
+#endif
     RUN_TEST(test_1d_agrees_with_the_direct_sum_to_tol_k);
     RUN_TEST(test_2d_agrees_with_the_direct_sum_to_tol_k);
     RUN_TEST(test_a_single_point_gives_its_plane_wave_at_every_mode);
