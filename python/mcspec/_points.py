@@ -1,7 +1,7 @@
 """Point arrays in: numpy conventions, checked before the library sees them."""
 import numpy as np
 
-from ._lib import Error, ERR_K_RANGE, ERR_NULL, ERR_POINT_RANGE, ERR_MISMATCH
+from ._lib import Error, ERR_K_RANGE, ERR_NULL, ERR_POINT_RANGE, ERR_MISMATCH, check
 
 
 def _as_points(a, what):
@@ -71,3 +71,20 @@ def where_bad(arr, wrap=False):
         return "a point is outside [0, 1)"
     idx = np.unravel_index(int(np.argmax(bad)), a.shape)
     return "point %s = %r is outside [0, 1) (or NaN)" % (tuple(int(i) for i in idx), float(a[idx]))
+
+
+def call_points(st, arr, what):
+    """Raises for a library status st of a call that read the points arr:
+    for MCS_ERR_POINT_RANGE the message names the bad point, else check()'s."""
+    if st == ERR_POINT_RANGE:
+        raise Error(st, where_bad(arr))
+    check(st, what)
+
+
+def each_set(parts):
+    """(k, set array, float32?, its part) of every set of sets_array's parts,
+    in order (views, no copy); the part is for call_points' message, which
+    then names the point by its index in the part (set, point, coordinate)."""
+    for arr in parts:
+        for t in range(arr.shape[0]):
+            yield arr.shape[1], arr[t], arr.dtype == np.float32, arr

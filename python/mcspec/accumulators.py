@@ -12,8 +12,8 @@ import numpy as np
 
 from . import _lib
 from ._lib import Buffer, Error, check, fn, struct
-from ._points import sets_array, where_bad
-from .measures import L2_MEASURES, SPACING
+from ._points import call_points, each_set, sets_array
+from .measures import L2_MEASURES, SPACING, Work, spacing_work, star_work
 from .sampling import PATTERNS_2D
 
 DISCREPANCY_MEASURES = L2_MEASURES + ("star",)
@@ -49,23 +49,10 @@ def _view(layout, name, buf):
     return layout.from_buffer(buf.array)
 
 
-def _call(st, arr, what):
-    if st == _lib.ERR_POINT_RANGE:
-        raise Error(st, where_bad(arr))
-    check(st, what)
-
-
 def _double(f, *args):
     v = ctypes.c_double()
     st = f(*args, ctypes.addressof(v))
     return v.value if st == 0 else math.nan
-
-
-def _each_set(parts):
-    """(k, set array, float32?) of every set in order (no copy)."""
-    for arr in parts:
-        for t in range(arr.shape[0]):
-            yield arr.shape[1], arr[t], arr.dtype == np.float32
 
 
 class _Accumulator:
@@ -83,7 +70,7 @@ class _Accumulator:
         parts, _ = sets_array(sets, dim)
         scratch = struct(self._name)
         scratch.array[:] = self._acc.array
-        for k, one, f32 in _each_set(parts):
+        for k, one, f32, _ in each_set(parts):
             add_one(scratch.addr, k, one, f32)
         self._acc.array[:] = scratch.array
         return self
@@ -148,7 +135,7 @@ class Discrepancy(_Accumulator):
         check(fn.discrepancy_init(self._acc.addr, int(dim)), "mcs_discrepancy_init(dim %d)"
               % int(dim))
         self.star = bool(star)
-        self._work = Buffer(1)
+        self._work = Work()
 
     def add(self, sets):
         dim = self.dim
@@ -156,18 +143,14 @@ class Discrepancy(_Accumulator):
         def one(addr, k, pts, f32):
             work, size = None, 0
             if self.star and dim == 2:
-                need = ctypes.c_size_t()
-                check(fn.discrepancy_star_work_size(min(k, 4096), ctypes.addressof(need)),
-                      "mcs_discrepancy_star_work_size")
-                if need.value > self._work.size:
-                    self._work = Buffer(need.value)
-                work, size = self._work.addr, self._work.size
+                buf = star_work(self._work, min(k, 4096))
+                work, size = buf.addr, buf.size
             f = fn.discrepancy_add_f if f32 else fn.discrepancy_add
-            _call(f(addr, k, pts.ctypes.data, work, size), pts, "mcs_discrepancy_add")
+            call_points(f(addr, k, pts.ctypes.data, work, size), pts, "mcs_discrepancy_add")
         return self._transaction(sets, one, dim)
 
     def _copy_extra(self, new):
-        new._work = Buffer(1)
+        new._work = Work()
 
     def count_of(self, measure):
         c = ctypes.c_uint64()
@@ -223,24 +206,19 @@ class Spacing(_Accumulator):
     def __init__(self, dim=2):
         self._acc = struct("spacing")
         check(fn.spacing_init(self._acc.addr, int(dim)), "mcs_spacing_init(dim %d)" % int(dim))
-        self._work = Buffer(1)
+        self._work = Work()
 
     def add(self, sets):
         dim = self.dim
 
         def one(addr, k, pts, f32):
-            need = ctypes.c_size_t()
-            check(fn.spacing_work_size(dim, k, ctypes.addressof(need)),
-                  "mcs_spacing_work_size(K = %d)" % k)
-            if need.value > self._work.size:
-                self._work = Buffer(need.value)
+            buf = spacing_work(self._work, dim, k)
             f = fn.spacing_add_f if f32 else fn.spacing_add
-            _call(f(addr, k, pts.ctypes.data, self._work.addr, self._work.size), pts,
-                  "mcs_spacing_add")
+            call_points(f(addr, k, pts.ctypes.data, buf.addr, buf.size), pts, "mcs_spacing_add")
         return self._transaction(sets, one, dim)
 
     def _copy_extra(self, new):
-        new._work = Buffer(1)
+        new._work = Work()
 
     @property
     def count(self):
@@ -333,6 +311,11 @@ class IntegrationError(_Accumulator):
         return p.strata_x, p.strata_y
 
     def add(self, sets):
+        return self._add(sets)
+
+    def _add(self, sets, keep=None):
+        """add(sets), and with keep a list, each set's integrands (a Buffer
+        of `integrands` mcs_integrand) appended to it, for a prediction."""
         ref = {None: 0, "random": 1, "jittered": 2}[self.exact_kind]
         fam, dim, m = self._fields().family, self.dim, self.integrands
         isz = _lib.struct_size("integrand")
@@ -346,10 +329,21 @@ class IntegrationError(_Accumulator):
                 check(fn.integrand_draw(fs.addr + i * isz, fam, dim, rng.addr),
                       "mcs_integrand_draw")
             sx, sy = self._strata(k)
-            _call(fn.integrate_add(addr, m, fs.addr, k, pts.ctypes.data, ref, sx, sy), pts,
-                  "mcs_integrate_add")
+            call_points(fn.integrate_add(addr, m, fs.addr, k, pts.ctypes.data, ref, sx, sy), pts,
+                        "mcs_integrate_add")
+            drawn.append(fs)
+        drawn = []
         self._transaction(sets, one, dim)
         self._rng.array[:] = rng.array
+        if keep is not None:
+            keep.extend(drawn)
+        return self
+
+    def _share_stream(self, rng):
+        """Draws from the caller's mcs_rng Buffer rng from now on (each add
+        moves it on), so objects of one family over several K see the one
+        stream of the command's run over all its sets."""
+        self._rng = rng
         return self
 
     def _copy_extra(self, new):
@@ -400,7 +394,7 @@ def load_record(raw):
         if cls is IntegrationError:
             obj._setup(16, 1, None)
         else:
-            obj._work = Buffer(1)
+            obj._work = Work()
             if cls is Discrepancy:
                 obj.star = True
         return obj

@@ -12,6 +12,7 @@ import numpy as np
 from . import _lib
 from ._lib import Buffer, Error, check, fn, struct
 from ._points import sets_array, where_bad
+from .accumulators import IntegrationError
 from .sampling import PATTERNS_2D, sample
 
 Pcf = collections.namedtuple("Pcf", "r mean stderr exact")
@@ -334,15 +335,16 @@ def _integrate(items, d, integrands, seed, family, freq):
         rngs[f] = struct("rng")
         check(fn.rng_seed(rngs[f].addr, int(seed) & (2**64 - 1), 1000 + f), "mcs_rng_seed")
     periodic = [f for f in fams if fn.integrand_is_periodic(f)]
+    exact_of = {0: None, 1: "random", 2: "jittered"}
     groups = {}
     ps_name = "pointset" if d == 1 else "pointset2d"
     for kk, one, ref in items:
         g = groups.get(kk)
         if g is None:
-            g = groups[kk] = {"acc": {}, "fs": {f: [] for f in fams}, "sets": 0}
-            for f in fams:
-                g["acc"][f] = struct("integrate")
-                check(fn.integrate_init(g["acc"][f].addr, f, d), "mcs_integrate_init")
+            # one accumulator a family and K, all of a family on its one stream
+            g = groups[kk] = {"acc": {f: IntegrationError(names[f], d, m, seed, exact_of[ref])
+                                      ._share_stream(rngs[f]) for f in fams},
+                              "fs": {f: [] for f in fams}, "sets": 0}
             fq = freq if freq is not None else (min(4 * kk, 65536) if d == 1 else
                                                 min(2 * int(math.ceil(math.sqrt(kk))), 128))
             g["freq"] = int(fq)
@@ -354,21 +356,10 @@ def _integrate(items, d, integrands, seed, family, freq):
                 g["ps"] = (struct(ps_name), Buffer(size.value))
                 check(getattr(fn, ps_name + "_init")(g["ps"][0].addr, g["freq"], 0,
                                                      g["ps"][1].addr, size.value), "init")
-        sx, sy = kk, 1
-        if ref == 2 and d == 2:
-            grid = struct("pattern2d")
-            if fn.pattern2d_init(grid.addr, PATTERNS_2D["jittered"], kk, 0, 0) == 0:
-                # the strata the library chose: the grid's own read-out
-                sx, sy = _strata(grid, kk)
         for f in fams:
-            fs = Buffer(isz * m)
-            for i in range(m):
-                check(fn.integrand_draw(fs.addr + i * isz, f, d, rngs[f].addr),
-                      "mcs_integrand_draw")
-            _call(fn.integrate_add(g["acc"][f].addr, m, fs.addr, kk, one.ctypes.data, ref, sx, sy),
-                  one, "mcs_integrate_add")
-            if fn.integrand_is_periodic(f):
-                g["fs"][f].append(fs)
+            acc = g["acc"][f]
+            acc.exact_kind = exact_of[ref]
+            acc._add(one[np.newaxis], g["fs"][f] if fn.integrand_is_periodic(f) else None)
         if g["ps"] is not None:
             _call(getattr(fn, ps_name + "_add_sets")(g["ps"][0].addr, 1, kk, one.ctypes.data),
                   one, "add")
@@ -380,12 +371,9 @@ def _integrate(items, d, integrands, seed, family, freq):
                 ("mse", "mse_stderr", "exact", "predicted", "predicted_tail", "freq", "sets")}
         for i, kk in enumerate(ks):
             g = groups[kk]
-            a = g["acc"][f].addr
-            for c, call in (("mse", fn.integrate_mse), ("mse_stderr", fn.integrate_mse_stderr),
-                            ("exact", fn.integrate_exact)):
-                st, v = _double(call, a)
-                if st == 0:
-                    cols[c][i] = v
+            acc = g["acc"][f]
+            cols["mse"][i], cols["mse_stderr"][i], cols["exact"][i] = (acc.mse, acc.mse_stderr,
+                                                                       acc.exact)
             cols["sets"][i] = g["sets"]
             if g["ps"] is not None and g["fs"][f]:
                 allfs = Buffer(isz * m * len(g["fs"][f]))
@@ -421,21 +409,6 @@ def _slope(ks, mse):
             sxy += x * y
     den = n * sxx - sx * sx
     return (n * sxy - sx * sy) / den if n >= 2.0 and den > 0.0 else math.nan
-
-
-class _Pattern2d(ctypes.Structure):
-    # mcs_pattern2d (pattern2d.h, a transparent struct), checked against
-    # mcs_abi_sizeof(MCS_ABI_PATTERN2D) before it is read.
-    _fields_ = [("kind", ctypes.c_int), ("k", ctypes.c_size_t),
-                ("strata_x", ctypes.c_size_t), ("strata_y", ctypes.c_size_t)]
-
-
-def _strata(grid, k):
-    """strata_x, strata_y of an initialised mcs_pattern2d."""
-    if ctypes.sizeof(_Pattern2d) != _lib.struct_size("pattern2d"):
-        raise Error(_lib.ERR_MISMATCH, "mcs_pattern2d has another layout in this library")
-    p = _Pattern2d.from_buffer(grid.array)
-    return p.strata_x, p.strata_y
 
 
 # ---- projections -------------------------------------------------------------

@@ -4,19 +4,41 @@ import ctypes
 
 import numpy as np
 
-from . import _lib
-from ._lib import Buffer, Error, check, fn
-from ._points import sets_array, where_bad
+from ._lib import Buffer, check, fn
+from ._points import call_points, each_set, sets_array
 
 L2_MEASURES = ("l2_star", "l2_centered", "l2_wraparound", "l2_symmetric", "l2_generalized",
                "l2_unanchored")
 SPACING = ("min_distance", "avg_min_distance")
 
 
-def _call(st, arr, what):
-    if st == _lib.ERR_POINT_RANGE:
-        raise Error(st, where_bad(arr))
-    check(st, what)
+class Work:
+    """The scratch of the per-set calls (star discrepancy, spacing): one
+    Buffer, replaced by a larger one when a set needs more, and held here
+    while a call uses it (so no address of a temporary reaches the library)."""
+
+    def __init__(self):
+        self.buf = Buffer(1)
+
+    def at_least(self, need):
+        if need > self.buf.size:
+            self.buf = Buffer(need)
+        return self.buf
+
+
+def star_work(work, k, what="mcs_discrepancy_star_work_size"):
+    """work's Buffer grown to mcs_discrepancy_star_work_size(k)."""
+    need = ctypes.c_size_t()
+    check(fn.discrepancy_star_work_size(k, ctypes.addressof(need)), what)
+    return work.at_least(need.value)
+
+
+def spacing_work(work, dim, k, what=None):
+    """work's Buffer grown to mcs_spacing_work_size(dim, k) (at least 1 byte)."""
+    need = ctypes.c_size_t()
+    check(fn.spacing_work_size(dim, k, ctypes.addressof(need)),
+          what or "mcs_spacing_work_size(K = %d)" % k)
+    return work.at_least(need.value)
 
 
 def discrepancy(sets, star=False):
@@ -27,23 +49,19 @@ def discrepancy(sets, star=False):
     parts, d = sets_array(sets)
     rows, stars = [], []
     d2 = np.empty(6)
-    for arr in parts:
-        f32 = arr.dtype == np.float32
-        for t in range(arr.shape[0]):
-            k = arr.shape[1]
-            _call((fn.discrepancy_l2_f if f32 else fn.discrepancy_l2)(k, d, arr[t].ctypes.data,
-                                                                     d2.ctypes.data),
-                  arr, "mcs_discrepancy_l2")
-            rows.append(d2.copy())
-            if star:
-                size = ctypes.c_size_t()
-                check(fn.discrepancy_star_work_size(k, ctypes.addressof(size)), "star_work_size")
-                work = Buffer(size.value)
-                v = ctypes.c_double()
-                _call((fn.discrepancy_star_f if f32 else fn.discrepancy_star)(
-                    k, arr[t].ctypes.data, work.addr, work.size, ctypes.addressof(v)),
-                    arr, "mcs_discrepancy_star")
-                stars.append(v.value)
+    work = Work()
+    for k, one, f32, part in each_set(parts):
+        call_points((fn.discrepancy_l2_f if f32 else fn.discrepancy_l2)(k, d, one.ctypes.data,
+                                                                       d2.ctypes.data),
+                    part, "mcs_discrepancy_l2")
+        rows.append(d2.copy())
+        if star:
+            buf = star_work(work, k, "star_work_size")
+            v = ctypes.c_double()
+            call_points((fn.discrepancy_star_f if f32 else fn.discrepancy_star)(
+                k, one.ctypes.data, buf.addr, buf.size, ctypes.addressof(v)),
+                part, "mcs_discrepancy_star")
+            stars.append(v.value)
     m = np.array(rows)
     out = {name: m[:, i].copy() for i, name in enumerate(L2_MEASURES)}
     if star:
@@ -97,15 +115,12 @@ def spacing(sets):
     parts, d = sets_array(sets)
     res = []
     two = np.empty(2)
-    for arr in parts:
-        k = arr.shape[1]
-        size = ctypes.c_size_t()
-        check(fn.spacing_work_size(d, k, ctypes.addressof(size)), "mcs_spacing_work_size")
-        work = Buffer(max(size.value, 1))
-        f = fn.spacing_distances_f if arr.dtype == np.float32 else fn.spacing_distances
-        for t in range(arr.shape[0]):
-            _call(f(k, d, arr[t].ctypes.data, work.addr, size.value, two.ctypes.data), arr,
-                  "mcs_spacing_distances")
-            res.append(two.copy())
+    work = Work()
+    for k, one, f32, part in each_set(parts):
+        buf = spacing_work(work, d, k, "mcs_spacing_work_size")
+        f = fn.spacing_distances_f if f32 else fn.spacing_distances
+        call_points(f(k, d, one.ctypes.data, buf.addr, buf.size, two.ctypes.data), part,
+                    "mcs_spacing_distances")
+        res.append(two.copy())
     m = np.array(res)
     return {SPACING[0]: m[:, 0].copy(), SPACING[1]: m[:, 1].copy()}
