@@ -11,18 +11,12 @@ import numpy as np
 
 from . import _lib
 from ._lib import Buffer, Error, check, fn, struct
-from ._points import sets_array, where_bad
+from ._points import call_points as _call, sets_array, where_bad
 from .accumulators import IntegrationError
 from .sampling import PATTERNS_2D, sample
 
 Pcf = collections.namedtuple("Pcf", "r mean stderr exact")
 SpectralStats = collections.namedtuple("SpectralStats", "mean stderr")
-
-
-def _call(st, arr, what):
-    if st == _lib.ERR_POINT_RANGE:
-        raise Error(st, where_bad(arr))
-    check(st, what)
 
 
 def _sets(parts):
