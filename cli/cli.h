@@ -62,6 +62,11 @@ int cli_internal(const char *cmd, const char *fmt, ...);
 /* malloc that reports failure through cli_internal; NULL on failure. */
 void *cli_alloc(const char *cmd, size_t count, size_t size);
 
+/* Grows *buf (realloc) to at least need bytes, *bytes its size; k names the
+ * set in the message. Returns 0, or CLI_EXIT_FAIL after a message (*buf and
+ * *bytes as they were). */
+int cli_grow(const char *cmd, void **buf, size_t *bytes, size_t need, size_t k);
+
 /* ---- Options ------------------------------------------------------------- */
 
 typedef enum {

@@ -255,13 +255,8 @@ static int add_set(void *ctx, size_t k, const double *coords, const double *weig
                         "--radius)", c->name, (unsigned long long)c->sets, k, c->acc.radius,
                         c->o->rdf ? "" : " + 8 sigma", ceil(kmin > 2.0 ? kmin : 2.0));
     }
-    if (st == MCS_OK && need > c->work_bytes) {
-        void *w = realloc(c->work, need);
-        if (w == NULL)
-            return cli_internal(CMD, "out of memory for a set of %zu points", k);
-        c->work = w;
-        c->work_bytes = need;
-    }
+    if (st == MCS_OK && cli_grow(CMD, &c->work, &c->work_bytes, need, k) != 0)
+        return CLI_EXIT_FAIL;
     if (st == MCS_OK)
         st = mcs_pcf_add(&c->acc, k, coords, c->work, c->work_bytes);
     if (st == MCS_OK && c->o->spectral > 0u)

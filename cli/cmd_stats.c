@@ -225,13 +225,8 @@ static int add_set(void *ctx, size_t k, const double *coords, const double *weig
                         "needs 2 or more)", c->name, (unsigned long long)c->sets);
     size_t need = 0;
     mcs_status st = mcs_spacing_work_size(c->acc.dim, k, &need);
-    if (st == MCS_OK && need > c->work_bytes) {
-        void *w = realloc(c->work, need);
-        if (w == NULL)
-            return cli_internal(CMD, "out of memory for a set of %zu points", k);
-        c->work = w;
-        c->work_bytes = need;
-    }
+    if (st == MCS_OK && cli_grow(CMD, &c->work, &c->work_bytes, need, k) != 0)
+        return CLI_EXIT_FAIL;
     if (st == MCS_OK)
         st = mcs_spacing_add(&c->acc, k, coords, c->work, c->work_bytes);
     if (st != MCS_OK)

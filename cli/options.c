@@ -57,6 +57,18 @@ void *cli_alloc(const char *cmd, size_t count, size_t size)
     return p;
 }
 
+int cli_grow(const char *cmd, void **buf, size_t *bytes, size_t need, size_t k)
+{
+    if (need <= *bytes)
+        return 0;
+    void *w = realloc(*buf, need);
+    if (w == NULL)
+        return cli_internal(cmd, "out of memory for a set of %zu points", k);
+    *buf = w;
+    *bytes = need;
+    return 0;
+}
+
 int cli_parse_u64(const char *text, uint64_t min, uint64_t max, uint64_t *out)
 {
     /* strtoull alone would accept "-1", " 7" and "7junk"; digits only. */

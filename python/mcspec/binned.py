@@ -26,6 +26,14 @@ def _doubles(a, what, n=None):
     return arr
 
 
+def _complex_matrix(name, obj, n):
+    """An (n, n) complex read-out of obj by mcs_<name>(obj, n, re, im)."""
+    re = np.empty((n, n))
+    im = np.empty((n, n))
+    check(getattr(fn, name)(obj.addr, n, re.ctypes.data, im.ctypes.data), "mcs_" + name)
+    return re + 1j * im
+
+
 def _bins(b, k, n):
     arr = np.asarray(b)
     if arr.dtype.kind not in "iu":
@@ -222,11 +230,7 @@ class Moment(_Binned):
     _kind = "moment"
 
     def _matrix(self, which):
-        re = np.empty((self.n, self.n))
-        im = np.empty((self.n, self.n))
-        check(getattr(fn, "moment_" + which)(self._obj.addr, self.n, re.ctypes.data,
-                                             im.ctypes.data), "mcs_moment_" + which)
-        return re + 1j * im
+        return _complex_matrix("moment_" + which, self._obj, self.n)
 
     @property
     def cross_matrix(self):
@@ -330,11 +334,7 @@ class Theory:
         check(fn.theory_init(self._obj.addr, pattern._obj.addr), "mcs_theory_init")
 
     def _matrix(self, which):
-        re = np.empty((self.n, self.n))
-        im = np.empty((self.n, self.n))
-        check(getattr(fn, "theory_" + which)(self._obj.addr, self.n, re.ctypes.data,
-                                             im.ctypes.data), "mcs_theory_" + which)
-        return re + 1j * im
+        return _complex_matrix("theory_" + which, self._obj, self.n)
 
     @property
     def cross_matrix(self):
